@@ -1,0 +1,1 @@
+//! The Bernstein polynomials B_{i,n}(t) and their derivatives.

@@ -1,0 +1,1 @@
+//! Non-rational B-spline curves.

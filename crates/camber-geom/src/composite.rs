@@ -1,0 +1,1 @@
+//! Composite curves and joint continuity reports.

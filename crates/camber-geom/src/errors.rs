@@ -1,0 +1,157 @@
+//! The error type of camber-geom: one enum whose variants carry the offending index and value.
+//!
+//! Values are reported as `f64` (the real part, for dual numbers) so that errors are the same
+//! type whatever scalar the computation ran in.
+
+/// Everything that can be wrong with geometric input.
+///
+/// ```
+/// use camber_geom::{Error, KnotVector};
+/// let err = KnotVector::<f64>::try_new(vec![0.0, 1.0, 0.5]).unwrap_err();
+/// assert_eq!(err, Error::DecreasingKnots { index: 2, value: 0.5, previous: 1.0 });
+/// ```
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum Error {
+    /// A number that must be finite is NaN or infinite.
+    #[error("{what} {index} is not finite ({value})")]
+    NonFinite {
+        /// What the number is ("knot", "control point coordinate", "weight", "parameter", …).
+        what: &'static str,
+        /// Its index in the input (0 where there is a single value).
+        index: usize,
+        /// The offending value.
+        value: f64,
+    },
+    /// A knot is smaller than the knot before it.
+    #[error("knot {index} ({value}) is smaller than the knot before it ({previous})")]
+    DecreasingKnots {
+        /// Index of the offending knot.
+        index: usize,
+        /// Its value.
+        value: f64,
+        /// The value of the knot before it.
+        previous: f64,
+    },
+    /// The knot count does not equal control points + degree + 1.
+    #[error(
+        "{control_points} control points of degree {degree} need {expected} knots, found {found}"
+    )]
+    KnotCount {
+        /// Knots needed.
+        expected: usize,
+        /// Knots given.
+        found: usize,
+        /// Degree of the curve.
+        degree: usize,
+        /// Number of control points.
+        control_points: usize,
+    },
+    /// Fewer control points than the degree requires (at least degree + 1).
+    #[error("degree {degree} needs at least {needed} control points, found {found}")]
+    TooFewControlPoints {
+        /// Degree of the curve.
+        degree: usize,
+        /// Control points needed.
+        needed: usize,
+        /// Control points given.
+        found: usize,
+    },
+    /// A knot vector too short to carry any basis function of the degree asked for.
+    #[error("a knot vector of {found} knots is too short for degree {degree} (needs {needed})")]
+    TooFewKnots {
+        /// Degree asked for.
+        degree: usize,
+        /// Knots needed.
+        needed: usize,
+        /// Knots given.
+        found: usize,
+    },
+    /// The parametric domain [min, max] has zero length.
+    #[error("the parametric domain [{min}, {max}] is empty")]
+    EmptyDomain {
+        /// Start of the domain.
+        min: f64,
+        /// End of the domain.
+        max: f64,
+    },
+    /// A weight is zero or negative.
+    #[error("weight {index} is not positive ({value})")]
+    NonPositiveWeight {
+        /// Index of the weight.
+        index: usize,
+        /// Its value.
+        value: f64,
+    },
+    /// The number of weights differs from the number of control points.
+    #[error("expected {expected} weights (one per control point), found {found}")]
+    WeightCount {
+        /// Weights needed.
+        expected: usize,
+        /// Weights given.
+        found: usize,
+    },
+    /// A curve parameter lies outside the curve's domain.
+    #[error("parameter {value} is outside the domain [{min}, {max}]")]
+    ParameterOutsideDomain {
+        /// The parameter.
+        value: f64,
+        /// Start of the domain.
+        min: f64,
+        /// End of the domain.
+        max: f64,
+    },
+    /// An interval [start, end] that must have start < end does not.
+    #[error("the interval [{start}, {end}] is empty or reversed")]
+    InvalidInterval {
+        /// Start of the interval.
+        start: f64,
+        /// End of the interval.
+        end: f64,
+    },
+    /// Inserting a knot would raise its multiplicity above the degree.
+    #[error(
+        "inserting knot {value} {times} times onto multiplicity {multiplicity} exceeds degree {degree}"
+    )]
+    KnotMultiplicity {
+        /// The knot value.
+        value: f64,
+        /// Its current multiplicity.
+        multiplicity: usize,
+        /// How many insertions were asked for.
+        times: usize,
+        /// Degree of the curve.
+        degree: usize,
+    },
+    /// A point given as a list of coordinates has the wrong number of them.
+    #[error("point {index} has {found} coordinates, expected {expected}")]
+    Dimension {
+        /// Index of the point.
+        index: usize,
+        /// Coordinates expected.
+        expected: usize,
+        /// Coordinates given.
+        found: usize,
+    },
+    /// A direction (of a line, a segment, a tangent) has zero length.
+    #[error("the {what} has zero length")]
+    ZeroLength {
+        /// Which direction ("line direction", "segment", …).
+        what: &'static str,
+    },
+    /// A circle radius is zero or negative.
+    #[error("circle radius {value} is not positive")]
+    NonPositiveRadius {
+        /// The radius.
+        value: f64,
+    },
+    /// A count that must be at least one is zero (segments of a subdivision, curves of a chain).
+    #[error("{what} must be at least 1, found 0")]
+    ZeroCount {
+        /// What is counted.
+        what: &'static str,
+    },
+}
+
+/// Result with camber-geom's [`Error`].
+pub type Result<T> = std::result::Result<T, Error>;

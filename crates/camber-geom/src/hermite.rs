@@ -1,0 +1,1 @@
+//! Cubic Hermite (parametric cubic) curves.

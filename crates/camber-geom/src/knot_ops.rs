@@ -1,0 +1,1 @@
+//! Knot insertion, refinement, Bézier decomposition and degree elevation on control nets.

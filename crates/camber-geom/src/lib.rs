@@ -1,0 +1,55 @@
+//! camber-geom: the scalar-generic geometry kernel of camber.
+//!
+//! Bézier, B-spline, NURBS and cubic Hermite curves, lines, segments and circles, composite
+//! curves and curve queries. Every evaluator is generic over one bound, [`Scalar`]
+//! (`nalgebra::RealField + Copy`), so the same code evaluates with `f64` and with forward-mode
+//! dual numbers: differentiating a curve point with respect to its control points needs no
+//! derivative code of its own. This crate knows nothing of constraints or solvers.
+//!
+//! ```
+//! use camber_geom::{BSplineCurve2, KnotVector, ParametricCurve};
+//! use nalgebra::Point2;
+//!
+//! let points = vec![
+//!     Point2::new(0.0, 0.0),
+//!     Point2::new(1.0, 2.0),
+//!     Point2::new(3.0, 2.0),
+//!     Point2::new(4.0, 0.0),
+//! ];
+//! let knots = KnotVector::clamped_uniform(3, points.len())?;
+//! let curve = BSplineCurve2::try_new(3, knots, points)?;
+//! let (p, d) = curve.point_and_derivative(0.5)?;
+//! assert!((p.x - 2.0).abs() < 1e-12 && (p.y - 1.5).abs() < 1e-12);
+//! assert!((d.x - 4.5).abs() < 1e-12 && d.y.abs() < 1e-12);
+//! # Ok::<(), camber_geom::Error>(())
+//! ```
+//!
+//! # Design
+//! - Curves own their control points as `nalgebra::Point<T, D>` with a const dimension D
+//!   (aliases `…2` and `…3` for the planar and spatial cases).
+//! - Fallible constructors are `try_new`; every error is an [`Error`] variant naming the
+//!   offending index and value. Nothing panics on user input.
+//! - Evaluation writes into caller slices and keeps its scratch on the stack
+//!   (see [`basis::INLINE_DEGREE`]), so hot loops do not allocate.
+
+pub mod basis;
+pub mod bernstein;
+pub mod bezier;
+pub mod bspline;
+pub mod composite;
+pub mod curve;
+pub mod errors;
+pub mod hermite;
+pub mod knot_ops;
+pub mod knots;
+pub mod nurbs;
+pub mod primitives;
+pub mod queries;
+pub mod scalar;
+pub mod serde_support;
+
+pub use bezier::{BezierCurve, BezierCurve2, BezierCurve3};
+pub use curve::ParametricCurve;
+pub use errors::{Error, Result};
+pub use knots::KnotVector;
+pub use scalar::Scalar;

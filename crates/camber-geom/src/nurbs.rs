@@ -1,0 +1,1 @@
+//! NURBS (rational B-spline) curves.

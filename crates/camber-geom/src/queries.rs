@@ -1,0 +1,1 @@
+//! Curve queries: curvature, closest point, intersections, minimum distance.

@@ -1,0 +1,15 @@
+//! camber keeps geometric constraints on parametric curves satisfied while a designer edits them.
+//!
+//! This facade re-exports the library crates:
+//! - [`geom`] (camber-geom): Bézier, B-spline, NURBS and Hermite curves, primitives and queries,
+//!   generic over the scalar type so dual numbers give exact derivatives.
+//!
+//! ```
+//! use camber::geom::{BezierCurve2, ParametricCurve};
+//! use nalgebra::Point2;
+//! let c = BezierCurve2::try_new(vec![Point2::new(0.0, 0.0), Point2::new(1.0, 1.0)])?;
+//! assert!((c.point(0.5)?.x - 0.5).abs() < 1e-15);
+//! # Ok::<(), camber::geom::Error>(())
+//! ```
+
+pub use camber_geom as geom;
