@@ -29,7 +29,7 @@ impl<T: Scalar> KnotVector<T> {
     /// ```
     /// use camber_geom::KnotVector;
     /// let k = KnotVector::try_new(vec![0., 0., 0., 1., 2., 3., 4., 4., 5., 5., 5.]).unwrap();
-    /// let mut n = [0.0; 3];
+    /// let mut n = [0.0_f64; 3];
     /// k.basis_functions(4, 2.5, 2, &mut n);
     /// // The NURBS Book example 2.3: N = (1/8, 6/8, 1/8).
     /// assert!((n[0] - 0.125).abs() < 1e-15 && (n[1] - 0.75).abs() < 1e-15);
@@ -60,7 +60,7 @@ impl<T: Scalar> KnotVector<T> {
     /// ```
     /// use camber_geom::KnotVector;
     /// let k = KnotVector::try_new(vec![0., 0., 0., 1., 1., 1.]).unwrap();
-    /// let mut d = [0.0; 6];
+    /// let mut d = [0.0_f64; 6];
     /// k.basis_function_derivatives(2, 0.5, 2, 1, &mut d);
     /// // Bernstein basis of degree 2: B′ = (−2(1−u), 2 − 4u, 2u) = (−1, 0, 1) at u = 1/2.
     /// assert!((d[3] + 1.0).abs() < 1e-15 && d[4].abs() < 1e-15 && (d[5] - 1.0).abs() < 1e-15);

@@ -17,7 +17,7 @@ use crate::scalar::{re, Scalar};
 /// ```
 /// use camber_geom::{BezierCurve, ParametricCurve};
 /// use nalgebra::Point2;
-/// let c = BezierCurve::try_new(vec![Point2::new(0.0, 0.0), Point2::new(2.0, 2.0)]).unwrap();
+/// let c = BezierCurve::try_new(vec![Point2::new(0.0_f64, 0.0), Point2::new(2.0, 2.0)]).unwrap();
 /// let (p, d) = c.point_and_derivative(0.5).unwrap();
 /// assert!((p.x - 1.0).abs() < 1e-15 && (d.y - 2.0).abs() < 1e-15);
 /// ```

@@ -100,7 +100,7 @@ impl<T: Scalar> KnotVector<T> {
     ///
     /// ```
     /// use camber_geom::KnotVector;
-    /// let k = KnotVector::from_parameters(2, &[0.0, 0.25, 0.5, 1.0]).unwrap();
+    /// let k = KnotVector::from_parameters(2, &[0.0_f64, 0.25, 0.5, 1.0]).unwrap();
     /// assert!((k.as_slice()[3] - 0.375).abs() < 1e-15);
     /// ```
     pub fn from_parameters(degree: usize, parameters: &[T]) -> Result<Self> {
