@@ -151,6 +151,24 @@ pub enum Error {
         /// What is counted.
         what: &'static str,
     },
+    /// A curve of one fixed degree was expected (for example a cubic Bézier curve to convert to
+    /// Hermite form) and a curve of another degree was given.
+    ///
+    /// ```
+    /// use camber_geom::{BezierCurve, Error, HermiteCurve};
+    /// use nalgebra::Point2;
+    /// let line = BezierCurve::try_new(vec![Point2::new(0.0, 0.0), Point2::new(1.0, 0.0)])?;
+    /// let err = HermiteCurve::from_bezier(&line).unwrap_err();
+    /// assert_eq!(err, Error::DegreeMismatch { expected: 3, found: 1 });
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("expected a curve of degree {expected}, found degree {found}")]
+    DegreeMismatch {
+        /// The degree required.
+        expected: usize,
+        /// The degree given.
+        found: usize,
+    },
 }
 
 /// Result with camber-geom's [`Error`].

@@ -51,5 +51,6 @@ pub mod serde_support;
 pub use bezier::{BezierCurve, BezierCurve2, BezierCurve3};
 pub use curve::ParametricCurve;
 pub use errors::{Error, Result};
+pub use hermite::{HermiteCurve, HermiteCurve2, HermiteCurve3};
 pub use knots::KnotVector;
 pub use scalar::Scalar;
