@@ -49,8 +49,11 @@ pub mod scalar;
 pub mod serde_support;
 
 pub use bezier::{BezierCurve, BezierCurve2, BezierCurve3};
+pub use composite::{CompositeCurve, CompositeCurve2, CompositeCurve3, Continuity, JointReport};
 pub use curve::ParametricCurve;
 pub use errors::{Error, Result};
 pub use hermite::{HermiteCurve, HermiteCurve2, HermiteCurve3};
 pub use knots::KnotVector;
+pub use primitives::{Circle, Line, Segment};
+pub use queries::{ClosestPoint, Intersection, QueryOptions};
 pub use scalar::Scalar;

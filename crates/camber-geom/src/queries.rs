@@ -1,1 +1,0 @@
-//! Curve queries: curvature, closest point, intersections, minimum distance.

@@ -1,0 +1,109 @@
+//! The point of a curve closest to a given point.
+
+use nalgebra::{Point, SVector};
+
+use super::{polish, scan, ClosestPoint, Field, QueryOptions};
+use crate::curve::ParametricCurve;
+use crate::errors::Result;
+use crate::scalar::{cst, re, Scalar};
+
+/// h(u) = ½|C(u) − p|², h′ = (C − p)·C′, h″ = |C′|² + (C − p)·C″; measure |C − p|.
+struct SquaredDistance<T: Scalar, const D: usize> {
+    target: Point<T, D>,
+}
+
+impl<T: Scalar, const D: usize> Field<T, D> for SquaredDistance<T, D> {
+    fn eval(&self, d: &[SVector<T, D>; 3]) -> [T; 3] {
+        let w = d[0] - self.target.coords;
+        [
+            w.norm_squared() * cst::<T>(0.5),
+            w.dot(&d[1]),
+            d[1].norm_squared() + w.dot(&d[2]),
+        ]
+    }
+
+    fn measure(&self, d: &[SVector<T, D>; 3], _h: T) -> T {
+        (d[0] - self.target.coords).norm()
+    }
+}
+
+/// The point of `curve` closest to `p`, with [`QueryOptions::default`].
+///
+/// See [`closest_point_with`].
+pub fn closest_point<T, const D: usize, C>(curve: &C, p: &Point<T, D>) -> Result<ClosestPoint<T, D>>
+where
+    T: Scalar,
+    C: ParametricCurve<T, D> + ?Sized,
+{
+    closest_point_with(curve, p, &QueryOptions::default())
+}
+
+/// The point of `curve` closest to `p`: the parameter u* minimising |C(u) − p| over the whole
+/// domain, ends and breakpoints included, with the point C(u*) and the distance.
+///
+/// Every piece is sampled, every sign change of f(u) = (C(u) − p)·C′(u) from − to + between
+/// samples (a local minimum of the distance) is refined by safeguarded Newton on f, and the
+/// best of those minima and of all samples wins. On ties the smallest parameter is returned.
+/// Fails where the curve cannot be evaluated, and for bad options.
+///
+/// ```
+/// use camber_geom::queries::{closest_point_with, QueryOptions};
+/// # use camber_geom::{ParametricCurve, Result};
+/// # use nalgebra::{Point2, SVector};
+/// # struct UnitCircle;
+/// # impl ParametricCurve<f64, 2> for UnitCircle {
+/// #     fn domain(&self) -> (f64, f64) { (0.0, std::f64::consts::TAU) }
+/// #     fn derivatives_into(&self, u: f64, out: &mut [SVector<f64, 2>]) -> Result<()> {
+/// #         for (k, o) in out.iter_mut().enumerate() {
+/// #             let a = u + k as f64 * std::f64::consts::FRAC_PI_2;
+/// #             *o = SVector::from([a.cos(), a.sin()]);
+/// #         }
+/// #         Ok(())
+/// #     }
+/// # }
+/// // `UnitCircle` is (cos u, sin u) on [0, 2π].
+/// let near = closest_point_with(&UnitCircle, &Point2::new(0.0, 3.0), &QueryOptions::default())?;
+/// assert!((near.parameter - std::f64::consts::FRAC_PI_2).abs() < 1e-12);
+/// assert!((near.distance - 2.0).abs() < 1e-12);
+/// # Ok::<(), camber_geom::Error>(())
+/// ```
+pub fn closest_point_with<T, const D: usize, C>(
+    curve: &C,
+    p: &Point<T, D>,
+    opts: &QueryOptions,
+) -> Result<ClosestPoint<T, D>>
+where
+    T: Scalar,
+    C: ParametricCurve<T, D> + ?Sized,
+{
+    let field = SquaredDistance { target: *p };
+    let found = scan(curve, &field, opts)?;
+    let mut best = found.samples.first().copied();
+    for s in found.samples.iter().chain(&found.extrema) {
+        if let Some(b) = best {
+            let better = re(s.h[0]) < re(b.h[0]) || (re(s.h[0]) <= re(b.h[0]) && re(s.u) < re(b.u));
+            if better {
+                best = Some(*s);
+            }
+        }
+    }
+    // `scan` always returns at least the two domain ends.
+    let best = best.ok_or(crate::errors::Error::ZeroCount { what: "samples" })?;
+    // At an interior minimum h″ > 0; a converged Newton step there only adds dual parts.
+    let best = if re(best.h[2]) > 0.0 {
+        let polished = polish(curve, &field, best, 1)?;
+        // Accept rounding-level changes (the step is converged), nothing more.
+        if re(polished.h[0]) <= re(best.h[0]) * (1.0 + 1e-14) {
+            polished
+        } else {
+            best
+        }
+    } else {
+        best
+    };
+    Ok(ClosestPoint {
+        parameter: best.u,
+        point: best.point,
+        distance: best.measure,
+    })
+}
