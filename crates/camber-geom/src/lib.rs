@@ -49,6 +49,7 @@ pub mod scalar;
 pub mod serde_support;
 
 pub use bezier::{BezierCurve, BezierCurve2, BezierCurve3};
+pub use bspline::{BSplineCurve, BSplineCurve2, BSplineCurve3};
 pub use composite::{CompositeCurve, CompositeCurve2, CompositeCurve3, Continuity, JointReport};
 pub use curve::ParametricCurve;
 pub use errors::{Error, Result};
