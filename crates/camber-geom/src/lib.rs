@@ -52,4 +52,5 @@ pub use bezier::{BezierCurve, BezierCurve2, BezierCurve3};
 pub use curve::ParametricCurve;
 pub use errors::{Error, Result};
 pub use knots::KnotVector;
+pub use nurbs::{NurbsCurve, NurbsCurve2, NurbsCurve3};
 pub use scalar::Scalar;
