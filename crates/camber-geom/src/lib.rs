@@ -55,6 +55,8 @@ pub use curve::ParametricCurve;
 pub use errors::{Error, Result};
 pub use hermite::{HermiteCurve, HermiteCurve2, HermiteCurve3};
 pub use knots::KnotVector;
+pub use knot_ops::{BezierPiece, ControlNet};
+pub use nurbs::{NurbsCurve, NurbsCurve2, NurbsCurve3};
 pub use primitives::{Circle, Line, Segment};
 pub use queries::{ClosestPoint, Intersection, QueryOptions};
 pub use scalar::Scalar;
