@@ -7,7 +7,7 @@
 //! ```
 //! use camber::geom::{BezierCurve2, ParametricCurve};
 //! use nalgebra::Point2;
-//! let c = BezierCurve2::try_new(vec![Point2::new(0.0, 0.0), Point2::new(1.0, 1.0)])?;
+//! let c = BezierCurve2::try_new(vec![Point2::new(0.0_f64, 0.0), Point2::new(1.0, 1.0)])?;
 //! assert!((c.point(0.5)?.x - 0.5).abs() < 1e-15);
 //! # Ok::<(), camber::geom::Error>(())
 //! ```

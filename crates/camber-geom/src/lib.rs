@@ -11,7 +11,7 @@
 //! use nalgebra::Point2;
 //!
 //! let points = vec![
-//!     Point2::new(0.0, 0.0),
+//!     Point2::new(0.0_f64, 0.0),
 //!     Point2::new(1.0, 2.0),
 //!     Point2::new(3.0, 2.0),
 //!     Point2::new(4.0, 0.0),
@@ -54,8 +54,8 @@ pub use composite::{CompositeCurve, CompositeCurve2, CompositeCurve3, Continuity
 pub use curve::ParametricCurve;
 pub use errors::{Error, Result};
 pub use hermite::{HermiteCurve, HermiteCurve2, HermiteCurve3};
-pub use knots::KnotVector;
 pub use knot_ops::{BezierPiece, ControlNet};
+pub use knots::KnotVector;
 pub use nurbs::{NurbsCurve, NurbsCurve2, NurbsCurve3};
 pub use primitives::{Circle, Line, Segment};
 pub use queries::{ClosestPoint, Intersection, QueryOptions};
