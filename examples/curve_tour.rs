@@ -92,10 +92,14 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
               min |C - c| - r = {:.5} at u = {:.4}",
         nearest.parameter, nearest.distance, clearance.distance, clearance.parameter
     );
-    let crossings = intersect_circle(&curve, &leading_edge)?;
+    // The curve starts on the circle with a vertical tangent: it touches it there only.
+    let meets: Vec<String> = intersect_circle(&curve, &leading_edge)?
+        .iter()
+        .map(|hit| format!("{:.4}", hit.parameter))
+        .collect();
     println!(
-        "  the curve crosses that circle {} time(s)",
-        crossings.len()
+        "  the curve meets that circle at u = [{}]",
+        meets.join(", ")
     );
 
     // A vertical line through mid-chord meets the suction side once.
@@ -125,16 +129,15 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
         Vector2::new(1.0, -1.0),
     )?;
     let thirds = hermite.subdivided(3)?;
+    let bezier: Vec<String> = thirds[1]
+        .to_bezier()?
+        .control_points()
+        .iter()
+        .map(|p| format!("({:.4}, {:.4})", p.x, p.y))
+        .collect();
     println!(
-        "Hermite cubic in three pieces: middle piece starts at ({:.4}, {:.4}), Bezier {:?}",
-        thirds[1].p0().x,
-        thirds[1].p0().y,
-        thirds[1]
-            .to_bezier()?
-            .control_points()
-            .iter()
-            .map(|p| (p.x, p.y))
-            .collect::<Vec<_>>()
+        "Hermite cubic in three pieces; the middle one as a Bezier curve: {}",
+        bezier.join(" ")
     );
 
     // Curves save as JSON and load back through the same validation as try_new.
