@@ -76,17 +76,12 @@ impl<T: Scalar, const D: usize> BSplineCurve<T, D> {
         control_points: Vec<Point<T, D>>,
     ) -> Result<Self> {
         // Re-check the knot values too: a KnotVector may have been built unchecked.
-        let net = ControlNet {
-            degree,
-            knots,
-            dim: 1,
-            coords: vec![T::zero(); control_points.len()],
-        };
-        net.check()?;
+        knots.validate()?;
+        knots.check_for(degree, control_points.len())?;
         check_points(&control_points)?;
         Ok(Self {
             degree,
-            knots: net.knots,
+            knots,
             control_points,
         })
     }

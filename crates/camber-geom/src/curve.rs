@@ -99,6 +99,25 @@ pub fn check_parameter<T: Scalar>(u: T, (min, max): (T, T)) -> Result<()> {
     Ok(())
 }
 
+/// Checks that `u` is finite and strictly inside `(min, max)`: where a curve can be split.
+///
+/// ```
+/// use camber_geom::curve::check_interior_parameter;
+/// assert!(check_interior_parameter(0.5, (0.0, 1.0)).is_ok());
+/// assert!(check_interior_parameter(1.0, (0.0, 1.0)).is_err());
+/// ```
+pub fn check_interior_parameter<T: Scalar>(u: T, (min, max): (T, T)) -> Result<()> {
+    check_parameter(u, (min, max))?;
+    if u <= min || u >= max {
+        return Err(Error::ParameterOutsideDomain {
+            value: re(u),
+            min: re(min),
+            max: re(max),
+        });
+    }
+    Ok(())
+}
+
 /// Checks that every coordinate of every point is finite; the error names the point index.
 pub fn check_points<T: Scalar, const D: usize>(points: &[Point<T, D>]) -> Result<()> {
     for (index, p) in points.iter().enumerate() {

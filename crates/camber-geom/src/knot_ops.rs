@@ -10,7 +10,7 @@
 //! Unclamped knot vectors and any domain [a, b] are accepted; algorithms that need clamped ends
 //! (A5.6, A5.9, splitting) clamp first with [`ControlNet::clamped`], which is exact.
 
-use crate::curve::{check_interval, check_parameter};
+use crate::curve::{check_interior_parameter, check_interval, check_parameter};
 use crate::errors::{Error, Result};
 use crate::knots::KnotVector;
 use crate::scalar::{cst, re, Scalar};
@@ -106,23 +106,7 @@ impl<T: Scalar> ControlNet<T> {
                 found: rest,
             });
         }
-        let knots = self.knots.as_slice();
-        for (index, &k) in knots.iter().enumerate() {
-            if !re(k).is_finite() {
-                return Err(Error::NonFinite {
-                    what: "knot",
-                    index,
-                    value: re(k),
-                });
-            }
-            if index > 0 && k < knots[index - 1] {
-                return Err(Error::DecreasingKnots {
-                    index,
-                    value: re(k),
-                    previous: re(knots[index - 1]),
-                });
-            }
-        }
+        self.knots.validate()?;
         self.knots
             .check_for(self.degree, self.coords.len() / self.dim)?;
         for (i, &c) in self.coords.iter().enumerate() {
@@ -275,14 +259,7 @@ impl<T: Scalar> ControlNet<T> {
     pub fn split(&self, u: T) -> Result<(Self, Self)> {
         self.check()?;
         let (a, b) = self.domain();
-        check_parameter(u, (a, b))?;
-        if u <= a || u >= b {
-            return Err(Error::ParameterOutsideDomain {
-                value: re(u),
-                min: re(a),
-                max: re(b),
-            });
-        }
+        check_interior_parameter(u, (a, b))?;
         let net = self.clamped().raised_to_degree_multiplicity(u);
         Ok((net.head_to(u), net.tail_from(u)))
     }

@@ -41,6 +41,21 @@ impl<T: Scalar> KnotVector<T> {
                 found: 0,
             });
         }
+        let vector = Self { knots };
+        vector.validate()?;
+        Ok(vector)
+    }
+
+    /// Wraps `knots` without checking that they are finite and non-decreasing. Every algorithm
+    /// assumes both; violating them gives meaningless results (never undefined behaviour).
+    pub fn new_unchecked(knots: Vec<T>) -> Self {
+        Self { knots }
+    }
+
+    /// Checks what [`try_new`](Self::try_new) checks: every knot finite and the sequence
+    /// non-decreasing. Useful for a vector built with [`new_unchecked`](Self::new_unchecked).
+    pub fn validate(&self) -> Result<()> {
+        let knots = &self.knots;
         for (index, &k) in knots.iter().enumerate() {
             if !re(k).is_finite() {
                 return Err(Error::NonFinite {
@@ -57,13 +72,7 @@ impl<T: Scalar> KnotVector<T> {
                 });
             }
         }
-        Ok(Self { knots })
-    }
-
-    /// Wraps `knots` without checking that they are finite and non-decreasing. Every algorithm
-    /// assumes both; violating them gives meaningless results (never undefined behaviour).
-    pub fn new_unchecked(knots: Vec<T>) -> Self {
-        Self { knots }
+        Ok(())
     }
 
     /// The clamped uniform knot vector on [0, 1] for `control_points` control points of

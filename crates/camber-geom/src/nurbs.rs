@@ -260,15 +260,6 @@ impl<T: Scalar, const D: usize> NurbsCurve<T, D> {
     /// # Ok::<(), camber_geom::Error>(())
     /// ```
     pub fn split(&self, u: T) -> Result<(Self, Self)> {
-        let (a, b) = self.domain();
-        check_parameter(u, (a, b))?;
-        if u <= a || u >= b {
-            return Err(Error::ParameterOutsideDomain {
-                value: re(u),
-                min: re(a),
-                max: re(b),
-            });
-        }
         let (left, right) = self.to_homogeneous().split(u)?;
         Ok((
             Self::try_from_homogeneous(left)?,
