@@ -9,12 +9,13 @@
 //!   for 1 ≤ n_b ≤ 8; larger blocks fall back to columns;
 //! - **whole**: a single `DualSVec64<n>` pass over all columns when n ≤ 8, otherwise per block.
 //!
-//! The criterion bench `benches/jacobian.rs` compares them; [`JacobianMode::Auto`] is the
-//! fastest there. The scratch lives on the stack for small residuals (`smallvec`), so the
-//! common case does not allocate.
+//! The criterion bench `benches/jacobian.rs` compares them on five residual shapes. No mode wins
+//! everywhere (columns on a 2×4 coincidence, the whole pass on a 1×8 tangency, per block on the
+//! rest); per block is never more than about a quarter slower than the best and is what
+//! [`JacobianMode::Auto`] uses. Small residuals (≤ 16 inputs, rows and blocks) keep their scratch in stack
+//! arrays and do not allocate.
 
 use num_dual::{Dual64, DualSVec64};
-use smallvec::SmallVec;
 
 use crate::errors::{Error, Result};
 use crate::residual::Residual;
@@ -26,7 +27,8 @@ pub const MAX_VECTOR_DIRECTIONS: usize = 8;
 /// How the dual numbers are seeded when a Jacobian is computed.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum JacobianMode {
-    /// The fastest mode measured by the bench (currently [`JacobianMode::Whole`]).
+    /// The mode the bench found fastest or close to it on every residual shape measured
+    /// (currently [`JacobianMode::PerBlock`]).
     #[default]
     Auto,
     /// One `Dual64` pass per column.
@@ -88,8 +90,8 @@ pub fn jacobian_with<R: Residual>(
     let mut out = Out { values, jac, ncols };
     match mode {
         JacobianMode::Columns => (0..ncols).for_each(|f| column_pass(residual, x, f, &mut out)),
-        JacobianMode::PerBlock => per_block(residual, x, &mut out),
-        JacobianMode::Whole | JacobianMode::Auto => {
+        JacobianMode::PerBlock | JacobianMode::Auto => per_block(residual, x, &mut out),
+        JacobianMode::Whole => {
             if ncols <= MAX_VECTOR_DIRECTIONS {
                 vector_range(residual, x, 0, ncols, &mut out);
             } else {
@@ -138,49 +140,75 @@ fn vector_range<R: Residual>(
     }
 }
 
-/// Evaluates the residual with every input converted by `seed(flat index, value)`.
+/// Inputs, outputs and blocks up to this many are kept in stack arrays; beyond, in vectors.
+const INLINE: usize = 16;
+
+/// Evaluates the residual with every input converted by `seed(flat index, value)` and hands the
+/// outputs to `take`. Small residuals use stack arrays, and everything stays in this frame:
+/// moving or growing inline buffers costs more than the evaluation itself.
 fn eval_seeded<R: Residual, D: Scalar>(
     residual: &R,
     x: &[&[f64]],
     seed: impl Fn(usize, f64) -> D,
-) -> SmallVec<[D; 16]> {
-    let flat: SmallVec<[D; 24]> = x
-        .iter()
-        .flat_map(|b| b.iter())
-        .enumerate()
-        .map(|(f, v)| seed(f, *v))
-        .collect();
-    let mut refs: SmallVec<[&[D]; 8]> = SmallVec::with_capacity(x.len());
-    let mut rest: &[D] = &flat;
-    for block in x {
-        // `flat` holds exactly Σ|x_b| entries, so every split is in range.
+    take: impl FnOnce(&[D]),
+) {
+    let n: usize = x.iter().map(|b| b.len()).sum();
+    let dim = residual.dim();
+    if n <= INLINE && dim <= INLINE && x.len() <= INLINE {
+        let mut flat = [D::zero(); INLINE];
+        let values = x.iter().flat_map(|b| b.iter());
+        for (f, (slot, v)) in flat.iter_mut().zip(values).enumerate() {
+            *slot = seed(f, *v);
+        }
+        let mut refs: [&[D]; INLINE] = [&[]; INLINE];
+        split_into(&flat, x, &mut refs);
+        let mut g = [D::zero(); INLINE];
+        let g = &mut g[..dim];
+        residual.eval(&refs[..x.len()], g);
+        take(g);
+    } else {
+        let flat: Vec<D> = x
+            .iter()
+            .flat_map(|b| b.iter())
+            .enumerate()
+            .map(|(f, v)| seed(f, *v))
+            .collect();
+        let mut refs: Vec<&[D]> = vec![&[]; x.len()];
+        split_into(&flat, x, &mut refs);
+        let mut g = vec![D::zero(); dim];
+        residual.eval(&refs, &mut g);
+        take(&g);
+    }
+}
+
+/// Cuts `flat` into one slice per block of `x` (same lengths), written to `refs`.
+fn split_into<'a, D>(flat: &'a [D], x: &[&[f64]], refs: &mut [&'a [D]]) {
+    let mut rest = flat;
+    for (block, slot) in x.iter().zip(refs.iter_mut()) {
+        // `flat` holds at least Σ|x_b| entries, so every split is in range.
         let (head, tail) = rest.split_at(block.len());
-        refs.push(head);
+        *slot = head;
         rest = tail;
     }
-    let mut g: SmallVec<[D; 16]> = SmallVec::from_elem(D::zero(), residual.dim());
-    residual.eval(&refs, &mut g);
-    g
 }
 
 fn column_pass<R: Residual>(residual: &R, x: &[&[f64]], column: usize, out: &mut Out<'_>) {
-    let g = eval_seeded(residual, x, |f, v| {
+    let seed = |f, v| {
         if f == column {
             Dual64::new(v, 1.0)
         } else {
             Dual64::from_re(v)
         }
-    });
-    for ((gi, vi), row) in g
-        .iter()
-        .zip(out.values.iter_mut())
-        .zip(out.jac.chunks_exact_mut(out.ncols))
-    {
-        *vi = gi.re;
-        if let Some(slot) = row.get_mut(column) {
-            *slot = gi.eps;
+    };
+    eval_seeded(residual, x, seed, |g: &[Dual64]| {
+        let rows = out.jac.chunks_exact_mut(out.ncols);
+        for ((gi, vi), row) in g.iter().zip(out.values.iter_mut()).zip(rows) {
+            *vi = gi.re;
+            if let Some(slot) = row.get_mut(column) {
+                *slot = gi.eps;
+            }
         }
-    }
+    });
 }
 
 fn vector_pass<R: Residual, const N: usize>(
@@ -189,27 +217,25 @@ fn vector_pass<R: Residual, const N: usize>(
     start: usize,
     out: &mut Out<'_>,
 ) {
-    let g = eval_seeded(residual, x, |f, v| {
+    let seed = |f, v| {
         let d = DualSVec64::<N>::from_re(v);
         if (start..start + N).contains(&f) {
             d.derivative(f - start)
         } else {
             d
         }
-    });
-    for ((gi, vi), row) in g
-        .iter()
-        .zip(out.values.iter_mut())
-        .zip(out.jac.chunks_exact_mut(out.ncols))
-    {
-        *vi = gi.re;
-        if let (Some(eps), Some(slots)) = (&gi.eps.0, row.get_mut(start..start + N)) {
-            let eps: &nalgebra::SVector<f64, N> = eps;
-            for (slot, e) in slots.iter_mut().zip(eps.iter()) {
-                *slot = *e;
+    };
+    eval_seeded(residual, x, seed, |g: &[DualSVec64<N>]| {
+        let rows = out.jac.chunks_exact_mut(out.ncols);
+        for ((gi, vi), row) in g.iter().zip(out.values.iter_mut()).zip(rows) {
+            *vi = gi.re;
+            if let (Some(eps), Some(slots)) = (&gi.eps.0, row.get_mut(start..start + N)) {
+                for (slot, e) in slots.iter_mut().zip(eps.iter()) {
+                    *slot = *e;
+                }
             }
         }
-    }
+    });
 }
 
 #[cfg(test)]
