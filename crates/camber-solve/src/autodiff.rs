@@ -1,0 +1,318 @@
+//! Exact Jacobians of a [`Residual`] by forward-mode dual numbers (num-dual).
+//!
+//! With the unknowns of all blocks laid end to end (n columns in all), a residual g: ℝⁿ → ℝᵐ is
+//! evaluated in a dual type whose derivative part is seeded with unit vectors; the derivative
+//! parts of the outputs are then columns of J = ∂g/∂x. Three ways of seeding are offered
+//! ([`JacobianMode`]):
+//! - **columns**: n passes with `Dual64` (one derivative), pass k seeding column k;
+//! - **per block**: one pass per parameter block b with `DualSVec64<n_b>` (n_b derivatives),
+//!   for 1 ≤ n_b ≤ 8; larger blocks fall back to columns;
+//! - **whole**: a single `DualSVec64<n>` pass over all columns when n ≤ 8, otherwise per block.
+//!
+//! The criterion bench `benches/jacobian.rs` compares them on five residual shapes. No mode wins
+//! everywhere (columns on a 2×4 coincidence, the whole pass on a 1×8 tangency, per block on the
+//! rest); per block is never more than about a quarter slower than the best and is what
+//! [`JacobianMode::Auto`] uses. Small residuals (≤ 16 inputs, rows and blocks) keep their scratch in stack
+//! arrays and do not allocate.
+
+use num_dual::{Dual64, DualSVec64};
+
+use crate::errors::{Error, Result};
+use crate::residual::Residual;
+use crate::scalar::Scalar;
+
+/// Largest number of derivative directions carried by one vector dual pass.
+pub const MAX_VECTOR_DIRECTIONS: usize = 8;
+
+/// How the dual numbers are seeded when a Jacobian is computed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum JacobianMode {
+    /// The mode the bench found fastest or close to it on every residual shape measured
+    /// (currently [`JacobianMode::PerBlock`]).
+    #[default]
+    Auto,
+    /// One `Dual64` pass per column.
+    Columns,
+    /// One `DualSVec64<n_b>` pass per block (blocks longer than 8 fall back to columns).
+    PerBlock,
+    /// One `DualSVec64<n>` pass for all n columns when n ≤ 8, else per block.
+    Whole,
+}
+
+/// Writes g(x) into `values` and J = ∂g/∂x into `jac` (row major, `dim` rows, Σ|x_b| columns,
+/// block 0's columns first), seeding dual numbers as `mode` says.
+///
+/// ```
+/// use camber_solve::{autodiff::{jacobian_with, JacobianMode}, Residual, Scalar};
+/// #[derive(Debug)]
+/// struct Square;
+/// impl Residual for Square {
+///     fn name(&self) -> &str { "square" }
+///     fn dim(&self) -> usize { 1 }
+///     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) { out[0] = x[0][0] * x[0][0]; }
+/// }
+/// let (mut g, mut j) = ([0.0], [0.0]);
+/// jacobian_with(&Square, &[&[3.0][..]], &mut g, &mut j, JacobianMode::Columns)?;
+/// assert!((g[0] - 9.0).abs() < 1e-15 && (j[0] - 6.0).abs() < 1e-15);
+/// # Ok::<(), camber_solve::Error>(())
+/// ```
+///
+/// # Errors
+/// [`Error::Dimension`] when `values` does not have `dim` entries or `jac` not `dim`·n.
+pub fn jacobian_with<R: Residual>(
+    residual: &R,
+    x: &[&[f64]],
+    values: &mut [f64],
+    jac: &mut [f64],
+    mode: JacobianMode,
+) -> Result<()> {
+    let dim = residual.dim();
+    let ncols: usize = x.iter().map(|b| b.len()).sum();
+    if values.len() != dim {
+        return Err(Error::Dimension {
+            what: "residual output",
+            expected: dim,
+            found: values.len(),
+        });
+    }
+    if jac.len() != dim * ncols {
+        return Err(Error::Dimension {
+            what: "Jacobian output",
+            expected: dim * ncols,
+            found: jac.len(),
+        });
+    }
+    jac.fill(0.0);
+    if ncols == 0 || dim == 0 {
+        residual.eval(x, values);
+        return Ok(());
+    }
+    let mut out = Out { values, jac, ncols };
+    match mode {
+        JacobianMode::Columns => (0..ncols).for_each(|f| column_pass(residual, x, f, &mut out)),
+        JacobianMode::PerBlock | JacobianMode::Auto => per_block(residual, x, &mut out),
+        JacobianMode::Whole => {
+            if ncols <= MAX_VECTOR_DIRECTIONS {
+                vector_range(residual, x, 0, ncols, &mut out);
+            } else {
+                per_block(residual, x, &mut out);
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Where a pass writes: the values and the row-major Jacobian with `ncols` columns.
+struct Out<'a> {
+    values: &'a mut [f64],
+    jac: &'a mut [f64],
+    ncols: usize,
+}
+
+fn per_block<R: Residual>(residual: &R, x: &[&[f64]], out: &mut Out<'_>) {
+    let mut start = 0;
+    for block in x {
+        vector_range(residual, x, start, block.len(), out);
+        start += block.len();
+    }
+}
+
+/// Differentiates with respect to the flat columns `start..start + n` in one vector pass when
+/// 1 ≤ n ≤ 8, column by column otherwise.
+fn vector_range<R: Residual>(
+    residual: &R,
+    x: &[&[f64]],
+    start: usize,
+    n: usize,
+    out: &mut Out<'_>,
+) {
+    match n {
+        0 => {}
+        1 => vector_pass::<R, 1>(residual, x, start, out),
+        2 => vector_pass::<R, 2>(residual, x, start, out),
+        3 => vector_pass::<R, 3>(residual, x, start, out),
+        4 => vector_pass::<R, 4>(residual, x, start, out),
+        5 => vector_pass::<R, 5>(residual, x, start, out),
+        6 => vector_pass::<R, 6>(residual, x, start, out),
+        7 => vector_pass::<R, 7>(residual, x, start, out),
+        8 => vector_pass::<R, 8>(residual, x, start, out),
+        _ => (start..start + n).for_each(|f| column_pass(residual, x, f, out)),
+    }
+}
+
+/// Inputs, outputs and blocks up to this many are kept in stack arrays; beyond, in vectors.
+const INLINE: usize = 16;
+
+/// Evaluates the residual with every input converted by `seed(flat index, value)` and hands the
+/// outputs to `take`. Small residuals use stack arrays, and everything stays in this frame:
+/// moving or growing inline buffers costs more than the evaluation itself.
+fn eval_seeded<R: Residual, D: Scalar>(
+    residual: &R,
+    x: &[&[f64]],
+    seed: impl Fn(usize, f64) -> D,
+    take: impl FnOnce(&[D]),
+) {
+    let n: usize = x.iter().map(|b| b.len()).sum();
+    let dim = residual.dim();
+    if n <= INLINE && dim <= INLINE && x.len() <= INLINE {
+        let mut flat = [D::zero(); INLINE];
+        let values = x.iter().flat_map(|b| b.iter());
+        for (f, (slot, v)) in flat.iter_mut().zip(values).enumerate() {
+            *slot = seed(f, *v);
+        }
+        let mut refs: [&[D]; INLINE] = [&[]; INLINE];
+        split_into(&flat, x, &mut refs);
+        let mut g = [D::zero(); INLINE];
+        let g = &mut g[..dim];
+        residual.eval(&refs[..x.len()], g);
+        take(g);
+    } else {
+        let flat: Vec<D> = x
+            .iter()
+            .flat_map(|b| b.iter())
+            .enumerate()
+            .map(|(f, v)| seed(f, *v))
+            .collect();
+        let mut refs: Vec<&[D]> = vec![&[]; x.len()];
+        split_into(&flat, x, &mut refs);
+        let mut g = vec![D::zero(); dim];
+        residual.eval(&refs, &mut g);
+        take(&g);
+    }
+}
+
+/// Cuts `flat` into one slice per block of `x` (same lengths), written to `refs`.
+fn split_into<'a, D>(flat: &'a [D], x: &[&[f64]], refs: &mut [&'a [D]]) {
+    let mut rest = flat;
+    for (block, slot) in x.iter().zip(refs.iter_mut()) {
+        // `flat` holds at least Σ|x_b| entries, so every split is in range.
+        let (head, tail) = rest.split_at(block.len());
+        *slot = head;
+        rest = tail;
+    }
+}
+
+fn column_pass<R: Residual>(residual: &R, x: &[&[f64]], column: usize, out: &mut Out<'_>) {
+    let seed = |f, v| {
+        if f == column {
+            Dual64::new(v, 1.0)
+        } else {
+            Dual64::from_re(v)
+        }
+    };
+    eval_seeded(residual, x, seed, |g: &[Dual64]| {
+        let rows = out.jac.chunks_exact_mut(out.ncols);
+        for ((gi, vi), row) in g.iter().zip(out.values.iter_mut()).zip(rows) {
+            *vi = gi.re;
+            if let Some(slot) = row.get_mut(column) {
+                *slot = gi.eps;
+            }
+        }
+    });
+}
+
+fn vector_pass<R: Residual, const N: usize>(
+    residual: &R,
+    x: &[&[f64]],
+    start: usize,
+    out: &mut Out<'_>,
+) {
+    let seed = |f, v| {
+        let d = DualSVec64::<N>::from_re(v);
+        if (start..start + N).contains(&f) {
+            d.derivative(f - start)
+        } else {
+            d
+        }
+    };
+    eval_seeded(residual, x, seed, |g: &[DualSVec64<N>]| {
+        let rows = out.jac.chunks_exact_mut(out.ncols);
+        for ((gi, vi), row) in g.iter().zip(out.values.iter_mut()).zip(rows) {
+            *vi = gi.re;
+            if let (Some(eps), Some(slots)) = (&gi.eps.0, row.get_mut(start..start + N)) {
+                for (slot, e) in slots.iter_mut().zip(eps.iter()) {
+                    *slot = *e;
+                }
+            }
+        }
+    });
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+
+    /// Rows: x·y·z over three blocks of sizes 2, 9 (beyond the vector limit) and 1.
+    #[derive(Debug)]
+    struct Wide;
+
+    impl Residual for Wide {
+        fn name(&self) -> &str {
+            "wide"
+        }
+        fn dim(&self) -> usize {
+            3
+        }
+        fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+            let s: T = x[1].iter().fold(T::zero(), |a, b| a + *b * *b);
+            out[0] = x[0][0] * x[0][1] * x[2][0];
+            out[1] = s.sqrt() + x[0][0].exp();
+            out[2] = x[1][8] * x[2][0].sin();
+        }
+    }
+
+    fn hand_jacobian(a: &[f64], b: &[f64], c: &[f64]) -> Vec<f64> {
+        let n = 12;
+        let mut j = vec![0.0; 3 * n];
+        j[0] = a[1] * c[0];
+        j[1] = a[0] * c[0];
+        j[11] = a[0] * a[1];
+        let norm = b.iter().map(|v| v * v).sum::<f64>().sqrt();
+        j[n] = a[0].exp();
+        for k in 0..9 {
+            j[n + 2 + k] = b[k] / norm;
+        }
+        j[2 * n + 2 + 8] = c[0].sin();
+        j[2 * n + 11] = b[8] * c[0].cos();
+        j
+    }
+
+    #[test]
+    fn every_mode_matches_the_hand_derivative() {
+        let a = [0.3, -1.2];
+        let b = [1.0, 2.0, -0.5, 0.25, 3.0, -2.0, 0.1, 0.7, 1.5];
+        let c = [0.8];
+        let x = [&a[..], &b[..], &c[..]];
+        let want = hand_jacobian(&a, &b, &c);
+        for mode in [
+            JacobianMode::Auto,
+            JacobianMode::Columns,
+            JacobianMode::PerBlock,
+            JacobianMode::Whole,
+        ] {
+            let mut g = [0.0; 3];
+            let mut j = vec![0.0; 36];
+            jacobian_with(&Wide, &x, &mut g, &mut j, mode).unwrap();
+            assert_relative_eq!(g[0], a[0] * a[1] * c[0], epsilon = 1e-15);
+            for (got, w) in j.iter().zip(&want) {
+                assert_relative_eq!(*got, *w, epsilon = 1e-14);
+            }
+        }
+    }
+
+    #[test]
+    fn wrong_jacobian_length_is_an_error() {
+        let x = [&[0.0, 0.0][..], &[0.0; 9][..], &[0.0][..]];
+        let mut g = [0.0; 3];
+        let mut j = vec![0.0; 35];
+        assert_eq!(
+            jacobian_with(&Wide, &x, &mut g, &mut j, JacobianMode::Auto),
+            Err(Error::Dimension {
+                what: "Jacobian output",
+                expected: 36,
+                found: 35
+            })
+        );
+    }
+}

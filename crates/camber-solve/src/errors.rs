@@ -1,0 +1,174 @@
+//! The error type of camber-solve: one enum whose variants carry the offending ids and values.
+//!
+//! Constraints are named by the caller's [`ConstraintId`] so that a user interface can point at
+//! them. Every error of [`crate::solve_linear`] leaves the problem's values unchanged.
+
+use crate::ids::ConstraintId;
+
+/// Everything that can go wrong when building or solving a [`crate::Problem`].
+///
+/// ```
+/// use camber_solve::{Error, Problem};
+/// let mut p = Problem::new();
+/// let err = p.add_block(&[0.0, f64::NAN]).unwrap_err();
+/// assert!(matches!(err, Error::NonFinite { what: "block value", index: 1, .. }));
+/// let err = p.add_block(&[]).unwrap_err();
+/// assert_eq!(err, Error::Dimension { what: "block values", expected: 1, found: 0 });
+/// ```
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum Error {
+    /// A number that must be finite is NaN or infinite.
+    #[error("{what} {index} is not finite ({value})")]
+    NonFinite {
+        /// What the number is ("block value", "weight", "bound", …).
+        what: &'static str,
+        /// Its index in the input.
+        index: usize,
+        /// The offending value.
+        value: f64,
+    },
+    /// A block id that this problem did not issue.
+    #[error("block {block} does not exist ({blocks} blocks)")]
+    UnknownBlock {
+        /// The block index asked for.
+        block: usize,
+        /// Number of blocks in the problem.
+        blocks: usize,
+    },
+    /// An unknown (or an offset inside a block) that does not exist.
+    #[error("unknown {index} does not exist ({len} available)")]
+    UnknownUnknown {
+        /// The index asked for (flat, or the offset inside a block).
+        index: usize,
+        /// How many exist (unknowns of the problem, or of the block).
+        len: usize,
+    },
+    /// An auxiliary unknown id that this problem did not issue.
+    #[error("auxiliary unknown {aux} does not exist ({len} declared)")]
+    UnknownAux {
+        /// The auxiliary index asked for.
+        aux: usize,
+        /// Number of auxiliary unknowns declared.
+        len: usize,
+    },
+    /// A slice has the wrong length.
+    #[error("{what}: expected {expected} entries, found {found}")]
+    Dimension {
+        /// Which slice ("residual output", "block values", "weights", …).
+        what: &'static str,
+        /// Entries expected.
+        expected: usize,
+        /// Entries given.
+        found: usize,
+    },
+    /// A lower bound is above its upper bound.
+    #[error("unknown {unknown}: lower bound {lower} is above upper bound {upper}")]
+    InvalidBounds {
+        /// The unknown (flat index).
+        unknown: usize,
+        /// Lower bound.
+        lower: f64,
+        /// Upper bound.
+        upper: f64,
+    },
+    /// A weight of the minimum-norm metric is zero or negative.
+    #[error("weight {index} is not positive ({value})")]
+    NonPositiveWeight {
+        /// Index of the reduced unknown (or of the weight in the slice given).
+        index: usize,
+        /// The weight.
+        value: f64,
+    },
+    /// A substitution refers to an unknown that is itself substituted (substitutions do not
+    /// chain).
+    #[error(
+        "unknown {unknown} is substituted in terms of unknown {referenced}, itself substituted"
+    )]
+    SubstitutionChain {
+        /// The substituted unknown (flat index).
+        unknown: usize,
+        /// The unknown it refers to (flat index).
+        referenced: usize,
+    },
+    /// A residual that is not affine: only the linear solver exists so far.
+    #[error("{constraint} ({name}) is not affine; the nonlinear solver is not available yet")]
+    NonlinearNotAvailable {
+        /// The constraint owning the residual.
+        constraint: ConstraintId,
+        /// The residual's name.
+        name: String,
+    },
+    /// Dependent constraint rows whose right-hand sides contradict the independent rows.
+    #[error("conflicting constraints: {constraints:?}")]
+    Conflicting {
+        /// The constraints owning an inconsistent dependent row, in row order.
+        constraints: Vec<ConstraintId>,
+    },
+    /// Consistent but dependent rows while the options forbid dropping them.
+    #[error("redundant constraints: {constraints:?}")]
+    Redundant {
+        /// The constraints owning a consistent dependent row, in row order.
+        constraints: Vec<ConstraintId>,
+    },
+    /// The Cholesky factorization of J·W⁻¹·Jᵀ failed: J does not have full row rank (numerically).
+    #[error("J·W⁻¹·Jᵀ ({rows}×{rows}) is not positive definite: the rows are dependent")]
+    RankDeficient {
+        /// Number of rows of J.
+        rows: usize,
+    },
+    /// A residual evaluated to NaN or infinity.
+    #[error("{constraint} ({name}): residual row {row} is not finite ({value})")]
+    NonFiniteResidual {
+        /// The owning constraint.
+        constraint: ConstraintId,
+        /// The residual's name.
+        name: String,
+        /// Row inside the residual block.
+        row: usize,
+        /// The value.
+        value: f64,
+    },
+    /// After the solve some residuals are still above the tolerance; nothing was written back.
+    #[error("constraints not satisfied after the solve (constraint, max |g|): {failed:?}")]
+    NotSatisfied {
+        /// Each failing constraint with its largest absolute residual.
+        failed: Vec<(ConstraintId, f64)>,
+    },
+    /// The solution leaves an unknown outside its bounds; nothing was written back. For an
+    /// auxiliary unknown, `unknown` is its index among the reduced unknowns.
+    #[error("unknown {unknown} would move to {value}, outside [{lower}, {upper}]")]
+    OutOfBounds {
+        /// The unknown (flat index).
+        unknown: usize,
+        /// The value the solve produced.
+        value: f64,
+        /// Lower bound.
+        lower: f64,
+        /// Upper bound.
+        upper: f64,
+    },
+    /// An autodiff Jacobian entry disagrees with central differences (see the `testing`
+    /// feature).
+    #[error(
+        "{name}: Jacobian entry (row {row}, block {block}, column {column}) is {autodiff} by \
+         autodiff but {central} by central differences"
+    )]
+    JacobianMismatch {
+        /// The residual's name.
+        name: String,
+        /// Row of the residual.
+        row: usize,
+        /// Block (position in the slice of blocks read).
+        block: usize,
+        /// Column inside the block.
+        column: usize,
+        /// The autodiff value.
+        autodiff: f64,
+        /// The central-difference value.
+        central: f64,
+    },
+}
+
+/// Result with camber-solve's [`Error`].
+pub type Result<T> = std::result::Result<T, Error>;

@@ -1,0 +1,600 @@
+//! The problem: parameter blocks of unknowns, their bindings (free, fixed or substituted),
+//! bounds, weights, auxiliary unknowns, and the residual blocks that read them.
+//!
+//! The unknowns x form one flat vector, blocks laid end to end. The solve does not run over x
+//! but over reduced unknowns z through an affine map x = A·z + c (see [`crate::reduced`]):
+//! - a **free** unknown owns one z (A row = unit vector, c = 0);
+//! - a **fixed** unknown keeps its value (A row = 0, c = value);
+//! - a **substituted** unknown is x_i = Σ a_k·z_k + c_i over the own z of free unknowns and over
+//!   auxiliary unknowns declared with [`Problem::add_aux`]. Merged unknowns
+//!   ([`Problem::merge`]) and the tangency elimination x_P1 = x_P0 + t·T
+//!   ([`Problem::eliminate`]) are special cases.
+
+use smallvec::SmallVec;
+
+use crate::errors::{Error, Result};
+use crate::ids::{AuxId, BlockId, ConstraintId, ResidualId, UnknownId, Var};
+use crate::residual::{DynResidual, Residual};
+
+/// How one unknown x_i is tied to the reduced unknowns z.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Binding {
+    /// x_i owns a reduced unknown of its own (the default).
+    Free,
+    /// x_i keeps its current value.
+    Fixed,
+    /// x_i = Σ coefficient·z(var) + constant.
+    Affine {
+        /// The terms (reduced variable, coefficient): one sparse row of A.
+        terms: Vec<(Var, f64)>,
+        /// The constant c_i.
+        constant: f64,
+    },
+}
+
+/// A residual block: the residual, the blocks it reads, and the constraint that owns it.
+#[derive(Debug)]
+pub(crate) struct ResidualBlock {
+    pub(crate) residual: Box<dyn DynResidual>,
+    pub(crate) blocks: Vec<BlockId>,
+    pub(crate) owner: ConstraintId,
+}
+
+/// Parameter blocks, their bindings and the residual blocks over them.
+///
+/// ```
+/// use camber_solve::{ConstraintId, Options, Problem, Residual, Scalar, solve_linear};
+///
+/// /// x + y − 2 = 0 for a block (x, y).
+/// #[derive(Debug)]
+/// struct SumIsTwo;
+/// impl Residual for SumIsTwo {
+///     fn name(&self) -> &str { "sum is two" }
+///     fn dim(&self) -> usize { 1 }
+///     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+///         out[0] = x[0][0] + x[0][1] - camber_solve::scalar::cst(2.0);
+///     }
+///     fn is_affine(&self) -> bool { true }
+/// }
+///
+/// let mut p = Problem::new();
+/// let b = p.add_block(&[0.0, 0.0])?;
+/// p.add_residual(SumIsTwo, &[b], ConstraintId(1))?;
+/// let report = solve_linear(&mut p, &Options::default())?;
+/// // The minimum-norm move splits the correction evenly.
+/// assert!((p.values()[0] - 1.0).abs() < 1e-12 && (p.values()[1] - 1.0).abs() < 1e-12);
+/// assert_eq!(report.dof, 1);
+/// # Ok::<(), camber_solve::Error>(())
+/// ```
+#[derive(Debug, Default)]
+pub struct Problem {
+    pub(crate) values: Vec<f64>,
+    /// (start, len) of every block in `values`.
+    pub(crate) blocks: Vec<(usize, usize)>,
+    pub(crate) bindings: Vec<Binding>,
+    pub(crate) bounds: Vec<(f64, f64)>,
+    pub(crate) weights: Vec<f64>,
+    pub(crate) aux_values: Vec<f64>,
+    pub(crate) aux_weights: Vec<f64>,
+    pub(crate) aux_bounds: Vec<(f64, f64)>,
+    pub(crate) residuals: Vec<ResidualBlock>,
+}
+
+/// # Construction
+impl Problem {
+    /// An empty problem.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Adds a parameter block with the given starting values (all free, unbounded, weight 1).
+    ///
+    /// # Errors
+    /// [`Error::Dimension`] for an empty block, [`Error::NonFinite`] for a NaN or infinite value.
+    pub fn add_block(&mut self, values: &[f64]) -> Result<BlockId> {
+        if values.is_empty() {
+            return Err(Error::Dimension {
+                what: "block values",
+                expected: 1,
+                found: 0,
+            });
+        }
+        check_finite("block value", values)?;
+        let start = self.values.len();
+        self.values.extend_from_slice(values);
+        self.blocks.push((start, values.len()));
+        for _ in values {
+            self.bindings.push(Binding::Free);
+            self.bounds.push((f64::NEG_INFINITY, f64::INFINITY));
+            self.weights.push(1.0);
+        }
+        Ok(BlockId(self.blocks.len() - 1))
+    }
+
+    /// Declares an auxiliary reduced unknown with a starting value (weight 1, unbounded), to be
+    /// used in substitutions ([`Problem::substitute`]).
+    ///
+    /// # Errors
+    /// [`Error::NonFinite`] for a NaN or infinite value.
+    pub fn add_aux(&mut self, value: f64) -> Result<AuxId> {
+        check_finite("auxiliary value", &[value])?;
+        self.aux_values.push(value);
+        self.aux_weights.push(1.0);
+        self.aux_bounds.push((f64::NEG_INFINITY, f64::INFINITY));
+        Ok(AuxId(self.aux_values.len() - 1))
+    }
+
+    /// Adds a residual block reading `blocks` (in that order), owned by the caller's constraint
+    /// `owner`. The problem does not check the block lengths against what the residual expects.
+    ///
+    /// # Errors
+    /// [`Error::UnknownBlock`] for a block this problem did not issue.
+    pub fn add_residual<R: Residual>(
+        &mut self,
+        residual: R,
+        blocks: &[BlockId],
+        owner: ConstraintId,
+    ) -> Result<ResidualId> {
+        self.add_dyn_residual(Box::new(residual), blocks, owner)
+    }
+
+    /// [`Problem::add_residual`] for an already boxed residual.
+    ///
+    /// # Errors
+    /// [`Error::UnknownBlock`] for a block this problem did not issue.
+    pub fn add_dyn_residual(
+        &mut self,
+        residual: Box<dyn DynResidual>,
+        blocks: &[BlockId],
+        owner: ConstraintId,
+    ) -> Result<ResidualId> {
+        for b in blocks {
+            self.block_range(*b)?;
+        }
+        self.residuals.push(ResidualBlock {
+            residual,
+            blocks: blocks.to_vec(),
+            owner,
+        });
+        Ok(ResidualId(self.residuals.len() - 1))
+    }
+}
+
+/// # Bindings, bounds and weights
+impl Problem {
+    /// Fixes x_i at its current value.
+    ///
+    /// # Errors
+    /// [`Error::UnknownUnknown`] for an unknown this problem did not issue.
+    pub fn fix(&mut self, unknown: UnknownId) -> Result<()> {
+        *self.binding_mut(unknown)? = Binding::Fixed;
+        Ok(())
+    }
+
+    /// Fixes every unknown of a block.
+    ///
+    /// # Errors
+    /// [`Error::UnknownBlock`] for a block this problem did not issue.
+    pub fn fix_block(&mut self, block: BlockId) -> Result<()> {
+        let (start, len) = self.block_range(block)?;
+        for b in &mut self.bindings[start..start + len] {
+            *b = Binding::Fixed;
+        }
+        Ok(())
+    }
+
+    /// Makes x_i free again (own reduced unknown), undoing a fix or a substitution.
+    ///
+    /// # Errors
+    /// [`Error::UnknownUnknown`] for an unknown this problem did not issue.
+    pub fn free(&mut self, unknown: UnknownId) -> Result<()> {
+        *self.binding_mut(unknown)? = Binding::Free;
+        Ok(())
+    }
+
+    /// Substitutes x_i = Σ coefficient·z(var) + constant, where each var is the own reduced
+    /// unknown of a free unknown, the value of a fixed unknown, or an auxiliary unknown.
+    /// Substitutions do not chain; that is checked when the reduced map is built.
+    ///
+    /// # Errors
+    /// Unknown ids ([`Error::UnknownUnknown`], [`Error::UnknownAux`]) and non-finite numbers
+    /// ([`Error::NonFinite`]).
+    pub fn substitute(
+        &mut self,
+        unknown: UnknownId,
+        terms: &[(Var, f64)],
+        constant: f64,
+    ) -> Result<()> {
+        for (k, (var, a)) in terms.iter().enumerate() {
+            self.check_var(*var)?;
+            check_finite_at("substitution coefficient", k, *a)?;
+        }
+        check_finite("substitution constant", &[constant])?;
+        *self.binding_mut(unknown)? = Binding::Affine {
+            terms: terms.to_vec(),
+            constant,
+        };
+        Ok(())
+    }
+
+    /// Merges `target` into `source`: x_target = x_source, both moved by the one reduced unknown
+    /// of `source` (which must not be substituted itself).
+    ///
+    /// # Errors
+    /// As [`Problem::substitute`].
+    pub fn merge(&mut self, target: UnknownId, source: UnknownId) -> Result<()> {
+        self.substitute(target, &[(Var::Unknown(source), 1.0)], 0.0)
+    }
+
+    /// The tangency elimination x_target[k] = x_base[k] + t·direction[k] for every k, with t a
+    /// new auxiliary unknown starting at `t0` (returned). The targets stop being unknowns of
+    /// their own; the bases must not be substituted themselves (free or fixed).
+    ///
+    /// # Errors
+    /// [`Error::Dimension`] when the three slices differ in length, plus those of
+    /// [`Problem::substitute`].
+    pub fn eliminate(
+        &mut self,
+        targets: &[UnknownId],
+        bases: &[UnknownId],
+        direction: &[f64],
+        t0: f64,
+    ) -> Result<AuxId> {
+        crate::sparse::check_len("elimination bases", targets.len(), bases.len())?;
+        crate::sparse::check_len("elimination direction", targets.len(), direction.len())?;
+        for u in targets.iter().chain(bases) {
+            self.binding(*u)?;
+        }
+        check_finite("elimination direction", direction)?;
+        let t = self.add_aux(t0)?;
+        for ((target, base), d) in targets.iter().zip(bases).zip(direction) {
+            self.substitute(
+                *target,
+                &[(Var::Unknown(*base), 1.0), (Var::Aux(t), *d)],
+                0.0,
+            )?;
+        }
+        Ok(t)
+    }
+
+    /// Bounds lower ≤ value ≤ upper on an unknown x_i or an auxiliary unknown. The linear
+    /// solver does not steer by bounds; it refuses a result that violates one
+    /// ([`Error::OutOfBounds`]). Infinite bounds are allowed.
+    ///
+    /// # Errors
+    /// Unknown ids; [`Error::NonFinite`] for a NaN bound; [`Error::InvalidBounds`] when
+    /// lower > upper.
+    pub fn set_bounds(&mut self, var: Var, lower: f64, upper: f64) -> Result<()> {
+        if lower.is_nan() || upper.is_nan() {
+            return Err(Error::NonFinite {
+                what: "bound",
+                index: 0,
+                value: f64::NAN,
+            });
+        }
+        let slot = match var {
+            Var::Unknown(u) => {
+                self.binding(u)?;
+                &mut self.bounds[u.0]
+            }
+            Var::Aux(a) => {
+                self.check_var(var)?;
+                &mut self.aux_bounds[a.0]
+            }
+        };
+        if lower > upper {
+            let unknown = match var {
+                Var::Unknown(u) => u.0,
+                Var::Aux(a) => a.0,
+            };
+            return Err(Error::InvalidBounds {
+                unknown,
+                lower,
+                upper,
+            });
+        }
+        *slot = (lower, upper);
+        Ok(())
+    }
+
+    /// The weight w > 0 of a reduced unknown in the metric ‖Δz‖²_W = Σ w_k Δz_k²: a larger weight
+    /// makes that unknown costlier to move. It applies to free unknowns and auxiliary unknowns.
+    ///
+    /// # Errors
+    /// Unknown ids; [`Error::NonPositiveWeight`] for w ≤ 0 or non-finite.
+    pub fn set_weight(&mut self, var: Var, weight: f64) -> Result<()> {
+        self.check_var(var)?;
+        let index = match var {
+            Var::Unknown(u) => u.0,
+            Var::Aux(a) => a.0,
+        };
+        if !(weight.is_finite() && weight > 0.0) {
+            return Err(Error::NonPositiveWeight {
+                index,
+                value: weight,
+            });
+        }
+        match var {
+            Var::Unknown(u) => self.weights[u.0] = weight,
+            Var::Aux(a) => self.aux_weights[a.0] = weight,
+        }
+        Ok(())
+    }
+}
+
+/// # Access
+impl Problem {
+    /// All unknowns x, blocks laid end to end.
+    pub fn values(&self) -> &[f64] {
+        &self.values
+    }
+
+    /// Number of unknowns x (fixed and substituted ones included).
+    pub fn num_unknowns(&self) -> usize {
+        self.values.len()
+    }
+
+    /// Number of parameter blocks.
+    pub fn num_blocks(&self) -> usize {
+        self.blocks.len()
+    }
+
+    /// Number of auxiliary unknowns.
+    pub fn num_aux(&self) -> usize {
+        self.aux_values.len()
+    }
+
+    /// Number of residual blocks.
+    pub fn num_residuals(&self) -> usize {
+        self.residuals.len()
+    }
+
+    /// Number of residual rows (Σ dim over residual blocks).
+    pub fn num_rows(&self) -> usize {
+        self.residuals.iter().map(|r| r.residual.dim()).sum()
+    }
+
+    /// The values of a block.
+    ///
+    /// # Errors
+    /// [`Error::UnknownBlock`].
+    pub fn block_values(&self, block: BlockId) -> Result<&[f64]> {
+        let (start, len) = self.block_range(block)?;
+        Ok(&self.values[start..start + len])
+    }
+
+    /// Overwrites the values of a block (fixed unknowns included).
+    ///
+    /// # Errors
+    /// [`Error::UnknownBlock`], [`Error::Dimension`], [`Error::NonFinite`].
+    pub fn set_block_values(&mut self, block: BlockId, values: &[f64]) -> Result<()> {
+        let (start, len) = self.block_range(block)?;
+        crate::sparse::check_len("block values", len, values.len())?;
+        check_finite("block value", values)?;
+        self.values[start..start + len].copy_from_slice(values);
+        Ok(())
+    }
+
+    /// The unknown at `offset` inside `block`.
+    ///
+    /// # Errors
+    /// [`Error::UnknownBlock`], or [`Error::UnknownUnknown`] for an offset past the block.
+    pub fn unknown(&self, block: BlockId, offset: usize) -> Result<UnknownId> {
+        let (start, len) = self.block_range(block)?;
+        if offset >= len {
+            return Err(Error::UnknownUnknown { index: offset, len });
+        }
+        Ok(UnknownId(start + offset))
+    }
+
+    /// How an unknown is bound.
+    ///
+    /// # Errors
+    /// [`Error::UnknownUnknown`].
+    pub fn binding(&self, unknown: UnknownId) -> Result<&Binding> {
+        let len = self.bindings.len();
+        self.bindings.get(unknown.0).ok_or(Error::UnknownUnknown {
+            index: unknown.0,
+            len,
+        })
+    }
+
+    /// The current value of an auxiliary unknown.
+    ///
+    /// # Errors
+    /// [`Error::UnknownAux`].
+    pub fn aux_value(&self, aux: AuxId) -> Result<f64> {
+        let len = self.aux_values.len();
+        self.aux_values
+            .get(aux.0)
+            .copied()
+            .ok_or(Error::UnknownAux { aux: aux.0, len })
+    }
+
+    /// The constraint owning a residual block, and the residual's name.
+    ///
+    /// # Errors
+    /// [`Error::UnknownUnknown`] for a residual id past the end.
+    pub fn residual_owner(&self, residual: ResidualId) -> Result<(ConstraintId, &str)> {
+        let len = self.residuals.len();
+        self.residuals
+            .get(residual.0)
+            .map(|r| (r.owner, r.residual.name()))
+            .ok_or(Error::UnknownUnknown {
+                index: residual.0,
+                len,
+            })
+    }
+
+    /// Evaluates every residual at the unknowns `x` (a full vector, as [`Problem::values`]),
+    /// writing the stacked rows into `g` ([`Problem::num_rows`] entries).
+    ///
+    /// # Errors
+    /// [`Error::Dimension`] for wrong lengths, [`Error::NonFiniteResidual`] for a NaN result.
+    pub fn evaluate_at(&self, x: &[f64], g: &mut [f64]) -> Result<()> {
+        crate::sparse::check_len("unknowns", self.values.len(), x.len())?;
+        crate::sparse::check_len("residual rows", self.num_rows(), g.len())?;
+        let mut row = 0;
+        for rb in &self.residuals {
+            let dim = rb.residual.dim();
+            let slices = self.gather(x, &rb.blocks);
+            let out = &mut g[row..row + dim];
+            rb.residual.values(&slices, out)?;
+            check_residual(rb, out)?;
+            row += dim;
+        }
+        Ok(())
+    }
+
+    /// Slices of `x` for the given blocks (ids already validated by `add_residual`).
+    pub(crate) fn gather<'a>(&self, x: &'a [f64], blocks: &[BlockId]) -> SmallVec<[&'a [f64]; 8]> {
+        blocks
+            .iter()
+            .map(|b| {
+                let (start, len) = self.blocks.get(b.0).copied().unwrap_or((0, 0));
+                x.get(start..start + len).unwrap_or(&[])
+            })
+            .collect()
+    }
+
+    pub(crate) fn block_range(&self, block: BlockId) -> Result<(usize, usize)> {
+        self.blocks
+            .get(block.0)
+            .copied()
+            .ok_or(Error::UnknownBlock {
+                block: block.0,
+                blocks: self.blocks.len(),
+            })
+    }
+
+    fn binding_mut(&mut self, unknown: UnknownId) -> Result<&mut Binding> {
+        let len = self.bindings.len();
+        self.bindings
+            .get_mut(unknown.0)
+            .ok_or(Error::UnknownUnknown {
+                index: unknown.0,
+                len,
+            })
+    }
+
+    fn check_var(&self, var: Var) -> Result<()> {
+        match var {
+            Var::Unknown(u) => self.binding(u).map(|_| ()),
+            Var::Aux(a) => self.aux_value(a).map(|_| ()),
+        }
+    }
+}
+
+/// Rejects a NaN or infinite residual value, naming the owner.
+pub(crate) fn check_residual(rb: &ResidualBlock, out: &[f64]) -> Result<()> {
+    match out.iter().position(|v| !v.is_finite()) {
+        None => Ok(()),
+        Some(row) => Err(Error::NonFiniteResidual {
+            constraint: rb.owner,
+            name: rb.residual.name().to_owned(),
+            row,
+            value: out[row],
+        }),
+    }
+}
+
+fn check_finite(what: &'static str, values: &[f64]) -> Result<()> {
+    for (index, v) in values.iter().enumerate() {
+        check_finite_at(what, index, *v)?;
+    }
+    Ok(())
+}
+
+fn check_finite_at(what: &'static str, index: usize, value: f64) -> Result<()> {
+    if value.is_finite() {
+        Ok(())
+    } else {
+        Err(Error::NonFinite { what, index, value })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ids_are_checked() {
+        let mut p = Problem::new();
+        let b = p.add_block(&[1.0, 2.0]).unwrap();
+        assert_eq!(
+            p.unknown(b, 2),
+            Err(Error::UnknownUnknown { index: 2, len: 2 })
+        );
+        assert_eq!(
+            p.fix_block(BlockId(3)),
+            Err(Error::UnknownBlock {
+                block: 3,
+                blocks: 1
+            })
+        );
+        assert_eq!(
+            p.fix(UnknownId(5)),
+            Err(Error::UnknownUnknown { index: 5, len: 2 })
+        );
+        assert_eq!(
+            p.aux_value(AuxId(0)),
+            Err(Error::UnknownAux { aux: 0, len: 0 })
+        );
+        let u = p.unknown(b, 1).unwrap();
+        assert_eq!(
+            p.set_bounds(Var::Unknown(u), 2.0, 1.0),
+            Err(Error::InvalidBounds {
+                unknown: 1,
+                lower: 2.0,
+                upper: 1.0
+            })
+        );
+        assert_eq!(
+            p.set_weight(Var::Unknown(u), 0.0),
+            Err(Error::NonPositiveWeight {
+                index: 1,
+                value: 0.0
+            })
+        );
+        assert!(matches!(
+            p.substitute(u, &[(Var::Aux(AuxId(0)), 1.0)], 0.0),
+            Err(Error::UnknownAux { aux: 0, .. })
+        ));
+        assert_eq!(
+            p.eliminate(&[u], &[], &[1.0], 0.0),
+            Err(Error::Dimension {
+                what: "elimination bases",
+                expected: 1,
+                found: 0
+            })
+        );
+        assert_eq!(p.num_aux(), 0, "a failed elimination declares nothing");
+        assert!(matches!(
+            p.set_block_values(b, &[1.0, f64::NAN]),
+            Err(Error::NonFinite { index: 1, .. })
+        ));
+        assert_eq!(p.values(), &[1.0, 2.0]);
+    }
+
+    #[test]
+    fn bindings_are_recorded() {
+        let mut p = Problem::new();
+        let b0 = p.add_block(&[0.0, 0.0]).unwrap();
+        let b1 = p.add_block(&[1.0, 1.0]).unwrap();
+        let (x0, y0) = (p.unknown(b0, 0).unwrap(), p.unknown(b0, 1).unwrap());
+        let (x1, y1) = (p.unknown(b1, 0).unwrap(), p.unknown(b1, 1).unwrap());
+        let t = p.eliminate(&[x1, y1], &[x0, y0], &[1.0, 0.0], 0.5).unwrap();
+        assert_eq!(
+            p.binding(x1).unwrap(),
+            &Binding::Affine {
+                terms: vec![(Var::Unknown(x0), 1.0), (Var::Aux(t), 1.0)],
+                constant: 0.0
+            }
+        );
+        p.fix(y0).unwrap();
+        assert_eq!(p.binding(y0).unwrap(), &Binding::Fixed);
+        p.free(y0).unwrap();
+        assert_eq!(p.binding(y0).unwrap(), &Binding::Free);
+        assert!((p.aux_value(t).unwrap() - 0.5).abs() < 1e-15);
+    }
+}

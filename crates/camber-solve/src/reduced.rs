@@ -1,0 +1,286 @@
+//! The affine map x = A·z + c from reduced unknowns z to the problem's unknowns x, and the
+//! linearization of the residuals over z.
+//!
+//! Columns of A (the reduced unknowns) are, in order: the own variable of every free unknown
+//! (in unknown order), then every auxiliary unknown. At the start of a solve z₀ holds the current
+//! values of those; x(z₀) = A·z₀ + c may differ from the stored x where a substitution is not yet
+//! satisfied, which is how a substitution imposes itself. By the chain rule the Jacobian over z
+//! is J_z = J_x·A, assembled sparse from each residual block's dense Jacobian.
+
+use crate::errors::{Error, Result};
+use crate::ids::{ConstraintId, ResidualId, Var};
+use crate::problem::{check_residual, Binding, Problem};
+use crate::sparse::{check_len, SparseMatrix};
+
+/// The map x = A·z + c with the starting point z₀ and the weights of the reduced unknowns.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ReducedMap {
+    vars: Vec<Var>,
+    z0: Vec<f64>,
+    weights: Vec<f64>,
+    lower: Vec<f64>,
+    upper: Vec<f64>,
+    /// Row i of A is `terms[row_ptr[i]..row_ptr[i+1]]` as (column, coefficient).
+    row_ptr: Vec<usize>,
+    terms: Vec<(usize, f64)>,
+    constant: Vec<f64>,
+}
+
+impl ReducedMap {
+    /// Number of reduced unknowns (columns of A).
+    pub fn len(&self) -> usize {
+        self.vars.len()
+    }
+
+    /// Whether there is no reduced unknown (everything fixed).
+    pub fn is_empty(&self) -> bool {
+        self.vars.is_empty()
+    }
+
+    /// What each reduced unknown is: the own variable of a free unknown, or an auxiliary.
+    pub fn vars(&self) -> &[Var] {
+        &self.vars
+    }
+
+    /// The starting point z₀ (current values of free and auxiliary unknowns).
+    pub fn z0(&self) -> &[f64] {
+        &self.z0
+    }
+
+    /// The positive weights w of the metric ‖Δz‖²_W.
+    pub fn weights(&self) -> &[f64] {
+        &self.weights
+    }
+
+    /// Row i of A as (column, coefficient) pairs, and c_i.
+    pub fn row(&self, unknown: usize) -> (&[(usize, f64)], f64) {
+        match (self.row_ptr.get(unknown), self.row_ptr.get(unknown + 1)) {
+            (Some(&a), Some(&b)) => (&self.terms[a..b], self.constant[unknown]),
+            _ => (&[], 0.0),
+        }
+    }
+
+    /// x = A·z + c.
+    ///
+    /// # Errors
+    /// [`Error::Dimension`] for wrong lengths.
+    pub fn expand(&self, z: &[f64], x: &mut [f64]) -> Result<()> {
+        check_len("reduced unknowns", self.len(), z.len())?;
+        check_len("unknowns", self.constant.len(), x.len())?;
+        for (i, xi) in x.iter_mut().enumerate() {
+            let (terms, c) = self.row(i);
+            *xi = c + terms.iter().map(|(k, a)| a * z[*k]).sum::<f64>();
+        }
+        Ok(())
+    }
+}
+
+/// The residuals and their Jacobian over z at z₀, with the owner of every row.
+#[derive(Debug, Clone)]
+pub struct Linearization {
+    /// The map x = A·z + c it was taken over.
+    pub map: ReducedMap,
+    /// x(z₀) = A·z₀ + c.
+    pub x: Vec<f64>,
+    /// g(x(z₀)), the stacked residual rows.
+    pub g: Vec<f64>,
+    /// J_z = ∂g/∂z at z₀ (rows × reduced unknowns).
+    pub jacobian: SparseMatrix,
+    /// The constraint owning each row.
+    pub row_owner: Vec<ConstraintId>,
+    /// The residual block of each row.
+    pub row_residual: Vec<ResidualId>,
+    /// Whether every residual block declares itself affine.
+    pub affine: bool,
+}
+
+/// # Reduction
+impl Problem {
+    /// Builds the map x = A·z + c from the current bindings and values.
+    ///
+    /// A substitution term on a fixed unknown folds into the constant (a·value).
+    ///
+    /// # Errors
+    /// [`Error::SubstitutionChain`] when a substitution refers to an unknown that is itself
+    /// substituted.
+    pub fn reduced_map(&self) -> Result<ReducedMap> {
+        let n = self.values.len();
+        let mut column = vec![None; n];
+        let mut vars = Vec::new();
+        let (mut z0, mut weights, mut lower, mut upper) =
+            (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+        for (i, b) in self.bindings.iter().enumerate() {
+            if *b == Binding::Free {
+                column[i] = Some(vars.len());
+                vars.push(Var::Unknown(crate::ids::UnknownId(i)));
+                z0.push(self.values[i]);
+                weights.push(self.weights[i]);
+                lower.push(f64::NEG_INFINITY);
+                upper.push(f64::INFINITY);
+            }
+        }
+        let aux_start = vars.len();
+        for (a, v) in self.aux_values.iter().enumerate() {
+            vars.push(Var::Aux(crate::ids::AuxId(a)));
+            z0.push(*v);
+            weights.push(self.aux_weights[a]);
+            lower.push(self.aux_bounds[a].0);
+            upper.push(self.aux_bounds[a].1);
+        }
+        let mut row_ptr = Vec::with_capacity(n + 1);
+        let mut terms = Vec::new();
+        let mut constant = Vec::with_capacity(n);
+        row_ptr.push(0);
+        for (i, b) in self.bindings.iter().enumerate() {
+            match b {
+                Binding::Free => {
+                    terms.push((column[i].unwrap_or(0), 1.0));
+                    constant.push(0.0);
+                }
+                Binding::Fixed => constant.push(self.values[i]),
+                Binding::Affine {
+                    terms: t,
+                    constant: c,
+                } => {
+                    let mut c = *c;
+                    for (var, a) in t {
+                        match var {
+                            Var::Unknown(u) => match (self.bindings.get(u.0), column.get(u.0)) {
+                                (_, Some(Some(col))) => terms.push((*col, *a)),
+                                // A fixed unknown contributes its value to the constant.
+                                (Some(Binding::Fixed), _) => c += a * self.values[u.0],
+                                _ => {
+                                    return Err(Error::SubstitutionChain {
+                                        unknown: i,
+                                        referenced: u.0,
+                                    })
+                                }
+                            },
+                            Var::Aux(k) => terms.push((aux_start + k.0, *a)),
+                        }
+                    }
+                    constant.push(c);
+                }
+            }
+            row_ptr.push(terms.len());
+        }
+        Ok(ReducedMap {
+            vars,
+            z0,
+            weights,
+            lower,
+            upper,
+            row_ptr,
+            terms,
+            constant,
+        })
+    }
+
+    /// Evaluates the residuals and their Jacobian over z at z₀ (autodiff through every residual
+    /// block, chain rule through A, sparse assembly).
+    ///
+    /// # Errors
+    /// Those of [`Problem::reduced_map`], and [`Error::NonFiniteResidual`].
+    pub fn linearize(&self) -> Result<Linearization> {
+        let map = self.reduced_map()?;
+        let mut x = vec![0.0; self.values.len()];
+        map.expand(&map.z0, &mut x)?;
+        let m = self.num_rows();
+        let mut g = vec![0.0; m];
+        let mut row_owner = Vec::with_capacity(m);
+        let mut row_residual = Vec::with_capacity(m);
+        let mut triplets = Vec::new();
+        let mut jac = Vec::new();
+        let mut row0 = 0;
+        let mut affine = true;
+        for (r, rb) in self.residuals.iter().enumerate() {
+            let dim = rb.residual.dim();
+            affine &= rb.residual.is_affine();
+            let slices = self.gather(&x, &rb.blocks);
+            let ncols: usize = slices.iter().map(|s| s.len()).sum();
+            jac.clear();
+            jac.resize(dim * ncols, 0.0);
+            let out = &mut g[row0..row0 + dim];
+            rb.residual.jacobian(&slices, out, &mut jac)?;
+            check_residual(rb, out)?;
+            // Local column → flat unknown index.
+            let mut local = 0;
+            for b in &rb.blocks {
+                let (start, len) = self.block_range(*b)?;
+                for u in start..start + len {
+                    let (terms, _) = map.row(u);
+                    for row in 0..dim {
+                        let d = jac[row * ncols + local];
+                        if d != 0.0 {
+                            for (col, a) in terms {
+                                triplets.push((row0 + row, *col, d * a));
+                            }
+                        }
+                    }
+                    local += 1;
+                }
+            }
+            row_owner.extend(std::iter::repeat_n(rb.owner, dim));
+            row_residual.extend(std::iter::repeat_n(ResidualId(r), dim));
+            row0 += dim;
+        }
+        let jacobian = SparseMatrix::try_from_triplets(m, map.len(), &triplets)?;
+        Ok(Linearization {
+            map,
+            x,
+            g,
+            jacobian,
+            row_owner,
+            row_residual,
+            affine,
+        })
+    }
+
+    /// Writes x = A·z + c and the auxiliary values from z. `map` must come from this problem
+    /// with its bindings unchanged since.
+    ///
+    /// # Errors
+    /// [`Error::Dimension`] for a z of the wrong length, [`Error::NonFinite`] for a NaN in z,
+    /// [`Error::OutOfBounds`] when an unknown would leave its bounds (nothing is written then).
+    pub fn apply_reduced(&mut self, map: &ReducedMap, z: &[f64]) -> Result<()> {
+        check_len("reduced unknowns", map.len(), z.len())?;
+        if let Some((index, value)) = z.iter().enumerate().find(|(_, v)| !v.is_finite()) {
+            return Err(Error::NonFinite {
+                what: "reduced unknown",
+                index,
+                value: *value,
+            });
+        }
+        let mut x = vec![0.0; self.values.len()];
+        map.expand(z, &mut x)?;
+        for (i, (xi, (lo, hi))) in x.iter().zip(&self.bounds).enumerate() {
+            if xi < lo || xi > hi {
+                return Err(Error::OutOfBounds {
+                    unknown: i,
+                    value: *xi,
+                    lower: *lo,
+                    upper: *hi,
+                });
+            }
+        }
+        for (k, zk) in z.iter().enumerate() {
+            if *zk < map.lower[k] || *zk > map.upper[k] {
+                return Err(Error::OutOfBounds {
+                    unknown: k,
+                    value: *zk,
+                    lower: map.lower[k],
+                    upper: map.upper[k],
+                });
+            }
+        }
+        self.values = x;
+        for (var, zk) in map.vars.iter().zip(z) {
+            if let Var::Aux(a) = var {
+                if let Some(slot) = self.aux_values.get_mut(a.0) {
+                    *slot = *zk;
+                }
+            }
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,99 @@
+//! What a solve reports: outcome, solver and why, residual per constraint, DOF, time.
+
+use std::collections::HashMap;
+use std::time::Duration;
+
+use crate::ids::ConstraintId;
+
+/// How a successful solve ended (failures are [`crate::Error`]s and change nothing).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Status {
+    /// The values were moved and every residual is now within tolerance.
+    Solved,
+    /// Every residual was already within tolerance and no substitution had to be imposed;
+    /// nothing was moved.
+    AlreadySatisfied,
+}
+
+/// Which solver produced the result.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SolverKind {
+    /// No solver ran (nothing to do).
+    None,
+    /// Linear minimum-norm step, dense Cholesky of J·W⁻¹·Jᵀ.
+    DenseMinNorm,
+    /// Linear minimum-norm step, sparse Cholesky of J·W⁻¹·Jᵀ.
+    SparseMinNorm,
+}
+
+/// The largest absolute residual of one constraint (over all rows it owns).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ConstraintResidual {
+    /// The constraint.
+    pub constraint: ConstraintId,
+    /// max |g| over its rows.
+    pub max_abs: f64,
+}
+
+/// The report of a successful solve.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SolveReport {
+    /// How the solve ended.
+    pub status: Status,
+    /// The solver used.
+    pub solver: SolverKind,
+    /// Why that solver (a short sentence).
+    pub reason: String,
+    /// Iterations (1 for the linear solve, 0 when nothing ran).
+    pub iterations: usize,
+    /// Residual per constraint after the solve, in order of first appearance.
+    pub residuals: Vec<ConstraintResidual>,
+    /// ‖Δz‖₂, the Euclidean length of the move of the reduced unknowns (equal to ‖Δx‖₂ when
+    /// nothing is substituted).
+    pub displacement_norm: f64,
+    /// Numerical rank of the Jacobian.
+    pub rank: usize,
+    /// Degrees of freedom left: reduced unknowns − rank.
+    pub dof: usize,
+    /// Constraints with consistent dependent rows (dropped from the solve).
+    pub redundant: Vec<ConstraintId>,
+    /// Constraints with inconsistent dependent rows (always empty for the linear solver, which
+    /// fails on them; kept for the soft solvers to come).
+    pub conflicting: Vec<ConstraintId>,
+    /// Wall-clock time of the solve.
+    pub elapsed: Duration,
+}
+
+/// max |g| per owning constraint, in order of first appearance.
+pub(crate) fn per_constraint(owners: &[ConstraintId], g: &[f64]) -> Vec<ConstraintResidual> {
+    let mut index: HashMap<ConstraintId, usize> = HashMap::new();
+    let mut out: Vec<ConstraintResidual> = Vec::new();
+    for (owner, gi) in owners.iter().zip(g) {
+        let k = *index.entry(*owner).or_insert_with(|| {
+            out.push(ConstraintResidual {
+                constraint: *owner,
+                max_abs: 0.0,
+            });
+            out.len() - 1
+        });
+        if let Some(slot) = out.get_mut(k) {
+            slot.max_abs = slot.max_abs.max(gi.abs());
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn residuals_are_grouped_by_owner() {
+        let owners = [ConstraintId(4), ConstraintId(2), ConstraintId(4)];
+        let r = per_constraint(&owners, &[0.1, -0.5, -0.3]);
+        assert_eq!(r.len(), 2);
+        assert_eq!(r[0].constraint, ConstraintId(4));
+        assert!((r[0].max_abs - 0.3).abs() < 1e-15);
+        assert!((r[1].max_abs - 0.5).abs() < 1e-15);
+    }
+}

@@ -1,0 +1,179 @@
+//! Residuals: the generic trait a user implements once, and its object-safe face.
+//!
+//! A residual block reads some parameter blocks x₁, …, x_k (one slice each) and writes `dim()`
+//! values g(x₁, …, x_k). The user writes [`Residual::eval`] generically over [`Scalar`]; the
+//! blanket implementation of [`DynResidual`] evaluates it with `f64` for values and with
+//! forward-mode dual numbers for the exact Jacobian ∂g/∂x_b of every block (see
+//! [`crate::autodiff`]). Users never name a dual type.
+
+use std::any::Any;
+use std::fmt::Debug;
+
+use crate::autodiff::{self, JacobianMode};
+use crate::errors::{Error, Result};
+use crate::scalar::Scalar;
+
+/// A user constraint written once, generically over the scalar type.
+///
+/// `x` holds one slice per parameter block the residual reads, in the order given to
+/// [`crate::Problem::add_residual`]; `out` has exactly [`Residual::dim`] entries. `eval` may assume
+/// those lengths (the problem checks them) and must not branch on derivative parts (compare
+/// real parts with [`crate::scalar::re`] if it branches at all).
+///
+/// ```
+/// use camber_solve::{Residual, Scalar};
+///
+/// /// a·x − b = 0 for a single block x.
+/// #[derive(Debug)]
+/// struct Linear { a: Vec<f64>, b: f64 }
+///
+/// impl Residual for Linear {
+///     fn name(&self) -> &str { "linear" }
+///     fn dim(&self) -> usize { 1 }
+///     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+///         let mut s = camber_solve::scalar::cst::<T>(-self.b);
+///         for (ai, xi) in self.a.iter().zip(x[0]) {
+///             s += camber_solve::scalar::cst::<T>(*ai) * *xi;
+///         }
+///         out[0] = s;
+///     }
+///     fn is_affine(&self) -> bool { true }
+/// }
+///
+/// let r = Linear { a: vec![3.0, 4.0], b: 5.0 };
+/// let mut g = [0.0_f64];
+/// r.eval(&[&[1.0, 1.0][..]], &mut g);
+/// assert!((g[0] - 2.0).abs() < 1e-15);
+/// ```
+pub trait Residual: Debug + Send + Sync + 'static {
+    /// A short human-readable name used in reports ("coincident", "tangent at u", …).
+    fn name(&self) -> &str;
+    /// Number of rows (residual values) this block contributes.
+    fn dim(&self) -> usize;
+    /// Writes g(x) into `out` (`dim()` entries); `x` holds one slice per block read.
+    fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]);
+    /// Whether g is affine in the unknowns it reads (g(x) = M·x + b with M, b constant). Only
+    /// affine residuals may use the linear solver.
+    fn is_affine(&self) -> bool {
+        false
+    }
+}
+
+/// The object-safe face of a [`Residual`], stored by the problem as `Box<dyn DynResidual>`.
+///
+/// Every [`Residual`] gets it through a blanket implementation. The Jacobian is written row
+/// major, `dim()` rows by (Σ block lengths) columns, the columns of block 0 first.
+pub trait DynResidual: Debug + Send + Sync {
+    /// The residual's name.
+    fn name(&self) -> &str;
+    /// Number of rows.
+    fn dim(&self) -> usize;
+    /// Whether the residual is affine in its unknowns.
+    fn is_affine(&self) -> bool;
+    /// Writes g(x) into `out`.
+    ///
+    /// # Errors
+    /// [`Error::Dimension`] when `out` does not have `dim()` entries.
+    fn values(&self, x: &[&[f64]], out: &mut [f64]) -> Result<()>;
+    /// Writes g(x) into `values` and ∂g/∂x into `jac` (row major, `dim()` × Σ|x_b|), by
+    /// forward-mode automatic differentiation.
+    ///
+    /// # Errors
+    /// [`Error::Dimension`] when a slice has the wrong length.
+    fn jacobian(&self, x: &[&[f64]], values: &mut [f64], jac: &mut [f64]) -> Result<()>;
+    /// The concrete residual, for downcasting.
+    fn as_any(&self) -> &dyn Any;
+}
+
+impl<R: Residual> DynResidual for R {
+    fn name(&self) -> &str {
+        Residual::name(self)
+    }
+
+    fn dim(&self) -> usize {
+        Residual::dim(self)
+    }
+
+    fn is_affine(&self) -> bool {
+        Residual::is_affine(self)
+    }
+
+    fn values(&self, x: &[&[f64]], out: &mut [f64]) -> Result<()> {
+        let dim = Residual::dim(self);
+        if out.len() != dim {
+            return Err(Error::Dimension {
+                what: "residual output",
+                expected: dim,
+                found: out.len(),
+            });
+        }
+        self.eval(x, out);
+        Ok(())
+    }
+
+    fn jacobian(&self, x: &[&[f64]], values: &mut [f64], jac: &mut [f64]) -> Result<()> {
+        autodiff::jacobian_with(self, x, values, jac, JacobianMode::Auto)
+    }
+
+    fn as_any(&self) -> &dyn Any {
+        self
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+
+    /// g = (x0·y0 − 1, sin(x1) + y0²): nonlinear, two blocks.
+    #[derive(Debug)]
+    struct Mixed;
+
+    impl Residual for Mixed {
+        fn name(&self) -> &str {
+            "mixed"
+        }
+        fn dim(&self) -> usize {
+            2
+        }
+        fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+            out[0] = x[0][0] * x[1][0] - T::one();
+            out[1] = x[0][1].sin() + x[1][0] * x[1][0];
+        }
+    }
+
+    #[test]
+    fn dyn_face_gives_values_and_exact_jacobian() {
+        let r: Box<dyn DynResidual> = Box::new(Mixed);
+        let (a, b) = ([2.0, 0.5], [3.0]);
+        let x = [&a[..], &b[..]];
+        let mut g = [0.0; 2];
+        let mut j = [0.0; 6];
+        r.jacobian(&x, &mut g, &mut j).unwrap();
+        assert_relative_eq!(g[0], 5.0);
+        assert_relative_eq!(g[1], 0.5_f64.sin() + 9.0);
+        // columns: x0, x1, y0
+        let expected = [3.0, 0.0, 2.0, 0.0, 0.5_f64.cos(), 6.0];
+        for (got, want) in j.iter().zip(expected) {
+            assert_relative_eq!(*got, want, epsilon = 1e-15);
+        }
+        assert!(!r.is_affine());
+        assert_eq!(r.name(), "mixed");
+        assert!(r.as_any().downcast_ref::<Mixed>().is_some());
+    }
+
+    #[test]
+    fn wrong_output_length_is_an_error() {
+        let r: Box<dyn DynResidual> = Box::new(Mixed);
+        let x = [&[1.0, 2.0][..], &[3.0][..]];
+        let mut g = [0.0; 3];
+        assert_eq!(
+            r.values(&x, &mut g),
+            Err(Error::Dimension {
+                what: "residual output",
+                expected: 2,
+                found: 3
+            })
+        );
+    }
+}

@@ -1,0 +1,250 @@
+//! The linear solve: analysis → minimum-norm step → re-evaluation → write-back on success.
+
+use std::time::Instant;
+
+use crate::analysis::{self, DofAnalysis};
+use crate::errors::{Error, Result};
+use crate::min_norm::MinNormFactorization;
+use crate::problem::Problem;
+use crate::report::{per_constraint, SolveReport, SolverKind, Status};
+
+/// Rounds of iterative refinement after the minimum-norm step (see
+/// [`MinNormFactorization::solve_refined`]).
+const REFINEMENT_STEPS: usize = 3;
+
+/// Tolerances and thresholds of a solve.
+///
+/// ```
+/// let o = camber_solve::Options::default().with_tolerance(1e-9).with_drop_redundant(false);
+/// assert!((o.tolerance - 1e-9).abs() < 1e-24 && !o.drop_redundant);
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub struct Options {
+    /// A constraint is satisfied when every row has |g| ≤ tolerance (absolute).
+    pub tolerance: f64,
+    /// Relative tolerance of the rank decisions (times σ_max of J).
+    pub rank_tolerance: f64,
+    /// Up to this many reduced unknowns the dense backend is used, above it the sparse one.
+    pub dense_max_unknowns: usize,
+    /// The dense rank analysis runs when rows × reduced unknowns is at most this; above it full
+    /// row rank is inferred from a successful sparse Cholesky and dependent rows are not named.
+    pub dense_analysis_max_entries: usize,
+    /// Whether consistent dependent rows may be dropped (otherwise [`Error::Redundant`]).
+    pub drop_redundant: bool,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Self {
+            tolerance: 1e-10,
+            rank_tolerance: 1e-10,
+            dense_max_unknowns: 200,
+            dense_analysis_max_entries: 1 << 22,
+            drop_redundant: true,
+        }
+    }
+}
+
+impl Options {
+    /// Sets [`Options::tolerance`].
+    pub fn with_tolerance(mut self, tolerance: f64) -> Self {
+        self.tolerance = tolerance;
+        self
+    }
+
+    /// Sets [`Options::rank_tolerance`].
+    pub fn with_rank_tolerance(mut self, rank_tolerance: f64) -> Self {
+        self.rank_tolerance = rank_tolerance;
+        self
+    }
+
+    /// Sets [`Options::dense_max_unknowns`].
+    pub fn with_dense_max_unknowns(mut self, n: usize) -> Self {
+        self.dense_max_unknowns = n;
+        self
+    }
+
+    /// Sets [`Options::dense_analysis_max_entries`].
+    pub fn with_dense_analysis_max_entries(mut self, n: usize) -> Self {
+        self.dense_analysis_max_entries = n;
+        self
+    }
+
+    /// Sets [`Options::drop_redundant`].
+    pub fn with_drop_redundant(mut self, drop: bool) -> Self {
+        self.drop_redundant = drop;
+        self
+    }
+
+    fn validate(&self) -> Result<()> {
+        for (index, v) in [self.tolerance, self.rank_tolerance]
+            .into_iter()
+            .enumerate()
+        {
+            if !(v.is_finite() && v > 0.0) {
+                return Err(Error::NonFinite {
+                    what: "tolerance",
+                    index,
+                    value: v,
+                });
+            }
+        }
+        Ok(())
+    }
+}
+
+/// # Analysis
+impl Problem {
+    /// The DOF analysis at the current values (dense; see [`crate::analysis`]).
+    ///
+    /// # Errors
+    /// Those of [`Problem::linearize`].
+    pub fn analyze(&self, options: &Options) -> Result<DofAnalysis> {
+        options.validate()?;
+        let lin = self.linearize()?;
+        analysis::analyze(&lin, options.rank_tolerance, options.tolerance)
+    }
+}
+
+/// Solves a problem whose residuals are all affine by one weighted minimum-norm step over the
+/// reduced unknowns: Δz = −W⁻¹·Jᵀ·(J·W⁻¹·Jᵀ)⁻¹·g (see [`crate::min_norm`]), after a DOF analysis
+/// that drops consistent dependent rows (if allowed) and refuses conflicting ones. The
+/// residuals are re-evaluated at the result, which is written back only if every constraint is
+/// within `options.tolerance` and every bound holds.
+///
+/// ```
+/// use camber_solve::{ConstraintId, Options, Problem, Residual, Scalar, solve_linear, Status};
+/// /// x = 3 on the first unknown of a block.
+/// #[derive(Debug)]
+/// struct XIs3;
+/// impl Residual for XIs3 {
+///     fn name(&self) -> &str { "x is 3" }
+///     fn dim(&self) -> usize { 1 }
+///     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+///         out[0] = x[0][0] - camber_solve::scalar::cst(3.0);
+///     }
+///     fn is_affine(&self) -> bool { true }
+/// }
+/// let mut p = Problem::new();
+/// let b = p.add_block(&[0.0, 5.0])?;
+/// p.add_residual(XIs3, &[b], ConstraintId(9))?;
+/// let r = solve_linear(&mut p, &Options::default())?;
+/// assert_eq!(r.status, Status::Solved);
+/// assert!((p.values()[0] - 3.0).abs() < 1e-12 && (p.values()[1] - 5.0).abs() < 1e-15);
+/// # Ok::<(), camber_solve::Error>(())
+/// ```
+///
+/// # Errors
+/// [`Error::NonlinearNotAvailable`] for a residual that is not affine; [`Error::Conflicting`],
+/// [`Error::Redundant`], [`Error::RankDeficient`] from the analysis and factorization;
+/// [`Error::NotSatisfied`] and [`Error::OutOfBounds`] after the step; the problem's values are
+/// unchanged in every case.
+pub fn solve_linear(problem: &mut Problem, options: &Options) -> Result<SolveReport> {
+    let start = Instant::now();
+    options.validate()?;
+    if let Some(rb) = problem.residuals.iter().find(|rb| !rb.residual.is_affine()) {
+        return Err(Error::NonlinearNotAvailable {
+            constraint: rb.owner,
+            name: rb.residual.name().to_owned(),
+        });
+    }
+    let lin = problem.linearize()?;
+    let (m, n) = (lin.g.len(), lin.map.len());
+
+    let (rank, dof, redundant, rows) = if m.saturating_mul(n) <= options.dense_analysis_max_entries
+    {
+        let a = analysis::analyze(&lin, options.rank_tolerance, options.tolerance)?;
+        if !a.conflicting.is_empty() {
+            return Err(Error::Conflicting {
+                constraints: a.conflicting,
+            });
+        }
+        if !a.redundant.is_empty() && !options.drop_redundant {
+            return Err(Error::Redundant {
+                constraints: a.redundant,
+            });
+        }
+        (a.rank, a.dof, a.redundant, a.rows.independent)
+    } else {
+        (m.min(n), n.saturating_sub(m), Vec::new(), (0..m).collect())
+    };
+
+    let satisfied = lin.g.iter().all(|v| v.abs() <= options.tolerance);
+    let substitution_pending = lin
+        .x
+        .iter()
+        .zip(problem.values())
+        .any(|(a, b)| (a - b).abs() > 0.0);
+    if satisfied && !substitution_pending {
+        return Ok(SolveReport {
+            status: Status::AlreadySatisfied,
+            solver: SolverKind::None,
+            reason: "every residual is already within tolerance".to_owned(),
+            iterations: 0,
+            residuals: per_constraint(&lin.row_owner, &lin.g),
+            displacement_norm: 0.0,
+            rank,
+            dof,
+            redundant,
+            conflicting: Vec::new(),
+            elapsed: start.elapsed(),
+        });
+    }
+
+    let mut dz = vec![0.0; n];
+    let dense = n <= options.dense_max_unknowns;
+    if !rows.is_empty() {
+        let j = lin.jacobian.select_rows(&rows);
+        let g: Vec<f64> = rows.iter().map(|i| lin.g[*i]).collect();
+        let mut f = if dense {
+            MinNormFactorization::try_dense(&j, lin.map.weights())?
+        } else {
+            MinNormFactorization::try_sparse(&j, lin.map.weights())?
+        };
+        f.solve_refined(&g, &mut dz, REFINEMENT_STEPS, 0.01 * options.tolerance)?;
+    }
+    let z: Vec<f64> = lin.map.z0().iter().zip(&dz).map(|(a, b)| a + b).collect();
+    let mut x = vec![0.0; problem.num_unknowns()];
+    lin.map.expand(&z, &mut x)?;
+    let mut g = vec![0.0; m];
+    problem.evaluate_at(&x, &mut g)?;
+    let residuals = per_constraint(&lin.row_owner, &g);
+    let failed: Vec<_> = residuals
+        .iter()
+        .filter(|r| r.max_abs > options.tolerance || r.max_abs.is_nan())
+        .map(|r| (r.constraint, r.max_abs))
+        .collect();
+    if !failed.is_empty() {
+        return Err(Error::NotSatisfied { failed });
+    }
+    problem.apply_reduced(&lin.map, &z)?;
+
+    let (solver, backend) = if dense {
+        (SolverKind::DenseMinNorm, "dense")
+    } else {
+        (SolverKind::SparseMinNorm, "sparse")
+    };
+    let dropped = if redundant.is_empty() {
+        ""
+    } else {
+        ", consistent redundant rows dropped"
+    };
+    Ok(SolveReport {
+        status: Status::Solved,
+        solver,
+        reason: format!(
+            "all residuals affine and full row rank{dropped}; {n} reduced unknowns → {backend} \
+             (threshold {})",
+            options.dense_max_unknowns
+        ),
+        iterations: 1,
+        residuals,
+        displacement_norm: dz.iter().map(|v| v * v).sum::<f64>().sqrt(),
+        rank,
+        dof,
+        redundant,
+        conflicting: Vec::new(),
+        elapsed: start.elapsed(),
+    })
+}

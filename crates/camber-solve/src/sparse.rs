@@ -1,0 +1,285 @@
+//! A small compressed-sparse-row matrix, the public form of assembled Jacobians.
+//!
+//! It is built from (row, column, value) triplets; duplicates are summed and explicit zeros kept
+//! out. Factorizations convert it to the backend they need (nalgebra dense or faer sparse), so no
+//! backend type appears in the public API.
+
+use nalgebra::DMatrix;
+
+use crate::errors::{Error, Result};
+
+/// A sparse matrix in compressed-sparse-row form: the entries of row i are
+/// `col_idx[row_ptr[i]..row_ptr[i+1]]` (strictly increasing) with `values` alongside.
+///
+/// ```
+/// use camber_solve::SparseMatrix;
+/// let a = SparseMatrix::try_from_triplets(2, 3, &[(0, 2, 1.0), (1, 0, 2.0), (0, 2, 0.5)])?;
+/// assert_eq!(a.nnz(), 2);
+/// assert!((a.get(0, 2) - 1.5).abs() < 1e-15);
+/// let mut y = [0.0; 2];
+/// a.mul_vec(&[1.0, 1.0, 2.0], &mut y)?;
+/// assert!((y[0] - 3.0).abs() < 1e-15 && (y[1] - 2.0).abs() < 1e-15);
+/// # Ok::<(), camber_solve::Error>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct SparseMatrix {
+    nrows: usize,
+    ncols: usize,
+    row_ptr: Vec<usize>,
+    col_idx: Vec<usize>,
+    values: Vec<f64>,
+}
+
+/// # Construction
+impl SparseMatrix {
+    /// Builds an `nrows × ncols` matrix from triplets (row, column, value); duplicate positions
+    /// are summed and entries that sum to exactly zero are dropped.
+    ///
+    /// # Errors
+    /// [`Error::UnknownUnknown`] for an index out of range, [`Error::NonFinite`] for a NaN or
+    /// infinite value.
+    pub fn try_from_triplets(
+        nrows: usize,
+        ncols: usize,
+        triplets: &[(usize, usize, f64)],
+    ) -> Result<Self> {
+        let mut counts = vec![0_usize; nrows + 1];
+        for (k, &(r, c, v)) in triplets.iter().enumerate() {
+            if r >= nrows {
+                return Err(Error::UnknownUnknown {
+                    index: r,
+                    len: nrows,
+                });
+            }
+            if c >= ncols {
+                return Err(Error::UnknownUnknown {
+                    index: c,
+                    len: ncols,
+                });
+            }
+            if !v.is_finite() {
+                return Err(Error::NonFinite {
+                    what: "matrix entry",
+                    index: k,
+                    value: v,
+                });
+            }
+            counts[r + 1] += 1;
+        }
+        for i in 0..nrows {
+            counts[i + 1] += counts[i];
+        }
+        // Bucket by row, then sort and merge each row.
+        let mut next = counts.clone();
+        let mut cols = vec![0_usize; triplets.len()];
+        let mut vals = vec![0.0; triplets.len()];
+        for &(r, c, v) in triplets {
+            let slot = next[r];
+            cols[slot] = c;
+            vals[slot] = v;
+            next[r] += 1;
+        }
+        let mut row_ptr = Vec::with_capacity(nrows + 1);
+        let mut col_idx = Vec::with_capacity(triplets.len());
+        let mut values = Vec::with_capacity(triplets.len());
+        row_ptr.push(0);
+        let mut pairs: Vec<(usize, f64)> = Vec::new();
+        for i in 0..nrows {
+            pairs.clear();
+            pairs.extend(
+                cols[counts[i]..counts[i + 1]]
+                    .iter()
+                    .copied()
+                    .zip(vals[counts[i]..counts[i + 1]].iter().copied()),
+            );
+            pairs.sort_unstable_by_key(|p| p.0);
+            let mut k = 0;
+            while k < pairs.len() {
+                let c = pairs[k].0;
+                let mut sum = 0.0;
+                while k < pairs.len() && pairs[k].0 == c {
+                    sum += pairs[k].1;
+                    k += 1;
+                }
+                if sum != 0.0 {
+                    col_idx.push(c);
+                    values.push(sum);
+                }
+            }
+            row_ptr.push(col_idx.len());
+        }
+        Ok(Self {
+            nrows,
+            ncols,
+            row_ptr,
+            col_idx,
+            values,
+        })
+    }
+
+    /// The sparse form of a dense matrix (exact zeros dropped).
+    pub fn from_dense(m: &DMatrix<f64>) -> Self {
+        let mut row_ptr = vec![0];
+        let mut col_idx = Vec::new();
+        let mut values = Vec::new();
+        for i in 0..m.nrows() {
+            for (j, v) in m.row(i).iter().enumerate() {
+                if *v != 0.0 {
+                    col_idx.push(j);
+                    values.push(*v);
+                }
+            }
+            row_ptr.push(col_idx.len());
+        }
+        Self {
+            nrows: m.nrows(),
+            ncols: m.ncols(),
+            row_ptr,
+            col_idx,
+            values,
+        }
+    }
+}
+
+impl SparseMatrix {
+    /// Number of rows.
+    pub fn nrows(&self) -> usize {
+        self.nrows
+    }
+
+    /// Number of columns.
+    pub fn ncols(&self) -> usize {
+        self.ncols
+    }
+
+    /// Number of stored (nonzero) entries.
+    pub fn nnz(&self) -> usize {
+        self.values.len()
+    }
+
+    /// The column indices and values of row `i` (empty slices for a row out of range).
+    pub fn row(&self, i: usize) -> (&[usize], &[f64]) {
+        match (self.row_ptr.get(i), self.row_ptr.get(i + 1)) {
+            (Some(&a), Some(&b)) => (&self.col_idx[a..b], &self.values[a..b]),
+            _ => (&[], &[]),
+        }
+    }
+
+    /// Entry (i, j), zero when not stored or out of range.
+    pub fn get(&self, i: usize, j: usize) -> f64 {
+        let (cols, vals) = self.row(i);
+        cols.binary_search(&j).map_or(0.0, |k| vals[k])
+    }
+
+    /// y = A·x.
+    ///
+    /// # Errors
+    /// [`Error::Dimension`] when `x` or `y` has the wrong length.
+    pub fn mul_vec(&self, x: &[f64], y: &mut [f64]) -> Result<()> {
+        check_len("vector x", self.ncols, x.len())?;
+        check_len("vector y", self.nrows, y.len())?;
+        for (i, yi) in y.iter_mut().enumerate() {
+            let (cols, vals) = self.row(i);
+            *yi = cols.iter().zip(vals).map(|(c, v)| v * x[*c]).sum();
+        }
+        Ok(())
+    }
+
+    /// The dense copy (for small matrices, analysis and tests).
+    pub fn to_dense(&self) -> DMatrix<f64> {
+        let mut m = DMatrix::zeros(self.nrows, self.ncols);
+        for i in 0..self.nrows {
+            let (cols, vals) = self.row(i);
+            for (c, v) in cols.iter().zip(vals) {
+                m[(i, *c)] = *v;
+            }
+        }
+        m
+    }
+
+    /// The rows listed in `rows`, in that order, as a new matrix (same columns).
+    pub fn select_rows(&self, rows: &[usize]) -> Self {
+        let mut row_ptr = vec![0];
+        let mut col_idx = Vec::new();
+        let mut values = Vec::new();
+        for &i in rows {
+            let (cols, vals) = self.row(i);
+            col_idx.extend_from_slice(cols);
+            values.extend_from_slice(vals);
+            row_ptr.push(col_idx.len());
+        }
+        Self {
+            nrows: rows.len(),
+            ncols: self.ncols,
+            row_ptr,
+            col_idx,
+            values,
+        }
+    }
+}
+
+/// Checks that a slice has the expected length.
+pub(crate) fn check_len(what: &'static str, expected: usize, found: usize) -> Result<()> {
+    if expected == found {
+        Ok(())
+    } else {
+        Err(Error::Dimension {
+            what,
+            expected,
+            found,
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+
+    #[test]
+    fn triplets_sum_and_sort() {
+        let a = SparseMatrix::try_from_triplets(
+            3,
+            3,
+            &[
+                (2, 1, 1.0),
+                (0, 2, 2.0),
+                (0, 0, 3.0),
+                (2, 1, -1.0),
+                (1, 1, 4.0),
+                (0, 2, 1.0),
+            ],
+        )
+        .unwrap();
+        assert_eq!(a.nnz(), 3); // (2,1) cancels
+        assert_eq!(a.row(0), (&[0, 2][..], &[3.0, 3.0][..]));
+        let d = a.to_dense();
+        assert_relative_eq!(d[(1, 1)], 4.0);
+        assert_eq!(SparseMatrix::from_dense(&d), a);
+        assert_eq!(
+            a.select_rows(&[1]).to_dense()[(0, 1)].to_bits(),
+            4.0_f64.to_bits()
+        );
+    }
+
+    #[test]
+    fn bad_triplets_are_errors() {
+        assert_eq!(
+            SparseMatrix::try_from_triplets(2, 2, &[(2, 0, 1.0)]),
+            Err(Error::UnknownUnknown { index: 2, len: 2 })
+        );
+        assert!(matches!(
+            SparseMatrix::try_from_triplets(2, 2, &[(0, 0, f64::INFINITY)]),
+            Err(Error::NonFinite { index: 0, .. })
+        ));
+        let a = SparseMatrix::try_from_triplets(2, 2, &[]).unwrap();
+        assert_eq!(
+            a.mul_vec(&[0.0], &mut [0.0; 2]),
+            Err(Error::Dimension {
+                what: "vector x",
+                expected: 2,
+                found: 1
+            })
+        );
+    }
+}
