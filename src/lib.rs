@@ -3,6 +3,9 @@
 //! This facade re-exports the library crates:
 //! - [`geom`] (camber-geom): Bézier, B-spline, NURBS and Hermite curves, primitives and queries,
 //!   generic over the scalar type so dual numbers give exact derivatives.
+//! - [`solve`] (camber-solve): problems over parameter blocks, residuals written once
+//!   generically with exact Jacobians by automatic differentiation, the minimum-norm solve and
+//!   the DOF analysis.
 //!
 //! ```
 //! use camber::geom::{BezierCurve2, ParametricCurve};
@@ -13,3 +16,4 @@
 //! ```
 
 pub use camber_geom as geom;
+pub use camber_solve as solve;
