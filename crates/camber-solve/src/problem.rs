@@ -226,7 +226,7 @@ impl Problem {
         self.substitute(target, &[(Var::Unknown(source), 1.0)], 0.0)
     }
 
-    /// The tangency elimination x_target[k] = x_base[k] + t·direction[k] for every k, with t a
+    /// The tangency elimination x_target,k = x_base,k + t·direction_k for every k, with t a
     /// new auxiliary unknown starting at `t0` (returned). The targets stop being unknowns of
     /// their own; the bases must not be substituted themselves (free or fixed).
     ///
