@@ -26,6 +26,12 @@ impl<T: Scalar> KnotVector<T> {
     /// (length p + 1), computed by the triangular Cox–de Boor recurrence. They are non-negative
     /// and sum to one inside the domain.
     ///
+    /// # Panics
+    /// When `span` is not a span of this knot vector for `degree` (p ≤ span < len − p − 1, as
+    /// [`find_span`](Self::find_span) returns for a vector that passed
+    /// [`check_for`](Self::check_for)) or `out` has fewer than p + 1 entries: these are
+    /// programming errors, not bad input; the curve types never call it otherwise.
+    ///
     /// ```
     /// use camber_geom::KnotVector;
     /// let k = KnotVector::try_new(vec![0., 0., 0., 1., 2., 3., 4., 4., 5., 5., 5.]).unwrap();
@@ -56,6 +62,10 @@ impl<T: Scalar> KnotVector<T> {
     /// The non-zero basis functions and their derivatives up to order `n_derivs` at u:
     /// `out[k * (p + 1) + j]` = dᵏ/duᵏ N_{span−p+j,p}(u), for k = 0 … n_derivs (`out` has
     /// (n_derivs + 1)(p + 1) entries). Derivatives above the degree are zero.
+    ///
+    /// # Panics
+    /// Under the same conditions as [`basis_functions`](Self::basis_functions), or when `out`
+    /// is shorter than (n_derivs + 1)(p + 1).
     ///
     /// ```
     /// use camber_geom::KnotVector;

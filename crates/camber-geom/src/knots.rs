@@ -198,10 +198,16 @@ impl<T: Scalar> KnotVector<T> {
 
     /// The valid parametric domain [u_p, u_{m−p}] for `degree` p.
     ///
-    /// The knot vector must hold at least 2p + 2 knots (as it does after
-    /// [`check_for`](Self::check_for)).
+    /// Meaningful once [`check_for`](Self::check_for) has passed (at least 2p + 2 knots); on a
+    /// shorter vector it returns the whole knot range [u₀, u_m] rather than panicking.
     pub fn domain(&self, degree: usize) -> (T, T) {
-        let m = self.knots.len() - 1;
+        let m = self.knots.len().saturating_sub(1);
+        if self.knots.is_empty() {
+            return (T::zero(), T::zero());
+        }
+        if 2 * degree > m {
+            return (self.knots[0], self.knots[m]);
+        }
         (self.knots[degree], self.knots[m - degree])
     }
 
@@ -210,8 +216,16 @@ impl<T: Scalar> KnotVector<T> {
     /// u (The NURBS Book A2.1). At the end of the domain, u = u_{n+1}, it returns the last
     /// non-empty span. Values outside the domain are clamped to its first or last span; callers
     /// check the domain first. Comparisons use real parts only.
+    ///
+    /// On a vector too short for `degree` (fewer than p + 2 knots) it returns `degree`; callers
+    /// validate with [`check_for`](Self::check_for) first.
     pub fn find_span(&self, degree: usize, u: T) -> usize {
-        let n = self.knots.len() - degree - 2;
+        let Some(n) = self.knots.len().checked_sub(degree + 2) else {
+            return degree;
+        };
+        if n < degree {
+            return degree;
+        }
         // Last index whose knot is <= u, over the knots that can start a span.
         let count = self.knots[..=n + 1].partition_point(|&k| k <= u);
         let mut span = count.saturating_sub(1).clamp(degree, n);
@@ -316,6 +330,17 @@ mod tests {
         assert!(matches!(
             flat.check_for(1, 2),
             Err(Error::EmptyDomain { .. })
+        ));
+    }
+
+    #[test]
+    fn short_vectors_do_not_panic() {
+        let k = KnotVector::try_new(vec![0.0, 1.0]).unwrap();
+        assert_eq!(k.find_span(3, 0.5), 3);
+        assert_eq!(k.domain(3), (0.0, 1.0));
+        assert!(matches!(
+            k.check_for(3, 1),
+            Err(Error::TooFewControlPoints { .. })
         ));
     }
 
