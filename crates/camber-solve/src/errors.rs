@@ -168,6 +168,33 @@ pub enum Error {
         /// The central-difference value.
         central: f64,
     },
+    /// The solver asked for was not built into this crate (a cargo feature is off).
+    #[error("{solver} is not available: {reason}")]
+    SolverUnavailable {
+        /// The solver ("SLSQP").
+        solver: &'static str,
+        /// Why ("built without the `nlopt` feature").
+        reason: &'static str,
+    },
+    /// An iterative solver stopped before the residuals came within tolerance; nothing was
+    /// written back.
+    #[error("{solver} did not converge in {iterations} iterations (max |g| = {max_residual})")]
+    NotConverged {
+        /// The solver ("Newton", "Levenberg–Marquardt").
+        solver: &'static str,
+        /// Iterations run.
+        iterations: usize,
+        /// The largest absolute residual reached.
+        max_residual: f64,
+    },
+    /// An external optimizer reported a failure; nothing was written back.
+    #[error("{solver} failed: {detail}")]
+    OptimizerFailed {
+        /// The solver ("SLSQP").
+        solver: &'static str,
+        /// What the optimizer said.
+        detail: String,
+    },
 }
 
 /// Result with camber-solve's [`Error`].

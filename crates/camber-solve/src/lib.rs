@@ -71,3 +71,15 @@ pub use residual::{DynResidual, Residual};
 pub use scalar::Scalar;
 pub use solve::{solve_linear, Options};
 pub use sparse::SparseMatrix;
+pub(crate) mod evaluator;
+pub mod newton;
+pub mod nonlinear;
+pub mod objective;
+pub mod select;
+#[cfg(feature = "nlopt")]
+pub(crate) mod slsqp;
+pub(crate) mod soft;
+pub use newton::NewtonWorkspace;
+pub use nonlinear::{NonlinearOptions, SolverChoice};
+pub use objective::{Objective, UserObjective};
+pub use select::{solve, solve_newton, solve_newton_from};

@@ -13,6 +13,9 @@ pub enum Status {
     /// Every residual was already within tolerance and no substitution had to be imposed;
     /// nothing was moved.
     AlreadySatisfied,
+    /// Soft mode: the constraints could not all be met; the least-squares compromise was
+    /// written back and [`SolveReport::conflicting`] lists the constraints left above tolerance.
+    Relaxed,
 }
 
 /// Which solver produced the result.
@@ -24,6 +27,13 @@ pub enum SolverKind {
     DenseMinNorm,
     /// Linear minimum-norm step, sparse Cholesky of J·W⁻¹·Jᵀ.
     SparseMinNorm,
+    /// Newton minimum-norm iterations with the pull-back toward the start.
+    Newton,
+    /// SLSQP (NLopt) minimising the objective subject to every residual = 0.
+    Slsqp,
+    /// Levenberg–Marquardt on Σ g_i² + ε‖z − z₀‖²_W (the soft mode, or a rescue before a
+    /// Newton polish).
+    LevenbergMarquardt,
 }
 
 /// The largest absolute residual of one constraint (over all rows it owns).

@@ -32,6 +32,8 @@ pub struct Options {
     pub dense_analysis_max_entries: usize,
     /// Whether consistent dependent rows may be dropped (otherwise [`Error::Redundant`]).
     pub drop_redundant: bool,
+    /// Settings of the nonlinear solvers and of the selection ([`crate::solve`]).
+    pub nonlinear: crate::nonlinear::NonlinearOptions,
 }
 
 impl Default for Options {
@@ -42,6 +44,7 @@ impl Default for Options {
             dense_max_unknowns: 200,
             dense_analysis_max_entries: 1 << 22,
             drop_redundant: true,
+            nonlinear: crate::nonlinear::NonlinearOptions::default(),
         }
     }
 }
@@ -77,7 +80,7 @@ impl Options {
         self
     }
 
-    fn validate(&self) -> Result<()> {
+    pub(crate) fn validate(&self) -> Result<()> {
         for (index, v) in [self.tolerance, self.rank_tolerance]
             .into_iter()
             .enumerate()

@@ -1,0 +1,163 @@
+//! Residuals and Jacobians over the reduced unknowns z at any point, not only at the start.
+//!
+//! The nonlinear solvers evaluate g(x(z)) and J_z = J_x·A many times at moving z. An
+//! [`Evaluator`] holds the reduced map x = A·z + c, the bounds that apply directly to each
+//! reduced unknown, and reusable scratch (the expanded x, the per-block dense Jacobian, the
+//! triplet list), so repeated evaluations allocate little.
+
+use crate::errors::Result;
+use crate::ids::{ConstraintId, Var};
+use crate::problem::{check_residual, Problem};
+use crate::reduced::ReducedMap;
+use crate::report::{per_constraint, ConstraintResidual};
+use crate::sparse::{check_len, SparseMatrix};
+
+/// Evaluation of a problem's residuals over z, with scratch kept between calls.
+#[derive(Debug, Clone)]
+pub(crate) struct Evaluator {
+    /// The map x = A·z + c the evaluations run over.
+    pub(crate) map: ReducedMap,
+    /// Lower bound of every reduced unknown (from the free unknown or auxiliary it stands for).
+    pub(crate) lower: Vec<f64>,
+    /// Upper bound of every reduced unknown.
+    pub(crate) upper: Vec<f64>,
+    /// The owner of every residual row.
+    pub(crate) row_owner: Vec<ConstraintId>,
+    x: Vec<f64>,
+    jac: Vec<f64>,
+    triplets: Vec<(usize, usize, f64)>,
+}
+
+impl Evaluator {
+    /// Builds the map of `problem` and the bounds of its reduced unknowns.
+    pub(crate) fn new(problem: &Problem) -> Result<Self> {
+        let map = problem.reduced_map()?;
+        let (mut lower, mut upper) = (Vec::with_capacity(map.len()), Vec::with_capacity(map.len()));
+        for var in map.vars() {
+            let (lo, hi) = match var {
+                Var::Unknown(u) => problem.bounds.get(u.0).copied(),
+                Var::Aux(a) => problem.aux_bounds.get(a.0).copied(),
+            }
+            .unwrap_or((f64::NEG_INFINITY, f64::INFINITY));
+            lower.push(lo);
+            upper.push(hi);
+        }
+        let mut row_owner = Vec::with_capacity(problem.num_rows());
+        for rb in &problem.residuals {
+            row_owner.extend(std::iter::repeat_n(rb.owner, rb.residual.dim()));
+        }
+        Ok(Self {
+            x: vec![0.0; problem.num_unknowns()],
+            map,
+            lower,
+            upper,
+            row_owner,
+            jac: Vec::new(),
+            triplets: Vec::new(),
+        })
+    }
+
+    /// Number of reduced unknowns n.
+    pub(crate) fn cols(&self) -> usize {
+        self.map.len()
+    }
+
+    /// Number of residual rows m.
+    pub(crate) fn rows(&self) -> usize {
+        self.row_owner.len()
+    }
+
+    /// Moves `z` into the bounds of the reduced unknowns (component-wise projection).
+    pub(crate) fn clamp(&self, z: &mut [f64]) {
+        for ((zk, lo), hi) in z.iter_mut().zip(&self.lower).zip(&self.upper) {
+            *zk = zk.max(*lo).min(*hi);
+        }
+    }
+
+    /// g(x(z)) into `g` (m entries).
+    pub(crate) fn residuals(&mut self, problem: &Problem, z: &[f64], g: &mut [f64]) -> Result<()> {
+        self.map.expand(z, &mut self.x)?;
+        problem.evaluate_at(&self.x, g)
+    }
+
+    /// g(x(z)) into `g` and the nonzero entries of J_z = J_x·A as triplets (row, column,
+    /// value), kept inside the evaluator ([`Evaluator::triplets`]).
+    pub(crate) fn linearize(&mut self, problem: &Problem, z: &[f64], g: &mut [f64]) -> Result<()> {
+        check_len("residual rows", self.rows(), g.len())?;
+        self.map.expand(z, &mut self.x)?;
+        self.triplets.clear();
+        let mut row0 = 0;
+        for rb in &problem.residuals {
+            let dim = rb.residual.dim();
+            let slices = problem.gather(&self.x, &rb.blocks);
+            let ncols: usize = slices.iter().map(|s| s.len()).sum();
+            self.jac.clear();
+            self.jac.resize(dim * ncols, 0.0);
+            let out = &mut g[row0..row0 + dim];
+            rb.residual.jacobian(&slices, out, &mut self.jac)?;
+            check_residual(rb, out)?;
+            let mut local = 0;
+            for b in &rb.blocks {
+                let (start, len) = problem.block_range(*b)?;
+                for u in start..start + len {
+                    let (terms, _) = self.map.row(u);
+                    for row in 0..dim {
+                        let d = self.jac[row * ncols + local];
+                        if d != 0.0 {
+                            for (col, a) in terms {
+                                self.triplets.push((row0 + row, *col, d * a));
+                            }
+                        }
+                    }
+                    local += 1;
+                }
+            }
+            row0 += dim;
+        }
+        Ok(())
+    }
+
+    /// The triplets of the last [`Evaluator::linearize`].
+    #[cfg_attr(not(feature = "nlopt"), allow(dead_code))] // used by SLSQP only
+    pub(crate) fn triplets(&self) -> &[(usize, usize, f64)] {
+        &self.triplets
+    }
+
+    /// J_z of the last [`Evaluator::linearize`] as a sparse matrix, leaving out the columns
+    /// whose `drop_column` entry is true (they become zero columns).
+    pub(crate) fn jacobian(&self, drop_column: &[bool]) -> Result<SparseMatrix> {
+        if drop_column.iter().any(|d| *d) {
+            let kept: Vec<_> = self
+                .triplets
+                .iter()
+                .filter(|(_, c, _)| !drop_column.get(*c).copied().unwrap_or(false))
+                .copied()
+                .collect();
+            SparseMatrix::try_from_triplets(self.rows(), self.cols(), &kept)
+        } else {
+            SparseMatrix::try_from_triplets(self.rows(), self.cols(), &self.triplets)
+        }
+    }
+
+    /// Residual per constraint for the rows `g`.
+    pub(crate) fn per_constraint(&self, g: &[f64]) -> Vec<ConstraintResidual> {
+        per_constraint(&self.row_owner, g)
+    }
+}
+
+/// max |v|, 0 for an empty slice (NaN propagates as NaN is never below the running maximum
+/// and is returned as infinity).
+pub(crate) fn max_abs(v: &[f64]) -> f64 {
+    v.iter().fold(0.0_f64, |m, x| {
+        if x.is_nan() {
+            f64::INFINITY
+        } else {
+            m.max(x.abs())
+        }
+    })
+}
+
+/// Euclidean norm.
+pub(crate) fn norm2(v: &[f64]) -> f64 {
+    v.iter().map(|x| x * x).sum::<f64>().sqrt()
+}

@@ -1,0 +1,505 @@
+//! The solve entry: DOF analysis, choice of the solver, validation and write-back.
+//!
+//! [`solve`] looks at the problem at its current values and picks a path:
+//! - all residuals affine: conflicting rows → [`Error::Conflicting`] (or the soft mode when
+//!   [`crate::nonlinear::NonlinearOptions::soft`] is set); otherwise the linear minimum-norm step
+//!   ([`crate::solve_linear`]);
+//! - nonlinear with J of full row rank at the start (or only consistent dependent rows, which
+//!   are left out): Newton minimum-norm ([`crate::newton`]); if it fails, SLSQP;
+//! - nonlinear and rank deficient at the start: SLSQP ([`crate::slsqp`], `nlopt` feature);
+//! - when those fail (or SLSQP is not built): Levenberg–Marquardt on the least-squares sum from
+//!   the start, then Newton from its answer with the pull-back toward the start;
+//! - when nothing meets every constraint: the soft compromise if asked, otherwise
+//!   [`Error::Conflicting`] naming the constraints left above tolerance at the least-squares
+//!   point.
+//!
+//! Every candidate is re-evaluated before anything is written: all residuals within
+//! `options.tolerance` and all bounds held, or the problem keeps its values. The report's
+//! `reason` tells which path ran and why.
+
+use std::time::Instant;
+
+use crate::analysis::{self, DofAnalysis};
+use crate::errors::{Error, Result};
+use crate::evaluator::{norm2, Evaluator};
+use crate::ids::ConstraintId;
+use crate::newton::{self, NewtonWorkspace};
+use crate::nonlinear::SolverChoice;
+use crate::problem::Problem;
+use crate::report::{ConstraintResidual, SolveReport, SolverKind, Status};
+use crate::soft;
+use crate::solve::{solve_linear, Options};
+
+/// What the analysis at the start says, carried into every report.
+#[derive(Debug, Clone)]
+struct Start {
+    clock: Instant,
+    z0: Vec<f64>,
+    rows: usize,
+    rank: usize,
+    dof: usize,
+    redundant: Vec<ConstraintId>,
+    /// Dependent and inconsistent rows of the linearization at the start.
+    conflicting: Vec<ConstraintId>,
+    /// Independent rows when only consistent dependent rows exist (and may be dropped).
+    independent: Option<Vec<usize>>,
+    affine: bool,
+    full_rank: bool,
+}
+
+impl Start {
+    fn new(problem: &Problem, options: &Options) -> Result<(Self, bool)> {
+        let clock = Instant::now();
+        options.validate()?;
+        options.nonlinear.validate()?;
+        let lin = problem.linearize()?;
+        let (m, n) = (lin.g.len(), lin.map.len());
+        let analysis: Option<DofAnalysis> =
+            if m.saturating_mul(n) <= options.dense_analysis_max_entries {
+                Some(analysis::analyze(
+                    &lin,
+                    options.rank_tolerance,
+                    options.tolerance,
+                )?)
+            } else {
+                None
+            };
+        let satisfied = lin.g.iter().all(|v| v.abs() <= options.tolerance);
+        let pending = lin
+            .x
+            .iter()
+            .zip(problem.values())
+            .any(|(a, b)| (a - b).abs() > 0.0);
+        let start = match analysis {
+            Some(a) => Self {
+                full_rank: a.rank == m,
+                independent: (a.conflicting.is_empty()
+                    && !a.redundant.is_empty()
+                    && options.drop_redundant)
+                    .then(|| a.rows.independent.clone()),
+                rank: a.rank,
+                dof: a.dof,
+                redundant: a.redundant,
+                conflicting: a.conflicting,
+                clock,
+                z0: lin.map.z0().to_vec(),
+                rows: m,
+                affine: lin.affine,
+            },
+            None => Self {
+                clock,
+                z0: lin.map.z0().to_vec(),
+                rows: m,
+                rank: m.min(n),
+                dof: n.saturating_sub(m),
+                redundant: Vec::new(),
+                conflicting: Vec::new(),
+                independent: None,
+                affine: lin.affine,
+                full_rank: true,
+            },
+        };
+        Ok((start, satisfied && !pending))
+    }
+
+    fn report(
+        &self,
+        solver: SolverKind,
+        reason: String,
+        iterations: usize,
+        residuals: Vec<ConstraintResidual>,
+        z: &[f64],
+    ) -> SolveReport {
+        let moved: Vec<f64> = z.iter().zip(&self.z0).map(|(a, b)| a - b).collect();
+        SolveReport {
+            status: Status::Solved,
+            solver,
+            reason,
+            iterations,
+            residuals,
+            displacement_norm: norm2(&moved),
+            rank: self.rank,
+            dof: self.dof,
+            redundant: self.redundant.clone(),
+            conflicting: Vec::new(),
+            elapsed: self.clock.elapsed(),
+        }
+    }
+
+    fn already_satisfied(&self, problem: &Problem) -> Result<SolveReport> {
+        let ev = Evaluator::new(problem)?;
+        let mut g = vec![0.0; ev.rows()];
+        problem.evaluate_at(problem.values(), &mut g)?;
+        let mut r = self.report(
+            SolverKind::None,
+            "every residual is already within tolerance".to_owned(),
+            0,
+            ev.per_constraint(&g),
+            &self.z0,
+        );
+        r.status = Status::AlreadySatisfied;
+        Ok(r)
+    }
+}
+
+/// Re-evaluates every residual at z and writes z back only if all are within tolerance and
+/// every bound holds.
+fn commit(
+    problem: &mut Problem,
+    ev: &mut Evaluator,
+    z: &[f64],
+    options: &Options,
+) -> Result<Vec<ConstraintResidual>> {
+    let mut g = vec![0.0; ev.rows()];
+    ev.residuals(problem, z, &mut g)?;
+    let residuals = ev.per_constraint(&g);
+    let failed: Vec<_> = residuals
+        .iter()
+        .filter(|r| r.max_abs > options.tolerance || r.max_abs.is_nan())
+        .map(|r| (r.constraint, r.max_abs))
+        .collect();
+    if !failed.is_empty() {
+        return Err(Error::NotSatisfied { failed });
+    }
+    problem.apply_reduced(&ev.map, z)?;
+    Ok(residuals)
+}
+
+/// Newton from `start` toward `reference`, validated and written back.
+fn newton_path(
+    problem: &mut Problem,
+    options: &Options,
+    ws: &mut NewtonWorkspace,
+    start: &[f64],
+    reference: &[f64],
+    rows: Option<&[usize]>,
+) -> Result<(usize, bool, Vec<ConstraintResidual>, Vec<f64>)> {
+    // The map's constants follow the fixed values, so it is rebuilt at every call.
+    let mut ev = Evaluator::new(problem)?;
+    let run = newton::run(problem, &mut ev, ws, start, reference, rows, options)?;
+    let residuals = commit(problem, &mut ev, &ws.z, options)?;
+    Ok((run.iterations, run.stationary, residuals, ws.z.clone()))
+}
+
+#[cfg(feature = "nlopt")]
+fn slsqp_path(
+    problem: &mut Problem,
+    options: &Options,
+    start: &[f64],
+    reference: &[f64],
+) -> Result<(crate::slsqp::SlsqpRun, Vec<ConstraintResidual>, Vec<f64>)> {
+    let mut ev = Evaluator::new(problem)?;
+    let (z, run) = crate::slsqp::run(problem, &mut ev, start, reference, options)?;
+    let residuals = commit(problem, &mut ev, &z, options).map_err(|e| match e {
+        Error::NotSatisfied { failed } if run.state.contains("Fail") => Error::OptimizerFailed {
+            solver: "SLSQP",
+            detail: format!("{} with constraints not satisfied: {failed:?}", run.state),
+        },
+        e => e,
+    })?;
+    Ok((run, residuals, z))
+}
+
+#[cfg(not(feature = "nlopt"))]
+fn slsqp_path(
+    _: &mut Problem,
+    _: &Options,
+    _: &[f64],
+    _: &[f64],
+) -> Result<(SlsqpInfo, Vec<ConstraintResidual>, Vec<f64>)> {
+    Err(Error::SolverUnavailable {
+        solver: "SLSQP",
+        reason: "camber-solve was built without the `nlopt` feature",
+    })
+}
+
+/// Stand-in for the SLSQP run record when the feature is off (never constructed).
+#[cfg(not(feature = "nlopt"))]
+#[derive(Debug)]
+struct SlsqpInfo {
+    evaluations: usize,
+    state: String,
+}
+
+/// Runs the soft least-squares mode and writes its answer back (bounds permitting).
+fn soft_path(
+    problem: &mut Problem,
+    options: &Options,
+    start: &Start,
+    why: &str,
+) -> Result<SolveReport> {
+    let mut ev = Evaluator::new(problem)?;
+    let (z, run) = soft::run(
+        problem,
+        &mut ev,
+        &start.z0,
+        &start.z0,
+        options.nonlinear.soft_epsilon,
+        options.nonlinear.max_iterations,
+    )?;
+    let mut g = vec![0.0; ev.rows()];
+    ev.residuals(problem, &z, &mut g)?;
+    let residuals = ev.per_constraint(&g);
+    let unsatisfied: Vec<ConstraintId> = residuals
+        .iter()
+        .filter(|r| r.max_abs > options.tolerance || r.max_abs.is_nan())
+        .map(|r| r.constraint)
+        .collect();
+    problem.apply_reduced(&ev.map, &z)?;
+    let mut report = start.report(
+        SolverKind::LevenbergMarquardt,
+        format!(
+            "{why}; soft mode: least squares Σg² + ε‖z − z₀‖²_W (ε = {}), cost {:.3e}",
+            options.nonlinear.soft_epsilon, run.cost
+        ),
+        run.iterations,
+        residuals,
+        &z,
+    );
+    if !unsatisfied.is_empty() {
+        report.status = Status::Relaxed;
+        report.conflicting = unsatisfied;
+    }
+    Ok(report)
+}
+
+/// Solves a problem by the path its DOF analysis selects (see the module documentation), or by
+/// the solver forced in [`crate::nonlinear::NonlinearOptions::force`].
+///
+/// ```
+/// use camber_solve::{solve, ConstraintId, Options, Problem, Residual, Scalar, SolverKind};
+/// use camber_solve::scalar::cst;
+///
+/// /// |p|² = 1: the point lies on the unit circle.
+/// #[derive(Debug)]
+/// struct OnUnitCircle;
+/// impl Residual for OnUnitCircle {
+///     fn name(&self) -> &str { "on unit circle" }
+///     fn dim(&self) -> usize { 1 }
+///     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+///         out[0] = x[0][0] * x[0][0] + x[0][1] * x[0][1] - cst(1.0);
+///     }
+/// }
+///
+/// let mut p = Problem::new();
+/// let b = p.add_block(&[3.0, 4.0])?;
+/// p.add_residual(OnUnitCircle, &[b], ConstraintId(1))?;
+/// let report = solve(&mut p, &Options::default())?;
+/// assert_eq!(report.solver, SolverKind::Newton);
+/// // The nearest point of the circle: (3, 4)/5.
+/// assert!((p.values()[0] - 0.6).abs() < 1e-10 && (p.values()[1] - 0.8).abs() < 1e-10);
+/// # Ok::<(), camber_solve::Error>(())
+/// ```
+///
+/// # Errors
+/// [`Error::Conflicting`] naming the constraints that cannot be met together (without soft
+/// mode); [`Error::SolverUnavailable`] when a forced solver is not built; the errors of the
+/// forced solver otherwise. The problem's values are unchanged on every error.
+pub fn solve(problem: &mut Problem, options: &Options) -> Result<SolveReport> {
+    let (start, satisfied) = Start::new(problem, options)?;
+    if satisfied {
+        return start.already_satisfied(problem);
+    }
+    if let Some(choice) = options.nonlinear.force {
+        return forced(problem, options, &start, choice);
+    }
+    if start.affine {
+        if !start.conflicting.is_empty() {
+            if options.nonlinear.soft {
+                return soft_path(problem, options, &start, "affine and conflicting");
+            }
+            return Err(Error::Conflicting {
+                constraints: start.conflicting.clone(),
+            });
+        }
+        let mut report = solve_linear(problem, options)?;
+        report.reason = format!("selection: affine → linear minimum norm; {}", report.reason);
+        return Ok(report);
+    }
+
+    let mut notes: Vec<String> = Vec::new();
+    let mut ws = NewtonWorkspace::new();
+    if start.full_rank || start.independent.is_some() {
+        let rows = start.independent.as_deref();
+        match newton_path(problem, options, &mut ws, &start.z0, &start.z0, rows) {
+            Ok((iterations, stationary, residuals, z)) => {
+                let reason =
+                    format!(
+                    "nonlinear, J of rank {} with {} rows at the start{} → Newton minimum norm{}",
+                    start.rank,
+                    start.rows,
+                    if rows.is_some() { " (consistent dependent rows left out)" } else { "" },
+                    if stationary { "" } else { " (pull-back not fully converged)" }
+                );
+                return Ok(start.report(SolverKind::Newton, reason, iterations, residuals, &z));
+            }
+            Err(e) => notes.push(format!("Newton failed ({e})")),
+        }
+    } else {
+        notes.push(format!(
+            "nonlinear, J rank deficient at the start (rank {} of {} rows)",
+            start.rank, start.rows
+        ));
+    }
+    match slsqp_path(problem, options, &start.z0, &start.z0) {
+        Ok((run, residuals, z)) => {
+            let reason = format!(
+                "{} → SLSQP ({}, {} evaluations)",
+                notes.join("; "),
+                run.state,
+                run.evaluations
+            );
+            return Ok(start.report(SolverKind::Slsqp, reason, run.evaluations, residuals, &z));
+        }
+        Err(e) => notes.push(format!("SLSQP failed ({e})")),
+    }
+
+    // Rescue: least squares from the start, then Newton from there toward the start.
+    let mut ev = Evaluator::new(problem)?;
+    let (z_lm, lm) = soft::run(
+        problem,
+        &mut ev,
+        &start.z0,
+        &start.z0,
+        options.nonlinear.soft_epsilon,
+        options.nonlinear.max_iterations,
+    )?;
+    if lm.max_residual <= options.tolerance.sqrt() {
+        if let Ok((iterations, _, residuals, z)) =
+            newton_path(problem, options, &mut ws, &z_lm, &start.z0, None)
+        {
+            let reason = format!(
+                "{} → Levenberg–Marquardt ({} iterations) then Newton minimum norm",
+                notes.join("; "),
+                lm.iterations
+            );
+            return Ok(start.report(
+                SolverKind::Newton,
+                reason,
+                lm.iterations + iterations,
+                residuals,
+                &z,
+            ));
+        }
+    }
+    if options.nonlinear.soft {
+        return soft_path(problem, options, &start, &notes.join("; "));
+    }
+    let mut g = vec![0.0; ev.rows()];
+    ev.residuals(problem, &z_lm, &mut g)?;
+    let mut named = start.conflicting.clone();
+    for r in ev.per_constraint(&g) {
+        if (r.max_abs > options.tolerance || r.max_abs.is_nan()) && !named.contains(&r.constraint) {
+            named.push(r.constraint);
+        }
+    }
+    Err(Error::Conflicting { constraints: named })
+}
+
+/// Runs the forced solver.
+fn forced(
+    problem: &mut Problem,
+    options: &Options,
+    start: &Start,
+    choice: SolverChoice,
+) -> Result<SolveReport> {
+    let why = format!("forced {choice:?}");
+    match choice {
+        SolverChoice::Linear => {
+            let mut report = solve_linear(problem, options)?;
+            report.reason = format!("{why}; {}", report.reason);
+            Ok(report)
+        }
+        SolverChoice::Newton => {
+            let mut ws = NewtonWorkspace::new();
+            let (iterations, _, residuals, z) =
+                newton_path(problem, options, &mut ws, &start.z0, &start.z0, None)?;
+            Ok(start.report(SolverKind::Newton, why, iterations, residuals, &z))
+        }
+        SolverChoice::Slsqp => {
+            let (run, residuals, z) = slsqp_path(problem, options, &start.z0, &start.z0)?;
+            let reason = format!("{why} ({}, {} evaluations)", run.state, run.evaluations);
+            Ok(start.report(SolverKind::Slsqp, reason, run.evaluations, residuals, &z))
+        }
+        SolverChoice::Soft => soft_path(problem, options, start, &why),
+    }
+}
+
+/// Newton minimum norm from the current values, with the pull-back toward them; validated
+/// and written back (see [`crate::newton`]).
+///
+/// # Errors
+/// [`Error::RankDeficient`], [`Error::NotConverged`], [`Error::NotSatisfied`],
+/// [`Error::OutOfBounds`]; the problem is unchanged on error.
+pub fn solve_newton(problem: &mut Problem, options: &Options) -> Result<SolveReport> {
+    let opts = options.clone().with_force(Some(SolverChoice::Newton));
+    solve(problem, &opts)
+}
+
+/// Warm-started Newton for drag sessions: iterates from `start` (e.g. the previous step's
+/// solution) with the pull-back toward `reference` (where the unknowns should stay if they
+/// can), both over the reduced unknowns in the order of [`crate::ReducedMap::vars`]; the
+/// workspace's buffers are reused from call to call. No analysis runs first. The result is
+/// validated and written back like every solve.
+///
+/// ```
+/// use camber_solve::{solve_newton_from, ConstraintId, NewtonWorkspace, Options, Problem};
+/// use camber_solve::{Residual, Scalar};
+/// #[derive(Debug)]
+/// struct OnUnitCircle;
+/// impl Residual for OnUnitCircle {
+///     fn name(&self) -> &str { "on unit circle" }
+///     fn dim(&self) -> usize { 1 }
+///     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+///         out[0] = x[0][0] * x[0][0] + x[0][1] * x[0][1] - T::one();
+///     }
+/// }
+/// let mut p = Problem::new();
+/// let b = p.add_block(&[1.0, 0.0])?;
+/// p.add_residual(OnUnitCircle, &[b], ConstraintId(1))?;
+/// let mut ws = NewtonWorkspace::new();
+/// // Drag toward (1, 1): start from the current solution, pull toward the mouse.
+/// solve_newton_from(&mut p, &Options::default(), &mut ws, &[1.0, 0.0], &[1.0, 1.0])?;
+/// let h = 0.5_f64.sqrt();
+/// assert!((p.values()[0] - h).abs() < 1e-9 && (p.values()[1] - h).abs() < 1e-9);
+/// # Ok::<(), camber_solve::Error>(())
+/// ```
+///
+/// # Errors
+/// [`Error::Dimension`] for slices of the wrong length, and those of [`solve_newton`].
+pub fn solve_newton_from(
+    problem: &mut Problem,
+    options: &Options,
+    workspace: &mut NewtonWorkspace,
+    start: &[f64],
+    reference: &[f64],
+) -> Result<SolveReport> {
+    let clock = Instant::now();
+    options.validate()?;
+    options.nonlinear.validate()?;
+    let z0 = problem.reduced_map()?.z0().to_vec();
+    let (iterations, stationary, residuals, z) =
+        newton_path(problem, options, workspace, start, reference, None)?;
+    let moved: Vec<f64> = z.iter().zip(&z0).map(|(a, b)| a - b).collect();
+    let n = z.len();
+    Ok(SolveReport {
+        status: Status::Solved,
+        solver: SolverKind::Newton,
+        reason: format!(
+            "warm-started Newton minimum norm{}",
+            if stationary {
+                ""
+            } else {
+                " (pull-back not fully converged)"
+            }
+        ),
+        iterations,
+        residuals,
+        displacement_norm: norm2(&moved),
+        rank: problem.num_rows().min(n),
+        dof: n.saturating_sub(problem.num_rows()),
+        redundant: Vec::new(),
+        conflicting: Vec::new(),
+        elapsed: clock.elapsed(),
+    })
+}

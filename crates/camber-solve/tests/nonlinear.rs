@@ -1,0 +1,410 @@
+//! The nonlinear solvers and the selection, on curve-free residuals written here.
+#![allow(clippy::unwrap_used)] // helpers outside #[test] fns unwrap like the tests do
+
+use approx::assert_abs_diff_eq;
+use camber_solve::scalar::cst;
+use camber_solve::{
+    solve, solve_newton_from, ConstraintId, Error, NewtonWorkspace, NonlinearOptions, Options,
+    Problem, Residual, Scalar, SolverChoice, SolverKind, Status, Var,
+};
+
+/// |p − c|² − r² for a point block p (c, r fixed).
+#[derive(Debug)]
+struct OnCircle {
+    c: [f64; 2],
+    r: f64,
+}
+
+impl Residual for OnCircle {
+    fn name(&self) -> &str {
+        "on circle"
+    }
+    fn dim(&self) -> usize {
+        1
+    }
+    fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+        let dx = x[0][0] - cst(self.c[0]);
+        let dy = x[0][1] - cst(self.c[1]);
+        out[0] = dx * dx + dy * dy - cst(self.r * self.r);
+    }
+}
+
+/// External tangency of a circle block (cx, cy, r) with a fixed circle:
+/// |c − c₁|² − (r + r₁)² = 0.
+#[derive(Debug)]
+struct TouchesCircle {
+    c: [f64; 2],
+    r: f64,
+}
+
+impl Residual for TouchesCircle {
+    fn name(&self) -> &str {
+        "touches circle"
+    }
+    fn dim(&self) -> usize {
+        1
+    }
+    fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+        let dx = x[0][0] - cst(self.c[0]);
+        let dy = x[0][1] - cst(self.c[1]);
+        let s = x[0][2] + cst(self.r);
+        out[0] = dx * dx + dy * dy - s * s;
+    }
+}
+
+/// x_k = value (affine).
+#[derive(Debug)]
+struct Coordinate {
+    k: usize,
+    value: f64,
+}
+
+impl Residual for Coordinate {
+    fn name(&self) -> &str {
+        "coordinate"
+    }
+    fn dim(&self) -> usize {
+        1
+    }
+    fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+        out[0] = x[0][self.k] - cst(self.value);
+    }
+    fn is_affine(&self) -> bool {
+        true
+    }
+}
+
+fn forced(choice: SolverChoice) -> Options {
+    Options::default().with_force(Some(choice))
+}
+
+/// Tightly converged SLSQP options.
+fn tight() -> Options {
+    Options::default().with_tolerance(1e-12).with_nonlinear(
+        NonlinearOptions::default()
+            .with_slsqp_xtol_rel(1e-15)
+            .with_slsqp_max_evaluations(5000),
+    )
+}
+
+fn circle_problem(start: [f64; 2]) -> Problem {
+    let mut p = Problem::new();
+    let b = p.add_block(&start).unwrap();
+    p.add_residual(
+        OnCircle {
+            c: [1.0, -2.0],
+            r: 2.0,
+        },
+        &[b],
+        ConstraintId(1),
+    )
+    .unwrap();
+    p
+}
+
+#[test]
+fn point_on_circle_goes_to_the_nearest_point() {
+    // From (4, 2): the nearest point is c + r·(p − c)/|p − c| = (1, −2) + 2·(3, 4)/5.
+    let expected = [1.0 + 1.2, -2.0 + 1.6];
+    let mut newton = circle_problem([4.0, 2.0]);
+    let r = solve(&mut newton, &Options::default()).unwrap();
+    assert_eq!(r.solver, SolverKind::Newton);
+    assert_eq!(r.status, Status::Solved);
+    assert_abs_diff_eq!(newton.values()[0], expected[0], epsilon = 1e-10);
+    assert_abs_diff_eq!(newton.values()[1], expected[1], epsilon = 1e-10);
+    assert_abs_diff_eq!(r.displacement_norm, 3.0, epsilon = 1e-10);
+    #[cfg(feature = "nlopt")]
+    {
+        let mut slsqp = circle_problem([4.0, 2.0]);
+        let r = solve(&mut slsqp, &tight().with_force(Some(SolverChoice::Slsqp))).unwrap();
+        assert_eq!(r.solver, SolverKind::Slsqp);
+        for k in 0..2 {
+            assert_abs_diff_eq!(slsqp.values()[k], newton.values()[k], epsilon = 1e-8);
+        }
+    }
+}
+
+/// A circle (cx, cy, r), all free, touching two fixed circles: two rows, three unknowns.
+fn two_tangencies(start: [f64; 3]) -> Problem {
+    let mut p = Problem::new();
+    let b = p.add_block(&start).unwrap();
+    p.add_residual(
+        TouchesCircle {
+            c: [0.0, 0.0],
+            r: 1.0,
+        },
+        &[b],
+        ConstraintId(10),
+    )
+    .unwrap();
+    p.add_residual(
+        TouchesCircle {
+            c: [4.0, 0.0],
+            r: 0.5,
+        },
+        &[b],
+        ConstraintId(11),
+    )
+    .unwrap();
+    p
+}
+
+#[test]
+fn under_determined_tangencies_give_the_minimum_norm_solution() {
+    let start = [1.7, 1.9, 0.8];
+    let mut newton = two_tangencies(start);
+    let r = solve(&mut newton, &Options::default()).unwrap();
+    assert_eq!(r.solver, SolverKind::Newton);
+    assert_eq!(r.dof, 1);
+    // The result is a solution…
+    let v = newton.values().to_vec();
+    let d0 = (v[0] * v[0] + v[1] * v[1]).sqrt();
+    let d1 = ((v[0] - 4.0).powi(2) + v[1] * v[1]).sqrt();
+    assert_abs_diff_eq!(d0, v[2] + 1.0, epsilon = 1e-10);
+    assert_abs_diff_eq!(d1, v[2] + 0.5, epsilon = 1e-10);
+    #[cfg(feature = "nlopt")]
+    {
+        // …and the nearest one: tightly converged SLSQP agrees.
+        let mut slsqp = two_tangencies(start);
+        solve(&mut slsqp, &tight().with_force(Some(SolverChoice::Slsqp))).unwrap();
+        for (a, b) in slsqp.values().iter().zip(&v) {
+            assert_abs_diff_eq!(*a, *b, epsilon = 1e-8);
+        }
+    }
+    // Without the pull-back a Newton iteration would stop anywhere on the solution curve; with
+    // it, moving along the curve from the result only lengthens the move.
+    let moved = |w: &[f64]| -> f64 { w.iter().zip(start).map(|(a, b)| (a - b).powi(2)).sum() };
+    let base = moved(&v);
+    for t in [-1e-3, 1e-3] {
+        // Perturb along the curve: re-solve from a nudged start with the same reference.
+        let mut q = two_tangencies([v[0] + t, v[1], v[2]]);
+        let mut ws = NewtonWorkspace::new();
+        let nudged = [v[0] + t, v[1], v[2]];
+        // Pull toward the nudged point itself: lands on a nearby curve point.
+        solve_newton_from(&mut q, &Options::default(), &mut ws, &nudged, &nudged).unwrap();
+        assert!(moved(q.values()) >= base - 1e-12);
+    }
+}
+
+#[test]
+fn two_circles_meeting_point() {
+    // p on two circles: a square nonlinear system with a unique nearby root.
+    let mut p = Problem::new();
+    let b = p.add_block(&[0.4, 1.3]).unwrap();
+    p.add_residual(
+        OnCircle {
+            c: [-1.0, 0.0],
+            r: 2f64.sqrt(),
+        },
+        &[b],
+        ConstraintId(1),
+    )
+    .unwrap();
+    p.add_residual(
+        OnCircle {
+            c: [1.0, 0.0],
+            r: 2f64.sqrt(),
+        },
+        &[b],
+        ConstraintId(2),
+    )
+    .unwrap();
+    let r = solve(&mut p, &Options::default()).unwrap();
+    assert_eq!((r.solver, r.dof), (SolverKind::Newton, 0));
+    assert_abs_diff_eq!(p.values()[0], 0.0, epsilon = 1e-10);
+    assert_abs_diff_eq!(p.values()[1], 1.0, epsilon = 1e-10);
+}
+
+#[cfg(feature = "nlopt")]
+#[test]
+fn rank_deficient_start_goes_to_slsqp() {
+    // On the line through both centres the two gradients are parallel: J is singular.
+    let mut p = Problem::new();
+    let b = p.add_block(&[0.3, 0.0]).unwrap();
+    for (id, c) in [(1, -1.0), (2, 1.0)] {
+        p.add_residual(
+            OnCircle {
+                c: [c, 0.0],
+                r: 2f64.sqrt(),
+            },
+            &[b],
+            ConstraintId(id),
+        )
+        .unwrap();
+    }
+    let r = solve(&mut p, &Options::default()).unwrap();
+    assert_eq!(r.solver, SolverKind::Slsqp, "{}", r.reason);
+    assert!(r.reason.contains("rank deficient"), "{}", r.reason);
+    assert_abs_diff_eq!(p.values()[0], 0.0, epsilon = 1e-9);
+    assert_abs_diff_eq!(p.values()[1].abs(), 1.0, epsilon = 1e-9);
+}
+
+fn conflicting_circles() -> Problem {
+    let mut p = Problem::new();
+    let b = p.add_block(&[3.0, 0.5]).unwrap();
+    p.add_residual(
+        OnCircle {
+            c: [0.0, 0.0],
+            r: 1.0,
+        },
+        &[b],
+        ConstraintId(7),
+    )
+    .unwrap();
+    p.add_residual(
+        OnCircle {
+            c: [0.0, 0.0],
+            r: 2.0,
+        },
+        &[b],
+        ConstraintId(8),
+    )
+    .unwrap();
+    p.add_residual(Coordinate { k: 1, value: 0.5 }, &[b], ConstraintId(9))
+        .unwrap();
+    p
+}
+
+#[test]
+fn conflicting_constraints_are_named_and_nothing_moves() {
+    let mut p = conflicting_circles();
+    let before = p.values().to_vec();
+    match solve(&mut p, &Options::default()) {
+        Err(Error::Conflicting { constraints }) => {
+            assert!(constraints.contains(&ConstraintId(7)), "{constraints:?}");
+            assert!(constraints.contains(&ConstraintId(8)), "{constraints:?}");
+            assert!(!constraints.contains(&ConstraintId(9)), "{constraints:?}");
+        }
+        other => panic!("expected a conflict, got {other:?}"),
+    }
+    assert_eq!(p.values(), &before[..]);
+
+    // Affine conflicts are named from the start.
+    let mut q = Problem::new();
+    let b = q.add_block(&[0.0, 0.0]).unwrap();
+    q.add_residual(Coordinate { k: 0, value: 1.0 }, &[b], ConstraintId(1))
+        .unwrap();
+    q.add_residual(Coordinate { k: 0, value: 2.0 }, &[b], ConstraintId(2))
+        .unwrap();
+    assert_eq!(
+        solve(&mut q, &Options::default()),
+        Err(Error::Conflicting {
+            constraints: vec![ConstraintId(2)]
+        })
+    );
+}
+
+#[test]
+fn soft_mode_reports_the_unsatisfied_constraints() {
+    let mut p = conflicting_circles();
+    let r = solve(&mut p, &Options::default().with_soft(true)).unwrap();
+    assert_eq!(r.status, Status::Relaxed);
+    assert_eq!(r.solver, SolverKind::LevenbergMarquardt);
+    assert_eq!(r.conflicting, vec![ConstraintId(7), ConstraintId(8)]);
+    // Least squares of (s − 1)² + (s − 4)² in s = |p|²: s = 2.5, and y = 0.5 is met.
+    let v = p.values();
+    assert_abs_diff_eq!(v[0] * v[0] + v[1] * v[1], 2.5, epsilon = 1e-6);
+    assert_abs_diff_eq!(v[1], 0.5, epsilon = 1e-8);
+    // Forcing the soft mode on a consistent system solves it.
+    let mut q = circle_problem([4.0, 2.0]);
+    let r = solve(&mut q, &forced(SolverChoice::Soft)).unwrap();
+    assert_eq!(r.status, Status::Solved);
+}
+
+#[test]
+fn bounds_are_respected() {
+    // Nearest point (2.2, −0.4), but x ≤ 2: the constrained nearest point has x = 2.
+    let run = |choice: Option<SolverChoice>| -> Vec<f64> {
+        let mut p = Problem::new();
+        let b = p.add_block(&[4.0, 2.0]).unwrap();
+        p.add_residual(
+            OnCircle {
+                c: [1.0, -2.0],
+                r: 2.0,
+            },
+            &[b],
+            ConstraintId(1),
+        )
+        .unwrap();
+        let x = p.unknown(b, 0).unwrap();
+        p.set_bounds(Var::Unknown(x), f64::NEG_INFINITY, 2.0)
+            .unwrap();
+        solve(&mut p, &tight().with_tolerance(1e-10).with_force(choice)).unwrap();
+        p.values().to_vec()
+    };
+    let y = -2.0 + (4.0_f64 - 1.0).sqrt();
+    let v = run(None);
+    assert_abs_diff_eq!(v[0], 2.0, epsilon = 1e-10);
+    assert_abs_diff_eq!(v[1], y, epsilon = 1e-8);
+    #[cfg(feature = "nlopt")]
+    {
+        let s = run(Some(SolverChoice::Slsqp));
+        assert_abs_diff_eq!(s[0], 2.0, epsilon = 1e-10);
+        assert_abs_diff_eq!(s[1], y, epsilon = 1e-8);
+    }
+}
+
+#[test]
+fn forcing_each_solver() {
+    let mut p = circle_problem([4.0, 2.0]);
+    let before = p.values().to_vec();
+    assert!(matches!(
+        solve(&mut p, &forced(SolverChoice::Linear)),
+        Err(Error::NonlinearNotAvailable { .. })
+    ));
+    assert_eq!(p.values(), &before[..]);
+    let r = solve(&mut p, &forced(SolverChoice::Newton)).unwrap();
+    assert_eq!(r.solver, SolverKind::Newton);
+    let mut q = circle_problem([4.0, 2.0]);
+    let s = solve(&mut q, &forced(SolverChoice::Slsqp));
+    #[cfg(feature = "nlopt")]
+    assert_eq!(s.unwrap().solver, SolverKind::Slsqp);
+    #[cfg(not(feature = "nlopt"))]
+    {
+        assert!(matches!(
+            s,
+            Err(Error::SolverUnavailable {
+                solver: "SLSQP",
+                ..
+            })
+        ));
+        assert_eq!(q.values(), &before[..]);
+    }
+    // A forced Newton on a singular start fails and changes nothing.
+    let mut c = circle_problem([1.0, -2.0]); // the centre: J = 0
+    let before = c.values().to_vec();
+    assert!(solve(&mut c, &forced(SolverChoice::Newton)).is_err());
+    assert_eq!(c.values(), &before[..]);
+}
+
+#[test]
+fn warm_started_drag_follows_the_mouse() {
+    // A point dragged around the circle: each step starts at the previous solution and is
+    // pulled toward the mouse; no step jumps.
+    let mut p = circle_problem([3.0, -2.0]);
+    let mut ws = NewtonWorkspace::new();
+    let opts = Options::default();
+    for k in 1..=50 {
+        let a = 0.05 * f64::from(k);
+        let mouse = [1.0 + 2.5 * a.cos(), -2.0 + 2.5 * a.sin()];
+        let prev = p.values().to_vec();
+        let r = solve_newton_from(&mut p, &opts, &mut ws, &prev, &mouse).unwrap();
+        let v = p.values();
+        assert_abs_diff_eq!(v[0], 1.0 + 2.0 * a.cos(), epsilon = 1e-9);
+        assert_abs_diff_eq!(v[1], -2.0 + 2.0 * a.sin(), epsilon = 1e-9);
+        assert!(r.displacement_norm < 0.2);
+    }
+}
+
+#[test]
+fn affine_problems_take_the_linear_path() {
+    let mut p = Problem::new();
+    let b = p.add_block(&[0.0, 0.0]).unwrap();
+    p.add_residual(Coordinate { k: 0, value: 1.0 }, &[b], ConstraintId(1))
+        .unwrap();
+    let r = solve(&mut p, &Options::default()).unwrap();
+    assert_eq!(r.solver, SolverKind::DenseMinNorm);
+    assert!(r.reason.starts_with("selection: affine"));
+    let again = solve(&mut p, &Options::default()).unwrap();
+    assert_eq!(again.status, Status::AlreadySatisfied);
+}
