@@ -42,8 +42,11 @@
 //! - Jacobians are assembled sparse ([`SparseMatrix`]); the minimum-norm step
 //!   ([`MinNormFactorization`]) is dense for small problems and sparse (faer) for large ones.
 //! - Every fallible call returns [`Result`]; [`solve_linear`] never changes the problem on error.
-//! - Only the linear solver exists so far: nonlinear residuals are refused with
-//!   [`Error::NonlinearNotAvailable`].
+//! - [`solve_linear`] handles affine residuals only (nonlinear ones are refused with
+//!   [`Error::NonlinearNotAvailable`]); [`solve()`] selects the path from the DOF analysis:
+//!   linear, Newton minimum-norm with the pull-back toward the start, SLSQP through NLopt
+//!   (feature `nlopt`, on by default), and on request a soft least-squares compromise for
+//!   conflicting systems.
 
 pub mod analysis;
 pub mod autodiff;

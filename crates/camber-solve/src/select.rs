@@ -6,7 +6,7 @@
 //!   ([`crate::solve_linear`]);
 //! - nonlinear with J of full row rank at the start (or only consistent dependent rows, which
 //!   are left out): Newton minimum-norm ([`crate::newton`]); if it fails, SLSQP;
-//! - nonlinear and rank deficient at the start: SLSQP ([`crate::slsqp`], `nlopt` feature);
+//! - nonlinear and rank deficient at the start: SLSQP (the `slsqp` module, `nlopt` feature);
 //! - when those fail (or SLSQP is not built): Levenberg–Marquardt on the least-squares sum from
 //!   the start, then Newton from its answer with the pull-back toward the start;
 //! - when nothing meets every constraint: the soft compromise if asked, otherwise

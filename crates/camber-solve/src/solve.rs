@@ -32,7 +32,7 @@ pub struct Options {
     pub dense_analysis_max_entries: usize,
     /// Whether consistent dependent rows may be dropped (otherwise [`Error::Redundant`]).
     pub drop_redundant: bool,
-    /// Settings of the nonlinear solvers and of the selection ([`crate::solve`]).
+    /// Settings of the nonlinear solvers and of the selection ([`crate::solve()`]).
     pub nonlinear: crate::nonlinear::NonlinearOptions,
 }
 
