@@ -6,6 +6,8 @@
 //! - [`solve`] (camber-solve): problems over parameter blocks, residuals written once
 //!   generically with exact Jacobians by automatic differentiation, the minimum-norm solve and
 //!   the DOF analysis.
+//! - [`surface`] (camber-surface): NURBS surfaces and their minimal deformation to G1 continuity
+//!   with neighbour faces.
 //!
 //! ```
 //! use camber::geom::{BezierCurve2, ParametricCurve};
@@ -17,3 +19,4 @@
 
 pub use camber_geom as geom;
 pub use camber_solve as solve;
+pub use camber_surface as surface;
