@@ -165,6 +165,7 @@ impl Entity {
         )
     }
 
+    /// Degree, knots and weights (Bézier curves and lines get clamped knots on [0, 1]).
     fn basis(&self) -> Option<BasisData<'_>> {
         let clamped01 = |p: usize| {
             let mut k = vec![0.0; p + 1];
@@ -198,6 +199,9 @@ impl Entity {
 
     /// The parametric domain [a, b] of a curve (`None` for points and circles).
     pub fn domain(&self) -> Option<(f64, f64)> {
+        if matches!(self, Entity::Line(_) | Entity::Bezier(_)) {
+            return Some((0.0, 1.0));
+        }
         let b = self.basis()?;
         let k = &b.knots;
         Some((k[b.degree], k[k.len() - 1 - b.degree]))
@@ -223,11 +227,13 @@ impl Entity {
     /// [`Error::WrongEntityKind`] for a point or circle; [`Error::NonFinite`] and
     /// [`Error::ParameterOutsideDomain`] for a bad u.
     pub fn coefficients(&self, id: EntityId, u: f64, order: usize) -> Result<Terms> {
-        let b = self.basis().ok_or(Error::WrongEntityKind {
-            entity: id,
-            expected: "curve",
-            found: self.kind_name(),
-        })?;
+        if !self.is_curve() {
+            return Err(Error::WrongEntityKind {
+                entity: id,
+                expected: "curve",
+                found: self.kind_name(),
+            });
+        }
         if !u.is_finite() {
             return Err(Error::NonFinite {
                 what: "parameter",
@@ -244,8 +250,24 @@ impl Entity {
                 max,
             });
         }
-        let p = b.degree;
         let order = order.min(1);
+        if let Entity::Line(_) | Entity::Bezier(_) = self {
+            let p = self.points().len() - 1;
+            // Bernstein polynomials directly: no knot vector needed.
+            let mut v: SmallVec<[f64; 16]> = smallvec::smallvec![0.0; p + 1];
+            camber_geom::bernstein::bernstein_derivatives(u, order, &mut v);
+            let mut out: Terms = v.iter().copied().enumerate().collect();
+            out.retain(|(_, c)| c.abs() > 0.0);
+            return Ok(out);
+        }
+        let Some(b) = self.basis() else {
+            return Err(Error::WrongEntityKind {
+                entity: id,
+                expected: "curve",
+                found: self.kind_name(),
+            });
+        };
+        let p = b.degree;
         let knots = KnotVector::new_unchecked(b.knots.to_vec());
         let span = knots.find_span(p, u);
         let w = p + 1;

@@ -53,6 +53,7 @@ pub mod ids;
 pub mod residuals;
 pub mod sketch;
 pub mod solve;
+pub mod workloads;
 
 pub use build::{Component, ComponentProblem, DRAG_CONSTRAINT};
 pub use constraint::{Constraint, FixTarget, Sense, TangentForm, Target};

@@ -76,9 +76,9 @@ impl EntityLookup for Sketch {
 
 /// # Construction
 impl Sketch {
-    /// An empty sketch with the default solver options.
+    /// An empty sketch with the default solver options ([`crate::solve::default_options`]).
     pub fn new() -> Self {
-        Self::with_options(Options::default())
+        Self::with_options(crate::solve::default_options())
     }
 
     /// An empty sketch solved with `options` (tolerances, dense/sparse thresholds).

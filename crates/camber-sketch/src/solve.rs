@@ -8,6 +8,19 @@ use crate::build::{Component, ComponentProblem};
 use crate::errors::Result;
 use crate::sketch::Sketch;
 
+/// Components with rows × unknowns up to this many get the dense rank analysis anyway when the
+/// sparse factorization finds dependent rows (so that redundant rows are dropped and
+/// conflicting constraints named); above it the solver's rank error is returned as it is.
+pub const NAMING_ANALYSIS_MAX_ENTRIES: usize = 1 << 22;
+
+/// The solver options a [`Sketch`] uses by default: camber-solve's defaults, except that the
+/// dense rank analysis runs up front only for components of at most 2¹⁶ Jacobian entries
+/// (larger components go straight to the sparse factorization and are analysed only if it
+/// fails, see [`NAMING_ANALYSIS_MAX_ENTRIES`]).
+pub fn default_options() -> camber_solve::Options {
+    camber_solve::Options::default().with_dense_analysis_max_entries(1 << 16)
+}
+
 /// The outcome of one component's solve.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ComponentReport {
@@ -37,7 +50,20 @@ impl ComponentProblem {
     /// Solves on the linear path and checks the tangent orientations; the problem (not the
     /// sketch) holds the result.
     pub(crate) fn solve(&mut self, options: &camber_solve::Options) -> Result<SolveReport> {
-        let report = solve_linear(&mut self.problem, options)?;
+        let report = match solve_linear(&mut self.problem, options) {
+            Err(camber_solve::Error::RankDeficient { .. })
+                if self.problem.num_rows() * self.problem.num_unknowns()
+                    <= NAMING_ANALYSIS_MAX_ENTRIES =>
+            {
+                // The fast path skipped the dense analysis and met dependent rows: run it now
+                // to drop redundant rows or name the conflicting constraints.
+                let full = options
+                    .clone()
+                    .with_dense_analysis_max_entries(NAMING_ANALYSIS_MAX_ENTRIES);
+                solve_linear(&mut self.problem, &full)?
+            }
+            other => other?,
+        };
         self.check_orientations(self.problem.values())?;
         Ok(report)
     }
