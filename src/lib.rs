@@ -18,5 +18,5 @@
 //! ```
 
 pub use camber_geom as geom;
-pub use camber_solve as solve;
 pub use camber_sketch as sketch;
+pub use camber_solve as solve;

@@ -11,7 +11,10 @@ use std::hint::black_box;
 
 fn bench_w1(c: &mut Criterion) {
     let mut group = c.benchmark_group("w1_drag_update");
-    for (name, form) in [("row", TangentForm::Row), ("elimination", TangentForm::Elimination)] {
+    for (name, form) in [
+        ("row", TangentForm::Row),
+        ("elimination", TangentForm::Elimination),
+    ] {
         let (s, curve, _) = w1(form).expect("valid workload");
         let p1 = PointRef::Control(curve, 1);
         let targets = w1_targets(s.point(p1).expect("point"));

@@ -11,8 +11,16 @@ fn main() -> Result<(), camber_sketch::Error> {
     let cp = s.component_problem(segs[0])?;
     println!("components+build {:?}", t.elapsed());
     let t = Instant::now();
-    let lin = cp.problem().linearize().map_err(camber_sketch::Error::from)?;
-    println!("linearize {:?} ({} x {})", t.elapsed(), lin.g.len(), lin.map.len());
+    let lin = cp
+        .problem()
+        .linearize()
+        .map_err(camber_sketch::Error::from)?;
+    println!(
+        "linearize {:?} ({} x {})",
+        t.elapsed(),
+        lin.g.len(),
+        lin.map.len()
+    );
     let t = Instant::now();
     let f = camber_solve::MinNormFactorization::try_sparse(&lin.jacobian, lin.map.weights());
     println!("factorize {:?} {}", t.elapsed(), f.is_ok());

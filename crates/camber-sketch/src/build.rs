@@ -276,7 +276,10 @@ pub(crate) fn build<L: EntityLookup>(
             else {
                 continue;
             };
-            let (tb, bb) = (cp.point_block(*curve, *target)?, cp.point_block(*curve, *base)?);
+            let (tb, bb) = (
+                cp.point_block(*curve, *target)?,
+                cp.point_block(*curve, *base)?,
+            );
             let usable = !fixed.contains(&tb)
                 && !targets.contains(&tb)
                 && !bases.contains(&tb)

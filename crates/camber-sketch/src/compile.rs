@@ -7,7 +7,7 @@
 use nalgebra::Vector2;
 use smallvec::SmallVec;
 
-use crate::constraint::{Constraint, FixTarget, Target, TangentForm};
+use crate::constraint::{Constraint, FixTarget, TangentForm, Target};
 use crate::entity::{combine, Entity, Terms};
 use crate::errors::{Error, Result};
 use crate::ids::{EntityId, PointRef};

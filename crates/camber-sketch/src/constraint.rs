@@ -13,7 +13,9 @@ use smallvec::SmallVec;
 use crate::ids::{EntityId, PointRef};
 
 /// Whether a curve tangent must point along the given direction or against it.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, serde::Serialize, serde::Deserialize)]
+#[derive(
+    Debug, Clone, Copy, PartialEq, Eq, Hash, Default, serde::Serialize, serde::Deserialize,
+)]
 pub enum Sense {
     /// C′(u)·T > 0.
     #[default]
@@ -33,7 +35,9 @@ impl Sense {
 }
 
 /// How a start or end tangency is imposed.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, serde::Serialize, serde::Deserialize)]
+#[derive(
+    Debug, Clone, Copy, PartialEq, Eq, Hash, Default, serde::Serialize, serde::Deserialize,
+)]
 pub enum TangentForm {
     /// One row cross(C′(a), T) = 0: the control points stay unknowns and move by the minimum
     /// norm in the control points.

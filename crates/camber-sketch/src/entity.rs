@@ -215,7 +215,11 @@ impl Entity {
         };
         let k = &b.knots;
         let p = b.degree;
-        let run: &[f64] = if at_end { &k[k.len() - 1 - p..] } else { &k[..=p] };
+        let run: &[f64] = if at_end {
+            &k[k.len() - 1 - p..]
+        } else {
+            &k[..=p]
+        };
         p >= 1 && run.windows(2).all(|w| (w[1] - w[0]).abs() <= 0.0)
     }
 
@@ -338,7 +342,11 @@ impl Entity {
                     expected: "curve",
                     found: self.kind_name(),
                 })?;
-                let u = if matches!(r, PointRef::Start(_)) { a } else { b };
+                let u = if matches!(r, PointRef::Start(_)) {
+                    a
+                } else {
+                    b
+                };
                 self.coefficients(id, u, 0)
             }
         }
@@ -440,7 +448,11 @@ mod tests {
         );
         assert!(matches!(
             l.resolve(PointRef::Control(EntityId(3), 2)),
-            Err(Error::UnknownPoint { index: 2, count: 2, .. })
+            Err(Error::UnknownPoint {
+                index: 2,
+                count: 2,
+                ..
+            })
         ));
     }
 }

@@ -52,9 +52,10 @@ impl PointRef {
     /// The entity the point belongs to.
     pub fn entity(self) -> EntityId {
         match self {
-            PointRef::Point(e) | PointRef::Control(e, _) | PointRef::Start(e) | PointRef::End(e) => {
-                e
-            }
+            PointRef::Point(e)
+            | PointRef::Control(e, _)
+            | PointRef::Start(e)
+            | PointRef::End(e) => e,
         }
     }
 }

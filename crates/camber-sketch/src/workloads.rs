@@ -96,7 +96,9 @@ pub fn blade() -> Result<(Sketch, Blade)> {
         (0.8, 0.05),
         (1.0, 0.0),
     ]))?)?;
-    s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::Start(pressure))))?;
+    s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::Start(
+        pressure,
+    ))))?;
     s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::End(suction))))?;
     s.add_constraint(Constraint::G1Join {
         first: pressure,

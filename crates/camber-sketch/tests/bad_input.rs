@@ -26,7 +26,11 @@ fn sketch() -> (Sketch, EntityId) {
     (s, c)
 }
 
-type Snapshot = (u64, Vec<(EntityId, Entity)>, Vec<(ConstraintId, Constraint)>);
+type Snapshot = (
+    u64,
+    Vec<(EntityId, Entity)>,
+    Vec<(ConstraintId, Constraint)>,
+);
 
 fn snapshot(s: &Sketch) -> Snapshot {
     (
