@@ -5,6 +5,9 @@
 //! step the constraints hold to 1e-10 and the move equals −J⁺g with J and g written out here
 //! from the Bézier end formulas and J⁺ taken from an SVD.
 
+// Fixture helpers outside #[test] functions unwrap results of fixed, valid inputs.
+#![allow(clippy::unwrap_used)]
+
 use approx::assert_abs_diff_eq;
 use camber::geom::{BezierCurve2, ParametricCurve};
 use camber::sketch::workloads::blade;

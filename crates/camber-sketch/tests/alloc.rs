@@ -2,6 +2,9 @@
 //! counting global allocator (stats_alloc). This file holds a single test so that no other test
 //! thread allocates while it counts.
 
+// Fixture helpers outside #[test] functions unwrap results of fixed, valid inputs.
+#![allow(clippy::unwrap_used)]
+
 use std::alloc::System;
 
 use camber_sketch::workloads::{blade, w1, w1_targets};

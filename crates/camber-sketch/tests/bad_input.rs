@@ -2,6 +2,9 @@
 //! directions, parameters outside the domain, non-finite numbers, bad indices, the elimination
 //! form on an unclamped end.
 
+// Fixture helpers outside #[test] functions unwrap results of fixed, valid inputs.
+#![allow(clippy::unwrap_used)]
+
 use camber_geom::{BSplineCurve2, BezierCurve2, KnotVector};
 use camber_sketch::{
     Constraint, ConstraintId, Entity, EntityId, Error, FixTarget, PointRef, Sense, Sketch,

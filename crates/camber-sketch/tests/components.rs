@@ -1,6 +1,9 @@
 //! The graph: components, the dirty set, atomic solves, orientation checks, and every built-in
 //! constraint on every curve kind, checked by evaluating the kernel's curves independently.
 
+// Fixture helpers outside #[test] functions unwrap results of fixed, valid inputs.
+#![allow(clippy::unwrap_used)]
+
 use approx::assert_abs_diff_eq;
 use camber_geom::{BSplineCurve2, BezierCurve2, KnotVector, NurbsCurve2, ParametricCurve};
 use camber_sketch::{

@@ -2,6 +2,9 @@
 //! too (2, in both forms), a duplicated constraint (redundant, named), contradictory
 //! constraints (conflicting, named, nothing moved).
 
+// Fixture helpers outside #[test] functions unwrap results of fixed, valid inputs.
+#![allow(clippy::unwrap_used)]
+
 use camber_geom::BezierCurve2;
 use camber_sketch::{
     Constraint, EntityId, Error, FixTarget, PointRef, Sense, Sketch, TangentForm, Target,

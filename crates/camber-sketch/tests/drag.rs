@@ -2,6 +2,9 @@
 //! minimum-norm move checked against a hand-derived formula, commit, stale sessions, failed
 //! updates that keep the previous state.
 
+// Fixture helpers outside #[test] functions unwrap results of fixed, valid inputs.
+#![allow(clippy::unwrap_used)]
+
 use approx::assert_abs_diff_eq;
 use camber_sketch::workloads::{w1, w1_targets};
 use camber_sketch::{Constraint, Error, FixTarget, PointRef, Sense, TangentForm};

@@ -1,6 +1,9 @@
 //! Every built-in residual's autodiff Jacobian against central differences
 //! (camber_solve::testing), at random coefficients, directions and points.
 
+// Fixture helpers outside #[test] functions unwrap results of fixed, valid inputs.
+#![allow(clippy::unwrap_used)]
+
 use camber_sketch::residuals::{DirectionCross, LineTangency, PointCombination};
 use camber_solve::testing::check_jacobian;
 use proptest::prelude::*;

@@ -2,6 +2,9 @@
 //! pseudo-inverse computed here from the Bernstein basis; and the two forms of start tangency
 //! compared: both satisfy the tangency, each is the least move in its own metric.
 
+// Fixture helpers outside #[test] functions unwrap results of fixed, valid inputs.
+#![allow(clippy::unwrap_used)]
+
 use approx::assert_abs_diff_eq;
 use camber_geom::bernstein::{bernstein, bernstein_derivatives};
 use camber_geom::{BezierCurve2, ParametricCurve};
