@@ -31,6 +31,36 @@ pub struct Component {
     pub constraints: Vec<ConstraintId>,
 }
 
+/// A custom constraint's residual, shared between the sketch and every problem built from it.
+#[derive(Debug)]
+struct SharedResidual(std::sync::Arc<dyn camber_solve::DynResidual>);
+
+impl camber_solve::DynResidual for SharedResidual {
+    fn name(&self) -> &str {
+        self.0.name()
+    }
+    fn dim(&self) -> usize {
+        self.0.dim()
+    }
+    fn is_affine(&self) -> bool {
+        self.0.is_affine()
+    }
+    fn values(&self, x: &[&[f64]], out: &mut [f64]) -> camber_solve::Result<()> {
+        self.0.values(x, out)
+    }
+    fn jacobian(
+        &self,
+        x: &[&[f64]],
+        values: &mut [f64],
+        jac: &mut [f64],
+    ) -> camber_solve::Result<()> {
+        self.0.jacobian(x, values, jac)
+    }
+    fn as_any(&self) -> &dyn std::any::Any {
+        self.0.as_any()
+    }
+}
+
 /// Blocks of one entity.
 #[derive(Debug, Clone)]
 struct EntityBlocks {
@@ -69,6 +99,8 @@ pub struct ComponentProblem {
     pub(crate) component: Component,
     layout: HashMap<EntityId, EntityBlocks>,
     pub(crate) orientations: Vec<Orientation>,
+    /// The first constraint whose residual is not affine, with the residual's name.
+    pub(crate) nonlinear: Option<(ConstraintId, String)>,
 }
 
 impl ComponentProblem {
@@ -145,6 +177,20 @@ impl ComponentProblem {
     fn add_piece(&mut self, owner: ConstraintId, piece: &Piece) -> Result<()> {
         match piece {
             Piece::FixEntity(_) | Piece::FixPoint(..) | Piece::Eliminate { .. } => {}
+            Piece::Custom { residual, points } => {
+                if !residual.is_affine() && self.nonlinear.is_none() {
+                    self.nonlinear = Some((owner, residual.name().to_owned()));
+                }
+                let mut blocks = Vec::with_capacity(points.len());
+                for (e, j) in points {
+                    blocks.push(self.point_block(*e, *j)?);
+                }
+                self.problem.add_dyn_residual(
+                    Box::new(SharedResidual(residual.clone())),
+                    &blocks,
+                    owner,
+                )?;
+            }
             Piece::Combination {
                 name,
                 terms,
@@ -223,6 +269,7 @@ pub(crate) fn build<L: EntityLookup>(
         component: component.clone(),
         layout: HashMap::with_capacity(component.entities.len()),
         orientations: Vec::new(),
+        nonlinear: None,
     };
     for id in &component.entities {
         let e = lookup.lookup(*id)?;

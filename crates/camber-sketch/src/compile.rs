@@ -43,6 +43,11 @@ pub(crate) enum Piece {
         direction: [f64; 2],
         orient: [f64; 2],
     },
+    /// A user residual reading one block per point.
+    Custom {
+        residual: std::sync::Arc<dyn camber_solve::DynResidual>,
+        points: Vec<(EntityId, usize)>,
+    },
     /// P_target = P_base + t·direction with t > 0 a new unknown; `fallback` is the row form
     /// used when the target cannot be eliminated.
     Eliminate {
@@ -299,6 +304,26 @@ pub(crate) fn compile(lookup: &impl EntityLookup, c: &Constraint) -> Result<Smal
                     orient: Some(d),
                 });
             }
+        }
+        Constraint::Custom(custom) => {
+            let mut points = Vec::with_capacity(custom.points.len());
+            for r in &custom.points {
+                let e = lookup.lookup(r.entity())?;
+                match e.resolve(*r)?.as_slice() {
+                    [(j, c)] if (c - 1.0).abs() <= 0.0 => points.push((r.entity(), *j)),
+                    _ => {
+                        return Err(Error::WrongEntityKind {
+                            entity: r.entity(),
+                            expected: "a single point block for a custom constraint",
+                            found: e.kind_name(),
+                        })
+                    }
+                }
+            }
+            out.push(Piece::Custom {
+                residual: custom.residual.clone(),
+                points,
+            });
         }
     }
     Ok(out)

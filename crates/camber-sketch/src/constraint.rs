@@ -7,6 +7,9 @@
 //! cross-product form cross(C′(u), T) = 0 also holds when C′ points against T, so after every
 //! solve sense·(C′(u)·T) > 0 is checked and a solve that flips it is rejected.
 
+use std::sync::Arc;
+
+use camber_solve::{DynResidual, Residual};
 use nalgebra::{Point2, Vector2};
 use smallvec::SmallVec;
 
@@ -66,6 +69,68 @@ pub enum Target {
     At(Point2<f64>),
     /// Another (movable) point of the sketch.
     Point(PointRef),
+}
+
+/// A user-written residual ([`camber_solve::Residual`]) over points of the sketch, each point
+/// one block (x, y) in the order given. Points must be point entities, control points (line
+/// ends, circle centres) or the clamped ends of curves. A non-affine residual makes its
+/// component need the nonlinear solver, which is reported as [`crate::Error::NeedsNonlinear`].
+///
+/// ```
+/// use camber_sketch::{Constraint, Custom, PointRef, Sketch};
+/// use camber_solve::{Residual, Scalar};
+/// use nalgebra::Point2;
+/// /// The two points are one unit apart in x: q.x − p.x − 1 = 0.
+/// #[derive(Debug)]
+/// struct UnitApart;
+/// impl Residual for UnitApart {
+///     fn name(&self) -> &str { "unit apart" }
+///     fn dim(&self) -> usize { 1 }
+///     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) { out[0] = x[1][0] - x[0][0] - T::one(); }
+///     fn is_affine(&self) -> bool { true }
+/// }
+/// let mut s = Sketch::new();
+/// let (p, q) = (s.add_point(Point2::new(0.0, 0.0))?, s.add_point(Point2::new(3.0, 0.0))?);
+/// s.add_constraint(Constraint::Custom(Custom::new(UnitApart, vec![PointRef::Point(p), PointRef::Point(q)])))?;
+/// s.solve()?;
+/// assert!((s.point(PointRef::Point(q))?.x - s.point(PointRef::Point(p))?.x - 1.0).abs() < 1e-12);
+/// # Ok::<(), camber_sketch::Error>(())
+/// ```
+#[derive(Clone)]
+pub struct Custom {
+    pub(crate) residual: Arc<dyn DynResidual>,
+    pub(crate) points: Vec<PointRef>,
+}
+
+impl Custom {
+    /// A custom constraint reading `points` (one block each, in order).
+    pub fn new<R: Residual>(residual: R, points: Vec<PointRef>) -> Self {
+        Self {
+            residual: Arc::new(residual),
+            points,
+        }
+    }
+
+    /// The points read.
+    pub fn points(&self) -> &[PointRef] {
+        &self.points
+    }
+}
+
+impl std::fmt::Debug for Custom {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Custom")
+            .field("residual", &self.residual.name())
+            .field("points", &self.points)
+            .finish()
+    }
+}
+
+/// Two custom constraints are equal when they share the same residual object and points.
+impl PartialEq for Custom {
+    fn eq(&self, other: &Self) -> bool {
+        Arc::ptr_eq(&self.residual, &other.residual) && self.points == other.points
+    }
 }
 
 /// A built-in constraint. Parameters u must lie in the curve's domain; directions must be
@@ -172,6 +237,8 @@ pub enum Constraint {
         /// The joint direction d.
         direction: Vector2<f64>,
     },
+    /// A user-written residual over points.
+    Custom(Custom),
 }
 
 impl Constraint {
@@ -187,6 +254,7 @@ impl Constraint {
             Constraint::EndTangent { .. } => "end tangent",
             Constraint::TangentToLineAt { .. } => "tangent to line at",
             Constraint::G1Join { .. } => "G1 join",
+            Constraint::Custom(_) => "custom",
         }
     }
 
@@ -219,6 +287,11 @@ impl Constraint {
             Constraint::G1Join { first, second, .. } => {
                 push(*first);
                 push(*second);
+            }
+            Constraint::Custom(c) => {
+                for p in &c.points {
+                    push(p.entity());
+                }
             }
         }
         out

@@ -91,18 +91,12 @@ impl Sketch {
         e.resolve(point)?;
         let comp = self.component_of(point.entity())?;
         let cp = self.build_component(&comp, Some(point))?;
+        if let Some((constraint, name)) = cp.nonlinear.clone() {
+            return Err(Error::NeedsNonlinear { constraint, name });
+        }
         let options = self.options();
         let lin = cp.problem().linearize()?;
         let m = lin.g.len();
-        if !lin.affine {
-            let (constraint, name) = lin
-                .row_residual
-                .iter()
-                .find_map(|r| cp.problem().residual_owner(*r).ok())
-                .map(|(c, n)| (c, n.to_owned()))
-                .unwrap_or((crate::build::DRAG_CONSTRAINT, String::new()));
-            return Err(Error::NeedsNonlinear { constraint, name });
-        }
         let a = analyze(&lin, options.rank_tolerance, options.tolerance)?;
         if !a.conflicting.is_empty() {
             return Err(Error::Conflicting {

@@ -56,7 +56,7 @@ pub mod solve;
 pub mod workloads;
 
 pub use build::{Component, ComponentProblem, DRAG_CONSTRAINT};
-pub use constraint::{Constraint, FixTarget, Sense, TangentForm, Target};
+pub use constraint::{Constraint, Custom, FixTarget, Sense, TangentForm, Target};
 pub use drag::DragSession;
 pub use entity::{Entity, Terms};
 pub use errors::{Error, Result};
