@@ -40,8 +40,12 @@
 //! - `Fixed` binds unknowns (they leave the problem); start/end tangency comes in the row form
 //!   and in the paper's elimination form P₁ = P₀ + t·T, t > 0 ([`TangentForm`]).
 //! - Tangencies record their [`Sense`]; a solve that flips one is rejected.
-//! - Only the linear solver exists: a non-affine constraint is reported as
-//!   [`Error::NeedsNonlinear`].
+//! - Users add their own residuals with [`Constraint::Custom`]. Only the linear solver exists:
+//!   a component with a non-affine residual is reported as [`Error::NeedsNonlinear`].
+//! - Small components are solved densely after a full rank analysis; large ones go straight to
+//!   the sparse factorization and are analysed only when it meets dependent rows
+//!   ([`solve::default_options`]).
+//! - [`workloads`] builds the standard benchmark sketches (W1, the blade section, W3a, W4).
 
 pub mod build;
 mod compile;
