@@ -6,6 +6,8 @@
 //! - [`solve`] (camber-solve): problems over parameter blocks, residuals written once
 //!   generically with exact Jacobians by automatic differentiation, the minimum-norm solve and
 //!   the DOF analysis.
+//! - [`sketch`] (camber-sketch): sketches of entities and affine constraints in a petgraph
+//!   graph, solved per connected component, with drag sessions.
 //! - [`surface`] (camber-surface): NURBS surfaces and their minimal deformation to G1 continuity
 //!   with neighbour faces.
 //!
@@ -18,5 +20,6 @@
 //! ```
 
 pub use camber_geom as geom;
+pub use camber_sketch as sketch;
 pub use camber_solve as solve;
 pub use camber_surface as surface;

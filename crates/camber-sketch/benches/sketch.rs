@@ -1,0 +1,84 @@
+//! Benchmarks of the standard workloads on the linear path: W1 (drag update), the blade
+//! section (drag update, Jacobian assembly), W3a (G1 chain with fixed tangents, full solve) and
+//! W4 (10,000 independent components, one solve).
+#![allow(missing_docs)] // criterion's macros generate undocumented items
+
+use camber_sketch::workloads::{blade, w1, w1_targets, w3a_chain, w4};
+use camber_sketch::{PointRef, TangentForm};
+use criterion::{criterion_group, criterion_main, BatchSize, BenchmarkId, Criterion};
+use nalgebra::{Point2, Vector2};
+use std::hint::black_box;
+
+fn bench_w1(c: &mut Criterion) {
+    let mut group = c.benchmark_group("w1_drag_update");
+    for (name, form) in [
+        ("row", TangentForm::Row),
+        ("elimination", TangentForm::Elimination),
+    ] {
+        let (s, curve, _) = w1(form).expect("valid workload");
+        let p1 = PointRef::Control(curve, 1);
+        let targets = w1_targets(s.point(p1).expect("point"));
+        let mut session = s.drag(p1).expect("draggable");
+        let mut k = 0;
+        group.bench_function(name, |b| {
+            b.iter(|| {
+                k = (k + 1) % targets.len();
+                session.update(black_box(targets[k])).expect("update");
+            })
+        });
+    }
+    group.finish();
+}
+
+fn bench_blade(c: &mut Criterion) {
+    let (s, b) = blade().expect("valid blade");
+    let dragged = PointRef::Control(b.leading, 2);
+    let start = s.point(dragged).expect("point");
+    let mut session = s.drag(dragged).expect("draggable");
+    let mut k = 0_usize;
+    c.bench_function("blade_drag_update", |bch| {
+        bch.iter(|| {
+            k = (k + 1) % 200;
+            let th = std::f64::consts::TAU * k as f64 / 200.0;
+            let target: Point2<f64> = start + 0.01 * Vector2::new(th.cos() - 1.0, th.sin());
+            session.update(black_box(target)).expect("update");
+        })
+    });
+    let cp = s.component_problem(b.leading).expect("problem");
+    c.bench_function("blade_jacobian_assembly", |bch| {
+        bch.iter(|| black_box(cp.problem().linearize().expect("linearize")))
+    });
+}
+
+fn bench_w3a(c: &mut Criterion) {
+    let mut group = c.benchmark_group("w3a_full_solve");
+    group.sample_size(10);
+    for n in [100_usize, 1_000, 10_000] {
+        let (s, _) = w3a_chain(n).expect("valid chain");
+        group.bench_with_input(BenchmarkId::from_parameter(n), &n, |b, _| {
+            b.iter_batched(
+                || s.clone(),
+                |mut s| black_box(s.solve().expect("solve")),
+                BatchSize::LargeInput,
+            )
+        });
+    }
+    group.finish();
+}
+
+fn bench_w4(c: &mut Criterion) {
+    let mut group = c.benchmark_group("w4_components");
+    group.sample_size(10);
+    let (s, _) = w4(10_000).expect("valid workload");
+    group.bench_function("10000", |b| {
+        b.iter_batched(
+            || s.clone(),
+            |mut s| black_box(s.solve().expect("solve")),
+            BatchSize::LargeInput,
+        )
+    });
+    group.finish();
+}
+
+criterion_group!(benches, bench_w1, bench_blade, bench_w3a, bench_w4);
+criterion_main!(benches);

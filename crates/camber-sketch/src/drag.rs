@@ -1,0 +1,260 @@
+//! Drag sessions: the interactive loop. The component's problem is built once with the
+//! dragged point pinned by two extra rows, P − anchor = 0 (anchor = where the point was);
+//! the rows are analysed once, and the weighted minimum-norm factorization of the independent
+//! rows is cached. Moving the target to q changes only the right-hand side of the pin rows,
+//! by −(q − anchor), because every residual is affine and J does not change. So an update is:
+//!
+//! 1. g ← g(z) with the pin rows shifted by −(q − anchor);
+//! 2. Δz = −W⁻¹Jᵀ(JW⁻¹Jᵀ)⁻¹g (two triangular solves, one product with Jᵀ, refined);
+//! 3. z ← z + Δz, x = A·z + c, residuals re-evaluated, orientations checked;
+//! 4. the new state is kept only if every row is within tolerance and no tangent flipped.
+//!
+//! Each update starts from the current state of the session (the result of the previous
+//! update), so the displacement per mouse event is the minimum-norm one. Nothing allocates in
+//! an update on the dense backend (components of up to `dense_max_unknowns` reduced unknowns)
+//! as long as no residual reads more than 8 blocks. The sketch itself is unchanged until
+//! [`DragSession::finish`].
+
+use std::collections::BTreeMap;
+
+use camber_solve::analysis::analyze;
+use camber_solve::{MinNormFactorization, ReducedMap};
+use nalgebra::Point2;
+
+use crate::build::ComponentProblem;
+use crate::compile::EntityLookup;
+use crate::entity::Entity;
+use crate::errors::{Error, Result};
+use crate::ids::{EntityId, PointRef};
+use crate::sketch::Sketch;
+
+/// Refinement rounds after each minimum-norm step.
+const REFINEMENT_STEPS: usize = 2;
+
+/// An interactive drag of one point; see the module documentation.
+///
+/// ```
+/// use camber_sketch::{Constraint, FixTarget, PointRef, Sketch};
+/// use camber_geom::BezierCurve2;
+/// use nalgebra::Point2;
+/// let mut s = Sketch::new();
+/// let c = s.add_bezier(BezierCurve2::try_new(vec![
+///     Point2::new(0.0, 0.0), Point2::new(1.0, 1.0), Point2::new(2.0, 1.0), Point2::new(3.0, 0.0),
+/// ])?)?;
+/// s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::End(c))))?;
+/// let mut drag = s.drag(PointRef::Control(c, 1))?;
+/// drag.update(Point2::new(1.2, 1.5))?;
+/// assert!((drag.point(PointRef::Control(c, 1))?.y - 1.5).abs() < 1e-12);
+/// assert!((s.point(PointRef::Control(c, 1))?.y - 1.0).abs() < 1e-15); // not yet committed
+/// drag.finish(&mut s)?;
+/// assert!((s.point(PointRef::Control(c, 1))?.y - 1.5).abs() < 1e-12);
+/// # Ok::<(), camber_sketch::Error>(())
+/// ```
+#[derive(Debug)]
+pub struct DragSession {
+    point: PointRef,
+    revision: u64,
+    cp: ComponentProblem,
+    map: ReducedMap,
+    factorization: MinNormFactorization,
+    /// Rows of J kept (independent), and the two pin rows' positions in g.
+    rows: Vec<usize>,
+    row_owner: Vec<camber_solve::ConstraintId>,
+    pin: [usize; 2],
+    /// The component's entities at the start (their shapes resolve point references).
+    shapes: BTreeMap<EntityId, Entity>,
+    anchor: [f64; 2],
+    tolerance: f64,
+    moved: bool,
+    // Current state (pin rows of g relative to the anchor) and scratch.
+    z: Vec<f64>,
+    x: Vec<f64>,
+    g: Vec<f64>,
+    z_new: Vec<f64>,
+    x_new: Vec<f64>,
+    g_new: Vec<f64>,
+    g_sel: Vec<f64>,
+    dz: Vec<f64>,
+}
+
+/// # Dragging
+impl Sketch {
+    /// Starts dragging a point (a point entity, a control point, a line end, a circle centre,
+    /// or a curve end).
+    ///
+    /// # Errors
+    /// Id errors; [`Error::Conflicting`] when the component's constraints contradict each other;
+    /// [`Error::NotDraggable`] when the point is fixed or determined by the constraints;
+    /// [`Error::NeedsNonlinear`] for a non-affine constraint.
+    pub fn drag(&self, point: PointRef) -> Result<DragSession> {
+        let e = self.lookup(point.entity())?;
+        e.resolve(point)?;
+        let comp = self.component_of(point.entity())?;
+        let cp = self.build_component(&comp, Some(point))?;
+        if let Some((constraint, name)) = cp.nonlinear.clone() {
+            return Err(Error::NeedsNonlinear { constraint, name });
+        }
+        let options = self.options();
+        let lin = cp.problem().linearize()?;
+        let m = lin.g.len();
+        let a = analyze(&lin, options.rank_tolerance, options.tolerance)?;
+        if !a.conflicting.is_empty() {
+            return Err(Error::Conflicting {
+                constraints: a.conflicting,
+            });
+        }
+        let pin = [m - 2, m - 1];
+        let rows = a.rows.independent;
+        if !(rows.contains(&pin[0]) && rows.contains(&pin[1])) {
+            return Err(Error::NotDraggable { point });
+        }
+        let j = lin.jacobian.select_rows(&rows);
+        let factorization =
+            MinNormFactorization::try_auto(&j, lin.map.weights(), options.dense_max_unknowns)?;
+        let anchor = {
+            let p = self.point(point)?;
+            [p.x, p.y]
+        };
+        let n = lin.map.len();
+        let nx = lin.x.len();
+        let mut shapes = BTreeMap::new();
+        for id in &comp.entities {
+            shapes.insert(*id, self.lookup(*id)?.clone());
+        }
+        Ok(DragSession {
+            point,
+            revision: self.revision(),
+            z: lin.map.z0().to_vec(),
+            x: lin.x,
+            g: lin.g,
+            row_owner: lin.row_owner,
+            shapes,
+            map: lin.map,
+            cp,
+            factorization,
+            pin,
+            anchor,
+            tolerance: options.tolerance,
+            moved: false,
+            z_new: vec![0.0; n],
+            x_new: vec![0.0; nx],
+            g_new: vec![0.0; m],
+            g_sel: vec![0.0; rows.len()],
+            dz: vec![0.0; n],
+            rows,
+        })
+    }
+}
+
+impl DragSession {
+    /// Moves the dragged point to `target` and every other free unknown by the weighted
+    /// minimum norm from the current state, keeping every constraint.
+    ///
+    /// # Errors
+    /// [`Error::NonFinite`] for a bad target; [`Error::NotSatisfied`] or
+    /// [`Error::OrientationFlipped`] when the result would break a constraint (the session keeps
+    /// its previous state).
+    pub fn update(&mut self, target: Point2<f64>) -> Result<()> {
+        crate::entity::check_point("target", 0, &target)?;
+        let shift = [target.x - self.anchor[0], target.y - self.anchor[1]];
+        for (k, r) in self.rows.iter().enumerate() {
+            let mut v = self.g[*r];
+            if *r == self.pin[0] {
+                v -= shift[0];
+            } else if *r == self.pin[1] {
+                v -= shift[1];
+            }
+            self.g_sel[k] = v;
+        }
+        self.factorization.solve_refined(
+            &self.g_sel,
+            &mut self.dz,
+            REFINEMENT_STEPS,
+            0.01 * self.tolerance,
+        )?;
+        for ((zn, z), d) in self.z_new.iter_mut().zip(&self.z).zip(&self.dz) {
+            *zn = z + d;
+        }
+        self.map.expand(&self.z_new, &mut self.x_new)?;
+        self.cp.problem.evaluate_at(&self.x_new, &mut self.g_new)?;
+        let mut worst = (0usize, 0.0_f64);
+        for (i, v) in self.g_new.iter().enumerate() {
+            let v = if i == self.pin[0] {
+                v - shift[0]
+            } else if i == self.pin[1] {
+                v - shift[1]
+            } else {
+                *v
+            };
+            if v.is_nan() || v.abs() > worst.1 {
+                worst = (i, if v.is_nan() { f64::INFINITY } else { v.abs() });
+            }
+        }
+        if worst.1 > self.tolerance {
+            let owner = self
+                .row_owner
+                .get(worst.0)
+                .copied()
+                .unwrap_or(crate::build::DRAG_CONSTRAINT);
+            return Err(Error::NotSatisfied {
+                failed: vec![(owner, worst.1)],
+            });
+        }
+        self.cp.check_orientations(&self.x_new)?;
+        std::mem::swap(&mut self.z, &mut self.z_new);
+        std::mem::swap(&mut self.x, &mut self.x_new);
+        std::mem::swap(&mut self.g, &mut self.g_new);
+        self.moved = true;
+        Ok(())
+    }
+
+    /// The dragged point.
+    pub fn dragged(&self) -> PointRef {
+        self.point
+    }
+
+    /// The current location of a point of the dragged component.
+    ///
+    /// # Errors
+    /// [`Error::UnknownEntity`] for an entity outside the component, [`Error::UnknownPoint`].
+    pub fn point(&self, r: PointRef) -> Result<Point2<f64>> {
+        let e = r.entity();
+        let mut s = [0.0; 2];
+        let terms = self.entity_terms(r)?;
+        for (j, c) in terms {
+            let i = self.cp.point_unknown(e, j)?;
+            s[0] += c * self.x[i];
+            s[1] += c * self.x[i + 1];
+        }
+        Ok(Point2::new(s[0], s[1]))
+    }
+
+    fn entity_terms(&self, r: PointRef) -> Result<crate::entity::Terms> {
+        // The resolution only needs the entity's shape, which a drag does not change.
+        self.shapes
+            .get(&r.entity())
+            .ok_or(Error::UnknownEntity { entity: r.entity() })
+            .and_then(|e: &Entity| e.resolve(r))
+    }
+
+    /// Commits the current state to the sketch (nothing happens if no update succeeded).
+    ///
+    /// # Errors
+    /// [`Error::StaleSession`] when the sketch was edited since the drag began; the sketch is
+    /// unchanged then.
+    pub fn finish(self, sketch: &mut Sketch) -> Result<()> {
+        if sketch.revision() != self.revision {
+            return Err(Error::StaleSession {
+                expected: self.revision,
+                found: sketch.revision(),
+            });
+        }
+        if !self.moved {
+            return Ok(());
+        }
+        let updates = self.cp.entities_at(sketch, &self.x)?;
+        let ids: Vec<EntityId> = updates.iter().map(|(id, _)| *id).collect();
+        sketch.commit(updates, &ids);
+        Ok(())
+    }
+}

@@ -1,0 +1,458 @@
+//! Entities: points, lines, circles and Bézier, B-spline and NURBS curves (planar, f64), and the
+//! linear maps from their control points to curve points and tangents.
+//!
+//! Every point of an entity (a point, a line end, a circle centre, a control point) is one
+//! parameter block of two unknowns (x, y) in a solve; a circle's radius is a block of one.
+//! Knots and weights are data, never unknowns. With them fixed, a curve point and its
+//! derivatives are linear in the control points:
+//!
+//! C⁽ᵏ⁾(u) = Σⱼ cⱼ⁽ᵏ⁾(u)·Pⱼ,
+//!
+//! with cⱼ = N⁽ᵏ⁾_{j,p}(u) for B-splines (Bézier curves and lines being B-splines on clamped
+//! knots over [0, 1]) and, for NURBS with weights wⱼ, W = Σ wⱼNⱼ, W′ = Σ wⱼN′ⱼ:
+//!
+//! Rⱼ = wⱼNⱼ/W,  R′ⱼ = wⱼ(N′ⱼ·W − Nⱼ·W′)/W².
+//!
+//! [`Entity::coefficients`] returns those cⱼ (only the p + 1 that can be non-zero), which makes
+//! every built-in constraint a constant-coefficient combination of control-point blocks.
+
+use camber_geom::{BSplineCurve2, BezierCurve2, KnotVector, NurbsCurve2};
+use nalgebra::Point2;
+use smallvec::SmallVec;
+
+use crate::errors::{Error, Result};
+use crate::ids::{EntityId, PointRef};
+
+/// A linear combination Σ cⱼ·Pⱼ over an entity's points: (point index, coefficient) pairs.
+pub type Terms = SmallVec<[(usize, f64); 8]>;
+
+/// A sketch entity. Points are stored as the kernel's types, so they can be evaluated directly.
+///
+/// ```
+/// use camber_sketch::Entity;
+/// use nalgebra::Point2;
+/// let e = Entity::Line([Point2::new(0.0, 0.0), Point2::new(2.0, 0.0)]);
+/// let t = e.coefficients(EntityId(0), 0.25, 0)?;
+/// # use camber_sketch::EntityId;
+/// // C(1/4) = ¾·P₀ + ¼·P₁.
+/// assert!((t[0].1 - 0.75).abs() < 1e-15 && (t[1].1 - 0.25).abs() < 1e-15);
+/// # Ok::<(), camber_sketch::Error>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub enum Entity {
+    /// A point.
+    Point(Point2<f64>),
+    /// A straight line through two points, parameterized C(u) = (1 − u)·P₀ + u·P₁ on [0, 1].
+    Line([Point2<f64>; 2]),
+    /// A circle: centre (a point block) and radius (a block of one).
+    Circle {
+        /// The centre.
+        center: Point2<f64>,
+        /// The radius, > 0.
+        radius: f64,
+    },
+    /// A Bézier curve on [0, 1].
+    Bezier(BezierCurve2<f64>),
+    /// A B-spline curve.
+    BSpline(BSplineCurve2<f64>),
+    /// A NURBS curve (weights held fixed).
+    Nurbs(NurbsCurve2<f64>),
+}
+
+/// Degree, knots and weights of a curve: what its basis needs.
+struct BasisData<'a> {
+    degree: usize,
+    knots: std::borrow::Cow<'a, [f64]>,
+    weights: Option<&'a [f64]>,
+}
+
+impl Entity {
+    /// The kind as a word ("point", "line", "circle", "Bézier curve", …).
+    pub fn kind_name(&self) -> &'static str {
+        match self {
+            Entity::Point(_) => "point",
+            Entity::Line(_) => "line",
+            Entity::Circle { .. } => "circle",
+            Entity::Bezier(_) => "Bézier curve",
+            Entity::BSpline(_) => "B-spline curve",
+            Entity::Nurbs(_) => "NURBS curve",
+        }
+    }
+
+    /// The entity's points in block order: the point; the two line ends; the circle centre; the
+    /// control points.
+    pub fn points(&self) -> &[Point2<f64>] {
+        match self {
+            Entity::Point(p) => std::slice::from_ref(p),
+            Entity::Line(ends) => ends,
+            Entity::Circle { center, .. } => std::slice::from_ref(center),
+            Entity::Bezier(c) => c.control_points(),
+            Entity::BSpline(c) => c.control_points(),
+            Entity::Nurbs(c) => c.control_points(),
+        }
+    }
+
+    /// Scalar unknowns besides the points (the circle radius), in block order after the points.
+    pub fn scalars(&self) -> SmallVec<[f64; 1]> {
+        match self {
+            Entity::Circle { radius, .. } => smallvec::smallvec![*radius],
+            _ => SmallVec::new(),
+        }
+    }
+
+    /// The same entity with new points and scalars (as many as before), validated.
+    ///
+    /// # Errors
+    /// [`Error::Geometry`] when the kernel refuses the points (non-finite coordinates),
+    /// [`Error::NonFinite`] for a bad radius, [`Error::UnknownPoint`]-style count mismatches as
+    /// [`Error::Geometry`].
+    pub fn with_points(&self, points: &[Point2<f64>], scalars: &[f64]) -> Result<Entity> {
+        for (i, p) in points.iter().enumerate() {
+            check_point("point", i, p)?;
+        }
+        let expect = |n: usize| -> Result<()> {
+            if points.len() == n {
+                Ok(())
+            } else {
+                Err(Error::Geometry(camber_geom::Error::Dimension {
+                    index: 0,
+                    expected: n,
+                    found: points.len(),
+                }))
+            }
+        };
+        Ok(match self {
+            Entity::Point(_) => {
+                expect(1)?;
+                Entity::Point(points[0])
+            }
+            Entity::Line(_) => {
+                expect(2)?;
+                Entity::Line([points[0], points[1]])
+            }
+            Entity::Circle { radius, .. } => {
+                expect(1)?;
+                let r = scalars.first().copied().unwrap_or(*radius);
+                if !(r.is_finite() && r > 0.0) {
+                    return Err(Error::Geometry(camber_geom::Error::NonPositiveRadius {
+                        value: r,
+                    }));
+                }
+                Entity::Circle {
+                    center: points[0],
+                    radius: r,
+                }
+            }
+            Entity::Bezier(c) => {
+                expect(c.control_points().len())?;
+                Entity::Bezier(BezierCurve2::try_new(points.to_vec())?)
+            }
+            Entity::BSpline(c) => Entity::BSpline(c.with_control_points(points.to_vec())?),
+            Entity::Nurbs(c) => Entity::Nurbs(NurbsCurve2::try_new(
+                c.degree(),
+                c.knots().clone(),
+                points.to_vec(),
+                c.weights().to_vec(),
+            )?),
+        })
+    }
+
+    /// Whether the entity is a curve (line, Bézier, B-spline or NURBS): it has a parameter.
+    pub fn is_curve(&self) -> bool {
+        matches!(
+            self,
+            Entity::Line(_) | Entity::Bezier(_) | Entity::BSpline(_) | Entity::Nurbs(_)
+        )
+    }
+
+    /// Degree, knots and weights (Bézier curves and lines get clamped knots on [0, 1]).
+    fn basis(&self) -> Option<BasisData<'_>> {
+        let clamped01 = |p: usize| {
+            let mut k = vec![0.0; p + 1];
+            k.extend(std::iter::repeat_n(1.0, p + 1));
+            std::borrow::Cow::Owned(k)
+        };
+        match self {
+            Entity::Line(_) => Some(BasisData {
+                degree: 1,
+                knots: clamped01(1),
+                weights: None,
+            }),
+            Entity::Bezier(c) => Some(BasisData {
+                degree: c.degree(),
+                knots: clamped01(c.degree()),
+                weights: None,
+            }),
+            Entity::BSpline(c) => Some(BasisData {
+                degree: c.degree(),
+                knots: std::borrow::Cow::Borrowed(c.knots().as_slice()),
+                weights: None,
+            }),
+            Entity::Nurbs(c) => Some(BasisData {
+                degree: c.degree(),
+                knots: std::borrow::Cow::Borrowed(c.knots().as_slice()),
+                weights: Some(c.weights()),
+            }),
+            _ => None,
+        }
+    }
+
+    /// The parametric domain [a, b] of a curve (`None` for points and circles).
+    pub fn domain(&self) -> Option<(f64, f64)> {
+        if matches!(self, Entity::Line(_) | Entity::Bezier(_)) {
+            return Some((0.0, 1.0));
+        }
+        let b = self.basis()?;
+        let k = &b.knots;
+        Some((k[b.degree], k[k.len() - 1 - b.degree]))
+    }
+
+    /// Whether the curve is clamped at its start (`at_end` false) or end (true): the first
+    /// (last) p + 1 knots are equal, so C(a) = P₀ and C′(a) ∥ P₁ − P₀ (likewise at b).
+    pub fn is_clamped(&self, at_end: bool) -> bool {
+        let Some(b) = self.basis() else {
+            return false;
+        };
+        let k = &b.knots;
+        let p = b.degree;
+        let run: &[f64] = if at_end {
+            &k[k.len() - 1 - p..]
+        } else {
+            &k[..=p]
+        };
+        p >= 1 && run.windows(2).all(|w| (w[1] - w[0]).abs() <= 0.0)
+    }
+
+    /// The coefficients cⱼ of C⁽ᵏ⁾(u) = Σ cⱼ·Pⱼ for `order` k ∈ {0, 1} (see the module
+    /// documentation), as (control point index, cⱼ) for the p + 1 basis functions that can be
+    /// non-zero at u. `id` only names the entity in errors.
+    ///
+    /// # Errors
+    /// [`Error::WrongEntityKind`] for a point or circle; [`Error::NonFinite`] and
+    /// [`Error::ParameterOutsideDomain`] for a bad u.
+    pub fn coefficients(&self, id: EntityId, u: f64, order: usize) -> Result<Terms> {
+        if !self.is_curve() {
+            return Err(Error::WrongEntityKind {
+                entity: id,
+                expected: "curve",
+                found: self.kind_name(),
+            });
+        }
+        if !u.is_finite() {
+            return Err(Error::NonFinite {
+                what: "parameter",
+                index: 0,
+                value: u,
+            });
+        }
+        let (min, max) = self.domain().unwrap_or((0.0, 1.0));
+        if u < min || u > max {
+            return Err(Error::ParameterOutsideDomain {
+                entity: id,
+                value: u,
+                min,
+                max,
+            });
+        }
+        let order = order.min(1);
+        if let Entity::Line(_) | Entity::Bezier(_) = self {
+            let p = self.points().len() - 1;
+            // Bernstein polynomials directly: no knot vector needed.
+            let mut v: SmallVec<[f64; 16]> = smallvec::smallvec![0.0; p + 1];
+            camber_geom::bernstein::bernstein_derivatives(u, order, &mut v);
+            let mut out: Terms = v.iter().copied().enumerate().collect();
+            out.retain(|(_, c)| c.abs() > 0.0);
+            return Ok(out);
+        }
+        let Some(b) = self.basis() else {
+            return Err(Error::WrongEntityKind {
+                entity: id,
+                expected: "curve",
+                found: self.kind_name(),
+            });
+        };
+        let p = b.degree;
+        let knots = KnotVector::new_unchecked(b.knots.to_vec());
+        let span = knots.find_span(p, u);
+        let w = p + 1;
+        let mut ders: SmallVec<[f64; 32]> = smallvec::smallvec![0.0; 2 * w];
+        knots.basis_function_derivatives(span, u, p, 1, &mut ders);
+        let first = span - p;
+        let mut out = Terms::new();
+        match b.weights {
+            None => {
+                for j in 0..w {
+                    out.push((first + j, ders[order * w + j]));
+                }
+            }
+            Some(weights) => {
+                let (mut big_w, mut big_w1) = (0.0, 0.0);
+                for j in 0..w {
+                    let wj = weights.get(first + j).copied().unwrap_or(1.0);
+                    big_w += wj * ders[j];
+                    big_w1 += wj * ders[w + j];
+                }
+                for j in 0..w {
+                    let wj = weights.get(first + j).copied().unwrap_or(1.0);
+                    let (n, n1) = (ders[j], ders[w + j]);
+                    let c = if order == 0 {
+                        wj * n / big_w
+                    } else {
+                        wj * (n1 * big_w - n * big_w1) / (big_w * big_w)
+                    };
+                    out.push((first + j, c));
+                }
+            }
+        }
+        out.retain(|(_, c)| c.abs() > 0.0);
+        Ok(out)
+    }
+
+    /// The combination of this entity's points that a [`PointRef`] denotes.
+    ///
+    /// # Errors
+    /// [`Error::UnknownPoint`] for an index past the points, [`Error::WrongEntityKind`] for
+    /// `Point(_)` on a non-point or `Start`/`End` on a non-curve.
+    pub fn resolve(&self, r: PointRef) -> Result<Terms> {
+        let id = r.entity();
+        match r {
+            PointRef::Point(_) => match self {
+                Entity::Point(_) => Ok(smallvec::smallvec![(0, 1.0)]),
+                other => Err(Error::WrongEntityKind {
+                    entity: id,
+                    expected: "point",
+                    found: other.kind_name(),
+                }),
+            },
+            PointRef::Control(_, index) => {
+                let count = self.points().len();
+                if index < count {
+                    Ok(smallvec::smallvec![(index, 1.0)])
+                } else {
+                    Err(Error::UnknownPoint {
+                        entity: id,
+                        index,
+                        count,
+                    })
+                }
+            }
+            PointRef::Start(_) | PointRef::End(_) => {
+                let (a, b) = self.domain().ok_or(Error::WrongEntityKind {
+                    entity: id,
+                    expected: "curve",
+                    found: self.kind_name(),
+                })?;
+                let u = if matches!(r, PointRef::Start(_)) {
+                    a
+                } else {
+                    b
+                };
+                self.coefficients(id, u, 0)
+            }
+        }
+    }
+
+    /// Checks an entity on entry to a sketch (finite points, positive radius).
+    pub(crate) fn validate(&self) -> Result<()> {
+        for (i, p) in self.points().iter().enumerate() {
+            check_point("point", i, p)?;
+        }
+        if let Entity::Circle { radius, .. } = self {
+            if !(radius.is_finite() && *radius > 0.0) {
+                return Err(Error::Geometry(camber_geom::Error::NonPositiveRadius {
+                    value: *radius,
+                }));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Σ cⱼ·Pⱼ for terms over `points`.
+pub(crate) fn combine(points: &[Point2<f64>], terms: &[(usize, f64)]) -> [f64; 2] {
+    let mut s = [0.0; 2];
+    for (j, c) in terms {
+        if let Some(p) = points.get(*j) {
+            s[0] += c * p.x;
+            s[1] += c * p.y;
+        }
+    }
+    s
+}
+
+/// Rejects a point with a non-finite coordinate.
+pub(crate) fn check_point(what: &'static str, index: usize, p: &Point2<f64>) -> Result<()> {
+    check_finite2(what, index, [p.x, p.y])
+}
+
+/// Rejects a pair with a non-finite entry (`index` is 2·index + coordinate in the error).
+pub(crate) fn check_finite2(what: &'static str, index: usize, v: [f64; 2]) -> Result<()> {
+    for (k, value) in v.into_iter().enumerate() {
+        if !value.is_finite() {
+            return Err(Error::NonFinite {
+                what,
+                index: 2 * index + k,
+                value,
+            });
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+    use camber_geom::ParametricCurve;
+
+    #[test]
+    fn nurbs_coefficients_reproduce_the_curve_and_its_tangent() {
+        let knots = KnotVector::try_new(vec![0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0]).unwrap();
+        let pts = vec![
+            Point2::new(0.0, 0.0),
+            Point2::new(1.0, 2.0),
+            Point2::new(2.0, -1.0),
+            Point2::new(3.0, 0.5),
+        ];
+        let c = NurbsCurve2::try_new(2, knots, pts.clone(), vec![1.0, 2.0, 0.5, 1.5]).unwrap();
+        let e = Entity::Nurbs(c.clone());
+        for u in [0.0, 0.2, 0.5, 0.77, 1.0] {
+            let (p, d) = c.point_and_derivative(u).unwrap();
+            let t0 = e.coefficients(EntityId(0), u, 0).unwrap();
+            let t1 = e.coefficients(EntityId(0), u, 1).unwrap();
+            let (a, b) = (combine(&pts, &t0), combine(&pts, &t1));
+            assert_relative_eq!(a[0], p.x, epsilon = 1e-12);
+            assert_relative_eq!(a[1], p.y, epsilon = 1e-12);
+            assert_relative_eq!(b[0], d.x, epsilon = 1e-11);
+            assert_relative_eq!(b[1], d.y, epsilon = 1e-11);
+        }
+        assert!(e.is_clamped(false) && e.is_clamped(true));
+    }
+
+    #[test]
+    fn bad_parameters_and_kinds() {
+        let e = Entity::Point(Point2::new(1.0, 1.0));
+        assert!(matches!(
+            e.coefficients(EntityId(2), 0.5, 0),
+            Err(Error::WrongEntityKind { .. })
+        ));
+        let l = Entity::Line([Point2::origin(), Point2::new(1.0, 0.0)]);
+        assert_eq!(
+            l.coefficients(EntityId(3), 1.5, 0),
+            Err(Error::ParameterOutsideDomain {
+                entity: EntityId(3),
+                value: 1.5,
+                min: 0.0,
+                max: 1.0
+            })
+        );
+        assert!(matches!(
+            l.resolve(PointRef::Control(EntityId(3), 2)),
+            Err(Error::UnknownPoint {
+                index: 2,
+                count: 2,
+                ..
+            })
+        ));
+    }
+}

@@ -1,0 +1,181 @@
+//! The error type of camber-sketch: one enum whose variants name the offending entity,
+//! constraint, index or value.
+//!
+//! Every fallible operation of [`crate::Sketch`] leaves the sketch exactly as it was when it
+//! returns an error: edits are validated before anything is stored, and solves write back only
+//! after every component has succeeded.
+
+use camber_solve::ConstraintId;
+
+use crate::ids::{EntityId, PointRef};
+
+/// Everything that can go wrong when editing, solving or dragging a [`crate::Sketch`].
+///
+/// ```
+/// use camber_sketch::{EntityId, Error, Sketch};
+/// let sketch = Sketch::new();
+/// assert_eq!(
+///     sketch.entity(EntityId(4)).unwrap_err(),
+///     Error::UnknownEntity { entity: EntityId(4) }
+/// );
+/// ```
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum Error {
+    /// An entity id this sketch does not hold.
+    #[error("{entity} does not exist")]
+    UnknownEntity {
+        /// The id asked for.
+        entity: EntityId,
+    },
+    /// A constraint id this sketch does not hold.
+    #[error("{constraint} does not exist")]
+    UnknownConstraint {
+        /// The id asked for.
+        constraint: ConstraintId,
+    },
+    /// A control point index past the entity's points.
+    #[error("{entity} has {count} points, index {index} does not exist")]
+    UnknownPoint {
+        /// The entity.
+        entity: EntityId,
+        /// The index asked for.
+        index: usize,
+        /// How many points the entity has.
+        count: usize,
+    },
+    /// The entity is of a kind the operation does not accept (a parameter on a point, a
+    /// tangent of a circle, …).
+    #[error("{entity} is a {found}, expected {expected}")]
+    WrongEntityKind {
+        /// The entity.
+        entity: EntityId,
+        /// What the operation needs ("curve", "point", …).
+        expected: &'static str,
+        /// What the entity is.
+        found: &'static str,
+    },
+    /// A number that must be finite is NaN or infinite.
+    #[error("{what} {index} is not finite ({value})")]
+    NonFinite {
+        /// What the number is ("target", "parameter", "direction", …).
+        what: &'static str,
+        /// Its index in the input (coordinate index for points and vectors).
+        index: usize,
+        /// The offending value.
+        value: f64,
+    },
+    /// A tangent or line direction of zero length.
+    #[error("the {what} direction ({x}, {y}) has zero length")]
+    ZeroDirection {
+        /// Which direction ("tangent", "line", …).
+        what: &'static str,
+        /// Its x component.
+        x: f64,
+        /// Its y component.
+        y: f64,
+    },
+    /// A curve parameter outside the curve's domain.
+    #[error("parameter {value} is outside the domain [{min}, {max}] of {entity}")]
+    ParameterOutsideDomain {
+        /// The curve.
+        entity: EntityId,
+        /// The parameter.
+        value: f64,
+        /// Start of the domain.
+        min: f64,
+        /// End of the domain.
+        max: f64,
+    },
+    /// The elimination form of an end tangency needs the first (or last) two control points to
+    /// span the end tangent: a curve clamped at that end (degree ≥ 1).
+    #[error("{entity} is not clamped at its {end} end; use the row form of the tangency")]
+    NotClampedEnd {
+        /// The curve.
+        entity: EntityId,
+        /// "start" or "end".
+        end: &'static str,
+    },
+    /// An entity cannot be removed while constraints read it.
+    #[error("{entity} is read by {constraint}")]
+    EntityInUse {
+        /// The entity.
+        entity: EntityId,
+        /// A constraint reading it.
+        constraint: ConstraintId,
+    },
+    /// The geometry kernel refused a curve (bad knots, weights, points, …).
+    #[error("geometry: {0}")]
+    Geometry(#[from] camber_geom::Error),
+    /// Dependent constraints whose values contradict each other; nothing was moved.
+    #[error("conflicting constraints: {constraints:?}")]
+    Conflicting {
+        /// The constraints owning an inconsistent dependent row.
+        constraints: Vec<ConstraintId>,
+    },
+    /// Consistent dependent constraints while the options forbid dropping them.
+    #[error("redundant constraints: {constraints:?}")]
+    Redundant {
+        /// The constraints owning a consistent dependent row.
+        constraints: Vec<ConstraintId>,
+    },
+    /// Constraints still violated after the solve; nothing was moved.
+    #[error("constraints not satisfied (constraint, max |g|): {failed:?}")]
+    NotSatisfied {
+        /// Each failing constraint with its largest absolute residual.
+        failed: Vec<(ConstraintId, f64)>,
+    },
+    /// A constraint that is not affine in the unknowns: the nonlinear solver (issue 4) is not
+    /// available yet, so its component cannot be solved.
+    #[error("{constraint} ({name}) is not affine and needs the nonlinear solver")]
+    NeedsNonlinear {
+        /// The constraint.
+        constraint: ConstraintId,
+        /// Its residual's name.
+        name: String,
+    },
+    /// The solve would reverse a tangency (a cusp): the tangent no longer points along the
+    /// recorded sense. Nothing was moved.
+    #[error("{constraint} would flip its tangent orientation (signed dot {dot})")]
+    OrientationFlipped {
+        /// The tangency constraint.
+        constraint: ConstraintId,
+        /// sense·(C′(u)·T) after the solve (≤ 0).
+        dot: f64,
+    },
+    /// The dragged point cannot move: it is fixed or fully determined by the constraints.
+    #[error("{point:?} cannot be dragged: it is fixed or determined by the constraints")]
+    NotDraggable {
+        /// The point asked for.
+        point: PointRef,
+    },
+    /// A drag session finished on a sketch edited since the session began.
+    #[error("the sketch changed since the drag began (revision {expected}, now {found})")]
+    StaleSession {
+        /// The revision the session was built on.
+        expected: u64,
+        /// The sketch's revision now.
+        found: u64,
+    },
+    /// Any other failure of the constraint solver.
+    #[error("solver: {0}")]
+    Solve(camber_solve::Error),
+}
+
+impl From<camber_solve::Error> for Error {
+    fn from(e: camber_solve::Error) -> Self {
+        use camber_solve::Error as S;
+        match e {
+            S::Conflicting { constraints } => Error::Conflicting { constraints },
+            S::Redundant { constraints } => Error::Redundant { constraints },
+            S::NotSatisfied { failed } => Error::NotSatisfied { failed },
+            S::NonlinearNotAvailable { constraint, name } => {
+                Error::NeedsNonlinear { constraint, name }
+            }
+            other => Error::Solve(other),
+        }
+    }
+}
+
+/// Result with camber-sketch's [`Error`].
+pub type Result<T> = std::result::Result<T, Error>;

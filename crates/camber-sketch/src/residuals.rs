@@ -1,0 +1,182 @@
+//! The residuals the built-in constraints compile to: constant-coefficient combinations of
+//! point blocks (each block a point (x, y)), all affine.
+//!
+//! With blocks P₁, …, P_k read and coefficients c₁, …, c_k (curve basis values or their
+//! derivatives at a fixed parameter, ±1 for plain points), v = Σ cⱼ·Pⱼ is a curve point, a
+//! tangent, or a difference of points, and:
+//! - [`PointCombination`]: v − target = 0 (two rows);
+//! - [`DirectionCross`]: cross(v, d) = v_x·d_y − v_y·d_x = 0 (one row);
+//! - [`LineTangency`]: cross(v₀ − L₀, d) = 0 and cross(v₁, d) = 0, v₀ and v₁ being two
+//!   combinations over the same blocks (two rows).
+//!
+//! Their Jacobians are constant: ∂/∂Pⱼ of v is cⱼ·I₂.
+
+use camber_solve::scalar::cst;
+use camber_solve::{Residual, Scalar};
+
+/// v = Σ cⱼ·Pⱼ over the blocks read (each of length 2).
+#[inline]
+fn combination<T: Scalar>(coeffs: &[f64], x: &[&[T]]) -> [T; 2] {
+    let mut v = [T::zero(), T::zero()];
+    for (c, p) in coeffs.iter().zip(x) {
+        let c = cst::<T>(*c);
+        v[0] += c * p[0];
+        v[1] += c * p[1];
+    }
+    v
+}
+
+/// Σ cⱼ·Pⱼ − target = 0: a point of a curve at a parameter, a tangent vector, a difference of
+/// two points (coincidence), or a pinned point (dragging). Two rows.
+///
+/// ```
+/// use camber_sketch::residuals::PointCombination;
+/// use camber_solve::Residual;
+/// // The midpoint of two blocks at (1, 1).
+/// let r = PointCombination::new("midpoint", vec![0.5, 0.5], [1.0, 1.0]);
+/// let mut g = [0.0_f64; 2];
+/// r.eval(&[&[0.0, 0.0][..], &[2.0, 4.0][..]], &mut g);
+/// assert!(g[0].abs() < 1e-15 && (g[1] - 1.0).abs() < 1e-15);
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct PointCombination {
+    name: &'static str,
+    coeffs: Vec<f64>,
+    target: [f64; 2],
+}
+
+impl PointCombination {
+    /// The residual Σ `coeffs`ⱼ·Pⱼ − `target`, named `name` in reports.
+    pub fn new(name: &'static str, coeffs: Vec<f64>, target: [f64; 2]) -> Self {
+        Self {
+            name,
+            coeffs,
+            target,
+        }
+    }
+
+    /// The coefficients, one per block read.
+    pub fn coeffs(&self) -> &[f64] {
+        &self.coeffs
+    }
+}
+
+impl Residual for PointCombination {
+    fn name(&self) -> &str {
+        self.name
+    }
+    fn dim(&self) -> usize {
+        2
+    }
+    fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+        let v = combination(&self.coeffs, x);
+        out[0] = v[0] - cst::<T>(self.target[0]);
+        out[1] = v[1] - cst::<T>(self.target[1]);
+    }
+    fn is_affine(&self) -> bool {
+        true
+    }
+}
+
+/// cross(Σ cⱼ·Pⱼ, d) = 0: the combination (a tangent C′(u)) is parallel to the fixed direction
+/// d. One row. Which way it points is checked separately (see [`crate::Sense`]).
+///
+/// ```
+/// use camber_sketch::residuals::DirectionCross;
+/// use camber_solve::Residual;
+/// // P₁ − P₀ parallel to (1, 1).
+/// let r = DirectionCross::new("start tangent", vec![-1.0, 1.0], [1.0, 1.0]);
+/// let mut g = [0.0_f64];
+/// r.eval(&[&[0.0, 0.0][..], &[2.0, 2.0][..]], &mut g);
+/// assert!(g[0].abs() < 1e-15);
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct DirectionCross {
+    name: &'static str,
+    coeffs: Vec<f64>,
+    direction: [f64; 2],
+}
+
+impl DirectionCross {
+    /// The residual cross(Σ `coeffs`ⱼ·Pⱼ, `direction`), named `name` in reports.
+    pub fn new(name: &'static str, coeffs: Vec<f64>, direction: [f64; 2]) -> Self {
+        Self {
+            name,
+            coeffs,
+            direction,
+        }
+    }
+}
+
+impl Residual for DirectionCross {
+    fn name(&self) -> &str {
+        self.name
+    }
+    fn dim(&self) -> usize {
+        1
+    }
+    fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+        let v = combination(&self.coeffs, x);
+        out[0] = v[0] * cst::<T>(self.direction[1]) - v[1] * cst::<T>(self.direction[0]);
+    }
+    fn is_affine(&self) -> bool {
+        true
+    }
+}
+
+/// A curve point on a fixed line and the tangent parallel to it: with v₀ = Σ aⱼ·Pⱼ (the point)
+/// and v₁ = Σ bⱼ·Pⱼ (the tangent) over the same blocks, the rows are cross(v₀ − L₀, d) and
+/// cross(v₁, d).
+///
+/// ```
+/// use camber_sketch::residuals::LineTangency;
+/// use camber_solve::Residual;
+/// // The segment P₀P₁ at u = ½ on the x axis and along it.
+/// let r = LineTangency::new(vec![0.5, 0.5], vec![-1.0, 1.0], [0.0, 0.0], [1.0, 0.0]);
+/// let mut g = [0.0_f64; 2];
+/// r.eval(&[&[0.0, 1.0][..], &[2.0, -1.0][..]], &mut g);
+/// assert!(g[0].abs() < 1e-15 && (g[1] - 2.0).abs() < 1e-15);
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct LineTangency {
+    point: Vec<f64>,
+    tangent: Vec<f64>,
+    origin: [f64; 2],
+    direction: [f64; 2],
+}
+
+impl LineTangency {
+    /// The two rows for point coefficients `point`, tangent coefficients `tangent` (one each
+    /// per block read), and the line through `origin` along `direction`.
+    pub fn new(point: Vec<f64>, tangent: Vec<f64>, origin: [f64; 2], direction: [f64; 2]) -> Self {
+        Self {
+            point,
+            tangent,
+            origin,
+            direction,
+        }
+    }
+}
+
+impl Residual for LineTangency {
+    fn name(&self) -> &str {
+        "tangent to line at"
+    }
+    fn dim(&self) -> usize {
+        2
+    }
+    fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+        let p = combination(&self.point, x);
+        let t = combination(&self.tangent, x);
+        let (dx, dy) = (cst::<T>(self.direction[0]), cst::<T>(self.direction[1]));
+        let (qx, qy) = (
+            p[0] - cst::<T>(self.origin[0]),
+            p[1] - cst::<T>(self.origin[1]),
+        );
+        out[0] = qx * dy - qy * dx;
+        out[1] = t[0] * dy - t[1] * dx;
+    }
+    fn is_affine(&self) -> bool {
+        true
+    }
+}

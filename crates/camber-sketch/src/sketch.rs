@@ -1,0 +1,417 @@
+//! The sketch: entities and constraints as nodes of a petgraph graph, connected components,
+//! the dirty set, and editing.
+//!
+//! The graph is bipartite: an entity node per entity, a constraint node per constraint, and an
+//! edge from a constraint to every entity it reads. Two entities share a component exactly when
+//! a chain of constraints links them; each component is an independent problem. Edits mark the
+//! entities they touch as dirty, and [`Sketch::solve`] solves only the components that contain a
+//! dirty entity.
+
+use std::collections::{BTreeMap, BTreeSet};
+
+use camber_geom::{BSplineCurve2, BezierCurve2, NurbsCurve2};
+use camber_solve::{ConstraintId, Options};
+use nalgebra::Point2;
+use petgraph::stable_graph::{NodeIndex, StableUnGraph};
+use petgraph::visit::NodeIndexable;
+
+use crate::build::{build, Component, ComponentProblem};
+use crate::compile::{compile, EntityLookup};
+use crate::constraint::Constraint;
+use crate::entity::{combine, Entity};
+use crate::errors::{Error, Result};
+use crate::ids::{EntityId, PointRef};
+
+/// A node of the sketch graph.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Node {
+    Entity(EntityId),
+    Constraint(ConstraintId),
+}
+
+/// A planar sketch of entities held by constraints.
+///
+/// ```
+/// use camber_sketch::{Constraint, FixTarget, PointRef, Sketch, Target};
+/// use camber_geom::BezierCurve2;
+/// use nalgebra::Point2;
+/// let mut s = Sketch::new();
+/// let c = s.add_bezier(BezierCurve2::try_new(vec![
+///     Point2::new(0.0, 0.0), Point2::new(1.0, 1.0), Point2::new(2.0, 0.0),
+/// ])?)?;
+/// s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::Start(c))))?;
+/// s.add_constraint(Constraint::PointAtParameter { curve: c, u: 0.5, target: Target::At(Point2::new(1.0, 1.0)) })?;
+/// let report = s.solve()?;
+/// assert_eq!(report.components.len(), 1);
+/// // C(½) = ¼P₀ + ½P₁ + ¼P₂ reaches (1, 1); P₀ stays.
+/// let mid = s.curve_point(c, 0.5)?;
+/// assert!((mid.y - 1.0).abs() < 1e-12 && s.point(PointRef::Start(c))?.y.abs() < 1e-15);
+/// # Ok::<(), camber_sketch::Error>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct Sketch {
+    graph: StableUnGraph<Node, ()>,
+    entities: BTreeMap<EntityId, (Entity, NodeIndex)>,
+    constraints: BTreeMap<ConstraintId, (Constraint, NodeIndex)>,
+    next_id: u64,
+    dirty: BTreeSet<EntityId>,
+    revision: u64,
+    options: Options,
+}
+
+impl Default for Sketch {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl EntityLookup for Sketch {
+    fn lookup(&self, id: EntityId) -> Result<&Entity> {
+        self.entities
+            .get(&id)
+            .map(|(e, _)| e)
+            .ok_or(Error::UnknownEntity { entity: id })
+    }
+}
+
+/// # Construction
+impl Sketch {
+    /// An empty sketch with the default solver options ([`crate::solve::default_options`]).
+    pub fn new() -> Self {
+        Self::with_options(crate::solve::default_options())
+    }
+
+    /// An empty sketch solved with `options` (tolerances, dense/sparse thresholds).
+    pub fn with_options(options: Options) -> Self {
+        Self {
+            graph: StableUnGraph::default(),
+            entities: BTreeMap::new(),
+            constraints: BTreeMap::new(),
+            next_id: 0,
+            dirty: BTreeSet::new(),
+            revision: 0,
+            options,
+        }
+    }
+}
+
+/// # Entities
+impl Sketch {
+    /// Adds an entity (validated: finite points, positive radius).
+    ///
+    /// # Errors
+    /// [`Error::NonFinite`] or [`Error::Geometry`]; nothing is added then.
+    pub fn add_entity(&mut self, entity: Entity) -> Result<EntityId> {
+        entity.validate()?;
+        let id = EntityId(self.next_id);
+        self.next_id += 1;
+        let node = self.graph.add_node(Node::Entity(id));
+        self.entities.insert(id, (entity, node));
+        self.dirty.insert(id);
+        self.revision += 1;
+        Ok(id)
+    }
+
+    /// Adds a point.
+    ///
+    /// # Errors
+    /// As [`Sketch::add_entity`].
+    pub fn add_point(&mut self, p: Point2<f64>) -> Result<EntityId> {
+        self.add_entity(Entity::Point(p))
+    }
+
+    /// Adds a line through two points.
+    ///
+    /// # Errors
+    /// As [`Sketch::add_entity`].
+    pub fn add_line(&mut self, a: Point2<f64>, b: Point2<f64>) -> Result<EntityId> {
+        self.add_entity(Entity::Line([a, b]))
+    }
+
+    /// Adds a circle.
+    ///
+    /// # Errors
+    /// As [`Sketch::add_entity`].
+    pub fn add_circle(&mut self, center: Point2<f64>, radius: f64) -> Result<EntityId> {
+        self.add_entity(Entity::Circle { center, radius })
+    }
+
+    /// Adds a Bézier curve.
+    ///
+    /// # Errors
+    /// As [`Sketch::add_entity`].
+    pub fn add_bezier(&mut self, curve: BezierCurve2<f64>) -> Result<EntityId> {
+        self.add_entity(Entity::Bezier(curve))
+    }
+
+    /// Adds a B-spline curve.
+    ///
+    /// # Errors
+    /// As [`Sketch::add_entity`].
+    pub fn add_bspline(&mut self, curve: BSplineCurve2<f64>) -> Result<EntityId> {
+        self.add_entity(Entity::BSpline(curve))
+    }
+
+    /// Adds a NURBS curve (its weights stay fixed in every solve).
+    ///
+    /// # Errors
+    /// As [`Sketch::add_entity`].
+    pub fn add_nurbs(&mut self, curve: NurbsCurve2<f64>) -> Result<EntityId> {
+        self.add_entity(Entity::Nurbs(curve))
+    }
+
+    /// The entity with that id.
+    ///
+    /// # Errors
+    /// [`Error::UnknownEntity`].
+    pub fn entity(&self, id: EntityId) -> Result<&Entity> {
+        self.lookup(id)
+    }
+
+    /// Every entity, by id.
+    pub fn entities(&self) -> impl Iterator<Item = (EntityId, &Entity)> {
+        self.entities.iter().map(|(id, (e, _))| (*id, e))
+    }
+
+    /// The location of a point of the sketch (for `Start`/`End`, the curve point there).
+    ///
+    /// # Errors
+    /// [`Error::UnknownEntity`], [`Error::UnknownPoint`], [`Error::WrongEntityKind`].
+    pub fn point(&self, r: PointRef) -> Result<Point2<f64>> {
+        let e = self.lookup(r.entity())?;
+        let v = combine(e.points(), &e.resolve(r)?);
+        Ok(Point2::new(v[0], v[1]))
+    }
+
+    /// The curve point C(u) of a curve entity.
+    ///
+    /// # Errors
+    /// As [`Entity::coefficients`].
+    pub fn curve_point(&self, curve: EntityId, u: f64) -> Result<Point2<f64>> {
+        let e = self.lookup(curve)?;
+        let v = combine(e.points(), &e.coefficients(curve, u, 0)?);
+        Ok(Point2::new(v[0], v[1]))
+    }
+
+    /// Moves one point block (a point entity, a control point, a line end, a circle centre) to
+    /// `to`, marking the entity dirty. The constraints are not solved here.
+    ///
+    /// # Errors
+    /// [`Error::NonFinite`] for `to`; [`Error::WrongEntityKind`] for `Start`/`End` references
+    /// (they are combinations, move a control point instead); id errors. Nothing changes then.
+    pub fn set_point(&mut self, r: PointRef, to: Point2<f64>) -> Result<()> {
+        crate::entity::check_point("point", 0, &to)?;
+        let e = self.lookup(r.entity())?;
+        let index = match (r, e) {
+            (PointRef::Point(_), Entity::Point(_)) => 0,
+            (PointRef::Control(_, i), _) => i,
+            _ => {
+                return Err(Error::WrongEntityKind {
+                    entity: r.entity(),
+                    expected: "point or control point",
+                    found: e.kind_name(),
+                })
+            }
+        };
+        e.resolve(PointRef::Control(r.entity(), index))?;
+        let mut pts = e.points().to_vec();
+        pts[index] = to;
+        let updated = e.with_points(&pts, &e.scalars())?;
+        if let Some(slot) = self.entities.get_mut(&r.entity()) {
+            slot.0 = updated;
+        }
+        self.dirty.insert(r.entity());
+        self.revision += 1;
+        Ok(())
+    }
+
+    /// Removes an entity no constraint reads.
+    ///
+    /// # Errors
+    /// [`Error::UnknownEntity`]; [`Error::EntityInUse`] naming a constraint that reads it.
+    pub fn remove_entity(&mut self, id: EntityId) -> Result<Entity> {
+        let (_, node) = self
+            .entities
+            .get(&id)
+            .ok_or(Error::UnknownEntity { entity: id })?;
+        if let Some(Node::Constraint(c)) = self
+            .graph
+            .neighbors(*node)
+            .next()
+            .and_then(|n| self.graph.node_weight(n).copied())
+        {
+            return Err(Error::EntityInUse {
+                entity: id,
+                constraint: c,
+            });
+        }
+        let (e, node) = self
+            .entities
+            .remove(&id)
+            .ok_or(Error::UnknownEntity { entity: id })?;
+        self.graph.remove_node(node);
+        self.dirty.remove(&id);
+        self.revision += 1;
+        Ok(e)
+    }
+}
+
+/// # Constraints
+impl Sketch {
+    /// Adds a constraint after validating it against the current entities (ids, indices,
+    /// parameters inside the domains, finite numbers, non-zero directions, clamped ends for the
+    /// elimination form). Its entities become dirty; nothing is solved here.
+    ///
+    /// # Errors
+    /// The validation errors; nothing is added then.
+    pub fn add_constraint(&mut self, constraint: Constraint) -> Result<ConstraintId> {
+        compile(self, &constraint)?;
+        let id = ConstraintId(self.next_id);
+        self.next_id += 1;
+        let node = self.graph.add_node(Node::Constraint(id));
+        for e in constraint.entities() {
+            if let Some((_, en)) = self.entities.get(&e) {
+                self.graph.add_edge(node, *en, ());
+            }
+            self.dirty.insert(e);
+        }
+        self.constraints.insert(id, (constraint, node));
+        self.revision += 1;
+        Ok(id)
+    }
+
+    /// The constraint with that id.
+    ///
+    /// # Errors
+    /// [`Error::UnknownConstraint`].
+    pub fn constraint(&self, id: ConstraintId) -> Result<&Constraint> {
+        self.constraints
+            .get(&id)
+            .map(|(c, _)| c)
+            .ok_or(Error::UnknownConstraint { constraint: id })
+    }
+
+    /// Every constraint, by id.
+    pub fn constraints(&self) -> impl Iterator<Item = (ConstraintId, &Constraint)> {
+        self.constraints.iter().map(|(id, (c, _))| (*id, c))
+    }
+
+    /// Removes a constraint; its entities become dirty.
+    ///
+    /// # Errors
+    /// [`Error::UnknownConstraint`].
+    pub fn remove_constraint(&mut self, id: ConstraintId) -> Result<Constraint> {
+        let (c, node) = self
+            .constraints
+            .remove(&id)
+            .ok_or(Error::UnknownConstraint { constraint: id })?;
+        self.graph.remove_node(node);
+        self.dirty.extend(c.entities());
+        self.revision += 1;
+        Ok(c)
+    }
+}
+
+/// # Components
+impl Sketch {
+    /// The connected components of the graph, each with its entities and constraints sorted by
+    /// id, ordered by their smallest entity id.
+    pub fn components(&self) -> Vec<Component> {
+        let mut seen = vec![false; self.graph.node_bound()];
+        let mut out = Vec::new();
+        let mut stack = Vec::new();
+        for (_, node) in self.entities.values() {
+            if seen[node.index()] {
+                continue;
+            }
+            let mut comp = Component {
+                entities: Vec::new(),
+                constraints: Vec::new(),
+            };
+            seen[node.index()] = true;
+            stack.push(*node);
+            while let Some(n) = stack.pop() {
+                match self.graph.node_weight(n) {
+                    Some(Node::Entity(e)) => comp.entities.push(*e),
+                    Some(Node::Constraint(c)) => comp.constraints.push(*c),
+                    None => {}
+                }
+                for m in self.graph.neighbors(n) {
+                    if !seen[m.index()] {
+                        seen[m.index()] = true;
+                        stack.push(m);
+                    }
+                }
+            }
+            comp.entities.sort_unstable();
+            comp.constraints.sort_unstable();
+            out.push(comp);
+        }
+        out
+    }
+
+    /// The component containing an entity.
+    ///
+    /// # Errors
+    /// [`Error::UnknownEntity`].
+    pub fn component_of(&self, entity: EntityId) -> Result<Component> {
+        self.lookup(entity)?;
+        self.components()
+            .into_iter()
+            .find(|c| c.entities.binary_search(&entity).is_ok())
+            .ok_or(Error::UnknownEntity { entity })
+    }
+
+    /// Entities changed since they were last solved.
+    pub fn dirty(&self) -> impl Iterator<Item = EntityId> + '_ {
+        self.dirty.iter().copied()
+    }
+
+    /// A counter that grows with every edit (used to detect stale drag sessions).
+    pub fn revision(&self) -> u64 {
+        self.revision
+    }
+
+    /// The solver options.
+    pub fn options(&self) -> &Options {
+        &self.options
+    }
+
+    /// Builds (without solving) the problem of the component containing `entity`.
+    ///
+    /// # Errors
+    /// [`Error::UnknownEntity`]; errors of compiling the constraints.
+    pub fn component_problem(&self, entity: EntityId) -> Result<ComponentProblem> {
+        let comp = self.component_of(entity)?;
+        self.build_component(&comp, None)
+    }
+
+    pub(crate) fn build_component(
+        &self,
+        comp: &Component,
+        pin: Option<PointRef>,
+    ) -> Result<ComponentProblem> {
+        let mut list = Vec::with_capacity(comp.constraints.len());
+        for id in &comp.constraints {
+            list.push((*id, self.constraint(*id)?));
+        }
+        build(self, comp, &list, pin)
+    }
+
+    pub(crate) fn is_dirty(&self, comp: &Component) -> bool {
+        comp.entities.iter().any(|e| self.dirty.contains(e))
+    }
+
+    /// Writes solved entities and clears their dirty marks.
+    pub(crate) fn commit(&mut self, updates: Vec<(EntityId, Entity)>, clean: &[EntityId]) {
+        for (id, e) in updates {
+            if let Some(slot) = self.entities.get_mut(&id) {
+                slot.0 = e;
+            }
+        }
+        for id in clean {
+            self.dirty.remove(id);
+        }
+        self.revision += 1;
+    }
+}

@@ -1,0 +1,193 @@
+//! The standard workloads of `shared/benchmarks/WORKLOADS.md` that run on the linear path
+//! (W1, W3a, W4) and the blade section of the paper, built as sketches so that benchmarks,
+//! tests and tools share one definition.
+
+use camber_geom::BezierCurve2;
+use nalgebra::{Point2, Vector2};
+
+use crate::constraint::{Constraint, FixTarget, Sense, TangentForm};
+use crate::errors::Result;
+use crate::ids::{EntityId, PointRef};
+use crate::sketch::Sketch;
+
+/// W1: the cubic P₀ = (0, 0), P₁ = 1.2·D, P₂ = (2.2, 0.9), P₃ = (3, 0) with D = (cos 30°,
+/// sin 30°); P₃ fixed; start tangent parallel to D with the same sense (in `form`). Returns the
+/// sketch, the curve and D.
+///
+/// ```
+/// let (s, c, d) = camber_sketch::workloads::w1(camber_sketch::TangentForm::Row)?;
+/// assert!((s.point(camber_sketch::PointRef::Control(c, 1))?.x - 1.2 * d.x).abs() < 1e-15);
+/// # Ok::<(), camber_sketch::Error>(())
+/// ```
+///
+/// # Errors
+/// None in practice (the data are valid); the signature carries the sketch's errors.
+pub fn w1(form: TangentForm) -> Result<(Sketch, EntityId, Vector2<f64>)> {
+    let a = 30f64.to_radians();
+    let d = Vector2::new(a.cos(), a.sin());
+    let mut s = Sketch::new();
+    let c = s.add_bezier(BezierCurve2::try_new(vec![
+        Point2::origin(),
+        Point2::from(1.2 * d),
+        Point2::new(2.2, 0.9),
+        Point2::new(3.0, 0.0),
+    ])?)?;
+    s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::Control(c, 3))))?;
+    s.add_constraint(Constraint::StartTangent {
+        curve: c,
+        direction: d,
+        sense: Sense::Agree,
+        form,
+    })?;
+    Ok((s, c, d))
+}
+
+/// The W1 drag targets: P₁ + 0.2·(cos θₖ − 1, sin θₖ), θₖ = 2πk/200, k = 1..200.
+pub fn w1_targets(p1: Point2<f64>) -> Vec<Point2<f64>> {
+    (1..=200)
+        .map(|k| {
+            let th = std::f64::consts::TAU * k as f64 / 200.0;
+            p1 + 0.2 * Vector2::new(th.cos() - 1.0, th.sin())
+        })
+        .collect()
+}
+
+/// The curves of a blade section around its leading edge.
+#[derive(Debug, Clone, Copy)]
+pub struct Blade {
+    /// Pressure side, a quintic from the trailing edge to the leading edge (start fixed).
+    pub pressure: EntityId,
+    /// Leading edge, a quintic from the pressure-side end to the suction-side start.
+    pub leading: EntityId,
+    /// Suction side, a quintic from the leading edge to the trailing edge (end fixed).
+    pub suction: EntityId,
+}
+
+/// The blade section: three quintic Béziers (18 control points) joined G1 at the leading edge
+/// with the joint directions fixed (the pressure side's end tangent and the suction side's
+/// start tangent), outer ends fixed: 8 affine rows, 32 free unknowns.
+///
+/// # Errors
+/// None in practice.
+pub fn blade() -> Result<(Sketch, Blade)> {
+    let pts = |v: &[(f64, f64)]| v.iter().map(|(x, y)| Point2::new(*x, *y)).collect();
+    let mut s = Sketch::new();
+    let pressure = s.add_bezier(BezierCurve2::try_new(pts(&[
+        (1.0, 0.0),
+        (0.8, -0.04),
+        (0.6, -0.06),
+        (0.35, -0.06),
+        (0.15, -0.045),
+        (0.05, -0.03),
+    ]))?)?;
+    let leading = s.add_bezier(BezierCurve2::try_new(pts(&[
+        (0.05, -0.03),
+        (0.0, -0.0225),
+        (-0.01, -0.01),
+        (-0.01, 0.01),
+        (0.0, 0.03),
+        (0.05, 0.04),
+    ]))?)?;
+    let suction = s.add_bezier(BezierCurve2::try_new(pts(&[
+        (0.05, 0.04),
+        (0.15, 0.06),
+        (0.35, 0.08),
+        (0.6, 0.075),
+        (0.8, 0.05),
+        (1.0, 0.0),
+    ]))?)?;
+    s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::Start(
+        pressure,
+    ))))?;
+    s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::End(suction))))?;
+    s.add_constraint(Constraint::G1Join {
+        first: pressure,
+        second: leading,
+        direction: Vector2::new(-0.1, 0.015),
+    })?;
+    s.add_constraint(Constraint::G1Join {
+        first: leading,
+        second: suction,
+        direction: Vector2::new(0.05, 0.01),
+    })?;
+    Ok((
+        s,
+        Blade {
+            pressure,
+            leading,
+            suction,
+        },
+    ))
+}
+
+/// W3a: `n` cubic segments along y = 0.5·sin(2πx/12), each with its own four control points,
+/// consecutive segments joined G1 with the joint tangent fixed, the first point fixed and the
+/// last point moved by (−0.3, 0.4) and fixed there. Returns the sketch (dirty, not solved) and
+/// the segments.
+///
+/// # Errors
+/// None in practice.
+pub fn w3a_chain(n: usize) -> Result<(Sketch, Vec<EntityId>)> {
+    let w = std::f64::consts::TAU / 12.0;
+    let joint = |k: usize| Point2::new(k as f64, 0.5 * (w * k as f64).sin());
+    let tangent = |k: usize| Vector2::new(1.0, 0.5 * w * (w * k as f64).cos()).normalize();
+    let mut s = Sketch::new();
+    let mut segs = Vec::with_capacity(n);
+    for i in 0..n {
+        let (a, b) = (joint(i), joint(i + 1));
+        let h = (b - a).norm() / 3.0;
+        segs.push(s.add_bezier(BezierCurve2::try_new(vec![
+            a,
+            a + h * tangent(i),
+            b - h * tangent(i + 1),
+            b,
+        ])?)?);
+    }
+    for i in 1..n {
+        s.add_constraint(Constraint::G1Join {
+            first: segs[i - 1],
+            second: segs[i],
+            direction: tangent(i),
+        })?;
+    }
+    if let (Some(first), Some(last)) = (segs.first(), segs.last()) {
+        s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::Control(
+            *first, 0,
+        ))))?;
+        let end = PointRef::Control(*last, 3);
+        s.set_point(end, joint(n) + Vector2::new(-0.3, 0.4))?;
+        s.add_constraint(Constraint::Fixed(FixTarget::Point(end)))?;
+    }
+    Ok((s, segs))
+}
+
+/// W4: `n` independent cubics, each with both ends fixed and a start tangent (row form) along
+/// a direction that its first leg misses by a few degrees, so that every component needs a
+/// solve. Returns the sketch (dirty) and the curves.
+///
+/// # Errors
+/// None in practice.
+pub fn w4(n: usize) -> Result<(Sketch, Vec<EntityId>)> {
+    let mut s = Sketch::new();
+    let mut curves = Vec::with_capacity(n);
+    for i in 0..n {
+        let x = 4.0 * i as f64;
+        let c = s.add_bezier(BezierCurve2::try_new(vec![
+            Point2::new(x, 0.0),
+            Point2::new(x + 1.0, 1.0),
+            Point2::new(x + 2.0, 1.0),
+            Point2::new(x + 3.0, 0.0),
+        ])?)?;
+        let a = (40.0 + (i % 10) as f64).to_radians();
+        s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::Start(c))))?;
+        s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::End(c))))?;
+        s.add_constraint(Constraint::StartTangent {
+            curve: c,
+            direction: Vector2::new(a.cos(), a.sin()),
+            sense: Sense::Agree,
+            form: TangentForm::Row,
+        })?;
+        curves.push(c);
+    }
+    Ok((s, curves))
+}

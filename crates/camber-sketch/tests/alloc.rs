@@ -1,0 +1,56 @@
+//! No heap allocation per drag update (W1 in both forms and the blade section), shown by a
+//! counting global allocator (stats_alloc). This file holds a single test so that no other test
+//! thread allocates while it counts.
+
+// Fixture helpers outside #[test] functions unwrap results of fixed, valid inputs.
+#![allow(clippy::unwrap_used)]
+
+use std::alloc::System;
+
+use camber_sketch::workloads::{blade, w1, w1_targets};
+use camber_sketch::{PointRef, TangentForm};
+use nalgebra::Vector2;
+use stats_alloc::{Region, StatsAlloc, INSTRUMENTED_SYSTEM};
+
+#[global_allocator]
+static GLOBAL: &StatsAlloc<System> = &INSTRUMENTED_SYSTEM;
+
+/// Allocations (and reallocations) since `region` began.
+fn allocations(region: &Region<'_, System>) -> usize {
+    let s = region.change();
+    s.allocations + s.reallocations
+}
+
+#[test]
+fn drag_updates_do_not_allocate() {
+    for form in [TangentForm::Row, TangentForm::Elimination] {
+        let (s, c, _) = w1(form).unwrap();
+        let p1 = PointRef::Control(c, 1);
+        let targets = w1_targets(s.point(p1).unwrap());
+        let mut drag = s.drag(p1).unwrap();
+        drag.update(targets[0]).unwrap(); // warm up
+        let region = Region::new(GLOBAL);
+        for t in &targets {
+            drag.update(*t).unwrap();
+        }
+        assert_eq!(allocations(&region), 0, "W1 {form:?}");
+    }
+
+    let (s, b) = blade().unwrap();
+    let p = PointRef::Control(b.leading, 2);
+    let start = s.point(p).unwrap();
+    let mut drag = s.drag(p).unwrap();
+    drag.update(start).unwrap();
+    let region = Region::new(GLOBAL);
+    for k in 0..200 {
+        let th = std::f64::consts::TAU * k as f64 / 200.0;
+        drag.update(start + 0.01 * Vector2::new(th.cos() - 1.0, th.sin()))
+            .unwrap();
+    }
+    assert_eq!(allocations(&region), 0, "blade");
+
+    // The counter does see allocations.
+    let region = Region::new(GLOBAL);
+    let v: Vec<u64> = std::hint::black_box(vec![1, 2, 3]);
+    assert!(allocations(&region) >= 1 && v.len() == 3);
+}
