@@ -277,8 +277,16 @@ pub(crate) fn build<L: EntityLookup>(
             points: Vec::with_capacity(e.points().len()),
             scalars: Vec::new(),
         };
-        for p in e.points() {
-            blocks.points.push(cp.problem.add_block(&[p.x, p.y])?);
+        for (j, p) in e.points().iter().enumerate() {
+            let block = cp.problem.add_block(&[p.x, p.y])?;
+            let weight = lookup.weight(*id, j);
+            if (weight - 1.0).abs() > 0.0 {
+                for k in 0..2 {
+                    let unknown = cp.problem.unknown(block, k)?;
+                    cp.problem.set_weight(Var::Unknown(unknown), weight)?;
+                }
+            }
+            blocks.points.push(block);
         }
         for s in e.scalars() {
             blocks.scalars.push(cp.problem.add_block(&[s])?);

@@ -63,6 +63,10 @@ pub(crate) enum Piece {
 pub(crate) trait EntityLookup {
     /// The entity with that id.
     fn lookup(&self, id: EntityId) -> Result<&Entity>;
+    /// The weight of the entity's point `index` in the minimum-norm metric (1 unless set).
+    fn weight(&self, _id: EntityId, _index: usize) -> f64 {
+        1.0
+    }
 }
 
 fn with_entity(id: EntityId, terms: &Terms, sign: f64, out: &mut ETerms) {

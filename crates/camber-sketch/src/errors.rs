@@ -160,6 +160,16 @@ pub enum Error {
     /// Any other failure of the constraint solver.
     #[error("solver: {0}")]
     Solve(camber_solve::Error),
+    /// A point weight that is not a positive finite number.
+    #[error("weight {value} of point {index} of entity {entity} is not a positive finite number")]
+    InvalidWeight {
+        /// The entity.
+        entity: EntityId,
+        /// The point's index in the entity.
+        index: usize,
+        /// The offending weight.
+        value: f64,
+    },
 }
 
 impl From<camber_solve::Error> for Error {

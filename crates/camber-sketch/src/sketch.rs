@@ -57,6 +57,8 @@ pub struct Sketch {
     dirty: BTreeSet<EntityId>,
     revision: u64,
     options: Options,
+    /// Weights of points in the minimum-norm metric, by (entity, point index); absent = 1.
+    weights: BTreeMap<(EntityId, usize), f64>,
 }
 
 impl Default for Sketch {
@@ -71,6 +73,10 @@ impl EntityLookup for Sketch {
             .get(&id)
             .map(|(e, _)| e)
             .ok_or(Error::UnknownEntity { entity: id })
+    }
+
+    fn weight(&self, id: EntityId, index: usize) -> f64 {
+        self.weights.get(&(id, index)).copied().unwrap_or(1.0)
     }
 }
 
@@ -91,6 +97,7 @@ impl Sketch {
             dirty: BTreeSet::new(),
             revision: 0,
             options,
+            weights: BTreeMap::new(),
         }
     }
 }
@@ -225,6 +232,62 @@ impl Sketch {
         Ok(())
     }
 
+    /// Sets the weight w > 0 of a point or control point in the minimum-norm metric
+    /// Σ wᵢ‖ΔPᵢ‖²: solves and drag sessions move a point of weight w as if moving it cost w times
+    /// as much, so heavier points move less (w = 1 is the default; a very large w approaches
+    /// fixing the point without constraining it). Marks the entity dirty.
+    ///
+    /// ```
+    /// use camber_geom::BezierCurve2;
+    /// use camber_sketch::{Constraint, PointRef, Sketch, Target};
+    /// use nalgebra::Point2;
+    /// let mut s = Sketch::new();
+    /// let line = BezierCurve2::try_new(vec![Point2::new(0.0, 0.0), Point2::new(2.0, 0.0)])?;
+    /// let c = s.add_bezier(line)?;
+    /// s.set_weight(PointRef::Control(c, 0), 4.0)?;
+    /// s.add_constraint(Constraint::PointAtParameter {
+    ///     curve: c,
+    ///     u: 0.5,
+    ///     target: Target::At(Point2::new(1.0, 1.0)),
+    /// })?;
+    /// s.solve()?;
+    /// // ½ΔP₀ + ½ΔP₁ = (0, 1) with ΔPᵢ ∝ 1/wᵢ: ΔP₀ = (0, 0.4), ΔP₁ = (0, 1.6).
+    /// assert!((s.point(PointRef::Control(c, 0))?.y - 0.4).abs() < 1e-12);
+    /// assert!((s.point(PointRef::Control(c, 1))?.y - 1.6).abs() < 1e-12);
+    /// # Ok::<(), camber_sketch::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`Error::UnknownEntity`], [`Error::UnknownPoint`], [`Error::WrongEntityKind`] for a
+    /// reference that is not a point or control point; [`Error::InvalidWeight`] for w ≤ 0 or
+    /// non-finite w. Nothing changes then.
+    pub fn set_weight(&mut self, r: PointRef, weight: f64) -> Result<()> {
+        let e = self.lookup(r.entity())?;
+        let index = match (r, e) {
+            (PointRef::Point(_), Entity::Point(_)) => 0,
+            (PointRef::Control(_, i), _) => i,
+            _ => {
+                return Err(Error::WrongEntityKind {
+                    entity: r.entity(),
+                    expected: "point or control point",
+                    found: e.kind_name(),
+                })
+            }
+        };
+        e.resolve(PointRef::Control(r.entity(), index))?;
+        if !(weight.is_finite() && weight > 0.0) {
+            return Err(Error::InvalidWeight {
+                entity: r.entity(),
+                index,
+                value: weight,
+            });
+        }
+        self.weights.insert((r.entity(), index), weight);
+        self.dirty.insert(r.entity());
+        self.revision += 1;
+        Ok(())
+    }
+
     /// Removes an entity no constraint reads.
     ///
     /// # Errors
@@ -251,6 +314,7 @@ impl Sketch {
             .ok_or(Error::UnknownEntity { entity: id })?;
         self.graph.remove_node(node);
         self.dirty.remove(&id);
+        self.weights.retain(|(entity, _), _| *entity != id);
         self.revision += 1;
         Ok(e)
     }
