@@ -1,6 +1,9 @@
 //! Point weights in the minimum-norm metric: a heavier point moves less, exactly as the
 //! weighted least-move formula says, in solves and in drag sessions.
 
+// Fixture helpers outside #[test] functions unwrap fixed, valid inputs.
+#![allow(clippy::unwrap_used)]
+
 use approx::assert_relative_eq;
 use camber_geom::BezierCurve2;
 use camber_sketch::{Constraint, Error, FixTarget, PointRef, Sketch, Target};
