@@ -1,0 +1,79 @@
+//! `camber eval`: points, derivatives and curvature of a curve file at given parameters,
+//! printed as JSON.
+
+use std::path::PathBuf;
+
+use anyhow::{Context, Result};
+use camber_geom::queries::signed_curvature_from_derivatives;
+use clap::Args;
+use serde::Serialize;
+
+use crate::curve_file;
+
+/// Arguments of `camber eval`.
+#[derive(Debug, Args)]
+pub struct EvalArgs {
+    /// The curve file (see `camber help` for the format).
+    pub curve: PathBuf,
+    /// Parameters to evaluate at, comma separated, inside the curve's domain.
+    #[arg(
+        long,
+        value_delimiter = ',',
+        required = true,
+        allow_negative_numbers = true,
+        value_name = "U[,U...]"
+    )]
+    pub at: Vec<f64>,
+    /// How many derivatives to report (C′ … C⁽ᴷ⁾).
+    #[arg(long, default_value_t = 1, value_name = "K")]
+    pub derivs: usize,
+}
+
+/// Prints a JSON array with one object per parameter:
+/// `{"u": u, "point": [x, y], "derivatives": [[x′, y′], …], "curvature": κ}`, where κ is the
+/// signed curvature (positive when the curve turns left; `null` where the speed is zero).
+pub fn run(args: &EvalArgs) -> Result<()> {
+    let curve = curve_file::load(&args.curve)?;
+    let values = evaluate(curve.as_parametric(), &args.at, args.derivs)
+        .with_context(|| args.curve.display().to_string())?;
+    crate::print_stdout(&serde_json::to_string_pretty(&values)?)
+}
+
+/// The values at one parameter, in the order they are printed.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Evaluation {
+    /// The parameter.
+    pub u: f64,
+    /// C(u).
+    pub point: [f64; 2],
+    /// C′(u), …, C⁽ᴷ⁾(u).
+    pub derivatives: Vec<[f64; 2]>,
+    /// Signed curvature (x′y″ − y′x″)/|C′|³, `None` where C′(u) = 0.
+    pub curvature: Option<f64>,
+}
+
+/// The evaluations of [`run`] for each parameter in `us`.
+pub fn evaluate(
+    curve: &dyn camber_geom::ParametricCurve<f64, 2>,
+    us: &[f64],
+    derivs: usize,
+) -> Result<Vec<Evaluation>> {
+    us.iter()
+        .map(|&u| {
+            let d = curve
+                .derivatives(u, derivs.max(2))
+                .with_context(|| format!("cannot evaluate at u = {u}"))?;
+            let pair = |v: &nalgebra::Vector2<f64>| [v.x, v.y];
+            let curvature = match (d.get(1), d.get(2)) {
+                (Some(d1), Some(d2)) => signed_curvature_from_derivatives(d1, d2),
+                _ => None,
+            };
+            Ok(Evaluation {
+                u,
+                point: d.first().map_or([f64::NAN; 2], pair),
+                derivatives: d.iter().skip(1).take(derivs).map(pair).collect(),
+                curvature,
+            })
+        })
+        .collect()
+}

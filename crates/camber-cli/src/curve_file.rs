@@ -1,0 +1,264 @@
+//! The single-curve file: one planar curve as a JSON object tagged by `"type"`.
+//!
+//! ```json
+//! {"type": "bezier",  "control_points": [[0, 0], [1, 2], [3, 2], [4, 0]]}
+//! {"type": "bspline", "degree": 2, "knots": [0, 0, 0, 1, 1, 1], "control_points": [...]}
+//! {"type": "nurbs",   "degree": 2, "knots": [...], "control_points": [...], "weights": [...]}
+//! {"type": "hermite", "p0": [0, 0], "p1": [1, 0], "t0": [1, 1], "t1": [1, -1]}
+//! ```
+//!
+//! Apart from the tag, the fields are exactly those of the curve types' own serde form, and
+//! loading goes through their validating deserializers, so a file that loads is a valid curve.
+//! Errors name the file and, where serde knows it, the JSON path of the bad field.
+
+use std::fmt;
+use std::path::Path;
+
+use anyhow::{anyhow, bail, Context, Result};
+use camber_geom::{BSplineCurve2, BezierCurve2, HermiteCurve2, NurbsCurve2, ParametricCurve};
+use nalgebra::Point2;
+use serde::de::DeserializeOwned;
+use serde::Serialize;
+use serde_json::Value;
+
+/// One planar curve of any supported kind, with f64 coordinates.
+#[derive(Debug, Clone, Serialize)]
+#[serde(tag = "type", rename_all = "lowercase")]
+pub enum Curve {
+    /// A Bézier curve over [0, 1].
+    Bezier(BezierCurve2<f64>),
+    /// A polynomial B-spline over its knot domain.
+    #[serde(rename = "bspline")]
+    BSpline(BSplineCurve2<f64>),
+    /// A rational B-spline over its knot domain.
+    Nurbs(NurbsCurve2<f64>),
+    /// A cubic Hermite curve over [0, 1].
+    Hermite(HermiteCurve2<f64>),
+}
+
+/// The tags accepted in `"type"`, in the order of [`Curve`]'s variants.
+pub const CURVE_TYPES: [&str; 4] = ["bezier", "bspline", "nurbs", "hermite"];
+
+impl Curve {
+    /// The `"type"` tag of this curve.
+    pub fn type_name(&self) -> &'static str {
+        match self {
+            Curve::Bezier(_) => "bezier",
+            Curve::BSpline(_) => "bspline",
+            Curve::Nurbs(_) => "nurbs",
+            Curve::Hermite(_) => "hermite",
+        }
+    }
+
+    /// The curve through the common [`ParametricCurve`] face.
+    pub fn as_parametric(&self) -> &dyn ParametricCurve<f64, 2> {
+        match self {
+            Curve::Bezier(c) => c,
+            Curve::BSpline(c) => c,
+            Curve::Nurbs(c) => c,
+            Curve::Hermite(c) => c,
+        }
+    }
+
+    /// The control polygon: the control points of Bézier, B-spline and NURBS curves, and for a
+    /// Hermite curve its Bézier points p0, p0 + t0/3, p1 − t1/3, p1.
+    pub fn control_polygon(&self) -> Vec<Point2<f64>> {
+        match self {
+            Curve::Bezier(c) => c.control_points().to_vec(),
+            Curve::BSpline(c) => c.control_points().to_vec(),
+            Curve::Nurbs(c) => c.control_points().to_vec(),
+            Curve::Hermite(c) => {
+                let third = 1.0 / 3.0;
+                vec![
+                    c.p0(),
+                    c.p0() + c.t0() * third,
+                    c.p1() - c.t1() * third,
+                    c.p1(),
+                ]
+            }
+        }
+    }
+
+    /// Parses the JSON text of a curve file. The error says what is wrong and, when known,
+    /// where (`at knots[3]`); it does not name the file (see [`load`]).
+    ///
+    /// ```
+    /// use camber_cli::curve_file::Curve;
+    /// let c = Curve::from_json(r#"{"type": "bezier", "control_points": [[0, 0], [2, 2]]}"#)?;
+    /// let p = c.as_parametric().point(0.5)?;
+    /// assert!((p.x - 1.0).abs() < 1e-15);
+    /// let err = Curve::from_json(r#"{"type": "bezier", "control_points": [[0, 0], [1, "y"]]}"#);
+    /// assert!(format!("{:#}", err.unwrap_err()).starts_with("at control_points[1][1]"));
+    /// # Ok::<(), anyhow::Error>(())
+    /// ```
+    pub fn from_json(text: &str) -> Result<Self> {
+        let mut value: Value = serde_json::from_str(text).map_err(json_syntax_error)?;
+        let kind = kind_of(&value);
+        let object = value
+            .as_object_mut()
+            .ok_or_else(|| anyhow!("a curve file holds one JSON object, found {kind}"))?;
+        let tag = match object.remove("type") {
+            Some(Value::String(s)) => s,
+            Some(other) => bail!("field \"type\" must be a string, found {}", kind_of(&other)),
+            None => bail!("missing field \"type\" (one of {})", CURVE_TYPES.join(", ")),
+        };
+        match tag.as_str() {
+            "bezier" => typed(value).map(Curve::Bezier),
+            "bspline" => typed(value).map(Curve::BSpline),
+            "nurbs" => typed(value).map(Curve::Nurbs),
+            "hermite" => typed(value).map(Curve::Hermite),
+            other => bail!(
+                "unknown curve type \"{other}\" (expected one of {})",
+                CURVE_TYPES.join(", ")
+            ),
+        }
+    }
+
+    /// The curve file text: the tagged object, pretty-printed, with a final newline.
+    pub fn to_json(&self) -> Result<String> {
+        let mut s = serde_json::to_string_pretty(self).context("cannot encode the curve")?;
+        s.push('\n');
+        Ok(s)
+    }
+}
+
+/// A one-line summary: type, degree, control point count and domain.
+pub fn describe(curve: &Curve) -> String {
+    let (a, b) = curve.as_parametric().domain();
+    let degree = match curve {
+        Curve::Bezier(c) => c.degree(),
+        Curve::BSpline(c) => c.degree(),
+        Curve::Nurbs(c) => c.degree(),
+        Curve::Hermite(_) => 3,
+    };
+    format!(
+        "{}, degree {degree}, {} control points, domain [{a}, {b}]",
+        curve.type_name(),
+        curve.control_polygon().len()
+    )
+}
+
+/// Deserializes one curve type from the tag-less object, keeping the path of the failure.
+fn typed<C: DeserializeOwned>(value: Value) -> Result<C> {
+    serde_path_to_error::deserialize(value).map_err(|e| {
+        let path = e.path().to_string();
+        let inner = e.into_inner();
+        if path == "." {
+            anyhow!("{inner}")
+        } else {
+            anyhow!("at {path}: {inner}")
+        }
+    })
+}
+
+/// A JSON syntax error in plain words; an overflowing number (such as `1e999`, which would be
+/// infinite) is called non-finite.
+pub fn json_syntax_error(e: serde_json::Error) -> anyhow::Error {
+    if e.to_string().starts_with("number out of range") {
+        anyhow!(
+            "non-finite number (outside the f64 range) at line {} column {}",
+            e.line(),
+            e.column()
+        )
+    } else {
+        anyhow!("malformed JSON: {e}")
+    }
+}
+
+/// A short name of a JSON value's kind, for messages.
+fn kind_of(v: &Value) -> &'static str {
+    match v {
+        Value::Null => "null",
+        Value::Bool(_) => "a boolean",
+        Value::Number(_) => "a number",
+        Value::String(_) => "a string",
+        Value::Array(_) => "an array",
+        Value::Object(_) => "an object",
+    }
+}
+
+/// Reads and validates a curve file; errors start with the file name.
+pub fn load(path: &Path) -> Result<Curve> {
+    let text = read_text(path)?;
+    Curve::from_json(&text).with_context(|| path.display().to_string())
+}
+
+/// Writes a curve file; errors name the file.
+pub fn save(path: &Path, curve: &Curve) -> Result<()> {
+    write_text(path, &curve.to_json()?)
+}
+
+/// Reads a whole text file; the error names the file and the system's reason.
+pub fn read_text(path: &Path) -> Result<String> {
+    std::fs::read_to_string(path)
+        .map_err(|e| anyhow!("{}: cannot read: {}", path.display(), IoReason(&e)))
+}
+
+/// Writes a whole text file; the error names the file and the system's reason.
+pub fn write_text(path: &Path, text: &str) -> Result<()> {
+    std::fs::write(path, text)
+        .map_err(|e| anyhow!("{}: cannot write: {}", path.display(), IoReason(&e)))
+}
+
+/// An I/O error's plain reason without the "(os error N)" suffix.
+struct IoReason<'a>(&'a std::io::Error);
+
+impl fmt::Display for IoReason<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let text = self.0.to_string();
+        let plain = text.split(" (os error").next().unwrap_or(&text);
+        let mut chars = plain.chars();
+        match chars.next() {
+            Some(c) => write!(f, "{}{}", c.to_lowercase(), chars.as_str()),
+            None => Ok(()),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn message(text: &str) -> String {
+        match Curve::from_json(text) {
+            Ok(c) => panic!("expected an error, loaded {c:?}"),
+            Err(e) => format!("{e:#}"),
+        }
+    }
+
+    #[test]
+    fn round_trip_keeps_the_tag_and_fields() {
+        let text = r#"{"type": "nurbs", "degree": 1, "knots": [0, 0, 1, 1],
+            "control_points": [[0, 0], [2, 1]], "weights": [1, 2]}"#;
+        let c = Curve::from_json(text).unwrap();
+        assert_eq!(c.type_name(), "nurbs");
+        let again = Curve::from_json(&c.to_json().unwrap()).unwrap();
+        assert_eq!(again.to_json().unwrap(), c.to_json().unwrap());
+    }
+
+    #[test]
+    fn errors_say_what_and_where() {
+        assert!(message("{").contains("malformed JSON"));
+        assert!(message("[1]").contains("one JSON object"));
+        assert!(message(r#"{"control_points": []}"#).contains("missing field \"type\""));
+        assert!(message(r#"{"type": "spiral"}"#).contains("unknown curve type \"spiral\""));
+        let m = message(r#"{"type": "bezier", "control_points": [[0, 0], [1, "x"]]}"#);
+        assert!(m.contains("control_points[1][1]"), "{m}");
+        let m = message(
+            r#"{"type": "bspline", "degree": 2, "knots": [0, 0, 1, 1], "control_points": [[0, 0], [1, 1], [2, 0]]}"#,
+        );
+        assert!(m.contains("knot"), "{m}");
+    }
+
+    #[test]
+    fn hermite_polygon_is_its_bezier_form() {
+        let c = Curve::from_json(
+            r#"{"type": "hermite", "p0": [0, 0], "p1": [3, 0], "t0": [3, 3], "t1": [3, -3]}"#,
+        )
+        .unwrap();
+        let poly = c.control_polygon();
+        assert_eq!(poly.len(), 4);
+        assert!((poly[1] - Point2::new(1.0, 1.0)).norm() < 1e-15);
+        assert!((poly[2] - Point2::new(2.0, 1.0)).norm() < 1e-15);
+    }
+}

@@ -1,0 +1,353 @@
+//! A tiny SVG writer in model coordinates.
+//!
+//! The picture's viewBox is a bounding box of the model grown by a margin; y points up in the
+//! model and down in SVG, so every y is negated on output (text therefore stays upright). Stroke
+//! widths, point radii and font sizes are given in multiples of a *unit*, 1/400 of the larger
+//! side of the box, so pictures look alike at any model size. The SVG coordinates are the model
+//! ones scaled so that one unit is one SVG user unit (renderers hint tiny fonts badly).
+
+use std::fmt::Write as _;
+
+use nalgebra::Point2;
+
+/// An axis-aligned box in model coordinates; empty until a point is added.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BBox {
+    /// Lower-left corner (smallest x and y).
+    pub min: Point2<f64>,
+    /// Upper-right corner (largest x and y).
+    pub max: Point2<f64>,
+}
+
+impl Default for BBox {
+    fn default() -> Self {
+        Self::empty()
+    }
+}
+
+impl BBox {
+    /// The empty box (min = +∞, max = −∞), which [`include`](Self::include) grows.
+    pub fn empty() -> Self {
+        Self {
+            min: Point2::new(f64::INFINITY, f64::INFINITY),
+            max: Point2::new(f64::NEG_INFINITY, f64::NEG_INFINITY),
+        }
+    }
+
+    /// Grows the box to contain `p`; non-finite points are ignored.
+    pub fn include(&mut self, p: Point2<f64>) {
+        if p.x.is_finite() && p.y.is_finite() {
+            self.min = self.min.inf(&p);
+            self.max = self.max.sup(&p);
+        }
+    }
+
+    /// The box of some points.
+    pub fn of(points: impl IntoIterator<Item = Point2<f64>>) -> Self {
+        let mut b = Self::empty();
+        points.into_iter().for_each(|p| b.include(p));
+        b
+    }
+
+    /// True until a finite point has been included.
+    pub fn is_empty(&self) -> bool {
+        self.min.x > self.max.x
+    }
+
+    /// Width and height (0 for an empty box).
+    pub fn size(&self) -> (f64, f64) {
+        if self.is_empty() {
+            (0.0, 0.0)
+        } else {
+            (self.max.x - self.min.x, self.max.y - self.min.y)
+        }
+    }
+}
+
+/// How an element is drawn: colour, width in units, optional fill and dashes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Style {
+    /// Stroke colour (any SVG colour), or `none`.
+    pub stroke: String,
+    /// Stroke width in units (see the module docs).
+    pub width: f64,
+    /// Fill colour; `None` is no fill.
+    pub fill: Option<String>,
+    /// Dashed stroke.
+    pub dashed: bool,
+}
+
+impl Style {
+    /// A solid stroke of `width` units in `colour`, unfilled.
+    pub fn stroke(colour: &str, width: f64) -> Self {
+        Self {
+            stroke: colour.to_owned(),
+            width,
+            fill: None,
+            dashed: false,
+        }
+    }
+
+    /// A filled shape without outline.
+    pub fn filled(colour: &str) -> Self {
+        Self {
+            stroke: "none".to_owned(),
+            width: 0.0,
+            fill: Some(colour.to_owned()),
+            dashed: false,
+        }
+    }
+
+    /// The same style, dashed.
+    pub fn with_dashes(mut self) -> Self {
+        self.dashed = true;
+        self
+    }
+}
+
+/// Text anchoring along x.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Anchor {
+    /// The text starts at the point.
+    Start,
+    /// The text is centred on the point.
+    Middle,
+    /// The text ends at the point.
+    End,
+}
+
+/// An SVG document being written; finish it with [`Svg::finish`].
+#[derive(Debug, Clone)]
+pub struct Svg {
+    /// viewBox origin and size in SVG coordinates (y already flipped and scaled).
+    view: [f64; 4],
+    /// One unit in model lengths.
+    unit: f64,
+    /// SVG user units per model unit (1 / `unit`).
+    scale: f64,
+    body: String,
+}
+
+impl Svg {
+    /// A picture showing `bbox` with a margin of `margin` times its larger side on every side.
+    /// An empty box shows [−1, 1]²; a flat one gets a height (or width) of its larger side.
+    pub fn new(bbox: BBox, margin: f64) -> Self {
+        let (min, max) = if bbox.is_empty() {
+            (Point2::new(-1.0, -1.0), Point2::new(1.0, 1.0))
+        } else {
+            (bbox.min, bbox.max)
+        };
+        let (w, h) = (max.x - min.x, max.y - min.y);
+        let side = w.max(h).max(f64::MIN_POSITIVE.sqrt());
+        // A degenerate side is widened around its middle so the picture is not a line.
+        let (w, h) = (w.max(side * 1e-3), h.max(side * 1e-3));
+        let (cx, cy) = ((min.x + max.x) / 2.0, (min.y + max.y) / 2.0);
+        let pad = margin.max(0.0) * side;
+        let unit = side / 400.0;
+        let scale = 1.0 / unit;
+        let view = [
+            (cx - w / 2.0 - pad) * scale,
+            -(cy + h / 2.0 + pad) * scale,
+            (w + 2.0 * pad) * scale,
+            (h + 2.0 * pad) * scale,
+        ];
+        Self {
+            view,
+            unit,
+            scale,
+            body: String::new(),
+        }
+    }
+
+    /// The length of one unit in model coordinates.
+    pub fn unit(&self) -> f64 {
+        self.unit
+    }
+
+    /// The viewBox as (x, y, width, height) in SVG coordinates.
+    pub fn view_box(&self) -> [f64; 4] {
+        self.view
+    }
+
+    /// SVG user units per model unit: SVG x = `scale`·x, SVG y = −`scale`·y.
+    pub fn scale(&self) -> f64 {
+        self.scale
+    }
+
+    fn sx(&self, x: f64) -> String {
+        num(x * self.scale)
+    }
+
+    fn sy(&self, y: f64) -> String {
+        num(-y * self.scale)
+    }
+
+    fn style_attrs(&self, s: &Style) -> String {
+        let mut a = format!(
+            r#"fill="{}" stroke="{}" stroke-width="{}""#,
+            s.fill.as_deref().unwrap_or("none"),
+            s.stroke,
+            num(s.width)
+        );
+        if s.dashed {
+            let d = 4.0 * s.width.max(0.5);
+            let _ = write!(a, r#" stroke-dasharray="{} {}""#, num(d), num(d));
+        }
+        a
+    }
+
+    /// A polyline through the points (nothing for fewer than two).
+    pub fn polyline(&mut self, points: &[Point2<f64>], style: &Style) {
+        if points.len() < 2 {
+            return;
+        }
+        let coords: Vec<String> = points
+            .iter()
+            .map(|p| format!("{},{}", self.sx(p.x), self.sy(p.y)))
+            .collect();
+        let attrs = self.style_attrs(style);
+        let _ = writeln!(
+            self.body,
+            r#"<polyline points="{}" {attrs} stroke-linejoin="round"/>"#,
+            coords.join(" ")
+        );
+    }
+
+    /// A line segment from `a` to `b`.
+    pub fn line(&mut self, a: Point2<f64>, b: Point2<f64>, style: &Style) {
+        let attrs = self.style_attrs(style);
+        let _ = writeln!(
+            self.body,
+            r#"<line x1="{}" y1="{}" x2="{}" y2="{}" {attrs}/>"#,
+            self.sx(a.x),
+            self.sy(a.y),
+            self.sx(b.x),
+            self.sy(b.y)
+        );
+    }
+
+    /// A circle of model radius `radius`.
+    pub fn circle(&mut self, center: Point2<f64>, radius: f64, style: &Style) {
+        let attrs = self.style_attrs(style);
+        let _ = writeln!(
+            self.body,
+            r#"<circle cx="{}" cy="{}" r="{}" {attrs}/>"#,
+            self.sx(center.x),
+            self.sy(center.y),
+            num(radius * self.scale)
+        );
+    }
+
+    /// A dot marking a point: a filled circle of `radius_units` units.
+    pub fn dot(&mut self, p: Point2<f64>, radius_units: f64, colour: &str) {
+        self.circle(p, radius_units * self.unit, &Style::filled(colour));
+    }
+
+    /// Text at `at`, `size_units` units high, upright.
+    pub fn text(
+        &mut self,
+        at: Point2<f64>,
+        text: &str,
+        size_units: f64,
+        anchor: Anchor,
+        colour: &str,
+    ) {
+        let anchor = match anchor {
+            Anchor::Start => "start",
+            Anchor::Middle => "middle",
+            Anchor::End => "end",
+        };
+        let _ = writeln!(
+            self.body,
+            r#"<text x="{}" y="{}" font-size="{}" text-anchor="{anchor}" fill="{colour}">{}</text>"#,
+            self.sx(at.x),
+            self.sy(at.y),
+            num(size_units),
+            escape(text)
+        );
+    }
+
+    /// The complete document, white background first.
+    pub fn finish(self) -> String {
+        let [x, y, w, h] = self.view;
+        let (pw, ph) = if w >= h {
+            (800.0, 800.0 * h / w)
+        } else {
+            (800.0 * w / h, 800.0)
+        };
+        format!(
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"{} {} {} {}\" width=\"{}\" height=\"{}\" font-family=\"sans-serif\">\n\
+             <rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"white\"/>\n{}</svg>\n",
+            num(x),
+            num(y),
+            num(w),
+            num(h),
+            num(pw),
+            num(ph),
+            num(x),
+            num(y),
+            num(w),
+            num(h),
+            self.body
+        )
+    }
+}
+
+/// A number with enough digits for a picture and no trailing noise.
+fn num(v: f64) -> String {
+    let s = format!("{v:.6}");
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" {
+        "0".to_owned()
+    } else {
+        s.to_owned()
+    }
+}
+
+/// Escapes the XML special characters of text content.
+fn escape(s: &str) -> String {
+    s.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn view_box_has_margin_and_flips_y() {
+        let b = BBox::of([Point2::new(0.0, 0.0), Point2::new(4.0, 2.0)]);
+        let svg = Svg::new(b, 0.25);
+        let [x, y, w, h] = svg.view_box();
+        // Model box [-1, 5] × [-1, 3], flipped to y ∈ [-3, 1], at 100 SVG units per model unit.
+        assert!((svg.unit() - 0.01).abs() < 1e-15 && (svg.scale() - 100.0).abs() < 1e-9);
+        assert!((x + 100.0).abs() < 1e-9 && (y + 300.0).abs() < 1e-9);
+        assert!((w - 600.0).abs() < 1e-9 && (h - 400.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn elements_are_written_with_flipped_y() {
+        let mut svg = Svg::new(
+            BBox::of([Point2::new(0.0, 0.0), Point2::new(1.0, 1.0)]),
+            0.1,
+        );
+        svg.line(
+            Point2::new(0.0, 0.5),
+            Point2::new(1.0, 1.0),
+            &Style::stroke("black", 1.0),
+        );
+        svg.text(Point2::new(0.0, 0.25), "a<b", 10.0, Anchor::Start, "black");
+        let doc = svg.finish();
+        assert!(doc.contains(r#"y1="-200""#), "{doc}");
+        assert!(doc.contains("a&lt;b"));
+        assert!(doc.ends_with("</svg>\n"));
+    }
+
+    #[test]
+    fn numbers_are_short() {
+        assert_eq!(num(1.0), "1");
+        assert_eq!(num(-0.0000001), "0");
+        assert_eq!(num(0.125), "0.125");
+    }
+}
