@@ -50,9 +50,12 @@
 pub mod build;
 mod compile;
 pub mod constraint;
+pub mod contact;
+pub mod curve_eval;
 pub mod drag;
 pub mod entity;
 pub mod errors;
+mod general;
 pub mod ids;
 pub mod residuals;
 pub mod sketch;
@@ -60,7 +63,10 @@ pub mod solve;
 pub mod workloads;
 
 pub use build::{Component, ComponentProblem, DRAG_CONSTRAINT};
-pub use constraint::{Constraint, Custom, FixTarget, Sense, TangentForm, Target};
+pub use constraint::{
+    CircleSide, Constraint, Contact, Custom, FixTarget, LineSide, Rotation, Sense, TangentForm,
+    Target,
+};
 pub use drag::DragSession;
 pub use entity::{Entity, Terms};
 pub use errors::{Error, Result};

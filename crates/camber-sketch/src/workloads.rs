@@ -5,7 +5,7 @@
 use camber_geom::BezierCurve2;
 use nalgebra::{Point2, Vector2};
 
-use crate::constraint::{Constraint, FixTarget, Sense, TangentForm};
+use crate::constraint::{CircleSide, Constraint, Contact, FixTarget, Rotation, Sense, TangentForm};
 use crate::errors::Result;
 use crate::ids::{EntityId, PointRef};
 use crate::sketch::Sketch;
@@ -190,4 +190,99 @@ pub fn w4(n: usize) -> Result<(Sketch, Vec<EntityId>)> {
         curves.push(c);
     }
     Ok((s, curves))
+}
+
+/// The three circles of W2 as (centre, radius): leading edge, thickness, trailing edge.
+pub const W2_CIRCLES: [([f64; 2], f64); 3] = [
+    ([0.03, 0.0], 0.03),
+    ([0.38, 0.04], 0.07),
+    ([0.985, 0.01], 0.015),
+];
+
+/// The point of circle (c, r) at `degrees`: c + r·(cos a, sin a).
+pub fn on_circle(circle: ([f64; 2], f64), degrees: f64) -> Point2<f64> {
+    let (c, r) = circle;
+    let a = degrees.to_radians();
+    Point2::new(c[0] + r * a.cos(), c[1] + r * a.sin())
+}
+
+/// The entities of a W2 sketch.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct W2 {
+    /// The B-spline.
+    pub curve: EntityId,
+    /// The leading-edge, thickness and trailing-edge circles (fixed).
+    pub circles: [EntityId; 3],
+}
+
+/// W2 `bspline7` at its rough start: a clamped cubic B-spline with 7 control points on the knots
+/// [0,0,0,0, ¼, ½, ¾, 1,1,1,1], tangent to the LE circle at u = 0 and the TE circle at u = 1, and
+/// to the TH circle at a free contact parameter (starting at the parameter of the rough start's
+/// point nearest the TH centre); outside every circle, running clockwise around each (from the
+/// leading edge over the top of TH to the trailing edge). The circles are fixed.
+///
+/// ```
+/// let (mut s, w) = camber_sketch::workloads::w2_bspline7()?;
+/// let report = s.solve()?;
+/// assert_eq!(report.components.len(), 1);
+/// # let _ = w;
+/// # Ok::<(), camber_sketch::Error>(())
+/// ```
+///
+/// # Errors
+/// None in practice (the data are valid); the signature carries the sketch's errors.
+pub fn w2_bspline7() -> Result<(Sketch, W2)> {
+    let [le, th, te] = W2_CIRCLES;
+    let points = vec![
+        on_circle(le, 110.0),
+        Point2::new(0.07, 0.06),
+        Point2::new(0.18, 0.115),
+        Point2::new(0.38, 0.125),
+        Point2::new(0.62, 0.10),
+        Point2::new(0.86, 0.045),
+        on_circle(te, 70.0),
+    ];
+    let knots = camber_geom::KnotVector::try_new(vec![
+        0.0, 0.0, 0.0, 0.0, 0.25, 0.5, 0.75, 1.0, 1.0, 1.0, 1.0,
+    ])?;
+    let curve = camber_geom::BSplineCurve2::try_new(3, knots, points)?;
+    let u_th = nearest_parameter(&curve, th.0);
+    let mut s = Sketch::new();
+    let c = s.add_bspline(curve)?;
+    let mut circles = [c; 3];
+    for (slot, (centre, r)) in circles.iter_mut().zip(W2_CIRCLES) {
+        *slot = s.add_circle(Point2::new(centre[0], centre[1]), r)?;
+        s.add_constraint(Constraint::Fixed(FixTarget::Entity(*slot)))?;
+    }
+    for (circle, u) in [
+        (circles[0], Contact::At(0.0)),
+        (circles[1], Contact::Free(u_th)),
+        (circles[2], Contact::At(1.0)),
+    ] {
+        s.add_constraint(Constraint::TangentToCircle {
+            curve: c,
+            circle,
+            u,
+            side: CircleSide::Outside,
+            rotation: Rotation::Clockwise,
+        })?;
+    }
+    Ok((s, W2 { curve: c, circles }))
+}
+
+/// The parameter of the curve point nearest `p`, by sampling (a starting guess).
+fn nearest_parameter(curve: &camber_geom::BSplineCurve2<f64>, p: [f64; 2]) -> f64 {
+    use camber_geom::ParametricCurve;
+    let (a, b) = curve.domain();
+    let mut best = (f64::INFINITY, a);
+    for i in 0..=200 {
+        let u = a + (b - a) * f64::from(i) / 200.0;
+        if let Ok(q) = curve.point(u) {
+            let d = (q.x - p[0]).hypot(q.y - p[1]);
+            if d < best.0 {
+                best = (d, u);
+            }
+        }
+    }
+    best.1
 }
