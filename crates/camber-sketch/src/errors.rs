@@ -125,8 +125,8 @@ pub enum Error {
         /// Each failing constraint with its largest absolute residual.
         failed: Vec<(ConstraintId, f64)>,
     },
-    /// A constraint that is not affine in the unknowns: the nonlinear solver (issue 4) is not
-    /// available yet, so its component cannot be solved.
+    /// A constraint that is not affine in the unknowns met a path that only takes affine ones
+    /// (the linear solver forced through the options).
     #[error("{constraint} ({name}) is not affine and needs the nonlinear solver")]
     NeedsNonlinear {
         /// The constraint.

@@ -527,11 +527,7 @@ impl Check {
 
     /// The residual and slots that put the curve point C(s) back on the target (the circle or
     /// the line of a contact check): the push-back of a crossing.
-    pub(crate) fn push_back(
-        &self,
-        lookup: &impl EntityLookup,
-        s: f64,
-    ) -> Result<Option<PushBack>> {
+    pub(crate) fn push_back(&self, lookup: &impl EntityLookup, s: f64) -> Result<Option<PushBack>> {
         match *self {
             Check::Circle { curve, circle, .. } => {
                 let (basis, mut slots) = curve_basis(lookup, curve)?;

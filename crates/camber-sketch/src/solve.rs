@@ -143,10 +143,7 @@ impl Sketch {
     /// that crosses its target is pushed back: the solve restarts from the sketch's state with
     /// one more row putting the deepest crossing point back on the target (the seed's
     /// push-back), at most [`MAX_PUSH_BACKS`] times.
-    fn solve_component(
-        &self,
-        comp: &Component,
-    ) -> Result<Solved> {
+    fn solve_component(&self, comp: &Component) -> Result<Solved> {
         let mut pushed: Vec<(ConstraintId, f64)> = Vec::new();
         loop {
             let mut cp = self.build_component(comp, None)?;
