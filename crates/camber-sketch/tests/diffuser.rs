@@ -159,3 +159,41 @@ fn a_failed_solve_leaves_the_sketch_unchanged() {
     assert_eq!(before, after);
     assert_eq!(constraints_before, constraints_after);
 }
+
+/// W2 `2cubic`: solves from the rough start; seeded perturbations of the 7 points Q₀…Q₆ (the
+/// joint Q₃ moved as one point) mostly solve valid, and refused ones write nothing.
+#[test]
+fn two_cubics_solve_from_the_rough_start_and_perturbations() {
+    use camber_sketch::workloads::{w2_2cubic, w2_2cubic_valid};
+    let (mut s0, curves, _) = w2_2cubic().unwrap();
+    s0.solve().unwrap();
+    assert!(w2_2cubic_valid(&s0, curves));
+    let refs = |j: usize| -> Vec<PointRef> {
+        match j {
+            0..=2 => vec![PointRef::Control(curves[0], j)],
+            3 => vec![
+                PointRef::Control(curves[0], 3),
+                PointRef::Control(curves[1], 0),
+            ],
+            _ => vec![PointRef::Control(curves[1], j - 3)],
+        }
+    };
+    for (delta, seed, need) in [(0.01, 3, 49), (0.05, 4, 45)] {
+        let mut noise = Noise(seed);
+        let mut ok = 0;
+        for _ in 0..50 {
+            let mut s = s0.clone();
+            for j in 0..7 {
+                let (dx, dy) = (delta * noise.next(), delta * noise.next());
+                for r in refs(j) {
+                    let p = s.point(r).unwrap();
+                    s.set_point(r, Point2::new(p.x + dx, p.y + dy)).unwrap();
+                }
+            }
+            if s.solve().is_ok() && w2_2cubic_valid(&s, curves) {
+                ok += 1;
+            }
+        }
+        assert!(ok >= need, "δ = {delta}: {ok} of 50 valid");
+    }
+}
