@@ -21,7 +21,7 @@ use crate::contact::{
     PointDistance, RadiusValue, TangentsParallel,
 };
 use crate::curve_eval::CurveBasis;
-use crate::entity::{combine, Entity};
+use crate::entity::Entity;
 use crate::errors::{Error, Result};
 use crate::ids::{EntityId, PointRef};
 
@@ -363,11 +363,33 @@ pub(crate) fn compile_general(
     Ok(true)
 }
 
+/// A solved curve ready for repeated evaluation: its basis and its control points as blocks.
+struct Sampler {
+    basis: CurveBasis,
+    points: Vec<[f64; 2]>,
+}
+
+impl Sampler {
+    fn new(e: &Entity, id: EntityId) -> Result<Self> {
+        let basis = CurveBasis::of(e).ok_or(Error::WrongEntityKind {
+            entity: id,
+            expected: "curve",
+            found: e.kind_name(),
+        })?;
+        let points = e.points().iter().map(|p| [p.x, p.y]).collect();
+        Ok(Self { basis, points })
+    }
+
+    /// C(s) and C′(s).
+    fn at(&self, s: f64) -> ([f64; 2], [f64; 2]) {
+        let refs: smallvec::SmallVec<[&[f64]; 16]> = self.points.iter().map(|p| &p[..]).collect();
+        self.basis.eval(&refs, s)
+    }
+}
+
 /// C(s) and C′(s) of a solved curve entity.
 fn point_tangent(e: &Entity, id: EntityId, s: f64) -> Result<([f64; 2], [f64; 2])> {
-    let p = combine(e.points(), &e.coefficients(id, s, 0)?);
-    let t = combine(e.points(), &e.coefficients(id, s, 1)?);
-    Ok((p, t))
+    Ok(Sampler::new(e, id)?.at(s))
 }
 
 /// Parameters sampled on [u − w, u + w] ∩ [a, b].
@@ -392,8 +414,9 @@ fn deepest(
     gap: impl Fn([f64; 2]) -> f64,
 ) -> Result<()> {
     let mut worst: Option<(f64, f64)> = None;
+    let sampler = Sampler::new(e, curve)?;
     for s in window(e, u) {
-        let (q, _) = point_tangent(e, curve, s)?;
+        let (q, _) = sampler.at(s);
         let d = gap(q);
         if d < -tolerance && worst.is_none_or(|(_, w)| d < w) {
             worst = Some((s, d));

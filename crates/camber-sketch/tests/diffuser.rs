@@ -105,10 +105,10 @@ fn small_perturbations_solve_valid() {
 fn large_perturbations_solve_valid() {
     let n = 100;
     let ok = perturbed(0.05, n, 2);
-    // The issue asks 99 of 100. Measured: 96 with this seed. The failures are starts where the
-    // minimum-norm solution bends into the leading-edge circle right after the contact (curve
-    // curvature above 1/r there); the push-back of the deepest crossing does not yet rescue
-    // them, so they are refused (nothing written), never accepted invalid.
+    // The issue asks 99 of 100. Measured: 96 with this seed. All four failures are at the
+    // leading-edge contact: starts whose nearest solution bends into the LE circle right after
+    // the contact or collapses the first leg P₁ − P₀ (a cusp); the push-back does not rescue
+    // them yet, so they are refused (nothing written), never accepted invalid.
     assert!(ok >= 95, "{ok} of {n} valid");
 }
 
