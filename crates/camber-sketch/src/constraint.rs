@@ -1,5 +1,10 @@
-//! The built-in constraints, all affine in the control points (knots, weights, parameters and
-//! directions being data), and their validation.
+//! The built-in constraints and their validation. The first group is affine in the control
+//! points (knots, weights, parameters and directions being data); the second
+//! ([`Constraint::PointOnCurve`] onward) is nonlinear: free contact parameters ([`Contact`]),
+//! circles and lines whose points and radii are unknowns, distances, angles and the G1 joint
+//! with a free direction, compiled to the residuals of [`crate::contact`]. Contacts record the
+//! side of the target the curve stays on ([`CircleSide`], [`LineSide`]) and the direction of
+//! travel ([`Rotation`], [`Sense`]), checked after every solve.
 //!
 //! Each constraint becomes rows of a [`camber_solve::Problem`] through the residuals of
 //! [`crate::residuals`] (or, for `Fixed` and the elimination form of end tangency, through the
@@ -119,8 +124,8 @@ pub enum Rotation {
 
 /// A user-written residual ([`camber_solve::Residual`]) over points of the sketch, each point
 /// one block (x, y) in the order given. Points must be point entities, control points (line
-/// ends, circle centres) or the clamped ends of curves. A non-affine residual makes its
-/// component need the nonlinear solver, which is reported as [`crate::Error::NeedsNonlinear`].
+/// ends, circle centres) or the clamped ends of curves. A non-affine residual sends its
+/// component to the nonlinear solver ([`camber_solve::solve()`]).
 ///
 /// ```
 /// use camber_sketch::{Constraint, Custom, PointRef, Sketch};

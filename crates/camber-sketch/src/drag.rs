@@ -1,4 +1,6 @@
-//! Drag sessions: the interactive loop. The component's problem is built once with the
+//! Drag sessions: the interactive loop.
+//!
+//! **Affine components.** The component's problem is built once with the
 //! dragged point pinned by two extra rows, P − anchor = 0 (anchor = where the point was);
 //! the rows are analysed once, and the weighted minimum-norm factorization of the independent
 //! rows is cached. Moving the target to q changes only the right-hand side of the pin rows,
@@ -14,6 +16,14 @@
 //! an update on the dense backend (components of up to `dense_max_unknowns` reduced unknowns)
 //! as long as no residual reads more than 8 blocks. The sketch itself is unchanged until
 //! [`DragSession::finish`].
+//!
+//! **Nonlinear components.** J changes with the unknowns, so nothing is cached but the Newton
+//! workspace. The dragged point (a single free block) is fixed in the problem and set to the
+//! target at each update; Newton minimum norm starts from the previous step's solution and
+//! pulls toward it ([`camber_solve::solve_newton_from`]), so each step moves the rest of the
+//! sketch as little as it can; if Newton fails, the full selection ([`camber_solve::solve()`])
+//! runs from the same state. The result must pass the orientation and contact checks of a
+//! solve, otherwise the session keeps its previous state.
 
 use std::collections::BTreeMap;
 
@@ -92,7 +102,7 @@ pub struct DragSession {
 
 /// The state of a drag on a nonlinear component: the dragged block is fixed in the problem and
 /// moved to the target at each update; Newton starts from the previous step's solution and
-/// pulls toward it, and the full selection ([`camber_solve::solve`]) runs when it fails.
+/// pulls toward it, and the full selection ([`camber_solve::solve()`]) runs when it fails.
 #[derive(Debug)]
 struct NonlinearDrag {
     block: camber_solve::BlockId,
@@ -110,8 +120,8 @@ impl Sketch {
     ///
     /// # Errors
     /// Id errors; [`Error::Conflicting`] when the component's constraints contradict each other;
-    /// [`Error::NotDraggable`] when the point is fixed or determined by the constraints;
-    /// [`Error::NeedsNonlinear`] for a non-affine constraint.
+    /// [`Error::NotDraggable`] when the point is fixed or determined by the constraints (on a
+    /// nonlinear component: when it is not a single free point block).
     pub fn drag(&self, point: PointRef) -> Result<DragSession> {
         let e = self.lookup(point.entity())?;
         e.resolve(point)?;

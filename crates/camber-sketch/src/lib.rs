@@ -42,7 +42,7 @@
 //! - Tangencies record their [`Sense`]; a solve that flips one is rejected.
 //! - Users add their own residuals with [`Constraint::Custom`].
 //! - A component whose residuals are all affine takes the linear path above. Any other goes to
-//!   [`camber_solve::solve`], which picks Newton minimum norm, SLSQP or the least-squares
+//!   [`camber_solve::solve()`], which picks Newton minimum norm, SLSQP or the least-squares
 //!   rescue from the DOF analysis; the component report's `solver` and `reason` say which ran
 //!   and why. The nonlinear constraints ([`Constraint::PointOnCurve`],
 //!   [`Constraint::TangentToLine`], [`Constraint::TangentToCircle`], circles and lines as

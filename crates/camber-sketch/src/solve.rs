@@ -1,6 +1,11 @@
 //! Solving a sketch component by component, atomically: every component to solve is built and
 //! solved on its own problem, the tangent orientations are checked, and only when all of them
 //! succeed are the results written back. On any error the sketch is exactly as before.
+//!
+//! An affine component takes the linear path; any other goes to [`camber_solve::solve()`]
+//! (selection by the DOF analysis). Contacts are then checked on the solved entities; a
+//! crossing is pushed back by one more row and the component solved again from the sketch's
+//! state, up to [`MAX_PUSH_BACKS`] times.
 
 use camber_solve::{solve_linear, DofAnalysis, SolveReport};
 
@@ -97,7 +102,8 @@ impl Sketch {
     /// # Errors
     /// The first failing component's error ([`crate::Error::Conflicting`],
     /// [`crate::Error::NotSatisfied`], [`crate::Error::OrientationFlipped`],
-    /// [`crate::Error::NeedsNonlinear`], …); the sketch is unchanged then.
+    /// [`crate::Error::ContactCrossed`], [`crate::Error::Cusp`], …); the sketch is unchanged
+    /// then.
     pub fn solve(&mut self) -> Result<SketchReport> {
         let comps: Vec<Component> = self
             .components()
