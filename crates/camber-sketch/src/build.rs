@@ -541,10 +541,12 @@ impl ComponentProblem {
     }
 
     /// The solved free contact parameters at `x`, with their constraints.
-    pub(crate) fn contacts_at(&self, x: &[f64]) -> Result<Vec<(ConstraintId, f64)>> {
-        let mut out = Vec::with_capacity(self.contacts.len());
+    pub(crate) fn contacts_at(&self, x: &[f64]) -> Result<Vec<(ConstraintId, usize, f64)>> {
+        let mut out: Vec<(ConstraintId, usize, f64)> = Vec::with_capacity(self.contacts.len());
         for (c, b) in &self.contacts {
-            out.push((*c, x[self.problem.unknown(*b, 0)?.index()]));
+            // The k-th free parameter of its constraint (push-back rows add none).
+            let k = out.iter().filter(|(o, _, _)| o == c).count();
+            out.push((*c, k, x[self.problem.unknown(*b, 0)?.index()]));
         }
         Ok(out)
     }
@@ -561,13 +563,15 @@ impl ComponentProblem {
             return Ok(());
         }
         let map: HashMap<EntityId, Entity> = solved.iter().cloned().collect();
+        let param = |p: CheckParam| -> Result<f64> {
+            Ok(match p {
+                CheckParam::Fixed(u) => u,
+                CheckParam::Block(b) => x[self.problem.unknown(b, 0)?.index()],
+                CheckParam::Slot(_) => f64::NAN,
+            })
+        };
         for (owner, check) in &self.checks {
-            let u = match check.param() {
-                Some(CheckParam::Fixed(u)) => u,
-                Some(CheckParam::Block(b)) => x[self.problem.unknown(b, 0)?.index()],
-                Some(CheckParam::Slot(_)) | None => 0.0,
-            };
-            check.verify(*owner, &map, u, tolerance)?;
+            check.verify(*owner, &map, &param, tolerance)?;
         }
         Ok(())
     }

@@ -364,6 +364,20 @@ pub enum Constraint {
         /// The angle θ in radians.
         angle: f64,
     },
+    /// Two curves touch: C₁(u) = C₂(v) and their tangents there are parallel with the given
+    /// sense (C₁′·C₂′ > 0 for [`Sense::Agree`]); u and v may be free (three rows).
+    CurveCurveTangent {
+        /// The first curve.
+        first: EntityId,
+        /// Its contact parameter.
+        u: Contact,
+        /// The second curve.
+        second: EntityId,
+        /// Its contact parameter.
+        v: Contact,
+        /// Same or opposite travel directions at the contact.
+        sense: Sense,
+    },
     /// The end of `first` coincides with the start of `second` and their tangents there are
     /// parallel and point the same way, the direction being free (three rows).
     G1JoinFree {
@@ -398,6 +412,7 @@ impl Constraint {
             Constraint::Perpendicular(..) => "perpendicular",
             Constraint::Angle { .. } => "angle",
             Constraint::G1JoinFree { .. } => "G1 join (free direction)",
+            Constraint::CurveCurveTangent { .. } => "curve-curve tangent",
         }
     }
 
@@ -463,7 +478,8 @@ impl Constraint {
             Constraint::Parallel(first, second)
             | Constraint::Perpendicular(first, second)
             | Constraint::Angle { first, second, .. }
-            | Constraint::G1JoinFree { first, second } => {
+            | Constraint::G1JoinFree { first, second }
+            | Constraint::CurveCurveTangent { first, second, .. } => {
                 push(*first);
                 push(*second);
             }
@@ -482,6 +498,27 @@ impl Constraint {
                 }
             }
             _ => {}
+        }
+    }
+
+    /// Stores the `k`-th solved free contact parameter of a constraint with two (k = 0: u,
+    /// k = 1: v); other constraints use [`Constraint::set_contact`].
+    pub(crate) fn set_contact_at(&mut self, k: usize, value: f64) {
+        match self {
+            Constraint::CurveCurveTangent { u, v, .. } => {
+                let free: Vec<&mut Contact> = [u, v]
+                    .into_iter()
+                    .filter(|c| matches!(c, Contact::Free(_)))
+                    .collect();
+                if let Some(Contact::Free(x)) = free.into_iter().nth(k) {
+                    *x = value;
+                }
+            }
+            other => {
+                if k == 0 {
+                    other.set_contact(value);
+                }
+            }
         }
     }
 }

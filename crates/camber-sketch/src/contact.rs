@@ -14,6 +14,7 @@
 //! - [`LineAngle`]: (cross(d₁, d₂)·cos θ − (d₁·d₂)·sin θ)/(|d₁||d₂|) = sin(φ − θ), φ the angle
 //!   from d₁ to d₂ (zero at θ and θ + π; the sense is checked after the solve);
 //! - [`TangentsParallel`]: cross(C₁′(b₁), C₂′(a₂))/(|C₁′||C₂′|);
+//! - [`CurveCurveContact`]: C₁(u) − C₂(v) and cross(C₁′(u), C₂′(v))/(|C₁′||C₂′|);
 //! - [`RadiusValue`]: r − R (affine);
 //! - [`OnCircleAt`], [`OnLineAt`]: C(s) on a circle or line at a fixed s (push-back rows).
 //!
@@ -383,5 +384,37 @@ impl Residual for OnLineAt {
         let (a, b) = (x[k], x[k + 1]);
         let d = sub(b, a);
         out[0] = cross(sub(&c, a), d) / dot(d, d).sqrt();
+    }
+}
+
+/// Two curves touch at free (or fixed) parameters: C₁(u) − C₂(v) = 0 (two rows) and
+/// cross(C₁′(u), C₂′(v))/(|C₁′||C₂′|) = 0 (one row). Blocks: the first curve's control points,
+/// u if free, the second curve's control points, v if free.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CurveCurveContact {
+    first: (CurveBasis, Param),
+    second: (CurveBasis, Param),
+}
+
+impl CurveCurveContact {
+    /// Contact of `first` at its parameter with `second` at its parameter.
+    pub fn new(first: (CurveBasis, Param), second: (CurveBasis, Param)) -> Self {
+        Self { first, second }
+    }
+}
+
+impl Residual for CurveCurveContact {
+    fn name(&self) -> &str {
+        "curve-curve tangent"
+    }
+    fn dim(&self) -> usize {
+        3
+    }
+    fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+        let (c1, t1, k) = curve_at(&self.first.0, self.first.1, x);
+        let (c2, t2, _) = curve_at(&self.second.0, self.second.1, &x[k..]);
+        out[0] = c1[0] - c2[0];
+        out[1] = c1[1] - c2[1];
+        out[2] = cross(t1, t2) / (dot(t1, t1) * dot(t2, t2)).sqrt();
     }
 }

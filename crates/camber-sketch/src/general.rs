@@ -17,8 +17,8 @@ use camber_solve::{BlockId, ConstraintId, DynResidual};
 use crate::compile::{ETerms, EntityLookup, Piece};
 use crate::constraint::{CircleSide, Constraint, Contact, LineSide, Rotation, Sense};
 use crate::contact::{
-    CircleContact, LineAngle, LineContact, OnCircle, OnCircleAt, OnCurve, OnLineAt, Param,
-    PointDistance, RadiusValue, TangentsParallel,
+    CircleContact, CurveCurveContact, LineAngle, LineContact, OnCircle, OnCircleAt, OnCurve,
+    OnLineAt, Param, PointDistance, RadiusValue, TangentsParallel,
 };
 use crate::curve_eval::CurveBasis;
 use crate::entity::Entity;
@@ -73,6 +73,13 @@ pub(crate) enum Check {
     Join {
         first: EntityId,
         second: EntityId,
+    },
+    Curves {
+        first: EntityId,
+        second: EntityId,
+        u: CheckParam,
+        v: CheckParam,
+        sense: Sense,
     },
     Angle {
         first: EntityId,
@@ -358,6 +365,33 @@ pub(crate) fn compile_general(
                 Some(check),
             ));
         }
+        Constraint::CurveCurveTangent {
+            first,
+            u,
+            second,
+            v,
+            sense,
+        } => {
+            distinct(*first, *second)?;
+            let (b1, mut slots) = curve_basis(lookup, *first)?;
+            let (p1, c1) = contact_param(&b1, *first, *u, &mut slots)?;
+            let (b2, s2) = curve_basis(lookup, *second)?;
+            slots.extend(s2);
+            let (p2, c2) = contact_param(&b2, *second, *v, &mut slots)?;
+            let check = Check::Curves {
+                first: *first,
+                second: *second,
+                u: c1,
+                v: c2,
+                sense: *sense,
+            };
+            out.push(general(
+                name,
+                CurveCurveContact::new((b1, p1), (b2, p2)),
+                slots,
+                Some(check),
+            ));
+        }
         _ => return Ok(false),
     }
     Ok(true)
@@ -443,7 +477,7 @@ impl Check {
         &self,
         owner: ConstraintId,
         solved: &HashMap<EntityId, Entity>,
-        u: f64,
+        param: &dyn Fn(CheckParam) -> Result<f64>,
         tolerance: f64,
     ) -> Result<()> {
         let flipped = |dot: f64| -> Result<()> {
@@ -462,8 +496,9 @@ impl Check {
                 circle,
                 side,
                 rotation,
-                ..
+                u,
             } => {
+                let u = param(u)?;
                 let e = get(solved, curve)?;
                 let Entity::Circle { center, radius } = get(solved, circle)? else {
                     return Err(Error::UnknownEntity { entity: circle });
@@ -494,8 +529,9 @@ impl Check {
                 line,
                 side,
                 sense,
-                ..
+                u,
             } => {
+                let u = param(u)?;
                 let e = get(solved, curve)?;
                 let Entity::Line([a, b]) = get(solved, line)? else {
                     return Err(Error::UnknownEntity { entity: line });
@@ -518,6 +554,25 @@ impl Check {
                 deepest(owner, e, curve, u, tolerance, |q| {
                     sign * (d[0] * (q[1] - a.y) - d[1] * (q[0] - a.x)) / len
                 })?;
+            }
+            Check::Curves {
+                first,
+                second,
+                u,
+                v,
+                sense,
+            } => {
+                let (u, v) = (param(u)?, param(v)?);
+                let (_, t1) = point_tangent(get(solved, first)?, first, u)?;
+                let (_, t2) = point_tangent(get(solved, second)?, second, v)?;
+                let (s1, s2) = (t1[0].hypot(t1[1]), t2[0].hypot(t2[1]));
+                if s1.is_nan() || s2.is_nan() || s1.min(s2) <= 1e-12 {
+                    return Err(Error::Cusp {
+                        constraint: owner,
+                        speed: s1.min(s2),
+                    });
+                }
+                flipped(sense.sign() * (t1[0] * t2[0] + t1[1] * t2[1]))?;
             }
             Check::Join { first, second } => {
                 let (e1, e2) = (get(solved, first)?, get(solved, second)?);
@@ -562,7 +617,7 @@ impl Check {
                 slots.extend([Slot::Point(line, 0), Slot::Point(line, 1)]);
                 Ok(Some((Arc::new(OnLineAt::new(basis, s)), slots)))
             }
-            Check::Join { .. } | Check::Angle { .. } => Ok(None),
+            Check::Join { .. } | Check::Angle { .. } | Check::Curves { .. } => Ok(None),
         }
     }
 
@@ -577,16 +632,12 @@ impl Check {
         };
         match &mut self {
             Check::Circle { u, .. } | Check::Line { u, .. } => fix(u),
+            Check::Curves { u, v, .. } => {
+                fix(u);
+                fix(v);
+            }
             Check::Join { .. } | Check::Angle { .. } => {}
         }
         self
-    }
-
-    /// The parameter the check reads.
-    pub(crate) fn param(&self) -> Option<CheckParam> {
-        match self {
-            Check::Circle { u, .. } | Check::Line { u, .. } => Some(*u),
-            Check::Join { .. } | Check::Angle { .. } => None,
-        }
     }
 }

@@ -474,10 +474,10 @@ impl Sketch {
     }
 
     /// Stores solved free contact parameters into their constraints.
-    pub(crate) fn store_contacts(&mut self, contacts: &[(ConstraintId, f64)]) {
-        for (id, u) in contacts {
+    pub(crate) fn store_contacts(&mut self, contacts: &[(ConstraintId, usize, f64)]) {
+        for (id, k, u) in contacts {
             if let Some(slot) = self.constraints.get_mut(id) {
-                slot.0.set_contact(*u);
+                slot.0.set_contact_at(*k, *u);
             }
         }
     }

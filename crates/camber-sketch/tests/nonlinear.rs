@@ -284,3 +284,57 @@ fn a_contact_on_the_wrong_side_is_refused() {
     assert_abs_diff_eq!(touch.coords.norm(), 1.0, epsilon = 1e-9);
     assert_abs_diff_eq!(touch.coords.dot(&(q - p)), 0.0, epsilon = 1e-9);
 }
+
+#[test]
+fn two_curves_touch_at_free_parameters() {
+    let mut s = Sketch::new();
+    let lower = s
+        .add_bezier(
+            BezierCurve2::try_new(vec![
+                Point2::new(0.0, 0.0),
+                Point2::new(1.5, 1.4),
+                Point2::new(2.5, 1.4),
+                Point2::new(4.0, 0.0),
+            ])
+            .unwrap(),
+        )
+        .unwrap();
+    let upper = s
+        .add_bezier(
+            BezierCurve2::try_new(vec![
+                Point2::new(0.0, 2.5),
+                Point2::new(1.5, 0.9),
+                Point2::new(2.5, 0.9),
+                Point2::new(4.0, 2.5),
+            ])
+            .unwrap(),
+        )
+        .unwrap();
+    s.add_constraint(Constraint::Fixed(FixTarget::Entity(lower)))
+        .unwrap();
+    let id = s
+        .add_constraint(Constraint::CurveCurveTangent {
+            first: lower,
+            u: Contact::Free(0.5),
+            second: upper,
+            v: Contact::Free(0.5),
+            sense: Sense::Agree,
+        })
+        .unwrap();
+    s.solve().unwrap();
+    let Constraint::CurveCurveTangent { u, v, .. } = s.constraint(id).unwrap().clone() else {
+        panic!("constraint");
+    };
+    let (p1, t1) = bezier(&s, lower).point_and_derivative(u.value()).unwrap();
+    let (p2, t2) = bezier(&s, upper).point_and_derivative(v.value()).unwrap();
+    assert_abs_diff_eq!(p1, p2, epsilon = 1e-9);
+    assert_abs_diff_eq!(
+        (t1.x * t2.y - t1.y * t2.x) / (t1.norm() * t2.norm()),
+        0.0,
+        epsilon = 1e-9
+    );
+    assert!(t1.dot(&t2) > 0.0);
+    // The start is symmetric about x = 2, so is the minimum-norm answer: u = v = ½.
+    assert_abs_diff_eq!(p1.x, 2.0, epsilon = 1e-6);
+    assert_abs_diff_eq!(u.value(), 0.5, epsilon = 1e-6);
+}
