@@ -197,3 +197,40 @@ fn two_cubics_solve_from_the_rough_start_and_perturbations() {
         assert!(ok >= need, "δ = {delta}: {ok} of 50 valid");
     }
 }
+
+/// The selected solve's displacement is no worse (within 1 %) than SLSQP's from the same
+/// perturbed start (10 starts per δ here; both minimise ½‖z − z₀‖²).
+#[test]
+fn displacement_is_no_worse_than_slsqp() {
+    let (s0, w) = base();
+    let mut compared = 0;
+    for (delta, seed) in [(0.01, 5), (0.05, 6)] {
+        let mut noise = Noise(seed);
+        for _ in 0..10 {
+            let mut s = s0.clone();
+            for j in 0..7 {
+                let p = s.point(PointRef::Control(w.curve, j)).unwrap();
+                let q = Point2::new(p.x + delta * noise.next(), p.y + delta * noise.next());
+                s.set_point(PointRef::Control(w.curve, j), q).unwrap();
+            }
+            let mut reference = s.clone();
+            reference.set_options(
+                camber_sketch::solve::default_options()
+                    .with_force(Some(camber_solve::SolverChoice::Slsqp)),
+            );
+            let (Ok(ours), Ok(theirs)) = (s.solve(), reference.solve()) else {
+                continue;
+            };
+            let (a, b) = (
+                ours.components[0].report.displacement_norm,
+                theirs.components[0].report.displacement_norm,
+            );
+            assert!(a <= 1.01 * b + 1e-12, "δ = {delta}: {a} vs SLSQP {b}");
+            compared += 1;
+        }
+    }
+    assert!(
+        compared >= 18,
+        "only {compared} of 20 starts solved by both"
+    );
+}
