@@ -364,6 +364,14 @@ pub enum Constraint {
         /// The angle θ in radians.
         angle: f64,
     },
+    /// [`Constraint::G1JoinFree`] plus equal signed curvature on both sides of the joint
+    /// (G2 continuity; four rows).
+    G2Join {
+        /// The curve that ends at the joint.
+        first: EntityId,
+        /// The curve that starts at the joint.
+        second: EntityId,
+    },
     /// Two curves touch: C₁(u) = C₂(v) and their tangents there are parallel with the given
     /// sense (C₁′·C₂′ > 0 for [`Sense::Agree`]); u and v may be free (three rows).
     CurveCurveTangent {
@@ -413,6 +421,7 @@ impl Constraint {
             Constraint::Angle { .. } => "angle",
             Constraint::G1JoinFree { .. } => "G1 join (free direction)",
             Constraint::CurveCurveTangent { .. } => "curve-curve tangent",
+            Constraint::G2Join { .. } => "G2 join",
         }
     }
 
@@ -479,7 +488,8 @@ impl Constraint {
             | Constraint::Perpendicular(first, second)
             | Constraint::Angle { first, second, .. }
             | Constraint::G1JoinFree { first, second }
-            | Constraint::CurveCurveTangent { first, second, .. } => {
+            | Constraint::CurveCurveTangent { first, second, .. }
+            | Constraint::G2Join { first, second } => {
                 push(*first);
                 push(*second);
             }

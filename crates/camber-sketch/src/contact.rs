@@ -14,6 +14,7 @@
 //! - [`LineAngle`]: (cross(d₁, d₂)·cos θ − (d₁·d₂)·sin θ)/(|d₁||d₂|) = sin(φ − θ), φ the angle
 //!   from d₁ to d₂ (zero at θ and θ + π; the sense is checked after the solve);
 //! - [`TangentsParallel`]: cross(C₁′(b₁), C₂′(a₂))/(|C₁′||C₂′|);
+//! - [`CurvatureMatch`]: κ₁(u₁) − κ₂(u₂), κ = cross(C′, C″)/|C′|³;
 //! - [`CurveCurveContact`]: C₁(u) − C₂(v) and cross(C₁′(u), C₂′(v))/(|C₁′||C₂′|);
 //! - [`RadiusValue`]: r − R (affine);
 //! - [`OnCircleAt`], [`OnLineAt`]: C(s) on a circle or line at a fixed s (push-back rows).
@@ -416,5 +417,41 @@ impl Residual for CurveCurveContact {
         out[0] = c1[0] - c2[0];
         out[1] = c1[1] - c2[1];
         out[2] = cross(t1, t2) / (dot(t1, t1) * dot(t2, t2)).sqrt();
+    }
+}
+
+/// κ₁(u₁) − κ₂(u₂) = 0 with κ = cross(C′, C″)/|C′|³, the signed curvature: two curves have the
+/// same curvature at fixed parameters (blocks: the first curve's control points, then the
+/// second's). With a G1 joint it makes the joint G2.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CurvatureMatch {
+    first: (CurveBasis, f64),
+    second: (CurveBasis, f64),
+}
+
+impl CurvatureMatch {
+    /// Equal curvature of `first` at u₁ and `second` at u₂.
+    pub fn new(first: (CurveBasis, f64), second: (CurveBasis, f64)) -> Self {
+        Self { first, second }
+    }
+}
+
+fn curvature<T: Scalar>(c: [[T; 2]; 3]) -> T {
+    let speed2 = dot(c[1], c[1]);
+    cross(c[1], c[2]) / (speed2 * speed2.sqrt())
+}
+
+impl Residual for CurvatureMatch {
+    fn name(&self) -> &str {
+        "G2 join"
+    }
+    fn dim(&self) -> usize {
+        1
+    }
+    fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+        let n1 = self.first.0.count();
+        let k1 = curvature(self.first.0.eval2(x, cst(self.first.1)));
+        let k2 = curvature(self.second.0.eval2(&x[n1..], cst(self.second.1)));
+        out[0] = k1 - k2;
     }
 }

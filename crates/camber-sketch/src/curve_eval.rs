@@ -207,6 +207,127 @@ impl CurveBasis {
     }
 }
 
+impl CurveBasis {
+    /// C(u), C′(u) and C″(u) (for curvature). The basis derivatives come from the Cox–de Boor
+    /// triangle kept at degrees p − 2, p − 1 and p:
+    /// N′ⱼ,ₚ = p·(Nⱼ,ₚ₋₁/Δⱼ − Nⱼ₊₁,ₚ₋₁/Δⱼ₊₁) with Δⱼ = u_{j+p} − u_j, applied twice for N″;
+    /// for NURBS, C″ = (Σ wⱼN″ⱼPⱼ − 2W′·C′ − W″·C)/W. Same conventions as [`CurveBasis::eval`].
+    pub fn eval2<T: Scalar>(&self, points: &[&[T]], u: T) -> [[T; 2]; 3] {
+        let zero = [T::zero(), T::zero()];
+        let p = self.degree;
+        if self.count == 0 || self.knots.len() < self.count + p + 1 || points.len() < self.count {
+            return [zero; 3];
+        }
+        let (a, b) = self.domain();
+        let u = if re(u) < a {
+            cst(a)
+        } else if re(u) > b {
+            cst(b)
+        } else {
+            u
+        };
+        let k = self.span(re(u));
+        let kn = &self.knots;
+        // levels[d] holds the degree-d functions N_{k−d..k}.
+        let mut levels: SmallVec<[SmallVec<[T; 8]>; 8]> = SmallVec::new();
+        let mut n: SmallVec<[T; 8]> = smallvec::smallvec![T::zero(); p + 1];
+        n[0] = T::one();
+        levels.push(n.clone());
+        for j in 1..=p {
+            let mut next: SmallVec<[T; 8]> = smallvec::smallvec![T::zero(); p + 1];
+            for r in 0..=j {
+                // N_{i,j} with i = k − j + r, from N_{i,j−1} (index r − 1) and N_{i+1,j−1} (r).
+                let i = k + r - j;
+                let mut v = T::zero();
+                if r >= 1 {
+                    let den = kn[i + j] - kn[i];
+                    if den.abs() > 0.0 {
+                        v += (u - cst(kn[i])) / cst(den) * n[r - 1];
+                    }
+                }
+                if r < j {
+                    let den = kn[i + j + 1] - kn[i + 1];
+                    if den.abs() > 0.0 {
+                        v += (cst::<T>(kn[i + j + 1]) - u) / cst(den) * n[r];
+                    }
+                }
+                next[r] = v;
+            }
+            n = next;
+            levels.push(n.clone());
+        }
+        // The derivative of degree-d functions (d + 1 of them) from degree-(d − 1) values.
+        let derive = |d: usize, lower: &[T]| -> SmallVec<[T; 8]> {
+            let mut out: SmallVec<[T; 8]> = smallvec::smallvec![T::zero(); d + 1];
+            if d == 0 {
+                return out;
+            }
+            let df: T = from_usize(d);
+            for r in 0..=d {
+                let i = k + r - d;
+                let mut v = T::zero();
+                if r >= 1 {
+                    let den = kn[i + d] - kn[i];
+                    if den.abs() > 0.0 {
+                        v += df * lower[r - 1] / cst(den);
+                    }
+                }
+                if r < d {
+                    let den = kn[i + d + 1] - kn[i + 1];
+                    if den.abs() > 0.0 {
+                        v -= df * lower[r] / cst(den);
+                    }
+                }
+                out[r] = v;
+            }
+            out
+        };
+        let n0 = &levels[p];
+        let n1 = if p >= 1 {
+            derive(p, &levels[p - 1])
+        } else {
+            smallvec::smallvec![T::zero(); 1]
+        };
+        let n2 = if p >= 2 {
+            let lower1 = derive(p - 1, &levels[p - 2]);
+            derive(p, &lower1)
+        } else {
+            smallvec::smallvec![T::zero(); p + 1]
+        };
+        let first = k - p;
+        let mut c = [zero; 3];
+        let (mut w0, mut w1, mut w2) = (T::zero(), T::zero(), T::zero());
+        for r in 0..=p {
+            let wr = cst::<T>(
+                self.weights
+                    .as_ref()
+                    .and_then(|w| w.get(first + r).copied())
+                    .unwrap_or(1.0),
+            );
+            w0 += wr * n0[r];
+            w1 += wr * n1[r];
+            w2 += wr * n2[r];
+            let q = points[first + r];
+            for d in 0..2 {
+                c[0][d] += wr * n0[r] * q[d];
+                c[1][d] += wr * n1[r] * q[d];
+                c[2][d] += wr * n2[r] * q[d];
+            }
+        }
+        if self.weights.is_some() {
+            for d in 0..2 {
+                let c0 = c[0][d] / w0;
+                let c1 = (c[1][d] - w1 * c0) / w0;
+                let c2 = (c[2][d] - cst::<T>(2.0) * w1 * c1 - w2 * c0) / w0;
+                c[0][d] = c0;
+                c[1][d] = c1;
+                c[2][d] = c2;
+            }
+        }
+        c
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -250,6 +371,16 @@ mod tests {
                 assert_relative_eq!(c[1], p.y, epsilon = 1e-12);
                 assert_relative_eq!(c1[0], d.x, epsilon = 1e-10);
                 assert_relative_eq!(c1[1], d.y, epsilon = 1e-10);
+                let second = match &e {
+                    Entity::BSpline(b) => b.second_order(u)?,
+                    Entity::Nurbs(b) => b.second_order(u)?,
+                    _ => return Err("kind".into()),
+                };
+                let [e0, e1, e2] = basis.eval2::<f64>(&refs, u);
+                for (mine, theirs) in [(e0, second[0]), (e1, second[1]), (e2, second[2])] {
+                    assert_relative_eq!(mine[0], theirs.x, epsilon = 1e-8, max_relative = 1e-9);
+                    assert_relative_eq!(mine[1], theirs.y, epsilon = 1e-8, max_relative = 1e-9);
+                }
             }
         }
         Ok(())

@@ -17,8 +17,8 @@ use camber_solve::{BlockId, ConstraintId, DynResidual};
 use crate::compile::{ETerms, EntityLookup, Piece};
 use crate::constraint::{CircleSide, Constraint, Contact, LineSide, Rotation, Sense};
 use crate::contact::{
-    CircleContact, CurveCurveContact, LineAngle, LineContact, OnCircle, OnCircleAt, OnCurve,
-    OnLineAt, Param, PointDistance, RadiusValue, TangentsParallel,
+    CircleContact, CurvatureMatch, CurveCurveContact, LineAngle, LineContact, OnCircle, OnCircleAt,
+    OnCurve, OnLineAt, Param, PointDistance, RadiusValue, TangentsParallel,
 };
 use crate::curve_eval::CurveBasis;
 use crate::entity::Entity;
@@ -334,7 +334,7 @@ pub(crate) fn compile_general(
             });
             out.push(general(name, LineAngle::new(name, angle), slots, check));
         }
-        Constraint::G1JoinFree { first, second } => {
+        Constraint::G1JoinFree { first, second } | Constraint::G2Join { first, second } => {
             distinct(*first, *second)?;
             let (b1, mut slots) = curve_basis(lookup, *first)?;
             let (b2, s2) = curve_basis(lookup, *second)?;
@@ -358,6 +358,14 @@ pub(crate) fn compile_general(
                 first: *first,
                 second: *second,
             };
+            if matches!(c, Constraint::G2Join { .. }) {
+                out.push(general(
+                    name,
+                    CurvatureMatch::new((b1.clone(), u1), (b2.clone(), u2)),
+                    slots.clone(),
+                    None,
+                ));
+            }
             out.push(general(
                 name,
                 TangentsParallel::new((b1, u1), (b2, u2)),

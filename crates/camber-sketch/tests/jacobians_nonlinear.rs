@@ -9,8 +9,8 @@
 
 use camber_geom::{BSplineCurve2, KnotVector};
 use camber_sketch::contact::{
-    CircleContact, CurveCurveContact, LineAngle, LineContact, OnCircle, OnCircleAt, OnCurve,
-    OnLineAt, Param, PointDistance, RadiusValue, TangentsParallel,
+    CircleContact, CurvatureMatch, CurveCurveContact, LineAngle, LineContact, OnCircle, OnCircleAt,
+    OnCurve, OnLineAt, Param, PointDistance, RadiusValue, TangentsParallel,
 };
 use camber_sketch::curve_eval::CurveBasis;
 use camber_sketch::Entity;
@@ -114,6 +114,15 @@ proptest! {
         let r = CurveCurveContact::new((basis(), Param::Block), (basis(), Param::Block));
         let mut blocks = curve_blocks(&w1, &[vec![u]]);
         blocks.extend(curve_blocks(&w2, &[vec![v]]));
+        prop_assert!(check(&r, &blocks) < 1e-6);
+    }
+
+    #[test]
+    fn curvature_match(w1 in prop::collection::vec(-1.0..1.0_f64, 5), w2 in prop::collection::vec(-1.0..1.0_f64, 5),
+                       u in param(), v in param()) {
+        let r = CurvatureMatch::new((basis(), u), (basis(), v));
+        let mut blocks = curve_blocks(&w1, &[]);
+        blocks.extend(curve_blocks(&w2, &[]));
         prop_assert!(check(&r, &blocks) < 1e-6);
     }
 }

@@ -338,3 +338,48 @@ fn two_curves_touch_at_free_parameters() {
     assert_abs_diff_eq!(p1.x, 2.0, epsilon = 1e-6);
     assert_abs_diff_eq!(u.value(), 0.5, epsilon = 1e-6);
 }
+
+#[test]
+fn g2_join_matches_curvature() {
+    let mut s = Sketch::new();
+    let first = s
+        .add_bezier(
+            BezierCurve2::try_new(vec![
+                Point2::new(0.0, 0.0),
+                Point2::new(1.0, 1.0),
+                Point2::new(2.0, 1.2),
+                Point2::new(3.0, 0.8),
+            ])
+            .unwrap(),
+        )
+        .unwrap();
+    let second = s
+        .add_bezier(
+            BezierCurve2::try_new(vec![
+                Point2::new(3.0, 0.8),
+                Point2::new(4.0, 0.5),
+                Point2::new(5.0, 0.8),
+                Point2::new(6.0, 0.0),
+            ])
+            .unwrap(),
+        )
+        .unwrap();
+    s.add_constraint(Constraint::G2Join { first, second })
+        .unwrap();
+    s.solve().unwrap();
+    let curvature = |c: &BezierCurve2<f64>, u: f64| {
+        let [_, d1, d2] = c.second_order(u).unwrap();
+        (d1.x * d2.y - d1.y * d2.x) / d1.norm().powi(3)
+    };
+    let (c1, c2) = (bezier(&s, first), bezier(&s, second));
+    let (p1, t1) = c1.point_and_derivative(1.0).unwrap();
+    let (p2, t2) = c2.point_and_derivative(0.0).unwrap();
+    assert_abs_diff_eq!(p1, p2, epsilon = 1e-9);
+    assert_abs_diff_eq!(
+        (t1.x * t2.y - t1.y * t2.x) / (t1.norm() * t2.norm()),
+        0.0,
+        epsilon = 1e-9
+    );
+    assert!(t1.dot(&t2) > 0.0);
+    assert_abs_diff_eq!(curvature(&c1, 1.0), curvature(&c2, 0.0), epsilon = 1e-8);
+}
