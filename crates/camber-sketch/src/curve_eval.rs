@@ -315,14 +315,15 @@ impl CurveBasis {
             }
         }
         if self.weights.is_some() {
-            for d in 0..2 {
-                let c0 = c[0][d] / w0;
-                let c1 = (c[1][d] - w1 * c0) / w0;
-                let c2 = (c[2][d] - cst::<T>(2.0) * w1 * c1 - w2 * c0) / w0;
-                c[0][d] = c0;
-                c[1][d] = c1;
-                c[2][d] = c2;
-            }
+            // Per coordinate: C = A/W, C′ = (A′ − W′C)/W, C″ = (A″ − 2W′C′ − W″C)/W.
+            let rational = |a0: T, a1: T, a2: T| {
+                let c0 = a0 / w0;
+                let c1 = (a1 - w1 * c0) / w0;
+                (c0, c1, (a2 - cst::<T>(2.0) * w1 * c1 - w2 * c0) / w0)
+            };
+            let (x0, x1, x2) = rational(c[0][0], c[1][0], c[2][0]);
+            let (y0, y1, y2) = rational(c[0][1], c[1][1], c[2][1]);
+            return [[x0, y0], [x1, y1], [x2, y2]];
         }
         c
     }
