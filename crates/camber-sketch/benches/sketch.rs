@@ -1,9 +1,13 @@
 //! Benchmarks of the standard workloads on the linear path: W1 (drag update), the blade
 //! section (drag update, Jacobian assembly), W3a (G1 chain with fixed tangents, full solve) and
-//! W4 (10,000 independent components, one solve).
+//! W4 (10,000 independent components, one solve); and on the nonlinear path W2 `bspline7`
+//! (three-circle tangency, one solve from each of 100 perturbed starts per δ, valid counts
+//! printed) and a drag update on the solved diffuser.
 #![allow(missing_docs)] // criterion's macros generate undocumented items
 
-use camber_sketch::workloads::{blade, w1, w1_targets, w3a_chain, w4};
+use camber_sketch::workloads::{
+    blade, w1, w1_targets, w2_bspline7, w2_perturbed, w2_valid, w3a_chain, w4,
+};
 use camber_sketch::{PointRef, TangentForm};
 use criterion::{criterion_group, criterion_main, BatchSize, BenchmarkId, Criterion};
 use nalgebra::{Point2, Vector2};
@@ -80,5 +84,54 @@ fn bench_w4(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench_w1, bench_blade, bench_w3a, bench_w4);
+fn bench_w2(c: &mut Criterion) {
+    let (mut base, w) = w2_bspline7().expect("valid workload");
+    base.solve().expect("the rough start solves");
+    let mut group = c.benchmark_group("w2_bspline7_solve");
+    for (name, delta, seed) in [("delta_0.01", 0.01, 1), ("delta_0.05", 0.05, 2)] {
+        let starts = w2_perturbed(&base, &w, delta, 100, seed).expect("perturbed starts");
+        let valid = starts
+            .iter()
+            .filter(|s| {
+                let mut s = (*s).clone();
+                s.solve().is_ok() && w2_valid(&s, &w)
+            })
+            .count();
+        eprintln!("w2 bspline7 {name}: {valid} of 100 valid");
+        let mut k = 0;
+        group.bench_function(name, |b| {
+            b.iter_batched(
+                || {
+                    k = (k + 1) % starts.len();
+                    starts[k].clone()
+                },
+                |mut s| black_box(s.solve().is_ok()),
+                BatchSize::SmallInput,
+            )
+        });
+    }
+    group.finish();
+
+    // A drag update on the solved diffuser (nonlinear: warm-started Newton).
+    let dragged = PointRef::Control(w.curve, 3);
+    let start = base.point(dragged).expect("point");
+    let mut session = base.drag(dragged).expect("draggable");
+    let mut k = 0_u32;
+    c.bench_function("w2_bspline7_drag_update", |b| {
+        b.iter(|| {
+            k = (k + 1) % 200;
+            let dy = 0.0002 * f64::from(k.min(200 - k));
+            let _ = session.update(black_box(Point2::new(start.x, start.y + dy)));
+        })
+    });
+}
+
+criterion_group!(
+    benches,
+    bench_w1,
+    bench_blade,
+    bench_w2,
+    bench_w3a,
+    bench_w4
+);
 criterion_main!(benches);

@@ -15,6 +15,7 @@ use nalgebra::Point2;
 use crate::compile::{compile, ETerms, EntityLookup, Piece};
 use crate::entity::Entity;
 use crate::errors::{Error, Result};
+use crate::general::{Check, CheckParam, Slot};
 use crate::ids::{EntityId, PointRef};
 use crate::residuals::{DirectionCross, LineTangency, PointCombination};
 
@@ -101,6 +102,10 @@ pub struct ComponentProblem {
     pub(crate) orientations: Vec<Orientation>,
     /// The first constraint whose residual is not affine, with the residual's name.
     pub(crate) nonlinear: Option<(ConstraintId, String)>,
+    /// Free contact parameters: the owning constraint and the block of one holding u.
+    pub(crate) contacts: Vec<(ConstraintId, BlockId)>,
+    /// The honesty checks of contacts, joints and angles, with their owners.
+    pub(crate) checks: Vec<(ConstraintId, Check)>,
 }
 
 impl ComponentProblem {
@@ -177,6 +182,48 @@ impl ComponentProblem {
     fn add_piece(&mut self, owner: ConstraintId, piece: &Piece) -> Result<()> {
         match piece {
             Piece::FixEntity(_) | Piece::FixPoint(..) | Piece::Eliminate { .. } => {}
+            Piece::General {
+                name,
+                residual,
+                slots,
+                check,
+            } => {
+                if !residual.is_affine() && self.nonlinear.is_none() {
+                    self.nonlinear = Some((owner, (*name).to_owned()));
+                }
+                let mut blocks = Vec::with_capacity(slots.len());
+                let mut contact_blocks = Vec::with_capacity(slots.len());
+                for slot in slots {
+                    let (block, contact) = match *slot {
+                        Slot::Point(e, j) => (self.point_block(e, j)?, None),
+                        Slot::Radius(e) => {
+                            let b = self
+                                .layout
+                                .get(&e)
+                                .and_then(|b| b.scalars.first().copied())
+                                .ok_or(Error::UnknownEntity { entity: e })?;
+                            (b, None)
+                        }
+                        Slot::Contact { u0, lo, hi } => {
+                            let b = self.problem.add_block(&[u0])?;
+                            let u = self.problem.unknown(b, 0)?;
+                            self.problem.set_bounds(Var::Unknown(u), lo, hi)?;
+                            self.contacts.push((owner, b));
+                            (b, Some(b))
+                        }
+                    };
+                    blocks.push(block);
+                    contact_blocks.push(contact);
+                }
+                self.problem.add_dyn_residual(
+                    Box::new(SharedResidual(residual.clone())),
+                    &blocks,
+                    owner,
+                )?;
+                if let Some(c) = check {
+                    self.checks.push((owner, c.resolved(&contact_blocks)));
+                }
+            }
             Piece::Custom { residual, points } => {
                 if !residual.is_affine() && self.nonlinear.is_none() {
                     self.nonlinear = Some((owner, residual.name().to_owned()));
@@ -270,6 +317,8 @@ pub(crate) fn build<L: EntityLookup>(
         layout: HashMap::with_capacity(component.entities.len()),
         orientations: Vec::new(),
         nonlinear: None,
+        contacts: Vec::new(),
+        checks: Vec::new(),
     };
     for id in &component.entities {
         let e = lookup.lookup(*id)?;
@@ -460,6 +509,71 @@ impl ComponentProblem {
             out.push((*id, e.with_points(&pts, &scalars)?));
         }
         Ok(out)
+    }
+
+    /// Adds the row that pushes the crossing of `owner`'s contact at curve parameter `s` back
+    /// onto the target (owned by `owner`). Returns false when `owner` has no contact check.
+    pub(crate) fn push_back<L: EntityLookup>(
+        &mut self,
+        lookup: &L,
+        owner: ConstraintId,
+        s: f64,
+    ) -> Result<bool> {
+        let Some(check) = self
+            .checks
+            .iter()
+            .find(|(c, _)| *c == owner)
+            .map(|(_, k)| *k)
+        else {
+            return Ok(false);
+        };
+        let Some((residual, slots)) = check.push_back(lookup, s)? else {
+            return Ok(false);
+        };
+        let piece = Piece::General {
+            name: "push back",
+            residual,
+            slots,
+            check: None,
+        };
+        self.add_piece(owner, &piece)?;
+        Ok(true)
+    }
+
+    /// The solved free contact parameters at `x`, with their constraints.
+    pub(crate) fn contacts_at(&self, x: &[f64]) -> Result<Vec<(ConstraintId, usize, f64)>> {
+        let mut out: Vec<(ConstraintId, usize, f64)> = Vec::with_capacity(self.contacts.len());
+        for (c, b) in &self.contacts {
+            // The k-th free parameter of its constraint (push-back rows add none).
+            let k = out.iter().filter(|(o, _, _)| o == c).count();
+            out.push((*c, k, x[self.problem.unknown(*b, 0)?.index()]));
+        }
+        Ok(out)
+    }
+
+    /// Runs the contact, joint and angle checks on the entities solved at `x`, allowing a
+    /// penetration of `tolerance` (length units).
+    pub(crate) fn check_contacts(
+        &self,
+        solved: &[(EntityId, Entity)],
+        x: &[f64],
+        tolerance: f64,
+    ) -> Result<()> {
+        if self.checks.is_empty() {
+            return Ok(());
+        }
+        let map: HashMap<EntityId, Entity> = solved.iter().cloned().collect();
+        let param = |p: CheckParam| -> Result<f64> {
+            Ok(match p {
+                CheckParam::Fixed(u) => u,
+                CheckParam::Block(b) => x[self.problem.unknown(b, 0)?.index()],
+                CheckParam::Slot(_) => f64::NAN,
+            })
+        };
+        for (owner, check) in &self.checks {
+            check.verify(*owner, &map, &param, tolerance)?;
+        }
+        Ok(())
     }
 
     /// The first orientation check that fails at `x`, as an error.

@@ -48,6 +48,14 @@ pub(crate) enum Piece {
         residual: std::sync::Arc<dyn camber_solve::DynResidual>,
         points: Vec<(EntityId, usize)>,
     },
+    /// A nonlinear residual over slots (points, radii, new contact parameters), with the check
+    /// its solved value must pass.
+    General {
+        name: &'static str,
+        residual: std::sync::Arc<dyn camber_solve::DynResidual>,
+        slots: Vec<crate::general::Slot>,
+        check: Option<crate::general::Check>,
+    },
     /// P_target = P_base + t·direction with t > 0 a new unknown; `fallback` is the row form
     /// used when the target cannot be eliminated.
     Eliminate {
@@ -328,6 +336,9 @@ pub(crate) fn compile(lookup: &impl EntityLookup, c: &Constraint) -> Result<Smal
                 residual: custom.residual.clone(),
                 points,
             });
+        }
+        other => {
+            crate::general::compile_general(lookup, other, &mut out)?;
         }
     }
     Ok(out)

@@ -1,5 +1,10 @@
-//! The built-in constraints, all affine in the control points (knots, weights, parameters and
-//! directions being data), and their validation.
+//! The built-in constraints and their validation. The first group is affine in the control
+//! points (knots, weights, parameters and directions being data); the second
+//! ([`Constraint::PointOnCurve`] onward) is nonlinear: free contact parameters ([`Contact`]),
+//! circles and lines whose points and radii are unknowns, distances, angles and the G1 joint
+//! with a free direction, compiled to the residuals of [`crate::contact`]. Contacts record the
+//! side of the target the curve stays on ([`CircleSide`], [`LineSide`]) and the direction of
+//! travel ([`Rotation`], [`Sense`]), checked after every solve.
 //!
 //! Each constraint becomes rows of a [`camber_solve::Problem`] through the residuals of
 //! [`crate::residuals`] (or, for `Fixed` and the elimination form of end tangency, through the
@@ -71,10 +76,56 @@ pub enum Target {
     Point(PointRef),
 }
 
+/// Where a contact takes place on a curve.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+pub enum Contact {
+    /// At this fixed parameter.
+    At(f64),
+    /// At a free parameter (an unknown bounded to the curve's domain) starting here; a
+    /// successful solve stores the solved value back into the constraint.
+    Free(f64),
+}
+
+impl Contact {
+    /// The parameter value (fixed, or the current value of the free one).
+    pub fn value(self) -> f64 {
+        match self {
+            Contact::At(u) | Contact::Free(u) => u,
+        }
+    }
+}
+
+/// Which side of a circle the curve lies on near the contact.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
+pub enum CircleSide {
+    /// |C(s) − c| ≥ r near the contact.
+    Outside,
+    /// |C(s) − c| ≤ r near the contact.
+    Inside,
+}
+
+/// Which side of a line A→B the curve lies on near the contact.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
+pub enum LineSide {
+    /// cross(B − A, C(s) − A) ≥ 0.
+    Left,
+    /// cross(B − A, C(s) − A) ≤ 0.
+    Right,
+}
+
+/// How a curve runs around a circle at the contact: the sign of cross(C(u) − c, C′(u)).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
+pub enum Rotation {
+    /// cross(C − c, C′) > 0.
+    CounterClockwise,
+    /// cross(C − c, C′) < 0.
+    Clockwise,
+}
+
 /// A user-written residual ([`camber_solve::Residual`]) over points of the sketch, each point
 /// one block (x, y) in the order given. Points must be point entities, control points (line
-/// ends, circle centres) or the clamped ends of curves. A non-affine residual makes its
-/// component need the nonlinear solver, which is reported as [`crate::Error::NeedsNonlinear`].
+/// ends, circle centres) or the clamped ends of curves. A non-affine residual sends its
+/// component to the nonlinear solver ([`camber_solve::solve()`]).
 ///
 /// ```
 /// use camber_sketch::{Constraint, Custom, PointRef, Sketch};
@@ -239,6 +290,110 @@ pub enum Constraint {
     },
     /// A user-written residual over points.
     Custom(Custom),
+    /// The point lies on the curve: C(u) = P (two rows, nonlinear when u is free).
+    PointOnCurve {
+        /// The point (a single block: a point, control point or clamped curve end).
+        point: PointRef,
+        /// The curve.
+        curve: EntityId,
+        /// The parameter.
+        u: Contact,
+    },
+    /// The curve touches the line entity (A, B) at u and runs along it with the given sense
+    /// relative to B − A, lying on `side` near the contact (two rows).
+    TangentToLine {
+        /// The curve.
+        curve: EntityId,
+        /// The line entity (its ends may be unknowns).
+        line: EntityId,
+        /// The contact parameter.
+        u: Contact,
+        /// Which side of the line the curve stays on near the contact.
+        side: LineSide,
+        /// C′(u) along or against B − A.
+        sense: Sense,
+    },
+    /// The curve touches the circle entity at u: |C(u) − c|² = r² and (C(u) − c)·C′(u) = 0,
+    /// lying on `side` near the contact and running around it in `rotation` (two rows).
+    TangentToCircle {
+        /// The curve.
+        curve: EntityId,
+        /// The circle entity (centre and radius may be unknowns).
+        circle: EntityId,
+        /// The contact parameter.
+        u: Contact,
+        /// Outside or inside the circle near the contact.
+        side: CircleSide,
+        /// The direction of travel around the circle.
+        rotation: Rotation,
+    },
+    /// The point lies on the circle: |P − c| = r (one row).
+    PointOnCircle {
+        /// The point (a single block).
+        point: PointRef,
+        /// The circle entity.
+        circle: EntityId,
+    },
+    /// The circle's radius equals the value (> 0; one affine row).
+    Radius {
+        /// The circle entity.
+        circle: EntityId,
+        /// The radius.
+        radius: f64,
+    },
+    /// Two points are `distance` (> 0) apart (one row).
+    Distance {
+        /// The first point (a single block).
+        a: PointRef,
+        /// The second point (a single block).
+        b: PointRef,
+        /// The distance.
+        distance: f64,
+    },
+    /// Two line entities are parallel, either sense (one row).
+    Parallel(EntityId, EntityId),
+    /// Two line entities are perpendicular (one row).
+    Perpendicular(EntityId, EntityId),
+    /// The angle from the first line's direction to the second's is `angle` radians
+    /// (counter-clockwise positive; one row plus a check of the sense).
+    Angle {
+        /// The first line.
+        first: EntityId,
+        /// The second line.
+        second: EntityId,
+        /// The angle θ in radians.
+        angle: f64,
+    },
+    /// [`Constraint::G1JoinFree`] plus equal signed curvature on both sides of the joint
+    /// (G2 continuity; four rows).
+    G2Join {
+        /// The curve that ends at the joint.
+        first: EntityId,
+        /// The curve that starts at the joint.
+        second: EntityId,
+    },
+    /// Two curves touch: C₁(u) = C₂(v) and their tangents there are parallel with the given
+    /// sense (C₁′·C₂′ > 0 for [`Sense::Agree`]); u and v may be free (three rows).
+    CurveCurveTangent {
+        /// The first curve.
+        first: EntityId,
+        /// Its contact parameter.
+        u: Contact,
+        /// The second curve.
+        second: EntityId,
+        /// Its contact parameter.
+        v: Contact,
+        /// Same or opposite travel directions at the contact.
+        sense: Sense,
+    },
+    /// The end of `first` coincides with the start of `second` and their tangents there are
+    /// parallel and point the same way, the direction being free (three rows).
+    G1JoinFree {
+        /// The curve that ends at the joint.
+        first: EntityId,
+        /// The curve that starts at the joint.
+        second: EntityId,
+    },
 }
 
 impl Constraint {
@@ -255,6 +410,18 @@ impl Constraint {
             Constraint::TangentToLineAt { .. } => "tangent to line at",
             Constraint::G1Join { .. } => "G1 join",
             Constraint::Custom(_) => "custom",
+            Constraint::PointOnCurve { .. } => "point on curve",
+            Constraint::TangentToLine { .. } => "tangent to line",
+            Constraint::TangentToCircle { .. } => "tangent to circle",
+            Constraint::PointOnCircle { .. } => "point on circle",
+            Constraint::Radius { .. } => "radius",
+            Constraint::Distance { .. } => "distance",
+            Constraint::Parallel(..) => "parallel",
+            Constraint::Perpendicular(..) => "perpendicular",
+            Constraint::Angle { .. } => "angle",
+            Constraint::G1JoinFree { .. } => "G1 join (free direction)",
+            Constraint::CurveCurveTangent { .. } => "curve-curve tangent",
+            Constraint::G2Join { .. } => "G2 join",
         }
     }
 
@@ -293,7 +460,75 @@ impl Constraint {
                     push(p.entity());
                 }
             }
+            Constraint::PointOnCurve { point, curve, .. } => {
+                push(point.entity());
+                push(*curve);
+            }
+            Constraint::TangentToLine {
+                curve, line: other, ..
+            }
+            | Constraint::TangentToCircle {
+                curve,
+                circle: other,
+                ..
+            } => {
+                push(*curve);
+                push(*other);
+            }
+            Constraint::PointOnCircle { point, circle } => {
+                push(point.entity());
+                push(*circle);
+            }
+            Constraint::Radius { circle, .. } => push(*circle),
+            Constraint::Distance { a, b, .. } => {
+                push(a.entity());
+                push(b.entity());
+            }
+            Constraint::Parallel(first, second)
+            | Constraint::Perpendicular(first, second)
+            | Constraint::Angle { first, second, .. }
+            | Constraint::G1JoinFree { first, second }
+            | Constraint::CurveCurveTangent { first, second, .. }
+            | Constraint::G2Join { first, second } => {
+                push(*first);
+                push(*second);
+            }
         }
         out
+    }
+
+    /// Stores a solved free contact parameter (no effect on other constraints).
+    pub(crate) fn set_contact(&mut self, value: f64) {
+        match self {
+            Constraint::PointOnCurve { u, .. }
+            | Constraint::TangentToLine { u, .. }
+            | Constraint::TangentToCircle { u, .. } => {
+                if let Contact::Free(v) = u {
+                    *v = value;
+                }
+            }
+            _ => {}
+        }
+    }
+
+    /// Stores the `k`-th solved free contact parameter of a constraint with two (k = 0: u,
+    /// k = 1: v); other constraints use [`Constraint::set_contact`].
+    pub(crate) fn set_contact_at(&mut self, k: usize, value: f64) {
+        match self {
+            Constraint::CurveCurveTangent { u, v, .. } => {
+                let free: Vec<&mut Contact> = [u, v]
+                    .into_iter()
+                    .filter(|c| matches!(c, Contact::Free(_)))
+                    .collect();
+                if let Some(Contact::Free(x)) = free.into_iter().nth(k) {
+                    *x = value;
+                }
+            }
+            other => {
+                if k == 0 {
+                    other.set_contact(value);
+                }
+            }
+        }
     }
 }

@@ -1,4 +1,6 @@
-//! Drag sessions: the interactive loop. The component's problem is built once with the
+//! Drag sessions: the interactive loop.
+//!
+//! **Affine components.** The component's problem is built once with the
 //! dragged point pinned by two extra rows, P − anchor = 0 (anchor = where the point was);
 //! the rows are analysed once, and the weighted minimum-norm factorization of the independent
 //! rows is cached. Moving the target to q changes only the right-hand side of the pin rows,
@@ -14,6 +16,14 @@
 //! an update on the dense backend (components of up to `dense_max_unknowns` reduced unknowns)
 //! as long as no residual reads more than 8 blocks. The sketch itself is unchanged until
 //! [`DragSession::finish`].
+//!
+//! **Nonlinear components.** J changes with the unknowns, so nothing is cached but the Newton
+//! workspace. The dragged point (a single free block) is fixed in the problem and set to the
+//! target at each update; Newton minimum norm starts from the previous step's solution and
+//! pulls toward it ([`camber_solve::solve_newton_from`]), so each step moves the rest of the
+//! sketch as little as it can; if Newton fails, the full selection ([`camber_solve::solve()`])
+//! runs from the same state. The result must pass the orientation and contact checks of a
+//! solve, otherwise the session keeps its previous state.
 
 use std::collections::BTreeMap;
 
@@ -27,6 +37,16 @@ use crate::entity::Entity;
 use crate::errors::{Error, Result};
 use crate::ids::{EntityId, PointRef};
 use crate::sketch::Sketch;
+
+/// The entity shapes a session started from, as an [`EntityLookup`] (knots, weights and kinds
+/// do not change during a drag).
+struct Shapes<'a>(&'a BTreeMap<EntityId, Entity>);
+
+impl EntityLookup for Shapes<'_> {
+    fn lookup(&self, id: EntityId) -> Result<&Entity> {
+        self.0.get(&id).ok_or(Error::UnknownEntity { entity: id })
+    }
+}
 
 /// Refinement rounds after each minimum-norm step.
 const REFINEMENT_STEPS: usize = 2;
@@ -56,7 +76,8 @@ pub struct DragSession {
     revision: u64,
     cp: ComponentProblem,
     map: ReducedMap,
-    factorization: MinNormFactorization,
+    /// The cached factorization (affine components only).
+    factorization: Option<MinNormFactorization>,
     /// Rows of J kept (independent), and the two pin rows' positions in g.
     rows: Vec<usize>,
     row_owner: Vec<camber_solve::ConstraintId>,
@@ -75,6 +96,21 @@ pub struct DragSession {
     g_new: Vec<f64>,
     g_sel: Vec<f64>,
     dz: Vec<f64>,
+    /// Present when the component is nonlinear: the warm-started Newton state.
+    nonlinear: Option<NonlinearDrag>,
+}
+
+/// The state of a drag on a nonlinear component: the dragged block is fixed in the problem and
+/// moved to the target at each update; Newton starts from the previous step's solution and
+/// pulls toward it, and the full selection ([`camber_solve::solve()`]) runs when it fails.
+#[derive(Debug)]
+struct NonlinearDrag {
+    block: camber_solve::BlockId,
+    /// The reduced unknowns of the current state.
+    z: Vec<f64>,
+    workspace: camber_solve::NewtonWorkspace,
+    options: camber_solve::Options,
+    penetration: f64,
 }
 
 /// # Dragging
@@ -84,16 +120,16 @@ impl Sketch {
     ///
     /// # Errors
     /// Id errors; [`Error::Conflicting`] when the component's constraints contradict each other;
-    /// [`Error::NotDraggable`] when the point is fixed or determined by the constraints;
-    /// [`Error::NeedsNonlinear`] for a non-affine constraint.
+    /// [`Error::NotDraggable`] when the point is fixed or determined by the constraints (on a
+    /// nonlinear component: when it is not a single free point block).
     pub fn drag(&self, point: PointRef) -> Result<DragSession> {
         let e = self.lookup(point.entity())?;
         e.resolve(point)?;
         let comp = self.component_of(point.entity())?;
-        let cp = self.build_component(&comp, Some(point))?;
-        if let Some((constraint, name)) = cp.nonlinear.clone() {
-            return Err(Error::NeedsNonlinear { constraint, name });
+        if self.build_component(&comp, None)?.nonlinear.is_some() {
+            return self.drag_nonlinear(point, &comp);
         }
+        let cp = self.build_component(&comp, Some(point))?;
         let options = self.options();
         let lin = cp.problem().linearize()?;
         let m = lin.g.len();
@@ -131,7 +167,7 @@ impl Sketch {
             shapes,
             map: lin.map,
             cp,
-            factorization,
+            factorization: Some(factorization),
             pin,
             anchor,
             tolerance: options.tolerance,
@@ -142,6 +178,66 @@ impl Sketch {
             g_sel: vec![0.0; rows.len()],
             dz: vec![0.0; n],
             rows,
+            nonlinear: None,
+        })
+    }
+
+    /// A drag session on a nonlinear component (see [`NonlinearDrag`]).
+    fn drag_nonlinear(
+        &self,
+        point: PointRef,
+        comp: &crate::build::Component,
+    ) -> Result<DragSession> {
+        let (entity, index) = crate::general::single_block(self, point)?;
+        let mut cp = self.build_component(comp, None)?;
+        let block = cp.point_block(entity, index)?;
+        for k in 0..2 {
+            let u = cp.problem.unknown(block, k)?;
+            if !matches!(cp.problem.binding(u)?, camber_solve::Binding::Free) {
+                return Err(Error::NotDraggable { point });
+            }
+        }
+        cp.problem.fix_block(block)?;
+        let map = cp.problem.reduced_map()?;
+        let z = map.z0().to_vec();
+        let x = cp.problem.values().to_vec();
+        let mut shapes = BTreeMap::new();
+        for id in &comp.entities {
+            shapes.insert(*id, self.lookup(*id)?.clone());
+        }
+        let anchor = {
+            let p = self.point(point)?;
+            [p.x, p.y]
+        };
+        let options = self.options().clone();
+        Ok(DragSession {
+            point,
+            revision: self.revision(),
+            z: Vec::new(),
+            x,
+            g: Vec::new(),
+            row_owner: Vec::new(),
+            shapes,
+            map,
+            cp,
+            factorization: None,
+            pin: [0, 0],
+            anchor,
+            tolerance: options.tolerance,
+            moved: false,
+            z_new: Vec::new(),
+            x_new: Vec::new(),
+            g_new: Vec::new(),
+            g_sel: Vec::new(),
+            dz: Vec::new(),
+            rows: Vec::new(),
+            nonlinear: Some(NonlinearDrag {
+                block,
+                z,
+                workspace: camber_solve::NewtonWorkspace::new(),
+                penetration: crate::solve::penetration_tolerance(&options),
+                options,
+            }),
         })
     }
 }
@@ -156,6 +252,9 @@ impl DragSession {
     /// its previous state).
     pub fn update(&mut self, target: Point2<f64>) -> Result<()> {
         crate::entity::check_point("target", 0, &target)?;
+        if self.nonlinear.is_some() {
+            return self.update_nonlinear(target);
+        }
         let shift = [target.x - self.anchor[0], target.y - self.anchor[1]];
         for (k, r) in self.rows.iter().enumerate() {
             let mut v = self.g[*r];
@@ -166,7 +265,10 @@ impl DragSession {
             }
             self.g_sel[k] = v;
         }
-        self.factorization.solve_refined(
+        let Some(factorization) = self.factorization.as_mut() else {
+            return Ok(());
+        };
+        factorization.solve_refined(
             &self.g_sel,
             &mut self.dz,
             REFINEMENT_STEPS,
@@ -206,6 +308,48 @@ impl DragSession {
         std::mem::swap(&mut self.g, &mut self.g_new);
         self.moved = true;
         Ok(())
+    }
+
+    /// One nonlinear update: warm-started Newton, then the full selection; the state is kept
+    /// only when every constraint, orientation and contact check holds.
+    fn update_nonlinear(&mut self, target: Point2<f64>) -> Result<()> {
+        let Some(nl) = self.nonlinear.as_mut() else {
+            return Ok(());
+        };
+        let problem = &mut self.cp.problem;
+        let before = problem.block_values(nl.block)?.to_vec();
+        problem.set_block_values(nl.block, &[target.x, target.y])?;
+        let z_prev = nl.z.clone();
+        let solved = camber_solve::solve_newton_from(
+            problem,
+            &nl.options,
+            &mut nl.workspace,
+            &z_prev,
+            &z_prev,
+        )
+        .or_else(|_| camber_solve::solve(problem, &nl.options));
+        let checked = solved.map_err(Error::from).and_then(|_| {
+            let x = self.cp.problem.values();
+            self.cp.check_orientations(x)?;
+            let entities = self.cp.entities_at(&Shapes(&self.shapes), x)?;
+            self.cp.check_contacts(&entities, x, nl.penetration)
+        });
+        match checked {
+            Ok(()) => {
+                nl.z = self.cp.problem.reduced_map()?.z0().to_vec();
+                self.x.clear();
+                self.x.extend_from_slice(self.cp.problem.values());
+                self.moved = true;
+                Ok(())
+            }
+            Err(e) => {
+                // Back to the previous state: the dragged block, then every reduced unknown.
+                self.cp.problem.set_block_values(nl.block, &before)?;
+                let map = self.cp.problem.reduced_map()?;
+                self.cp.problem.apply_reduced(&map, &nl.z)?;
+                Err(e)
+            }
+        }
     }
 
     /// The dragged point.

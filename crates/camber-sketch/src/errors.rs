@@ -125,8 +125,8 @@ pub enum Error {
         /// Each failing constraint with its largest absolute residual.
         failed: Vec<(ConstraintId, f64)>,
     },
-    /// A constraint that is not affine in the unknowns: the nonlinear solver (issue 4) is not
-    /// available yet, so its component cannot be solved.
+    /// A constraint that is not affine in the unknowns met a path that only takes affine ones
+    /// (the linear solver forced through the options).
     #[error("{constraint} ({name}) is not affine and needs the nonlinear solver")]
     NeedsNonlinear {
         /// The constraint.
@@ -169,6 +169,39 @@ pub enum Error {
         index: usize,
         /// The offending weight.
         value: f64,
+    },
+    /// A number that must be positive (a radius, a distance) is not.
+    #[error("{what} {value} must be a positive finite number")]
+    NotPositive {
+        /// What the number is.
+        what: &'static str,
+        /// The offending value.
+        value: f64,
+    },
+    /// A constraint relating two entities (or points) was given the same one twice.
+    #[error("the constraint relates {entity} to itself")]
+    SameEntity {
+        /// The entity named twice.
+        entity: EntityId,
+    },
+    /// After the solve, the curve's tangent vanishes at a contact (a cusp). Nothing was moved.
+    #[error("{constraint} would leave a cusp at its contact (|C′| = {speed})")]
+    Cusp {
+        /// The contact constraint.
+        constraint: ConstraintId,
+        /// |C′(u)| at the contact.
+        speed: f64,
+    },
+    /// After the solve, the curve crosses the line or circle it should only touch, near the
+    /// contact. Nothing was moved.
+    #[error("{constraint}: the curve crosses its target at u = {parameter} by {depth}")]
+    ContactCrossed {
+        /// The contact constraint.
+        constraint: ConstraintId,
+        /// A curve parameter on the wrong side.
+        parameter: f64,
+        /// How far past the target it lies (length units, > 0).
+        depth: f64,
     },
 }
 

@@ -1,5 +1,5 @@
 //! camber-sketch: planar sketches of points, lines, circles and Bézier, B-spline and NURBS
-//! curves, held by affine constraints and solved by minimum-norm displacement.
+//! curves, held by affine and nonlinear constraints and solved by minimum-norm displacement.
 //!
 //! ```
 //! use camber_sketch::{Constraint, FixTarget, PointRef, Sense, Sketch, TangentForm};
@@ -40,19 +40,37 @@
 //! - `Fixed` binds unknowns (they leave the problem); start/end tangency comes in the row form
 //!   and in the paper's elimination form P₁ = P₀ + t·T, t > 0 ([`TangentForm`]).
 //! - Tangencies record their [`Sense`]; a solve that flips one is rejected.
-//! - Users add their own residuals with [`Constraint::Custom`]. Only the linear solver exists:
-//!   a component with a non-affine residual is reported as [`Error::NeedsNonlinear`].
+//! - Users add their own residuals with [`Constraint::Custom`].
+//! - A component whose residuals are all affine takes the linear path above. Any other goes to
+//!   [`camber_solve::solve()`], which picks Newton minimum norm, SLSQP or the least-squares
+//!   rescue from the DOF analysis; the component report's `solver` and `reason` say which ran
+//!   and why. The nonlinear constraints ([`Constraint::PointOnCurve`],
+//!   [`Constraint::TangentToLine`], [`Constraint::TangentToCircle`], circles and lines as
+//!   unknowns, [`Constraint::G1JoinFree`], …) are residuals of [`contact`]; a free contact
+//!   parameter ([`Contact::Free`]) is an unknown of its own bounded to the curve's domain,
+//!   stored back into the constraint after a successful solve.
+//! - Contact is honest: after a solve every contact must keep its recorded travel direction,
+//!   have a non-vanishing tangent, and stay on its recorded side near the contact (sampled on
+//!   the solved curve). A crossing is pushed back (the deepest crossing point is put on the
+//!   target and the solve restarts, see [`solve::MAX_PUSH_BACKS`]); if that fails, the error
+//!   names the constraint and nothing is written.
+//! - Drag sessions on nonlinear components fix the dragged point in the problem and move it at
+//!   each update; Newton starts from the previous step and pulls toward it
+//!   ([`camber_solve::solve_newton_from`]), with the full selection as fallback.
 //! - Small components are solved densely after a full rank analysis; large ones go straight to
 //!   the sparse factorization and are analysed only when it meets dependent rows
 //!   ([`solve::default_options`]).
-//! - [`workloads`] builds the standard benchmark sketches (W1, the blade section, W3a, W4).
+//! - [`workloads`] builds the standard benchmark sketches (W1, the blade section, W2, W3a, W4).
 
 pub mod build;
 mod compile;
 pub mod constraint;
+pub mod contact;
+pub mod curve_eval;
 pub mod drag;
 pub mod entity;
 pub mod errors;
+mod general;
 pub mod ids;
 pub mod residuals;
 pub mod sketch;
@@ -60,7 +78,10 @@ pub mod solve;
 pub mod workloads;
 
 pub use build::{Component, ComponentProblem, DRAG_CONSTRAINT};
-pub use constraint::{Constraint, Custom, FixTarget, Sense, TangentForm, Target};
+pub use constraint::{
+    CircleSide, Constraint, Contact, Custom, FixTarget, LineSide, Rotation, Sense, TangentForm,
+    Target,
+};
 pub use drag::DragSession;
 pub use entity::{Entity, Terms};
 pub use errors::{Error, Result};

@@ -441,6 +441,13 @@ impl Sketch {
         &self.options
     }
 
+    /// Replaces the solver options (tolerances, thresholds, the nonlinear settings such as a
+    /// forced solver or the soft mode) for the following solves and drags. Marks nothing
+    /// dirty.
+    pub fn set_options(&mut self, options: Options) {
+        self.options = options;
+    }
+
     /// Builds (without solving) the problem of the component containing `entity`.
     ///
     /// # Errors
@@ -464,6 +471,15 @@ impl Sketch {
 
     pub(crate) fn is_dirty(&self, comp: &Component) -> bool {
         comp.entities.iter().any(|e| self.dirty.contains(e))
+    }
+
+    /// Stores solved free contact parameters into their constraints.
+    pub(crate) fn store_contacts(&mut self, contacts: &[(ConstraintId, usize, f64)]) {
+        for (id, k, u) in contacts {
+            if let Some(slot) = self.constraints.get_mut(id) {
+                slot.0.set_contact_at(*k, *u);
+            }
+        }
     }
 
     /// Writes solved entities and clears their dirty marks.

@@ -5,7 +5,8 @@
 use camber_geom::BezierCurve2;
 use nalgebra::{Point2, Vector2};
 
-use crate::constraint::{Constraint, FixTarget, Sense, TangentForm};
+use crate::constraint::{CircleSide, Constraint, Contact, FixTarget, Rotation, Sense, TangentForm};
+use crate::entity::Entity;
 use crate::errors::Result;
 use crate::ids::{EntityId, PointRef};
 use crate::sketch::Sketch;
@@ -190,4 +191,264 @@ pub fn w4(n: usize) -> Result<(Sketch, Vec<EntityId>)> {
         curves.push(c);
     }
     Ok((s, curves))
+}
+
+/// The three circles of W2 as (centre, radius): leading edge, thickness, trailing edge.
+pub const W2_CIRCLES: [([f64; 2], f64); 3] = [
+    ([0.03, 0.0], 0.03),
+    ([0.38, 0.04], 0.07),
+    ([0.985, 0.01], 0.015),
+];
+
+/// The point of circle (c, r) at `degrees`: c + r·(cos a, sin a).
+pub fn on_circle(circle: ([f64; 2], f64), degrees: f64) -> Point2<f64> {
+    let (c, r) = circle;
+    let a = degrees.to_radians();
+    Point2::new(c[0] + r * a.cos(), c[1] + r * a.sin())
+}
+
+/// The entities of a W2 sketch.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct W2 {
+    /// The B-spline.
+    pub curve: EntityId,
+    /// The leading-edge, thickness and trailing-edge circles (fixed).
+    pub circles: [EntityId; 3],
+}
+
+/// W2 `bspline7` at its rough start: a clamped cubic B-spline with 7 control points on the knots
+/// [0,0,0,0, ¼, ½, ¾, 1,1,1,1], tangent to the LE circle at u = 0 and the TE circle at u = 1, and
+/// to the TH circle at a free contact parameter (starting at the parameter of the rough start's
+/// point nearest the TH centre); outside every circle, running clockwise around each (from the
+/// leading edge over the top of TH to the trailing edge). The circles are fixed.
+///
+/// ```
+/// let (mut s, w) = camber_sketch::workloads::w2_bspline7()?;
+/// let report = s.solve()?;
+/// assert_eq!(report.components.len(), 1);
+/// # let _ = w;
+/// # Ok::<(), camber_sketch::Error>(())
+/// ```
+///
+/// # Errors
+/// None in practice (the data are valid); the signature carries the sketch's errors.
+pub fn w2_bspline7() -> Result<(Sketch, W2)> {
+    let [le, th, te] = W2_CIRCLES;
+    let points = vec![
+        on_circle(le, 110.0),
+        Point2::new(0.07, 0.06),
+        Point2::new(0.18, 0.115),
+        Point2::new(0.38, 0.125),
+        Point2::new(0.62, 0.10),
+        Point2::new(0.86, 0.045),
+        on_circle(te, 70.0),
+    ];
+    let knots = camber_geom::KnotVector::try_new(vec![
+        0.0, 0.0, 0.0, 0.0, 0.25, 0.5, 0.75, 1.0, 1.0, 1.0, 1.0,
+    ])?;
+    let curve = camber_geom::BSplineCurve2::try_new(3, knots, points)?;
+    let u_th = nearest_parameter(&curve, th.0);
+    let mut s = Sketch::new();
+    let c = s.add_bspline(curve)?;
+    let mut circles = [c; 3];
+    for (slot, (centre, r)) in circles.iter_mut().zip(W2_CIRCLES) {
+        *slot = s.add_circle(Point2::new(centre[0], centre[1]), r)?;
+        s.add_constraint(Constraint::Fixed(FixTarget::Entity(*slot)))?;
+    }
+    for (circle, u) in [
+        (circles[0], Contact::At(0.0)),
+        (circles[1], Contact::Free(u_th)),
+        (circles[2], Contact::At(1.0)),
+    ] {
+        s.add_constraint(Constraint::TangentToCircle {
+            curve: c,
+            circle,
+            u,
+            side: CircleSide::Outside,
+            rotation: Rotation::Clockwise,
+        })?;
+    }
+    Ok((s, W2 { curve: c, circles }))
+}
+
+/// The parameter of the curve point nearest `p`, by sampling (a starting guess).
+fn nearest_parameter(curve: &camber_geom::BSplineCurve2<f64>, p: [f64; 2]) -> f64 {
+    use camber_geom::ParametricCurve;
+    let (a, b) = curve.domain();
+    let mut best = (f64::INFINITY, a);
+    for i in 0..=200 {
+        let u = a + (b - a) * f64::from(i) / 200.0;
+        if let Ok(q) = curve.point(u) {
+            let d = (q.x - p[0]).hypot(q.y - p[1]);
+            if d < best.0 {
+                best = (d, u);
+            }
+        }
+    }
+    best.1
+}
+
+/// W2's perturbed starts: `trials` copies of the solved sketch `base` with every control point
+/// of `w.curve` moved by uniform noise in [−δ, δ]² (a seeded splitmix64 generator).
+///
+/// # Errors
+/// Errors of reading or moving the points (none for a W2 sketch).
+pub fn w2_perturbed(
+    base: &Sketch,
+    w: &W2,
+    delta: f64,
+    trials: usize,
+    seed: u64,
+) -> Result<Vec<Sketch>> {
+    let mut state = seed;
+    let mut noise = move || {
+        state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = state;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^= z >> 31;
+        (z >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+    };
+    let n = base.entity(w.curve)?.points().len();
+    let mut out = Vec::with_capacity(trials);
+    for _ in 0..trials {
+        let mut s = base.clone();
+        for j in 0..n {
+            let p = s.point(PointRef::Control(w.curve, j))?;
+            let q = Point2::new(p.x + delta * noise(), p.y + delta * noise());
+            s.set_point(PointRef::Control(w.curve, j), q)?;
+        }
+        out.push(s);
+    }
+    Ok(out)
+}
+
+/// W2's validity check at tolerance 1e-6: the curve's ends on the LE and TE circles with the
+/// tangent perpendicular to the radius there; the least distance from each centre to the curve
+/// equal to the radius for TH (contact on its upper half) and not below it for LE and TE.
+pub fn w2_valid(s: &Sketch, w: &W2) -> bool {
+    use camber_geom::ParametricCurve;
+    let tol = 1e-6;
+    let Ok(Entity::BSpline(curve)) = s.entity(w.curve) else {
+        return false;
+    };
+    let (a, b) = curve.domain();
+    for (k, u) in [(0, a), (2, b)] {
+        let (c, r) = W2_CIRCLES[k];
+        let Ok((p, t)) = curve.point_and_derivative(u) else {
+            return false;
+        };
+        let v = p - Point2::new(c[0], c[1]);
+        if (v.norm() - r).abs() > tol || (v.dot(&t) / (v.norm() * t.norm())).abs() > tol {
+            return false;
+        }
+    }
+    W2_CIRCLES.iter().enumerate().all(|(k, (c, r))| {
+        let Ok(cp) = camber_geom::queries::closest_point(curve, &Point2::new(c[0], c[1])) else {
+            return false;
+        };
+        if k == 1 {
+            (cp.distance - r).abs() <= tol && cp.point.y >= c[1]
+        } else {
+            cp.distance - r >= -tol
+        }
+    })
+}
+
+/// W2 `2cubic` at its rough start: two cubic Béziers Q₀…Q₃ and Q₃…Q₆ (each with its own copy
+/// of Q₃), joined G1 at Q₃ with a free direction ([`Constraint::G1JoinFree`]); Q₃ on the TH
+/// circle and tangent there (the first curve at u = 1), Q₀ on LE and tangent, Q₆ on TE and
+/// tangent; all outside and clockwise, the circles fixed. Returns the sketch, the two curves
+/// and the circles.
+///
+/// ```
+/// let (mut s, curves, _) = camber_sketch::workloads::w2_2cubic()?;
+/// s.solve()?;
+/// assert!(camber_sketch::workloads::w2_2cubic_valid(&s, curves));
+/// # Ok::<(), camber_sketch::Error>(())
+/// ```
+///
+/// # Errors
+/// None in practice (the data are valid); the signature carries the sketch's errors.
+pub fn w2_2cubic() -> Result<(Sketch, [EntityId; 2], [EntityId; 3])> {
+    let [le, _, te] = W2_CIRCLES;
+    let q = [
+        on_circle(le, 110.0),
+        Point2::new(0.09, 0.07),
+        Point2::new(0.24, 0.11),
+        Point2::new(0.38, 0.11),
+        Point2::new(0.55, 0.11),
+        Point2::new(0.85, 0.05),
+        on_circle(te, 70.0),
+    ];
+    let mut s = Sketch::new();
+    let first = s.add_bezier(BezierCurve2::try_new(q[..4].to_vec())?)?;
+    let second = s.add_bezier(BezierCurve2::try_new(q[3..].to_vec())?)?;
+    let mut circles = [first; 3];
+    for (slot, (centre, r)) in circles.iter_mut().zip(W2_CIRCLES) {
+        *slot = s.add_circle(Point2::new(centre[0], centre[1]), r)?;
+        s.add_constraint(Constraint::Fixed(FixTarget::Entity(*slot)))?;
+    }
+    s.add_constraint(Constraint::G1JoinFree { first, second })?;
+    for (curve, circle, u) in [
+        (first, circles[0], 0.0),
+        (first, circles[1], 1.0),
+        (second, circles[2], 1.0),
+    ] {
+        s.add_constraint(Constraint::TangentToCircle {
+            curve,
+            circle,
+            u: Contact::At(u),
+            side: CircleSide::Outside,
+            rotation: Rotation::Clockwise,
+        })?;
+    }
+    Ok((s, [first, second], circles))
+}
+
+/// W2's validity check for `2cubic` (tolerance 1e-6): Q₀ on LE and Q₆ on TE with the tangent
+/// perpendicular to the radius; the least distance from each centre to the two curves equal to
+/// the radius for TH (contact on the upper half) and not below it for LE and TE; and the joint
+/// closed with parallel, same-sense tangents.
+pub fn w2_2cubic_valid(s: &Sketch, curves: [EntityId; 2]) -> bool {
+    use camber_geom::ParametricCurve;
+    let tol = 1e-6;
+    let (Ok(Entity::Bezier(c1)), Ok(Entity::Bezier(c2))) =
+        (s.entity(curves[0]), s.entity(curves[1]))
+    else {
+        return false;
+    };
+    let (Ok((a, ta)), Ok((b, tb))) = (c1.point_and_derivative(1.0), c2.point_and_derivative(0.0))
+    else {
+        return false;
+    };
+    let cross = (ta.x * tb.y - ta.y * tb.x) / (ta.norm() * tb.norm());
+    if (a - b).norm() > tol || cross.abs() > tol || ta.dot(&tb) <= 0.0 {
+        return false;
+    }
+    for (c, k, u) in [(c1, 0, 0.0), (c2, 2, 1.0)] {
+        let (centre, r) = W2_CIRCLES[k];
+        let Ok((p, t)) = c.point_and_derivative(u) else {
+            return false;
+        };
+        let v = p - Point2::new(centre[0], centre[1]);
+        if (v.norm() - r).abs() > tol || (v.dot(&t) / (v.norm() * t.norm())).abs() > tol {
+            return false;
+        }
+    }
+    W2_CIRCLES.iter().enumerate().all(|(k, (c, r))| {
+        let centre = Point2::new(c[0], c[1]);
+        let (Ok(n1), Ok(n2)) = (
+            camber_geom::queries::closest_point(c1, &centre),
+            camber_geom::queries::closest_point(c2, &centre),
+        ) else {
+            return false;
+        };
+        let nearest = if n1.distance <= n2.distance { n1 } else { n2 };
+        if k == 1 {
+            (nearest.distance - r).abs() <= tol && nearest.point.y >= c[1]
+        } else {
+            nearest.distance - r >= -tol
+        }
+    })
 }

@@ -381,6 +381,25 @@ pub fn solve(problem: &mut Problem, options: &Options) -> Result<SolveReport> {
                 &z,
             ));
         }
+        // Newton could not polish it (J singular there, say): the least-squares point itself
+        // is kept when it meets every constraint (validated by `commit`).
+        if lm.max_residual <= options.tolerance {
+            let mut ev_lm = Evaluator::new(problem)?;
+            if let Ok(residuals) = commit(problem, &mut ev_lm, &z_lm, options) {
+                let reason = format!(
+                    "{} → Levenberg–Marquardt ({} iterations), constraints met",
+                    notes.join("; "),
+                    lm.iterations
+                );
+                return Ok(start.report(
+                    SolverKind::LevenbergMarquardt,
+                    reason,
+                    lm.iterations,
+                    residuals,
+                    &z_lm,
+                ));
+            }
+        }
     }
     if options.nonlinear.soft {
         return soft_path(problem, options, &start, &notes.join("; "));

@@ -1,0 +1,389 @@
+//! Evaluating a sketch curve C(u) and its tangent C′(u) at a generic scalar, with the control
+//! points and the parameter u both read from the solver's blocks.
+//!
+//! The constraints with a free contact parameter are not affine: u moves, so the basis values
+//! Nⱼ(u) are themselves unknown. [`CurveBasis`] keeps degree, knots and weights (data, f64) and
+//! evaluates, for the knot span k with u_k ≤ u < u_{k+1} (found on the real part of u),
+//!
+//! C(u) = Σⱼ Nⱼ,ₚ(u)·Pⱼ,  C′(u) = Σⱼ N′ⱼ,ₚ(u)·Pⱼ,
+//! N′ⱼ,ₚ = p·Nⱼ,ₚ₋₁/(u_{j+p} − u_j) − p·Nⱼ₊₁,ₚ₋₁/(u_{j+p+1} − u_{j+1})  (0/0 read as 0),
+//!
+//! with the Cox–de Boor triangle run in the scalar type, so dual numbers carry ∂/∂u and
+//! ∂/∂Pⱼ exactly. For NURBS with weights wⱼ, W = Σ wⱼNⱼ and W′ = Σ wⱼN′ⱼ:
+//! C = Σ wⱼNⱼPⱼ / W and C′ = (Σ wⱼN′ⱼPⱼ − W′·C) / W. Lines and Bézier curves are B-splines on
+//! clamped knots over [0, 1].
+
+use camber_solve::scalar::{cst, from_usize, re};
+use camber_solve::Scalar;
+use smallvec::SmallVec;
+
+use crate::entity::Entity;
+
+/// Degree, knots and weights of a curve entity, for evaluation at generic scalars.
+///
+/// ```
+/// use camber_sketch::{curve_eval::CurveBasis, Entity};
+/// use nalgebra::Point2;
+/// let line = Entity::Line([Point2::new(0.0, 0.0), Point2::new(2.0, 4.0)]);
+/// let b = CurveBasis::of(&line).ok_or("not a curve")?;
+/// let (p, t) = b.eval::<f64>(&[&[0.0, 0.0][..], &[2.0, 4.0][..]], 0.25);
+/// // C(¼) = (0.5, 1), C′ = P₁ − P₀ = (2, 4).
+/// assert!((p[0] - 0.5).abs() < 1e-15 && (p[1] - 1.0).abs() < 1e-15);
+/// assert!((t[0] - 2.0).abs() < 1e-15 && (t[1] - 4.0).abs() < 1e-15);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct CurveBasis {
+    degree: usize,
+    knots: Vec<f64>,
+    weights: Option<Vec<f64>>,
+    count: usize,
+}
+
+impl CurveBasis {
+    /// The basis of a curve entity (`None` for points and circles).
+    pub fn of(entity: &Entity) -> Option<Self> {
+        let count = entity.points().len();
+        let clamped01 = |p: usize| {
+            let mut k = vec![0.0; p + 1];
+            k.extend(std::iter::repeat_n(1.0, p + 1));
+            k
+        };
+        let (degree, knots, weights) = match entity {
+            Entity::Line(_) => (1, clamped01(1), None),
+            Entity::Bezier(c) => (c.degree(), clamped01(c.degree()), None),
+            Entity::BSpline(c) => (c.degree(), c.knots().as_slice().to_vec(), None),
+            Entity::Nurbs(c) => (
+                c.degree(),
+                c.knots().as_slice().to_vec(),
+                Some(c.weights().to_vec()),
+            ),
+            Entity::Point(_) | Entity::Circle { .. } => return None,
+        };
+        Some(Self {
+            degree,
+            knots,
+            weights,
+            count,
+        })
+    }
+
+    /// The number of control points (blocks the evaluation reads).
+    pub fn count(&self) -> usize {
+        self.count
+    }
+
+    /// The parametric domain [u_p, u_{n}] (n = number of control points).
+    pub fn domain(&self) -> (f64, f64) {
+        let a = self.knots.get(self.degree).copied().unwrap_or(0.0);
+        let b = self.knots.get(self.count).copied().unwrap_or(1.0);
+        (a, b)
+    }
+
+    /// The span k with u_k ≤ u < u_{k+1}, clamped to the domain (the last non-empty span at
+    /// its end).
+    fn span(&self, u: f64) -> usize {
+        let (p, n) = (self.degree, self.count);
+        let (a, b) = self.domain();
+        if u >= b || u.is_nan() {
+            return n - 1;
+        }
+        if u <= a {
+            let mut k = p;
+            while k + 1 < n && self.knots[k + 1] <= a {
+                k += 1;
+            }
+            return k;
+        }
+        let (mut lo, mut hi) = (p, n);
+        while hi - lo > 1 {
+            let mid = (lo + hi) / 2;
+            if u < self.knots[mid] {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+        }
+        lo
+    }
+
+    /// C(u) and C′(u) with the control points `points[j] = [x, y]` (at least
+    /// [`CurveBasis::count`] blocks). u is clamped to the domain (a contact parameter is
+    /// bounded there; outside, the end span's polynomial would extrapolate).
+    pub fn eval<T: Scalar>(&self, points: &[&[T]], u: T) -> ([T; 2], [T; 2]) {
+        let zero = [T::zero(), T::zero()];
+        let p = self.degree;
+        if self.count == 0 || self.knots.len() < self.count + p + 1 || points.len() < self.count {
+            return (zero, zero);
+        }
+        let (a, b) = self.domain();
+        let u = if re(u) < a {
+            cst(a)
+        } else if re(u) > b {
+            cst(b)
+        } else {
+            u
+        };
+        let k = self.span(re(u));
+        let kn = &self.knots;
+        // Cox–de Boor: n holds degree-j functions N_{k−j..k}; `low` keeps degree p − 1.
+        let mut n: SmallVec<[T; 8]> = smallvec::smallvec![T::zero(); p + 1];
+        let mut low: SmallVec<[T; 8]> = smallvec::smallvec![T::zero(); p + 1];
+        let mut left: SmallVec<[T; 8]> = smallvec::smallvec![T::zero(); p + 1];
+        let mut right: SmallVec<[T; 8]> = smallvec::smallvec![T::zero(); p + 1];
+        n[0] = T::one();
+        for j in 1..=p {
+            if j == p {
+                low.copy_from_slice(&n);
+            }
+            left[j] = u - cst(kn[k + 1 - j]);
+            right[j] = cst::<T>(kn[k + j]) - u;
+            let mut saved = T::zero();
+            for r in 0..j {
+                let den = right[r + 1] + left[j - r];
+                let temp = if re(den).abs() > 0.0 {
+                    n[r] / den
+                } else {
+                    T::zero()
+                };
+                n[r] = saved + right[r + 1] * temp;
+                saved = left[j - r] * temp;
+            }
+            n[j] = saved;
+        }
+        if p == 0 {
+            low[0] = T::zero();
+        }
+        let first = k - p;
+        let pf: T = from_usize(p);
+        let mut dn: SmallVec<[T; 8]> = smallvec::smallvec![T::zero(); p + 1];
+        for r in 0..=p {
+            let i = first + r;
+            let mut d = T::zero();
+            if r >= 1 {
+                let den = kn[i + p] - kn[i];
+                if den.abs() > 0.0 {
+                    d += pf * low[r - 1] / cst(den);
+                }
+            }
+            if r < p {
+                let den = kn[i + p + 1] - kn[i + 1];
+                if den.abs() > 0.0 {
+                    d -= pf * low[r] / cst(den);
+                }
+            }
+            dn[r] = d;
+        }
+        let (mut c, mut c1) = (zero, zero);
+        match &self.weights {
+            None => {
+                for r in 0..=p {
+                    let q = points[first + r];
+                    for k2 in 0..2 {
+                        c[k2] += n[r] * q[k2];
+                        c1[k2] += dn[r] * q[k2];
+                    }
+                }
+            }
+            Some(w) => {
+                let (mut big_w, mut big_w1) = (T::zero(), T::zero());
+                for r in 0..=p {
+                    let wr = cst::<T>(w.get(first + r).copied().unwrap_or(1.0));
+                    big_w += wr * n[r];
+                    big_w1 += wr * dn[r];
+                    let q = points[first + r];
+                    for k2 in 0..2 {
+                        c[k2] += wr * n[r] * q[k2];
+                        c1[k2] += wr * dn[r] * q[k2];
+                    }
+                }
+                for k2 in 0..2 {
+                    c[k2] /= big_w;
+                    c1[k2] = (c1[k2] - big_w1 * c[k2]) / big_w;
+                }
+            }
+        }
+        (c, c1)
+    }
+}
+
+impl CurveBasis {
+    /// C(u), C′(u) and C″(u) (for curvature). The basis derivatives come from the Cox–de Boor
+    /// triangle kept at degrees p − 2, p − 1 and p:
+    /// N′ⱼ,ₚ = p·(Nⱼ,ₚ₋₁/Δⱼ − Nⱼ₊₁,ₚ₋₁/Δⱼ₊₁) with Δⱼ = u_{j+p} − u_j, applied twice for N″;
+    /// for NURBS, C″ = (Σ wⱼN″ⱼPⱼ − 2W′·C′ − W″·C)/W. Same conventions as [`CurveBasis::eval`].
+    pub fn eval2<T: Scalar>(&self, points: &[&[T]], u: T) -> [[T; 2]; 3] {
+        let zero = [T::zero(), T::zero()];
+        let p = self.degree;
+        if self.count == 0 || self.knots.len() < self.count + p + 1 || points.len() < self.count {
+            return [zero; 3];
+        }
+        let (a, b) = self.domain();
+        let u = if re(u) < a {
+            cst(a)
+        } else if re(u) > b {
+            cst(b)
+        } else {
+            u
+        };
+        let k = self.span(re(u));
+        let kn = &self.knots;
+        // levels[d] holds the degree-d functions N_{k−d..k}.
+        let mut levels: SmallVec<[SmallVec<[T; 8]>; 8]> = SmallVec::new();
+        let mut n: SmallVec<[T; 8]> = smallvec::smallvec![T::zero(); p + 1];
+        n[0] = T::one();
+        levels.push(n.clone());
+        for j in 1..=p {
+            let mut next: SmallVec<[T; 8]> = smallvec::smallvec![T::zero(); p + 1];
+            for r in 0..=j {
+                // N_{i,j} with i = k − j + r, from N_{i,j−1} (index r − 1) and N_{i+1,j−1} (r).
+                let i = k + r - j;
+                let mut v = T::zero();
+                if r >= 1 {
+                    let den = kn[i + j] - kn[i];
+                    if den.abs() > 0.0 {
+                        v += (u - cst(kn[i])) / cst(den) * n[r - 1];
+                    }
+                }
+                if r < j {
+                    let den = kn[i + j + 1] - kn[i + 1];
+                    if den.abs() > 0.0 {
+                        v += (cst::<T>(kn[i + j + 1]) - u) / cst(den) * n[r];
+                    }
+                }
+                next[r] = v;
+            }
+            n = next;
+            levels.push(n.clone());
+        }
+        // The derivative of degree-d functions (d + 1 of them) from degree-(d − 1) values.
+        let derive = |d: usize, lower: &[T]| -> SmallVec<[T; 8]> {
+            let mut out: SmallVec<[T; 8]> = smallvec::smallvec![T::zero(); d + 1];
+            if d == 0 {
+                return out;
+            }
+            let df: T = from_usize(d);
+            for r in 0..=d {
+                let i = k + r - d;
+                let mut v = T::zero();
+                if r >= 1 {
+                    let den = kn[i + d] - kn[i];
+                    if den.abs() > 0.0 {
+                        v += df * lower[r - 1] / cst(den);
+                    }
+                }
+                if r < d {
+                    let den = kn[i + d + 1] - kn[i + 1];
+                    if den.abs() > 0.0 {
+                        v -= df * lower[r] / cst(den);
+                    }
+                }
+                out[r] = v;
+            }
+            out
+        };
+        let n0 = &levels[p];
+        let n1 = if p >= 1 {
+            derive(p, &levels[p - 1])
+        } else {
+            smallvec::smallvec![T::zero(); 1]
+        };
+        let n2 = if p >= 2 {
+            let lower1 = derive(p - 1, &levels[p - 2]);
+            derive(p, &lower1)
+        } else {
+            smallvec::smallvec![T::zero(); p + 1]
+        };
+        let first = k - p;
+        let mut c = [zero; 3];
+        let (mut w0, mut w1, mut w2) = (T::zero(), T::zero(), T::zero());
+        for r in 0..=p {
+            let wr = cst::<T>(
+                self.weights
+                    .as_ref()
+                    .and_then(|w| w.get(first + r).copied())
+                    .unwrap_or(1.0),
+            );
+            w0 += wr * n0[r];
+            w1 += wr * n1[r];
+            w2 += wr * n2[r];
+            let q = points[first + r];
+            for d in 0..2 {
+                c[0][d] += wr * n0[r] * q[d];
+                c[1][d] += wr * n1[r] * q[d];
+                c[2][d] += wr * n2[r] * q[d];
+            }
+        }
+        if self.weights.is_some() {
+            // Per coordinate: C = A/W, C′ = (A′ − W′C)/W, C″ = (A″ − 2W′C′ − W″C)/W.
+            let rational = |a0: T, a1: T, a2: T| {
+                let c0 = a0 / w0;
+                let c1 = (a1 - w1 * c0) / w0;
+                (c0, c1, (a2 - cst::<T>(2.0) * w1 * c1 - w2 * c0) / w0)
+            };
+            let (x0, x1, x2) = rational(c[0][0], c[1][0], c[2][0]);
+            let (y0, y1, y2) = rational(c[0][1], c[1][1], c[2][1]);
+            return [[x0, y0], [x1, y1], [x2, y2]];
+        }
+        c
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+    use camber_geom::{BSplineCurve2, KnotVector, NurbsCurve2, ParametricCurve};
+    use nalgebra::Point2;
+
+    fn blocks(pts: &[Point2<f64>]) -> Vec<[f64; 2]> {
+        pts.iter().map(|p| [p.x, p.y]).collect()
+    }
+
+    #[test]
+    fn matches_the_kernel_for_bsplines_and_nurbs() -> Result<(), Box<dyn std::error::Error>> {
+        let pts = vec![
+            Point2::new(0.0, 0.0),
+            Point2::new(1.0, 2.0),
+            Point2::new(2.0, -1.0),
+            Point2::new(3.0, 1.0),
+            Point2::new(4.0, 0.5),
+        ];
+        let knots = vec![0.0, 0.0, 0.0, 0.0, 0.4, 1.0, 1.0, 1.0, 1.0];
+        let bs = BSplineCurve2::try_new(3, KnotVector::try_new(knots.clone())?, pts.clone())?;
+        let nu = NurbsCurve2::try_new(
+            3,
+            KnotVector::try_new(knots)?,
+            pts.clone(),
+            vec![1.0, 0.5, 2.0, 1.0, 0.8],
+        )?;
+        let raw = blocks(&pts);
+        let refs: Vec<&[f64]> = raw.iter().map(|b| &b[..]).collect();
+        for e in [Entity::BSpline(bs), Entity::Nurbs(nu)] {
+            let basis = CurveBasis::of(&e).ok_or("curve")?;
+            for u in [0.0, 0.1, 0.4, 0.55, 0.99, 1.0] {
+                let (c, c1) = basis.eval::<f64>(&refs, u);
+                let (p, d) = match &e {
+                    Entity::BSpline(b) => (b.point(u)?, b.derivative(u)?),
+                    Entity::Nurbs(b) => (b.point(u)?, b.derivative(u)?),
+                    _ => return Err("kind".into()),
+                };
+                assert_relative_eq!(c[0], p.x, epsilon = 1e-12);
+                assert_relative_eq!(c[1], p.y, epsilon = 1e-12);
+                assert_relative_eq!(c1[0], d.x, epsilon = 1e-10);
+                assert_relative_eq!(c1[1], d.y, epsilon = 1e-10);
+                let second = match &e {
+                    Entity::BSpline(b) => b.second_order(u)?,
+                    Entity::Nurbs(b) => b.second_order(u)?,
+                    _ => return Err("kind".into()),
+                };
+                let [e0, e1, e2] = basis.eval2::<f64>(&refs, u);
+                for (mine, theirs) in [(e0, second[0]), (e1, second[1]), (e2, second[2])] {
+                    assert_relative_eq!(mine[0], theirs.x, epsilon = 1e-8, max_relative = 1e-9);
+                    assert_relative_eq!(mine[1], theirs.y, epsilon = 1e-8, max_relative = 1e-9);
+                }
+            }
+        }
+        Ok(())
+    }
+}

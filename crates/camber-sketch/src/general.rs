@@ -1,0 +1,651 @@
+//! Compiling the nonlinear constraints (contact with free parameters, circles and lines as
+//! unknowns, distances, angles, the free-direction G1 joint) into residual pieces over slots,
+//! and the honesty checks every solved contact must pass before anything is written back.
+//!
+//! A slot is a block the residual reads: an entity point, a circle radius, or a new contact
+//! parameter u bounded to the curve's domain [a, b]. After a solve, each contact is checked on
+//! the solved entities: the tangent keeps its recorded sense (rotation about a circle, sense
+//! along a line) and does not vanish (a cusp), and the curve sampled on
+//! [u − w, u + w] ∩ [a, b], w = (b − a)/5, stays on the recorded side of the target up to a
+//! small penetration tolerance.
+
+use std::collections::HashMap;
+use std::sync::Arc;
+
+use camber_solve::{BlockId, ConstraintId, DynResidual};
+
+use crate::compile::{ETerms, EntityLookup, Piece};
+use crate::constraint::{CircleSide, Constraint, Contact, LineSide, Rotation, Sense};
+use crate::contact::{
+    CircleContact, CurvatureMatch, CurveCurveContact, LineAngle, LineContact, OnCircle, OnCircleAt,
+    OnCurve, OnLineAt, Param, PointDistance, RadiusValue, TangentsParallel,
+};
+use crate::curve_eval::CurveBasis;
+use crate::entity::Entity;
+use crate::errors::{Error, Result};
+use crate::ids::{EntityId, PointRef};
+
+/// A push-back row: the residual and the slots it reads.
+pub(crate) type PushBack = (Arc<dyn DynResidual>, Vec<Slot>);
+
+/// Samples of the crossing check on each side of a contact.
+const SIDE_SAMPLES: usize = 24;
+
+/// A block read by a nonlinear residual.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Slot {
+    /// Point `index` of an entity.
+    Point(EntityId, usize),
+    /// The radius of a circle entity.
+    Radius(EntityId),
+    /// A new contact parameter starting at `u0`, bounded to [lo, hi].
+    Contact { u0: f64, lo: f64, hi: f64 },
+}
+
+/// The parameter a check reads.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum CheckParam {
+    /// A fixed value.
+    Fixed(f64),
+    /// The piece's slot with this index (before building).
+    Slot(usize),
+    /// The problem block holding u (after building).
+    Block(BlockId),
+}
+
+/// What is verified on the solved entities.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Check {
+    Circle {
+        curve: EntityId,
+        circle: EntityId,
+        u: CheckParam,
+        side: CircleSide,
+        rotation: Rotation,
+    },
+    Line {
+        curve: EntityId,
+        line: EntityId,
+        u: CheckParam,
+        side: LineSide,
+        sense: Sense,
+    },
+    Join {
+        first: EntityId,
+        second: EntityId,
+    },
+    Curves {
+        first: EntityId,
+        second: EntityId,
+        u: CheckParam,
+        v: CheckParam,
+        sense: Sense,
+    },
+    Angle {
+        first: EntityId,
+        second: EntityId,
+        cos: f64,
+        sin: f64,
+    },
+}
+
+fn kind<'a>(
+    lookup: &'a impl EntityLookup,
+    id: EntityId,
+    expected: &'static str,
+    ok: fn(&Entity) -> bool,
+) -> Result<&'a Entity> {
+    let e = lookup.lookup(id)?;
+    if ok(e) {
+        Ok(e)
+    } else {
+        Err(Error::WrongEntityKind {
+            entity: id,
+            expected,
+            found: e.kind_name(),
+        })
+    }
+}
+
+fn curve_basis(lookup: &impl EntityLookup, id: EntityId) -> Result<(CurveBasis, Vec<Slot>)> {
+    let e = kind(lookup, id, "curve", Entity::is_curve)?;
+    let basis = CurveBasis::of(e).ok_or(Error::WrongEntityKind {
+        entity: id,
+        expected: "curve",
+        found: e.kind_name(),
+    })?;
+    let slots = (0..e.points().len()).map(|j| Slot::Point(id, j)).collect();
+    Ok((basis, slots))
+}
+
+/// The parameter of a contact: fixed, or a new bounded slot (appended to `slots`).
+fn contact_param(
+    basis: &CurveBasis,
+    curve: EntityId,
+    u: Contact,
+    slots: &mut Vec<Slot>,
+) -> Result<(Param, CheckParam)> {
+    let v = u.value();
+    let (lo, hi) = basis.domain();
+    if !v.is_finite() {
+        return Err(Error::NonFinite {
+            what: "parameter",
+            index: 0,
+            value: v,
+        });
+    }
+    if v < lo || v > hi {
+        return Err(Error::ParameterOutsideDomain {
+            entity: curve,
+            value: v,
+            min: lo,
+            max: hi,
+        });
+    }
+    Ok(match u {
+        Contact::At(_) => (Param::Fixed(v), CheckParam::Fixed(v)),
+        Contact::Free(_) => {
+            slots.push(Slot::Contact { u0: v, lo, hi });
+            (Param::Block, CheckParam::Slot(slots.len() - 1))
+        }
+    })
+}
+
+/// The single block a point reference denotes.
+pub(crate) fn single_block(lookup: &impl EntityLookup, r: PointRef) -> Result<(EntityId, usize)> {
+    let e = lookup.lookup(r.entity())?;
+    match e.resolve(r)?.as_slice() {
+        [(j, c)] if (c - 1.0).abs() <= 0.0 => Ok((r.entity(), *j)),
+        _ => Err(Error::WrongEntityKind {
+            entity: r.entity(),
+            expected: "a single point block (point, control point or clamped end)",
+            found: e.kind_name(),
+        }),
+    }
+}
+
+fn positive(what: &'static str, value: f64) -> Result<f64> {
+    if value.is_finite() && value > 0.0 {
+        Ok(value)
+    } else {
+        Err(Error::NotPositive { what, value })
+    }
+}
+
+fn is_line(e: &Entity) -> bool {
+    matches!(e, Entity::Line(_))
+}
+
+fn is_circle(e: &Entity) -> bool {
+    matches!(e, Entity::Circle { .. })
+}
+
+fn general(
+    name: &'static str,
+    residual: impl DynResidual + 'static,
+    slots: Vec<Slot>,
+    check: Option<Check>,
+) -> Piece {
+    Piece::General {
+        name,
+        residual: Arc::new(residual),
+        slots,
+        check,
+    }
+}
+
+fn distinct(a: EntityId, b: EntityId) -> Result<()> {
+    if a == b {
+        Err(Error::SameEntity { entity: a })
+    } else {
+        Ok(())
+    }
+}
+
+/// Compiles a nonlinear constraint; `None` for the constraints [`crate::compile`] handles.
+pub(crate) fn compile_general(
+    lookup: &impl EntityLookup,
+    c: &Constraint,
+    out: &mut smallvec::SmallVec<[Piece; 3]>,
+) -> Result<bool> {
+    let name = c.kind_name();
+    match c {
+        Constraint::PointOnCurve { point, curve, u } => {
+            let (basis, mut slots) = curve_basis(lookup, *curve)?;
+            let (param, _) = contact_param(&basis, *curve, *u, &mut slots)?;
+            let (e, j) = single_block(lookup, *point)?;
+            distinct(e, *curve)?;
+            slots.push(Slot::Point(e, j));
+            out.push(general(name, OnCurve::new(basis, param), slots, None));
+        }
+        Constraint::TangentToLine {
+            curve,
+            line,
+            u,
+            side,
+            sense,
+        } => {
+            distinct(*curve, *line)?;
+            kind(lookup, *line, "line", is_line)?;
+            let (basis, mut slots) = curve_basis(lookup, *curve)?;
+            let (param, check_u) = contact_param(&basis, *curve, *u, &mut slots)?;
+            slots.extend([Slot::Point(*line, 0), Slot::Point(*line, 1)]);
+            let check = Check::Line {
+                curve: *curve,
+                line: *line,
+                u: check_u,
+                side: *side,
+                sense: *sense,
+            };
+            out.push(general(
+                name,
+                LineContact::new(basis, param),
+                slots,
+                Some(check),
+            ));
+        }
+        Constraint::TangentToCircle {
+            curve,
+            circle,
+            u,
+            side,
+            rotation,
+        } => {
+            kind(lookup, *circle, "circle", is_circle)?;
+            let (basis, mut slots) = curve_basis(lookup, *curve)?;
+            let (param, check_u) = contact_param(&basis, *curve, *u, &mut slots)?;
+            slots.extend([Slot::Point(*circle, 0), Slot::Radius(*circle)]);
+            let check = Check::Circle {
+                curve: *curve,
+                circle: *circle,
+                u: check_u,
+                side: *side,
+                rotation: *rotation,
+            };
+            out.push(general(
+                name,
+                CircleContact::new(basis, param, *rotation == Rotation::Clockwise),
+                slots,
+                Some(check),
+            ));
+        }
+        Constraint::PointOnCircle { point, circle } => {
+            kind(lookup, *circle, "circle", is_circle)?;
+            let (e, j) = single_block(lookup, *point)?;
+            distinct(e, *circle)?;
+            let slots = vec![
+                Slot::Point(e, j),
+                Slot::Point(*circle, 0),
+                Slot::Radius(*circle),
+            ];
+            out.push(general(name, OnCircle, slots, None));
+        }
+        Constraint::Radius { circle, radius } => {
+            kind(lookup, *circle, "circle", is_circle)?;
+            let r = positive("radius", *radius)?;
+            out.push(general(
+                name,
+                RadiusValue::new(r),
+                vec![Slot::Radius(*circle)],
+                None,
+            ));
+        }
+        Constraint::Distance { a, b, distance } => {
+            let d = positive("distance", *distance)?;
+            let (ea, ja) = single_block(lookup, *a)?;
+            let (eb, jb) = single_block(lookup, *b)?;
+            if (ea, ja) == (eb, jb) {
+                return Err(Error::SameEntity { entity: ea });
+            }
+            let slots = vec![Slot::Point(ea, ja), Slot::Point(eb, jb)];
+            out.push(general(name, PointDistance::new(d), slots, None));
+        }
+        Constraint::Parallel(first, second)
+        | Constraint::Perpendicular(first, second)
+        | Constraint::Angle { first, second, .. } => {
+            distinct(*first, *second)?;
+            kind(lookup, *first, "line", is_line)?;
+            kind(lookup, *second, "line", is_line)?;
+            let angle = match c {
+                Constraint::Perpendicular(..) => std::f64::consts::FRAC_PI_2,
+                Constraint::Angle { angle, .. } => {
+                    if !angle.is_finite() {
+                        return Err(Error::NonFinite {
+                            what: "angle",
+                            index: 0,
+                            value: *angle,
+                        });
+                    }
+                    *angle
+                }
+                _ => 0.0,
+            };
+            let slots = vec![
+                Slot::Point(*first, 0),
+                Slot::Point(*first, 1),
+                Slot::Point(*second, 0),
+                Slot::Point(*second, 1),
+            ];
+            let check = matches!(c, Constraint::Angle { .. }).then_some(Check::Angle {
+                first: *first,
+                second: *second,
+                cos: angle.cos(),
+                sin: angle.sin(),
+            });
+            out.push(general(name, LineAngle::new(name, angle), slots, check));
+        }
+        Constraint::G1JoinFree { first, second } | Constraint::G2Join { first, second } => {
+            distinct(*first, *second)?;
+            let (b1, mut slots) = curve_basis(lookup, *first)?;
+            let (b2, s2) = curve_basis(lookup, *second)?;
+            slots.extend(s2);
+            let mut joint = ETerms::new();
+            for (r, sign) in [
+                (PointRef::End(*first), 1.0),
+                (PointRef::Start(*second), -1.0),
+            ] {
+                for (j, k) in lookup.lookup(r.entity())?.resolve(r)? {
+                    joint.push((r.entity(), j, sign * k));
+                }
+            }
+            out.push(Piece::Combination {
+                name,
+                terms: joint,
+                target: [0.0; 2],
+            });
+            let (u1, u2) = (b1.domain().1, b2.domain().0);
+            let check = Check::Join {
+                first: *first,
+                second: *second,
+            };
+            if matches!(c, Constraint::G2Join { .. }) {
+                out.push(general(
+                    name,
+                    CurvatureMatch::new((b1.clone(), u1), (b2.clone(), u2)),
+                    slots.clone(),
+                    None,
+                ));
+            }
+            out.push(general(
+                name,
+                TangentsParallel::new((b1, u1), (b2, u2)),
+                slots,
+                Some(check),
+            ));
+        }
+        Constraint::CurveCurveTangent {
+            first,
+            u,
+            second,
+            v,
+            sense,
+        } => {
+            distinct(*first, *second)?;
+            let (b1, mut slots) = curve_basis(lookup, *first)?;
+            let (p1, c1) = contact_param(&b1, *first, *u, &mut slots)?;
+            let (b2, s2) = curve_basis(lookup, *second)?;
+            slots.extend(s2);
+            let (p2, c2) = contact_param(&b2, *second, *v, &mut slots)?;
+            let check = Check::Curves {
+                first: *first,
+                second: *second,
+                u: c1,
+                v: c2,
+                sense: *sense,
+            };
+            out.push(general(
+                name,
+                CurveCurveContact::new((b1, p1), (b2, p2)),
+                slots,
+                Some(check),
+            ));
+        }
+        _ => return Ok(false),
+    }
+    Ok(true)
+}
+
+/// A solved curve ready for repeated evaluation: its basis and its control points as blocks.
+struct Sampler {
+    basis: CurveBasis,
+    points: Vec<[f64; 2]>,
+}
+
+impl Sampler {
+    fn new(e: &Entity, id: EntityId) -> Result<Self> {
+        let basis = CurveBasis::of(e).ok_or(Error::WrongEntityKind {
+            entity: id,
+            expected: "curve",
+            found: e.kind_name(),
+        })?;
+        let points = e.points().iter().map(|p| [p.x, p.y]).collect();
+        Ok(Self { basis, points })
+    }
+
+    /// C(s) and C′(s).
+    fn at(&self, s: f64) -> ([f64; 2], [f64; 2]) {
+        let refs: smallvec::SmallVec<[&[f64]; 16]> = self.points.iter().map(|p| &p[..]).collect();
+        self.basis.eval(&refs, s)
+    }
+}
+
+/// C(s) and C′(s) of a solved curve entity.
+fn point_tangent(e: &Entity, id: EntityId, s: f64) -> Result<([f64; 2], [f64; 2])> {
+    Ok(Sampler::new(e, id)?.at(s))
+}
+
+/// Parameters sampled on [u − w, u + w] ∩ [a, b].
+fn window(e: &Entity, u: f64) -> Vec<f64> {
+    let (a, b) = e.domain().unwrap_or((0.0, 1.0));
+    let w = (b - a) / 5.0;
+    let (lo, hi) = ((u - w).max(a), (u + w).min(b));
+    let n = 2 * SIDE_SAMPLES;
+    (0..=n)
+        .map(|i| lo + (hi - lo) * i as f64 / n as f64)
+        .collect()
+}
+
+/// The deepest sample of the window around u where the signed clearance `gap` (positive on
+/// the intended side) is below −`tolerance`, as [`Error::ContactCrossed`].
+fn deepest(
+    owner: ConstraintId,
+    e: &Entity,
+    curve: EntityId,
+    u: f64,
+    tolerance: f64,
+    gap: impl Fn([f64; 2]) -> f64,
+) -> Result<()> {
+    let mut worst: Option<(f64, f64)> = None;
+    let sampler = Sampler::new(e, curve)?;
+    for s in window(e, u) {
+        let (q, _) = sampler.at(s);
+        let d = gap(q);
+        if d < -tolerance && worst.is_none_or(|(_, w)| d < w) {
+            worst = Some((s, d));
+        }
+    }
+    match worst {
+        Some((parameter, d)) => Err(Error::ContactCrossed {
+            constraint: owner,
+            parameter,
+            depth: -d,
+        }),
+        None => Ok(()),
+    }
+}
+
+fn get(solved: &HashMap<EntityId, Entity>, id: EntityId) -> Result<&Entity> {
+    solved.get(&id).ok_or(Error::UnknownEntity { entity: id })
+}
+
+impl Check {
+    /// Verifies the check on the solved entities, with `u` the solved contact parameter and
+    /// `tolerance` the allowed penetration (length units).
+    pub(crate) fn verify(
+        &self,
+        owner: ConstraintId,
+        solved: &HashMap<EntityId, Entity>,
+        param: &dyn Fn(CheckParam) -> Result<f64>,
+        tolerance: f64,
+    ) -> Result<()> {
+        let flipped = |dot: f64| -> Result<()> {
+            if dot > 0.0 {
+                Ok(())
+            } else {
+                Err(Error::OrientationFlipped {
+                    constraint: owner,
+                    dot,
+                })
+            }
+        };
+        match *self {
+            Check::Circle {
+                curve,
+                circle,
+                side,
+                rotation,
+                u,
+            } => {
+                let u = param(u)?;
+                let e = get(solved, curve)?;
+                let Entity::Circle { center, radius } = get(solved, circle)? else {
+                    return Err(Error::UnknownEntity { entity: circle });
+                };
+                let (p, t) = point_tangent(e, curve, u)?;
+                let speed = t[0].hypot(t[1]);
+                if speed.is_nan() || speed <= 1e-9 * (1.0 + radius) {
+                    return Err(Error::Cusp {
+                        constraint: owner,
+                        speed,
+                    });
+                }
+                let turn = (p[0] - center.x) * t[1] - (p[1] - center.y) * t[0];
+                flipped(match rotation {
+                    Rotation::CounterClockwise => turn,
+                    Rotation::Clockwise => -turn,
+                })?;
+                let sign = match side {
+                    CircleSide::Outside => 1.0,
+                    CircleSide::Inside => -1.0,
+                };
+                deepest(owner, e, curve, u, tolerance, |q| {
+                    sign * ((q[0] - center.x).hypot(q[1] - center.y) - radius)
+                })?;
+            }
+            Check::Line {
+                curve,
+                line,
+                side,
+                sense,
+                u,
+            } => {
+                let u = param(u)?;
+                let e = get(solved, curve)?;
+                let Entity::Line([a, b]) = get(solved, line)? else {
+                    return Err(Error::UnknownEntity { entity: line });
+                };
+                let d = [b.x - a.x, b.y - a.y];
+                let len = d[0].hypot(d[1]);
+                let (_, t) = point_tangent(e, curve, u)?;
+                let speed = t[0].hypot(t[1]);
+                if speed.is_nan() || speed <= 1e-12 * (1.0 + len) {
+                    return Err(Error::Cusp {
+                        constraint: owner,
+                        speed,
+                    });
+                }
+                flipped(sense.sign() * (t[0] * d[0] + t[1] * d[1]))?;
+                let sign = match side {
+                    LineSide::Left => 1.0,
+                    LineSide::Right => -1.0,
+                };
+                deepest(owner, e, curve, u, tolerance, |q| {
+                    sign * (d[0] * (q[1] - a.y) - d[1] * (q[0] - a.x)) / len
+                })?;
+            }
+            Check::Curves {
+                first,
+                second,
+                u,
+                v,
+                sense,
+            } => {
+                let (u, v) = (param(u)?, param(v)?);
+                let (_, t1) = point_tangent(get(solved, first)?, first, u)?;
+                let (_, t2) = point_tangent(get(solved, second)?, second, v)?;
+                let (s1, s2) = (t1[0].hypot(t1[1]), t2[0].hypot(t2[1]));
+                if s1.is_nan() || s2.is_nan() || s1.min(s2) <= 1e-12 {
+                    return Err(Error::Cusp {
+                        constraint: owner,
+                        speed: s1.min(s2),
+                    });
+                }
+                flipped(sense.sign() * (t1[0] * t2[0] + t1[1] * t2[1]))?;
+            }
+            Check::Join { first, second } => {
+                let (e1, e2) = (get(solved, first)?, get(solved, second)?);
+                let (b1, a2) = (
+                    e1.domain().unwrap_or((0.0, 1.0)).1,
+                    e2.domain().unwrap_or((0.0, 1.0)).0,
+                );
+                let (_, t1) = point_tangent(e1, first, b1)?;
+                let (_, t2) = point_tangent(e2, second, a2)?;
+                flipped(t1[0] * t2[0] + t1[1] * t2[1])?;
+            }
+            Check::Angle {
+                first,
+                second,
+                cos,
+                sin,
+            } => {
+                let (Entity::Line([a1, b1]), Entity::Line([a2, b2])) =
+                    (get(solved, first)?, get(solved, second)?)
+                else {
+                    return Err(Error::UnknownEntity { entity: first });
+                };
+                let (d1, d2) = (b1 - a1, b2 - a2);
+                let (dot, crs) = (d1.dot(&d2), d1.x * d2.y - d1.y * d2.x);
+                flipped(dot * cos + crs * sin)?;
+            }
+        }
+        Ok(())
+    }
+
+    /// The residual and slots that put the curve point C(s) back on the target (the circle or
+    /// the line of a contact check): the push-back of a crossing.
+    pub(crate) fn push_back(&self, lookup: &impl EntityLookup, s: f64) -> Result<Option<PushBack>> {
+        match *self {
+            Check::Circle { curve, circle, .. } => {
+                let (basis, mut slots) = curve_basis(lookup, curve)?;
+                slots.extend([Slot::Point(circle, 0), Slot::Radius(circle)]);
+                Ok(Some((Arc::new(OnCircleAt::new(basis, s)), slots)))
+            }
+            Check::Line { curve, line, .. } => {
+                let (basis, mut slots) = curve_basis(lookup, curve)?;
+                slots.extend([Slot::Point(line, 0), Slot::Point(line, 1)]);
+                Ok(Some((Arc::new(OnLineAt::new(basis, s)), slots)))
+            }
+            Check::Join { .. } | Check::Angle { .. } | Check::Curves { .. } => Ok(None),
+        }
+    }
+
+    /// The check with its contact slot replaced by the problem block `slots[k]`.
+    pub(crate) fn resolved(mut self, slots: &[Option<BlockId>]) -> Self {
+        let fix = |u: &mut CheckParam| {
+            if let CheckParam::Slot(k) = *u {
+                if let Some(Some(b)) = slots.get(k) {
+                    *u = CheckParam::Block(*b);
+                }
+            }
+        };
+        match &mut self {
+            Check::Circle { u, .. } | Check::Line { u, .. } => fix(u),
+            Check::Curves { u, v, .. } => {
+                fix(u);
+                fix(v);
+            }
+            Check::Join { .. } | Check::Angle { .. } => {}
+        }
+        self
+    }
+}
