@@ -100,6 +100,8 @@ pub enum Target {
 pub struct Custom {
     pub(crate) residual: Arc<dyn DynResidual>,
     pub(crate) points: Vec<PointRef>,
+    /// The kind name and parameters a sketch file stores it under (see [`crate::file`]).
+    pub(crate) file_form: Option<(String, serde_json::Value)>,
 }
 
 impl Custom {
@@ -108,6 +110,7 @@ impl Custom {
         Self {
             residual: Arc::new(residual),
             points,
+            file_form: None,
         }
     }
 

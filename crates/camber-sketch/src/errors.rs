@@ -170,6 +170,12 @@ pub enum Error {
         /// The offending weight.
         value: f64,
     },
+    /// An entity or constraint id already taken (entities and constraints share one id space).
+    #[error("id {id} is already used by an entity or a constraint")]
+    DuplicateId {
+        /// The id asked for.
+        id: u64,
+    },
 }
 
 impl From<camber_solve::Error> for Error {

@@ -53,6 +53,7 @@ pub mod constraint;
 pub mod drag;
 pub mod entity;
 pub mod errors;
+pub mod file;
 pub mod ids;
 pub mod residuals;
 pub mod sketch;
