@@ -178,10 +178,7 @@ impl CustomRegistry {
     /// Registers (or replaces) the decoder of the custom kind `name`.
     pub fn register<F>(&mut self, name: impl Into<String>, decoder: F) -> &mut Self
     where
-        F: Fn(&Value, Vec<PointRef>) -> std::result::Result<Custom, String>
-            + Send
-            + Sync
-            + 'static,
+        F: Fn(&Value, Vec<PointRef>) -> std::result::Result<Custom, String> + Send + Sync + 'static,
     {
         self.kinds.insert(name.into(), Arc::new(decoder));
         self
@@ -244,11 +241,23 @@ pub fn from_json_with(
     registry: &CustomRegistry,
 ) -> std::result::Result<Sketch, FileError> {
     let value: Value = serde_json::from_str(text).map_err(|e| FileError::Syntax {
-        message: e.to_string(),
+        message: if e.to_string().starts_with("number out of range") {
+            format!(
+                "non-finite number (outside the f64 range) at line {} column {}",
+                e.line(),
+                e.column()
+            )
+        } else {
+            e.to_string()
+        },
     })?;
     match value.get("version") {
         Some(v) if v.as_u64() == Some(FORMAT_VERSION) => {}
-        Some(v) => return Err(FileError::Version { found: v.to_string() }),
+        Some(v) => {
+            return Err(FileError::Version {
+                found: v.to_string(),
+            })
+        }
         None if value.is_object() => {
             return Err(FileError::Version {
                 found: "(missing)".into(),
@@ -325,13 +334,21 @@ pub fn to_json(sketch: &Sketch) -> std::result::Result<String, FileError> {
         text.push_str(if i == 0 { "\n    " } else { ",\n    " });
         text.push_str(&enc(e)?);
     }
-    text.push_str(if entities.is_empty() { "],\n" } else { "\n  ],\n" });
+    text.push_str(if entities.is_empty() {
+        "],\n"
+    } else {
+        "\n  ],\n"
+    });
     text.push_str("  \"constraints\": [");
     for (i, c) in constraints.iter().enumerate() {
         text.push_str(if i == 0 { "\n    " } else { ",\n    " });
         text.push_str(&enc(c)?);
     }
-    text.push_str(if constraints.is_empty() { "]\n}\n" } else { "\n  ]\n}\n" });
+    text.push_str(if constraints.is_empty() {
+        "]\n}\n"
+    } else {
+        "\n  ]\n}\n"
+    });
     Ok(text)
 }
 
@@ -762,21 +779,21 @@ impl RawBody {
                 points,
                 params,
             } => {
-                let decode = registry
-                    .kinds
-                    .get(&name)
-                    .ok_or_else(|| FileError::UnregisteredCustom {
-                        id,
-                        name: name.clone(),
-                    })?;
+                let decode =
+                    registry
+                        .kinds
+                        .get(&name)
+                        .ok_or_else(|| FileError::UnregisteredCustom {
+                            id,
+                            name: name.clone(),
+                        })?;
                 let points = points.into_iter().map(PointRef::from).collect();
-                let custom = decode(&params, points).map_err(|message| {
-                    FileError::CustomParams {
+                let custom =
+                    decode(&params, points).map_err(|message| FileError::CustomParams {
                         id,
                         name: name.clone(),
                         message,
-                    }
-                })?;
+                    })?;
                 Constraint::Custom(custom.with_file_form(name, params))
             }
         })

@@ -85,7 +85,10 @@ fn bundled(name: &str, sketch: &Sketch) {
         std::fs::write(&path, &text).unwrap();
     }
     let on_disk = std::fs::read_to_string(&path).unwrap();
-    assert_eq!(on_disk, text, "{name} is out of date: rerun with CAMBER_BLESS=1");
+    assert_eq!(
+        on_disk, text,
+        "{name} is out of date: rerun with CAMBER_BLESS=1"
+    );
 }
 
 #[test]
@@ -215,7 +218,9 @@ fn every_kind_round_trips_with_its_ids() {
     let back = from_json(&text).unwrap();
     let ids = |s: &Sketch| {
         (
-            s.entities().map(|(id, e)| (id, e.clone())).collect::<Vec<_>>(),
+            s.entities()
+                .map(|(id, e)| (id, e.clone()))
+                .collect::<Vec<_>>(),
             s.constraints()
                 .map(|(id, c)| (id, c.clone()))
                 .collect::<Vec<_>>(),
@@ -265,10 +270,16 @@ fn load_err(text: &str) -> FileError {
 #[test]
 fn bad_files_name_the_path_or_the_id() {
     // Syntax.
-    assert!(matches!(load_err("{\"version\": 1,"), FileError::Syntax { .. }));
+    assert!(matches!(
+        load_err("{\"version\": 1,"),
+        FileError::Syntax { .. }
+    ));
     // A number outside the f64 range cannot become a coordinate.
-    let e = load_err(r#"{"version": 1, "entities": [{"id": 0, "kind": "point", "at": [1e999, 0]}]}"#);
-    assert!(matches!(&e, FileError::Syntax { message } if message.contains("out of range")));
+    let e =
+        load_err(r#"{"version": 1, "entities": [{"id": 0, "kind": "point", "at": [1e999, 0]}]}"#);
+    assert!(
+        matches!(&e, FileError::Syntax { message } if message.starts_with("non-finite number"))
+    );
     // Version.
     assert_eq!(
         load_err(r#"{"version": 2}"#),
@@ -315,7 +326,14 @@ fn bad_files_name_the_path_or_the_id() {
             "control_points": [[0, 0], [1, 1], [2, 0]]}]}"#,
     );
     assert!(
-        matches!(&e, FileError::Entity { id: 3, kind: "bspline", source: Error::Geometry(_) }),
+        matches!(
+            &e,
+            FileError::Entity {
+                id: 3,
+                kind: "bspline",
+                source: Error::Geometry(_)
+            }
+        ),
         "{e}"
     );
     let e = load_err(
@@ -338,7 +356,14 @@ fn bad_files_name_the_path_or_the_id() {
             "constraints": [{"id": 1, "kind": "point_at_parameter", "curve": 0, "u": 1.5, "target": {"at": [0, 0]}}]}"#,
     );
     assert!(
-        matches!(&e, FileError::Constraint { id: 1, source: Error::ParameterOutsideDomain { .. }, .. }),
+        matches!(
+            &e,
+            FileError::Constraint {
+                id: 1,
+                source: Error::ParameterOutsideDomain { .. },
+                ..
+            }
+        ),
         "{e}"
     );
 }
@@ -390,7 +415,10 @@ fn registered_custom_kinds_load_solve_and_save() {
     assert_abs_diff_eq!(q.x, 2.5, epsilon = 1e-12);
     let text = to_json(&s).unwrap();
     assert!(text.contains("\"custom\"") && text.contains("\"params\":{\"gap\":2.5}"));
-    assert_eq!(to_json(&from_json_with(&text, &reg).unwrap()).unwrap(), text);
+    assert_eq!(
+        to_json(&from_json_with(&text, &reg).unwrap()).unwrap(),
+        text
+    );
 }
 
 #[test]
