@@ -263,3 +263,40 @@ fn bad_files_fail_with_one_plain_line_and_code_2() {
         }
     }
 }
+
+#[test]
+fn render_draws_points_lines_circles_and_their_glyphs() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("prims.json");
+    std::fs::write(
+        &file,
+        r#"{"version": 1,
+  "entities": [{"id": 0, "kind": "point", "at": [0, 2]},
+               {"id": 1, "kind": "line", "from": [0, 0], "to": [2, 1]},
+               {"id": 2, "kind": "circle", "center": [3, 3], "radius": 0.5}],
+  "constraints": [{"id": 3, "kind": "fixed", "target": {"entity": 2}},
+                  {"id": 4, "kind": "coincident", "a": {"point": 0}, "b": {"control": [1, 0]}}]}"#,
+    )
+    .unwrap();
+    let pic = dir.path().join("prims.svg");
+    camber()
+        .arg("render")
+        .arg(&file)
+        .arg("-o")
+        .arg(&pic)
+        .assert()
+        .success();
+    let text = std::fs::read_to_string(&pic).unwrap();
+    let doc = roxmltree::Document::parse(&text).unwrap();
+    let curve = camber_cli::commands::render::CURVE;
+    let point = camber_cli::commands::render::POINT;
+    assert_eq!(count(&doc, "line", "stroke", curve), 1);
+    assert_eq!(count(&doc, "circle", "stroke", curve), 1);
+    assert_eq!(count(&doc, "circle", "fill", point), 1);
+    assert_eq!(count(&doc, "polyline", "fill", GLYPH), 1);
+    assert_eq!(count(&doc, "circle", "stroke", GLYPH), 2);
+    // The box holds the whole circle: its right edge x = 3.5 lies inside the viewBox.
+    let vb = view_box(&doc);
+    let scale = 400.0 / 3.5; // the larger side of the box is 3.5 (x from 0 to 3.5)
+    assert!(vb[0] + vb[2] > 3.5 * scale);
+}
