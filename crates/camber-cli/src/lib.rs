@@ -13,10 +13,15 @@
 //! camber op CURVE.json reparam --to A,B -o OUT.json
 //! camber render-curve CURVE.json -o PIC.svg [--combs]
 //! camber surface CASE.json -o FACE.json [--plot PIC.svg]
+//! camber solve SKETCH.json -o OUT.json [--svg PIC.svg]   solve, write, report per component
+//! camber check SKETCH.json                              DOF, redundant and conflicting constraints
+//! camber render SKETCH.json -o PIC.svg [--combs]        draw a sketch with constraint glyphs
+//! camber demo [-o DIR]                                  solve the bundled blade section
 //! ```
 //!
 //! Every failure prints one line `error: <file>: <problem>` on stderr and exits with code 2;
-//! success exits with 0. The curve file format is described in [`curve_file`].
+//! success exits with 0. The curve file format is described in [`curve_file`], the sketch file
+//! format in [`camber_sketch::file`] (and docs/file-format.md).
 //!
 //! ```
 //! use camber_cli::{commands::eval::evaluate, curve_file::Curve};
@@ -29,12 +34,13 @@
 pub mod commands;
 pub mod curve_file;
 pub mod draw;
+pub mod sketch_file;
 pub mod svg;
 
 use anyhow::Result;
 use clap::{Parser, Subcommand};
 
-use commands::{eval, op, render_curve, surface};
+use commands::{check, demo, eval, op, render, render_curve, solve, surface};
 
 /// The camber command line: curve files, surface deformation and SVG pictures.
 #[derive(Debug, Parser)]
@@ -66,6 +72,14 @@ pub enum Command {
     RenderCurve(render_curve::RenderCurveArgs),
     /// Deform a face to G1 continuity with its neighbours; write the face, print the report.
     Surface(surface::SurfaceArgs),
+    /// Solve a sketch file: write the result, print solver, DOF, residual and time per component.
+    Solve(solve::SolveArgs),
+    /// The DOF analysis of a sketch file: free DOF, redundant and conflicting constraints.
+    Check(check::CheckArgs),
+    /// Draw a sketch file as SVG with constraint glyphs; conflicting constraints in red.
+    Render(render::RenderArgs),
+    /// Solve the bundled blade section, write blade_section.svg, print the report.
+    Demo(demo::DemoArgs),
 }
 
 /// Which operation works on which curve type, shown under `camber op --help`.
@@ -83,6 +97,10 @@ pub fn run(cli: &Cli) -> Result<()> {
         Command::Op(a) => op::run(a),
         Command::RenderCurve(a) => render_curve::run(a),
         Command::Surface(a) => surface::run(a),
+        Command::Solve(a) => solve::run(a),
+        Command::Check(a) => check::run(a),
+        Command::Render(a) => render::run(a),
+        Command::Demo(a) => demo::run(a),
     }
 }
 

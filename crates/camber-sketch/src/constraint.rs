@@ -151,6 +151,8 @@ pub enum Rotation {
 pub struct Custom {
     pub(crate) residual: Arc<dyn DynResidual>,
     pub(crate) points: Vec<PointRef>,
+    /// The kind name and parameters a sketch file stores it under (see [`crate::file`]).
+    pub(crate) file_form: Option<(String, serde_json::Value)>,
 }
 
 impl Custom {
@@ -159,6 +161,7 @@ impl Custom {
         Self {
             residual: Arc::new(residual),
             points,
+            file_form: None,
         }
     }
 

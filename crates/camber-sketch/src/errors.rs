@@ -203,6 +203,12 @@ pub enum Error {
         /// How far past the target it lies (length units, > 0).
         depth: f64,
     },
+    /// An entity or constraint id already taken (entities and constraints share one id space).
+    #[error("id {id} is already used by an entity or a constraint")]
+    DuplicateId {
+        /// The id asked for.
+        id: u64,
+    },
 }
 
 impl From<camber_solve::Error> for Error {

@@ -70,6 +70,7 @@ pub mod curve_eval;
 pub mod drag;
 pub mod entity;
 pub mod errors;
+pub mod file;
 mod general;
 pub mod ids;
 pub mod residuals;

@@ -109,9 +109,30 @@ impl Sketch {
     /// # Errors
     /// [`Error::NonFinite`] or [`Error::Geometry`]; nothing is added then.
     pub fn add_entity(&mut self, entity: Entity) -> Result<EntityId> {
+        self.add_entity_with_id(EntityId(self.next_id), entity)
+    }
+
+    /// Adds an entity under a given id (as a sketch file names it), validated like
+    /// [`Sketch::add_entity`]. Later automatic ids continue past the largest id used.
+    ///
+    /// ```
+    /// use camber_sketch::{EntityId, Error, Sketch, Entity};
+    /// use nalgebra::Point2;
+    /// let mut s = Sketch::new();
+    /// s.add_entity_with_id(EntityId(7), Entity::Point(Point2::new(1.0, 2.0)))?;
+    /// assert_eq!(s.add_point(Point2::origin())?, EntityId(8));
+    /// let again = s.add_entity_with_id(EntityId(7), Entity::Point(Point2::origin()));
+    /// assert_eq!(again, Err(Error::DuplicateId { id: 7 }));
+    /// # Ok::<(), camber_sketch::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`Error::DuplicateId`] when an entity or constraint already has that id; the
+    /// validation errors of [`Sketch::add_entity`]. Nothing is added then.
+    pub fn add_entity_with_id(&mut self, id: EntityId, entity: Entity) -> Result<EntityId> {
+        self.check_free_id(id.0)?;
         entity.validate()?;
-        let id = EntityId(self.next_id);
-        self.next_id += 1;
+        self.next_id = self.next_id.max(id.0.saturating_add(1));
         let node = self.graph.add_node(Node::Entity(id));
         self.entities.insert(id, (entity, node));
         self.dirty.insert(id);
@@ -320,6 +341,19 @@ impl Sketch {
     }
 }
 
+impl Sketch {
+    /// Fails with [`Error::DuplicateId`] when an entity or a constraint already uses `id`.
+    fn check_free_id(&self, id: u64) -> Result<()> {
+        if self.entities.contains_key(&EntityId(id))
+            || self.constraints.contains_key(&ConstraintId(id))
+        {
+            Err(Error::DuplicateId { id })
+        } else {
+            Ok(())
+        }
+    }
+}
+
 /// # Constraints
 impl Sketch {
     /// Adds a constraint after validating it against the current entities (ids, indices,
@@ -329,9 +363,24 @@ impl Sketch {
     /// # Errors
     /// The validation errors; nothing is added then.
     pub fn add_constraint(&mut self, constraint: Constraint) -> Result<ConstraintId> {
+        self.add_constraint_with_id(ConstraintId(self.next_id), constraint)
+    }
+
+    /// Adds a constraint under a given id (as a sketch file names it), validated like
+    /// [`Sketch::add_constraint`]. Entities and constraints share one id space; later automatic
+    /// ids continue past the largest id used.
+    ///
+    /// # Errors
+    /// [`Error::DuplicateId`] when an entity or constraint already has that id; the
+    /// validation errors of [`Sketch::add_constraint`]. Nothing is added then.
+    pub fn add_constraint_with_id(
+        &mut self,
+        id: ConstraintId,
+        constraint: Constraint,
+    ) -> Result<ConstraintId> {
+        self.check_free_id(id.0)?;
         compile(self, &constraint)?;
-        let id = ConstraintId(self.next_id);
-        self.next_id += 1;
+        self.next_id = self.next_id.max(id.0.saturating_add(1));
         let node = self.graph.add_node(Node::Constraint(id));
         for e in constraint.entities() {
             if let Some((_, en)) = self.entities.get(&e) {

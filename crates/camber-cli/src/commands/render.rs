@@ -1,0 +1,242 @@
+//! `camber render`: an SVG picture of a sketch file — curves, control polygons, points, lines,
+//! circles, constraint glyphs (tangency arrows, fixed triangles, coincidence rings), optional
+//! curvature combs, and the constraints the DOF analysis finds conflicting drawn in red.
+
+use std::collections::BTreeSet;
+use std::path::PathBuf;
+
+use anyhow::{anyhow, Context, Result};
+use camber_geom::ParametricCurve;
+use camber_sketch::{Constraint, ConstraintId, Entity, FixTarget, PointRef, Sketch, Target};
+use clap::Args;
+use nalgebra::{Point2, Vector2};
+
+use crate::curve_file::write_text;
+use crate::draw::{self, Comb, SAMPLES_PER_PIECE, TEETH_PER_PIECE};
+use crate::sketch_file::{self, describe_error};
+use crate::svg::{BBox, Style, Svg};
+
+/// Colour of constraint glyphs.
+pub const GLYPH: &str = "#1e8449";
+/// Colour of the glyphs of conflicting constraints.
+pub const CONFLICT: &str = "#c0392b";
+/// Colour of curves, lines and circles.
+pub const CURVE: &str = "#2471a3";
+/// Colour of point entities.
+pub const POINT: &str = "#34495e";
+
+/// Sketches with more entities are drawn without the DOF analysis (the dense rank analysis
+/// grows with the cube of the size), so conflicts are not marked in them.
+pub const ANALYSIS_MAX_ENTITIES: usize = 200;
+
+/// Arguments of `camber render`.
+#[derive(Debug, Args)]
+pub struct RenderArgs {
+    /// The sketch file.
+    pub input: PathBuf,
+    /// The SVG file to write.
+    #[arg(short, long, value_name = "PIC.svg")]
+    pub output: PathBuf,
+    /// Also draw curvature combs on the curves.
+    #[arg(long)]
+    pub combs: bool,
+}
+
+/// Draws the sketch as it is in the file (not solved).
+pub fn run(args: &RenderArgs) -> Result<()> {
+    let sketch = sketch_file::load(&args.input)?;
+    let svg = picture(&sketch, args.combs).with_context(|| args.input.display().to_string())?;
+    write_text(&args.output, &svg)?;
+    crate::print_stdout(&format!("wrote {}", args.output.display()))
+}
+
+/// One curve entity through the kernel's common face (lines are drawn as segments instead).
+fn as_curve(e: &Entity) -> Option<&dyn ParametricCurve<f64, 2>> {
+    match e {
+        Entity::Bezier(c) => Some(c),
+        Entity::BSpline(c) => Some(c),
+        Entity::Nurbs(c) => Some(c),
+        _ => None,
+    }
+}
+
+/// A glyph anchored in the sketch.
+enum Glyph {
+    /// An arrow from the point along the direction (tangency).
+    Arrow(Point2<f64>, Vector2<f64>),
+    /// A triangle under the point (fixed).
+    Fixed(Point2<f64>),
+    /// A ring around the point (coincidence, point on curve, custom).
+    Ring(Point2<f64>),
+}
+
+/// The glyphs of one constraint.
+fn glyphs(sketch: &Sketch, c: &Constraint) -> Result<Vec<Glyph>> {
+    let at = |curve, u| sketch.curve_point(curve, u);
+    let p = |r: PointRef| sketch.point(r);
+    Ok(match c {
+        Constraint::Fixed(FixTarget::Point(r)) => vec![Glyph::Fixed(p(*r)?)],
+        Constraint::Fixed(FixTarget::Entity(e)) => sketch
+            .entity(*e)?
+            .points()
+            .iter()
+            .map(|q| Glyph::Fixed(*q))
+            .collect(),
+        Constraint::Coincident(a, b) => vec![Glyph::Ring(p(*a)?), Glyph::Ring(p(*b)?)],
+        Constraint::PointAtParameter { curve, u, target } => {
+            let mut v = vec![Glyph::Ring(at(*curve, *u)?)];
+            match target {
+                Target::At(q) => v.push(Glyph::Ring(*q)),
+                Target::Point(r) => v.push(Glyph::Ring(p(*r)?)),
+            }
+            v
+        }
+        Constraint::TangentVectorAt { curve, u, vector } => {
+            vec![Glyph::Arrow(at(*curve, *u)?, *vector)]
+        }
+        Constraint::DirectionalTangentAt {
+            curve,
+            u,
+            direction,
+            sense,
+        } => vec![Glyph::Arrow(at(*curve, *u)?, direction * sense.sign())],
+        Constraint::StartTangent {
+            curve,
+            direction,
+            sense,
+            ..
+        } => vec![Glyph::Arrow(
+            p(PointRef::Start(*curve))?,
+            direction * sense.sign(),
+        )],
+        Constraint::EndTangent {
+            curve,
+            direction,
+            sense,
+            ..
+        } => vec![Glyph::Arrow(
+            p(PointRef::End(*curve))?,
+            direction * sense.sign(),
+        )],
+        Constraint::TangentToLineAt {
+            curve,
+            u,
+            direction,
+            sense,
+            ..
+        } => vec![Glyph::Arrow(at(*curve, *u)?, direction * sense.sign())],
+        Constraint::G1Join {
+            first, direction, ..
+        } => vec![Glyph::Arrow(p(PointRef::End(*first))?, *direction)],
+        Constraint::Custom(custom) => custom
+            .points()
+            .iter()
+            .map(|r| p(*r).map(Glyph::Ring))
+            .collect::<Result<_, _>>()?,
+        #[allow(unreachable_patterns)] // kinds added later get no glyph until they are drawn
+        _ => Vec::new(),
+    })
+}
+
+fn draw_glyph(svg: &mut Svg, g: &Glyph, size: f64, colour: &str) {
+    match g {
+        Glyph::Arrow(a, d) => {
+            let n = d.norm();
+            if !(n > 0.0 && n.is_finite()) {
+                return;
+            }
+            let t = d / n * size * 3.0;
+            let b = a + t;
+            let side = Vector2::new(-t.y, t.x) * 0.25;
+            let style = Style::stroke(colour, 1.2);
+            svg.line(*a, b, &style);
+            svg.polyline(&[b - t * 0.3 + side, b, b - t * 0.3 - side], &style);
+        }
+        Glyph::Fixed(q) => {
+            let s = size * 0.8;
+            svg.polyline(
+                &[
+                    *q,
+                    q + Vector2::new(-s, -1.5 * s),
+                    q + Vector2::new(s, -1.5 * s),
+                    *q,
+                ],
+                &Style::filled(colour),
+            );
+        }
+        Glyph::Ring(q) => svg.circle(*q, size * 0.7, &Style::stroke(colour, 1.2)),
+    }
+}
+
+/// The SVG document of [`run`]. Conflicting constraints are those the DOF analysis names (for
+/// sketches of at most [`ANALYSIS_MAX_ENTITIES`] entities).
+///
+/// # Errors
+/// Evaluation failures and analysis failures (which name the constraints).
+pub fn picture(sketch: &Sketch, combs: bool) -> Result<String> {
+    let conflicting: BTreeSet<ConstraintId> = if sketch.entities().count() <= ANALYSIS_MAX_ENTITIES
+    {
+        sketch
+            .analyze()
+            .map_err(|e| anyhow!("analysis failed: {}", describe_error(sketch, &e)))?
+            .into_iter()
+            .flat_map(|a| a.analysis.conflicting)
+            .collect()
+    } else {
+        BTreeSet::new()
+    };
+    // Sample first, so the box holds everything.
+    let mut bbox = BBox::empty();
+    let mut curves = Vec::new();
+    for (_, e) in sketch.entities() {
+        e.points().iter().for_each(|p| bbox.include(*p));
+        if let Entity::Circle { center, radius } = e {
+            bbox.include(center + Vector2::new(*radius, *radius));
+            bbox.include(center - Vector2::new(*radius, *radius));
+        }
+        if let Some(c) = as_curve(e) {
+            let samples = draw::sample_curve(c, SAMPLES_PER_PIECE)?;
+            samples.iter().for_each(|p| bbox.include(*p));
+            curves.push((c, samples, e.points().to_vec()));
+        }
+    }
+    let mut comb_list = Vec::new();
+    if combs {
+        let (w, h) = bbox.size();
+        for (c, _, _) in &curves {
+            let comb = Comb::of(*c, TEETH_PER_PIECE, 0.1 * w.max(h))?;
+            comb.points().for_each(|p| bbox.include(p));
+            comb_list.push(comb);
+        }
+    }
+    let mut svg = Svg::new(bbox, 0.08);
+    let size = 6.0 * svg.unit();
+    for comb in &comb_list {
+        comb.draw(&mut svg);
+    }
+    for (_, samples, polygon) in &curves {
+        draw::draw_control_polygon(&mut svg, polygon);
+        draw::draw_curve(&mut svg, samples, CURVE);
+    }
+    for (_, e) in sketch.entities() {
+        match e {
+            Entity::Point(p) => draw::draw_point(&mut svg, *p, POINT),
+            Entity::Line([a, b]) => svg.line(*a, *b, &Style::stroke(CURVE, 2.0)),
+            Entity::Circle { center, radius } => {
+                svg.circle(*center, *radius, &Style::stroke(CURVE, 2.0));
+            }
+            _ => {}
+        }
+    }
+    for (id, c) in sketch.constraints() {
+        let colour = if conflicting.contains(&id) {
+            CONFLICT
+        } else {
+            GLYPH
+        };
+        for g in glyphs(sketch, c)? {
+            draw_glyph(&mut svg, &g, size, colour);
+        }
+    }
+    Ok(svg.finish())
+}

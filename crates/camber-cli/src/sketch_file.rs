@@ -1,0 +1,91 @@
+//! Sketch files for the sketch commands: loading and saving through [`camber_sketch::file`]
+//! with the file name in front of every error, and plain descriptions of constraints and of
+//! solver failures (ids with their kinds).
+//!
+//! The format itself is described in docs/file-format.md and in [`camber_sketch::file`].
+
+use std::path::Path;
+
+use anyhow::{anyhow, Context, Result};
+use camber_sketch::{ConstraintId, Error, Sketch};
+
+use crate::curve_file::{read_text, write_text};
+
+/// Reads and validates a sketch file; errors start with the file name.
+pub fn load(path: &Path) -> Result<Sketch> {
+    let text = read_text(path)?;
+    parse(&text).with_context(|| path.display().to_string())
+}
+
+/// Parses sketch file text (no custom kinds are registered on the command line).
+pub fn parse(text: &str) -> Result<Sketch> {
+    camber_sketch::file::from_json(text).map_err(|e| anyhow!("{e}"))
+}
+
+/// Writes a sketch file.
+pub fn save(path: &Path, sketch: &Sketch) -> Result<()> {
+    let text = camber_sketch::file::to_json(sketch)
+        .map_err(|e| anyhow!("{e}"))
+        .with_context(|| path.display().to_string())?;
+    write_text(path, &text)
+}
+
+/// "constraint 4 (G1 join)", or "constraint 4" when the id is not in the sketch (such as the
+/// drag pin).
+pub fn describe_constraint(sketch: &Sketch, id: ConstraintId) -> String {
+    match sketch.constraint(id) {
+        Ok(c) => format!("{id} ({})", c.kind_name()),
+        Err(_) => id.to_string(),
+    }
+}
+
+/// A comma-separated list of [`describe_constraint`], or "none".
+pub fn describe_constraints(sketch: &Sketch, ids: &[ConstraintId]) -> String {
+    if ids.is_empty() {
+        "none".to_owned()
+    } else {
+        ids.iter()
+            .map(|&id| describe_constraint(sketch, id))
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+}
+
+/// A sketch error in plain words, naming constraints by id and kind.
+pub fn describe_error(sketch: &Sketch, e: &Error) -> String {
+    match e {
+        Error::Conflicting { constraints } => format!(
+            "conflicting constraints: {}",
+            describe_constraints(sketch, constraints)
+        ),
+        Error::Redundant { constraints } => format!(
+            "redundant constraints: {}",
+            describe_constraints(sketch, constraints)
+        ),
+        Error::NotSatisfied { failed } => format!(
+            "constraints not satisfied: {}",
+            failed
+                .iter()
+                .map(|(id, g)| format!("{} (|g| = {g:.3e})", describe_constraint(sketch, *id)))
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
+        Error::OrientationFlipped { constraint, dot } => format!(
+            "{} would flip its tangent orientation (signed dot {dot:.3e})",
+            describe_constraint(sketch, *constraint)
+        ),
+        other => other.to_string(),
+    }
+}
+
+/// "entities 0, 1, 2" for a component header; long lists are cut to "1000 entities: 0, 1, 2, …, 999".
+pub fn describe_entities(ids: &[camber_sketch::EntityId]) -> String {
+    let list: Vec<String> = ids.iter().map(|e| e.0.to_string()).collect();
+    match list.as_slice() {
+        [one] => format!("entity {one}"),
+        [a, b, c, .., last] if list.len() > 8 => {
+            format!("{} entities: {a}, {b}, {c}, …, {last}", list.len())
+        }
+        _ => format!("entities {}", list.join(", ")),
+    }
+}

@@ -1,0 +1,367 @@
+//! Sketch files: a sketch as JSON, with a format version, stable ids, every built-in entity and
+//! constraint kind, and user-defined constraint kinds through a [`CustomRegistry`].
+//!
+//! ```json
+//! {
+//!   "version": 1,
+//!   "entities": [
+//!     {"id": 0, "kind": "bezier", "control_points": [[0, 0], [1, 1], [2, 0]]}
+//!   ],
+//!   "constraints": [
+//!     {"id": 1, "kind": "fixed", "target": {"point": {"start": 0}}},
+//!     {"id": 2, "kind": "point_at_parameter", "curve": 0, "u": 0.5, "target": {"at": [1, 1]}}
+//!   ]
+//! }
+//! ```
+//!
+//! The file form is its own set of types (private here), separate from [`Constraint`]: the
+//! file keeps snake-case tags and named fields whatever the Rust enum looks like, and a new
+//! constraint variant only needs one file variant and two match arms below.
+//!
+//! Loading ([`from_json`], [`from_json_with`]) runs in three stages, each reporting its own
+//! failures: JSON syntax and numbers (`1e999` is out of range, so no non-finite value gets in);
+//! the shape of the document, with the JSON path of the bad field
+//! (`at constraints[2].curve: invalid type …`); and the sketch's own checks, through
+//! [`Sketch::add_entity_with_id`] and [`Sketch::add_constraint_with_id`], with the id of the
+//! offending entity or constraint (`constraint 5 (g1_join): entity 9 does not exist`). Saving
+//! ([`to_json`]) writes entities and constraints in id order; loading what was saved gives the
+//! same sketch with the same ids, and saving it again gives the same text.
+//!
+//! The full reference is docs/file-format.md.
+
+use std::collections::BTreeMap;
+use std::sync::Arc;
+
+use serde_json::Value;
+
+use crate::constraint::Custom;
+use crate::errors::Error;
+use crate::ids::{ConstraintId, EntityId, PointRef};
+use crate::sketch::Sketch;
+
+mod leaf;
+mod raw;
+
+use raw::{RawBody, RawConstraint, RawEntity, RawShape, RawSketch};
+
+/// The format version this build reads and writes.
+pub const FORMAT_VERSION: u64 = 1;
+
+/// Why a sketch file could not be read or written. Messages are one plain line.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum FileError {
+    /// Not JSON, or a number outside the f64 range.
+    #[error("invalid JSON: {message}")]
+    Syntax {
+        /// serde_json's message, with line and column.
+        message: String,
+    },
+    /// Valid JSON of the wrong shape: a missing or unknown field, a wrong type, an unknown kind.
+    #[error("at {path}: {message}")]
+    Shape {
+        /// The JSON path of the bad value (`constraints[2].curve`).
+        path: String,
+        /// What is wrong there.
+        message: String,
+    },
+    /// A `version` other than [`FORMAT_VERSION`], or none.
+    #[error("unsupported version {found} (this build reads version {FORMAT_VERSION})")]
+    Version {
+        /// The version found (as written).
+        found: String,
+    },
+    /// The sketch refused an entity (bad knots, weights, radius, a duplicate id, …).
+    #[error("entity {id} ({kind}): {source}")]
+    Entity {
+        /// The entity's id in the file.
+        id: u64,
+        /// Its kind tag.
+        kind: &'static str,
+        /// The sketch's reason.
+        source: Error,
+    },
+    /// The sketch refused a constraint (an unknown id, a parameter outside the domain, …).
+    #[error("constraint {id} ({kind}): {source}")]
+    Constraint {
+        /// The constraint's id in the file.
+        id: u64,
+        /// Its kind tag.
+        kind: String,
+        /// The sketch's reason.
+        source: Error,
+    },
+    /// A custom constraint whose kind no [`CustomRegistry`] entry knows.
+    #[error("constraint {id}: custom kind \"{name}\" is not registered")]
+    UnregisteredCustom {
+        /// The constraint's id.
+        id: u64,
+        /// The kind name asked for.
+        name: String,
+    },
+    /// A registered custom kind refused its parameters.
+    #[error("constraint {id}: custom kind \"{name}\": {message}")]
+    CustomParams {
+        /// The constraint's id.
+        id: u64,
+        /// The kind name.
+        name: String,
+        /// The decoder's message.
+        message: String,
+    },
+    /// Saving a custom constraint that carries no file form ([`Custom::with_file_form`]).
+    #[error("constraint {id} ({name}) is a custom constraint without a file form")]
+    CustomNotSavable {
+        /// The constraint's id.
+        id: u64,
+        /// Its residual's name.
+        name: String,
+    },
+}
+
+/// Decodes the parameters of one custom kind into a constraint over the given points.
+pub type CustomDecoder =
+    dyn Fn(&Value, Vec<PointRef>) -> std::result::Result<Custom, String> + Send + Sync;
+
+/// User-defined constraint kinds a sketch file may name: kind name → decoder.
+///
+/// A custom constraint is stored as
+/// `{"id": 4, "kind": "custom", "name": "unit_apart", "points": [...], "params": {...}}`; on
+/// load the decoder registered under `name` receives `params` (`null` when absent) and the
+/// points, and returns the [`Custom`] constraint (or a message saying what is wrong). The
+/// loaded constraint remembers its name and parameters, so saving writes them back.
+///
+/// ```
+/// use camber_sketch::file::{from_json_with, to_json, CustomRegistry};
+/// use camber_sketch::{Custom, EntityId, PointRef};
+/// use camber_solve::{Residual, Scalar};
+/// /// q.x − p.x = gap.
+/// #[derive(Debug)]
+/// struct Gap(f64);
+/// impl Residual for Gap {
+///     fn name(&self) -> &str { "gap" }
+///     fn dim(&self) -> usize { 1 }
+///     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+///         out[0] = x[1][0] - x[0][0] - nalgebra::convert::<f64, T>(self.0);
+///     }
+///     fn is_affine(&self) -> bool { true }
+/// }
+/// let mut registry = CustomRegistry::new();
+/// registry.register("gap", |params, points| {
+///     let gap = params.get("gap").and_then(|v| v.as_f64()).ok_or("needs a number \"gap\"")?;
+///     Ok(Custom::new(Gap(gap), points))
+/// });
+/// let text = r#"{"version": 1,
+///   "entities": [{"id": 0, "kind": "point", "at": [0, 0]}, {"id": 1, "kind": "point", "at": [5, 0]}],
+///   "constraints": [{"id": 2, "kind": "custom", "name": "gap",
+///                    "points": [{"point": 0}, {"point": 1}], "params": {"gap": 2}}]}"#;
+/// let mut sketch = from_json_with(text, &registry)?;
+/// sketch.solve()?;
+/// let (p, q) = (sketch.point(PointRef::Point(EntityId(0)))?, sketch.point(PointRef::Point(EntityId(1)))?);
+/// assert!((q.x - p.x - 2.0).abs() < 1e-12);
+/// assert!(to_json(&sketch)?.contains("\"gap\""));
+/// // Without the registration the file is refused.
+/// let err = camber_sketch::file::from_json(text).unwrap_err();
+/// assert_eq!(err.to_string(), "constraint 2: custom kind \"gap\" is not registered");
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Clone, Default)]
+pub struct CustomRegistry {
+    kinds: BTreeMap<String, Arc<CustomDecoder>>,
+}
+
+impl CustomRegistry {
+    /// An empty registry.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Registers (or replaces) the decoder of the custom kind `name`.
+    pub fn register<F>(&mut self, name: impl Into<String>, decoder: F) -> &mut Self
+    where
+        F: Fn(&Value, Vec<PointRef>) -> std::result::Result<Custom, String> + Send + Sync + 'static,
+    {
+        self.kinds.insert(name.into(), Arc::new(decoder));
+        self
+    }
+
+    /// Whether `name` is registered.
+    pub fn contains(&self, name: &str) -> bool {
+        self.kinds.contains_key(name)
+    }
+}
+
+impl std::fmt::Debug for CustomRegistry {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_set().entries(self.kinds.keys()).finish()
+    }
+}
+
+impl Custom {
+    /// The same constraint, saved in sketch files as kind `name` with `params` (what a
+    /// [`CustomRegistry`] decoder registered under `name` reads back).
+    pub fn with_file_form(mut self, name: impl Into<String>, params: Value) -> Self {
+        self.file_form = Some((name.into(), params));
+        self
+    }
+
+    /// The kind name and parameters the constraint is saved under, if any.
+    pub fn file_form(&self) -> Option<(&str, &Value)> {
+        self.file_form.as_ref().map(|(n, p)| (n.as_str(), p))
+    }
+}
+
+/// Reads a sketch file with no custom kinds registered.
+///
+/// ```
+/// let s = camber_sketch::file::from_json(r#"{"version": 1,
+///   "entities": [{"id": 3, "kind": "line", "from": [0, 0], "to": [1, 0]}]}"#)?;
+/// assert_eq!(s.entities().count(), 1);
+/// let bad = camber_sketch::file::from_json(r#"{"version": 1,
+///   "entities": [{"id": 0, "kind": "bspline", "degree": 2, "knots": [0, 0, 1, 1],
+///                 "control_points": [[0, 0], [1, 1], [2, 0]]}]}"#);
+/// assert!(bad.unwrap_err().to_string().starts_with("entity 0 (bspline): geometry:"));
+/// # Ok::<(), camber_sketch::file::FileError>(())
+/// ```
+///
+/// # Errors
+/// As [`from_json_with`].
+pub fn from_json(text: &str) -> std::result::Result<Sketch, FileError> {
+    from_json_with(text, &CustomRegistry::new())
+}
+
+/// Reads a sketch file; custom constraints are decoded through `registry`. Entities are added
+/// first, then constraints, each in file order under its own id.
+///
+/// # Errors
+/// [`FileError::Syntax`], [`FileError::Version`], [`FileError::Shape`] (with the JSON path),
+/// [`FileError::Entity`] / [`FileError::Constraint`] (with the id and the sketch's reason),
+/// [`FileError::UnregisteredCustom`], [`FileError::CustomParams`].
+pub fn from_json_with(
+    text: &str,
+    registry: &CustomRegistry,
+) -> std::result::Result<Sketch, FileError> {
+    let value: Value = serde_json::from_str(text).map_err(|e| FileError::Syntax {
+        message: if e.to_string().starts_with("number out of range") {
+            format!(
+                "non-finite number (outside the f64 range) at line {} column {}",
+                e.line(),
+                e.column()
+            )
+        } else {
+            e.to_string()
+        },
+    })?;
+    match value.get("version") {
+        Some(v) if v.as_u64() == Some(FORMAT_VERSION) => {}
+        Some(v) => {
+            return Err(FileError::Version {
+                found: v.to_string(),
+            })
+        }
+        None if value.is_object() => {
+            return Err(FileError::Version {
+                found: "(missing)".into(),
+            })
+        }
+        None => {}
+    }
+    let raw: RawSketch = serde_path_to_error::deserialize(value).map_err(|e| FileError::Shape {
+        path: e.path().to_string(),
+        message: e.inner().to_string(),
+    })?;
+    let mut sketch = Sketch::new();
+    for e in raw.entities {
+        let kind = e.shape.kind();
+        let entity = e.shape.into_entity().map_err(|source| FileError::Entity {
+            id: e.id,
+            kind,
+            source,
+        })?;
+        sketch
+            .add_entity_with_id(EntityId(e.id), entity)
+            .map_err(|source| FileError::Entity {
+                id: e.id,
+                kind,
+                source,
+            })?;
+    }
+    for c in raw.constraints {
+        let kind = c.body.kind().to_owned();
+        let constraint = c.body.into_constraint(c.id, registry)?;
+        sketch
+            .add_constraint_with_id(ConstraintId(c.id), constraint)
+            .map_err(|source| FileError::Constraint {
+                id: c.id,
+                kind,
+                source,
+            })?;
+    }
+    Ok(sketch)
+}
+
+/// Writes a sketch as file text (one entity or constraint per line, a final newline), entities
+/// and constraints in id order. Point weights ([`Sketch::set_weight`]) are not part of the format.
+///
+/// # Errors
+/// [`FileError::CustomNotSavable`] for a custom constraint without a file form.
+pub fn to_json(sketch: &Sketch) -> std::result::Result<String, FileError> {
+    let entities = sketch
+        .entities()
+        .map(|(id, e)| RawEntity {
+            id: id.0,
+            shape: RawShape::from_entity(e),
+        })
+        .collect();
+    let constraints = sketch
+        .constraints()
+        .map(|(id, c)| {
+            Ok(RawConstraint {
+                id: id.0,
+                body: RawBody::from_constraint(id, c)?,
+            })
+        })
+        .collect::<std::result::Result<_, FileError>>()?;
+    // One entity or constraint per line: diffs stay readable and large files compact.
+    let enc = |v: &dyn erased::Item| {
+        v.encode().map_err(|e| FileError::Syntax {
+            message: e.to_string(),
+        })
+    };
+    let entities: Vec<RawEntity> = entities;
+    let constraints: Vec<RawConstraint> = constraints;
+    let mut text = format!("{{\n  \"version\": {FORMAT_VERSION},\n  \"entities\": [");
+    for (i, e) in entities.iter().enumerate() {
+        text.push_str(if i == 0 { "\n    " } else { ",\n    " });
+        text.push_str(&enc(e)?);
+    }
+    text.push_str(if entities.is_empty() {
+        "],\n"
+    } else {
+        "\n  ],\n"
+    });
+    text.push_str("  \"constraints\": [");
+    for (i, c) in constraints.iter().enumerate() {
+        text.push_str(if i == 0 { "\n    " } else { ",\n    " });
+        text.push_str(&enc(c)?);
+    }
+    text.push_str(if constraints.is_empty() {
+        "]\n}\n"
+    } else {
+        "\n  ]\n}\n"
+    });
+    Ok(text)
+}
+
+/// Compact JSON of one file item (every value is a finite f64, a string or a map with string
+/// keys, so encoding cannot fail in practice; a failure is still reported, not unwrapped).
+mod erased {
+    pub(super) trait Item {
+        fn encode(&self) -> serde_json::Result<String>;
+    }
+    impl<T: serde::Serialize> Item for T {
+        fn encode(&self) -> serde_json::Result<String> {
+            serde_json::to_string(self)
+        }
+    }
+}
