@@ -1,5 +1,5 @@
-//! The standard workloads of `shared/benchmarks/WORKLOADS.md` that run on the linear path
-//! (W1, W3a, W4) and the blade section of the paper, built as sketches so that benchmarks,
+//! The standard workloads of `shared/benchmarks/WORKLOADS.md` (W1, W2 in both representations,
+//! W3 and its affine variant W3a, W4) and the blade section of the paper, built as sketches so that benchmarks,
 //! tests and tools share one definition.
 
 use camber_geom::BezierCurve2;
@@ -121,6 +121,118 @@ pub fn blade() -> Result<(Sketch, Blade)> {
     ))
 }
 
+/// The W3 joint Jₖ = (k, 0.5·sin(2πk/12)).
+fn sine_joint(k: usize) -> Point2<f64> {
+    let w = std::f64::consts::TAU / 12.0;
+    Point2::new(k as f64, 0.5 * (w * k as f64).sin())
+}
+
+/// The W3 unit tangent Tₖ along (1, 0.5·(2π/12)·cos(2πk/12)).
+fn sine_tangent(k: usize) -> Vector2<f64> {
+    let w = std::f64::consts::TAU / 12.0;
+    Vector2::new(1.0, 0.5 * w * (w * k as f64).cos()).normalize()
+}
+
+/// The W3 initial chain: `n` cubic segments with joints [`sine_joint`], inner control points
+/// Jᵢ + hᵢTᵢ and Jᵢ₊₁ − hᵢTᵢ₊₁, hᵢ = |Jᵢ₊₁ − Jᵢ|/3. Returns the sketch and the segments.
+fn sine_chain(n: usize) -> Result<(Sketch, Vec<EntityId>)> {
+    let mut s = Sketch::new();
+    let mut segs = Vec::with_capacity(n);
+    for i in 0..n {
+        let (a, b) = (sine_joint(i), sine_joint(i + 1));
+        let h = (b - a).norm() / 3.0;
+        segs.push(s.add_bezier(BezierCurve2::try_new(vec![
+            a,
+            a + h * sine_tangent(i),
+            b - h * sine_tangent(i + 1),
+            b,
+        ])?)?);
+    }
+    Ok((s, segs))
+}
+
+/// Fixes the chain's first point, moves its last point by (−0.3, 0.4) and fixes it there.
+fn pin_chain_ends(s: &mut Sketch, segs: &[EntityId]) -> Result<()> {
+    if let (Some(first), Some(last)) = (segs.first(), segs.last()) {
+        s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::Control(
+            *first, 0,
+        ))))?;
+        let end = PointRef::Control(*last, 3);
+        let moved = s.point(end)? + Vector2::new(-0.3, 0.4);
+        s.set_point(end, moved)?;
+        s.add_constraint(Constraint::Fixed(FixTarget::Point(end)))?;
+    }
+    Ok(())
+}
+
+/// W3: the sine chain of [`w3a_chain`] with the joint directions free: consecutive segments
+/// joined by [`Constraint::G1JoinFree`] (coincident, tangents parallel with the same sense),
+/// each segment's chord |P₃ − P₀| held at its initial length by [`Constraint::Distance`], the
+/// first point fixed and the last moved by (−0.3, 0.4) and fixed there. Nonlinear: 3(n − 1) +
+/// n rows over 8n unknowns less the pinned ends. Returns the sketch (dirty) and the segments.
+///
+/// ```
+/// let (s, segs) = camber_sketch::workloads::w3_chain(3)?;
+/// assert_eq!(segs.len(), 3);
+/// assert!(!camber_sketch::workloads::w3_valid(&s, &segs, 1e-6)); // the end was moved
+/// # Ok::<(), camber_sketch::Error>(())
+/// ```
+///
+/// # Errors
+/// None in practice.
+pub fn w3_chain(n: usize) -> Result<(Sketch, Vec<EntityId>)> {
+    let (mut s, segs) = sine_chain(n)?;
+    for pair in segs.windows(2) {
+        s.add_constraint(Constraint::G1JoinFree {
+            first: pair[0],
+            second: pair[1],
+        })?;
+    }
+    for &seg in &segs {
+        let chord = (s.point(PointRef::End(seg))? - s.point(PointRef::Start(seg))?).norm();
+        s.add_constraint(Constraint::Distance {
+            a: PointRef::Start(seg),
+            b: PointRef::End(seg),
+            distance: chord,
+        })?;
+    }
+    pin_chain_ends(&mut s, &segs)?;
+    Ok((s, segs))
+}
+
+/// The W3 validity check, independent of the solver: every joint coincident to `tol`, its
+/// tangents parallel (|sin| ≤ tol) with the same sense, every chord at its initial length
+/// (the W3 construction's |Jᵢ₊₁ − Jᵢ|) to `tol`, the first point at J₀ and the last at
+/// J_N + (−0.3, 0.4).
+pub fn w3_valid(s: &Sketch, segs: &[EntityId], tol: f64) -> bool {
+    let joint = sine_joint;
+    let cp = |seg: EntityId, i: usize| s.point(PointRef::Control(seg, i)).ok();
+    let n = segs.len();
+    let (Some(&first), Some(&last)) = (segs.first(), segs.last()) else {
+        return true;
+    };
+    let ends_ok = cp(first, 0).is_some_and(|p| (p - joint(0)).norm() <= tol)
+        && cp(last, 3).is_some_and(|p| (p - (joint(n) + Vector2::new(-0.3, 0.4))).norm() <= tol);
+    let chords_ok = segs.iter().enumerate().all(|(i, &seg)| {
+        let chord = (joint(i + 1) - joint(i)).norm();
+        matches!((cp(seg, 0), cp(seg, 3)), (Some(a), Some(b)) if ((b - a).norm() - chord).abs() <= tol)
+    });
+    let joints_ok = segs.windows(2).all(|pair| {
+        let (Some(a2), Some(a3), Some(b0), Some(b1)) = (
+            cp(pair[0], 2),
+            cp(pair[0], 3),
+            cp(pair[1], 0),
+            cp(pair[1], 1),
+        ) else {
+            return false;
+        };
+        let (ta, tb) = (a3 - a2, b1 - b0);
+        let sin = (ta.x * tb.y - ta.y * tb.x) / (ta.norm() * tb.norm());
+        (a3 - b0).norm() <= tol && sin.abs() <= tol && ta.dot(&tb) > 0.0
+    });
+    ends_ok && chords_ok && joints_ok
+}
+
 /// W3a: `n` cubic segments along y = 0.5·sin(2πx/12), each with its own four control points,
 /// consecutive segments joined G1 with the joint tangent fixed, the first point fixed and the
 /// last point moved by (−0.3, 0.4) and fixed there. Returns the sketch (dirty, not solved) and
@@ -129,36 +241,15 @@ pub fn blade() -> Result<(Sketch, Blade)> {
 /// # Errors
 /// None in practice.
 pub fn w3a_chain(n: usize) -> Result<(Sketch, Vec<EntityId>)> {
-    let w = std::f64::consts::TAU / 12.0;
-    let joint = |k: usize| Point2::new(k as f64, 0.5 * (w * k as f64).sin());
-    let tangent = |k: usize| Vector2::new(1.0, 0.5 * w * (w * k as f64).cos()).normalize();
-    let mut s = Sketch::new();
-    let mut segs = Vec::with_capacity(n);
-    for i in 0..n {
-        let (a, b) = (joint(i), joint(i + 1));
-        let h = (b - a).norm() / 3.0;
-        segs.push(s.add_bezier(BezierCurve2::try_new(vec![
-            a,
-            a + h * tangent(i),
-            b - h * tangent(i + 1),
-            b,
-        ])?)?);
-    }
+    let (mut s, segs) = sine_chain(n)?;
     for i in 1..n {
         s.add_constraint(Constraint::G1Join {
             first: segs[i - 1],
             second: segs[i],
-            direction: tangent(i),
+            direction: sine_tangent(i),
         })?;
     }
-    if let (Some(first), Some(last)) = (segs.first(), segs.last()) {
-        s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::Control(
-            *first, 0,
-        ))))?;
-        let end = PointRef::Control(*last, 3);
-        s.set_point(end, joint(n) + Vector2::new(-0.3, 0.4))?;
-        s.add_constraint(Constraint::Fixed(FixTarget::Point(end)))?;
-    }
+    pin_chain_ends(&mut s, &segs)?;
     Ok((s, segs))
 }
 
