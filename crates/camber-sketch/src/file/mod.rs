@@ -14,7 +14,7 @@
 //! }
 //! ```
 //!
-//! The file form is its own set of types (private here), separate from [`Constraint`]: the
+//! The file form is its own set of types (private here), separate from [`Constraint`](crate::Constraint): the
 //! file keeps snake-case tags and named fields whatever the Rust enum looks like, and a new
 //! constraint variant only needs one file variant and two match arms below.
 //!
