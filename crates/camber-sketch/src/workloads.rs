@@ -1,6 +1,7 @@
 //! The standard workloads of `shared/benchmarks/WORKLOADS.md` (W1, W2 in both representations,
-//! W3 and its affine variant W3a, W4) and the blade section of the paper, built as sketches so that benchmarks,
-//! tests and tools share one definition.
+//! W3 and its affine variant W3a, W4), the blade section of the paper and the two-curve sketch,
+//! built as sketches so that benchmarks, tests and tools share one definition, each with a
+//! validity check that reads the geometry and never the solver's status.
 
 use camber_geom::BezierCurve2;
 use nalgebra::{Point2, Vector2};
@@ -10,6 +11,9 @@ use crate::entity::Entity;
 use crate::errors::Result;
 use crate::ids::{EntityId, PointRef};
 use crate::sketch::Sketch;
+
+mod two_curves;
+pub use two_curves::{two_curves, two_curves_valid, TwoCurves, TWO_CURVES_CIRCLES};
 
 /// W1: the cubic P₀ = (0, 0), P₁ = 1.2·D, P₂ = (2.2, 0.9), P₃ = (3, 0) with D = (cos 30°,
 /// sin 30°); P₃ fixed; start tangent parallel to D with the same sense (in `form`). Returns the
@@ -270,18 +274,127 @@ pub fn w4(n: usize) -> Result<(Sketch, Vec<EntityId>)> {
             Point2::new(x + 2.0, 1.0),
             Point2::new(x + 3.0, 0.0),
         ])?)?;
-        let a = (40.0 + (i % 10) as f64).to_radians();
         s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::Start(c))))?;
         s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::End(c))))?;
         s.add_constraint(Constraint::StartTangent {
             curve: c,
-            direction: Vector2::new(a.cos(), a.sin()),
+            direction: w4_direction(i),
             sense: Sense::Agree,
             form: TangentForm::Row,
         })?;
         curves.push(c);
     }
     Ok((s, curves))
+}
+
+/// The start direction of the W4 curve number `i`: (cos a, sin a) with a = 40° + (i mod 10)°.
+fn w4_direction(i: usize) -> Vector2<f64> {
+    let a = (40.0 + (i % 10) as f64).to_radians();
+    Vector2::new(a.cos(), a.sin())
+}
+
+/// The W4 validity check, independent of the solver: curve number `i` still starts at (4i, 0)
+/// and ends at (4i + 3, 0) (to `tol`), and its first leg P₁ − P₀ is parallel to
+/// [`w4`]'s direction for it (|sin| ≤ `tol`) with the same sense.
+///
+/// ```
+/// let (mut s, curves) = camber_sketch::workloads::w4(3)?;
+/// assert!(!camber_sketch::workloads::w4_valid(&s, &curves, 1e-9));
+/// s.solve()?;
+/// assert!(camber_sketch::workloads::w4_valid(&s, &curves, 1e-9));
+/// # Ok::<(), camber_sketch::Error>(())
+/// ```
+pub fn w4_valid(s: &Sketch, curves: &[EntityId], tol: f64) -> bool {
+    curves.iter().enumerate().all(|(i, &c)| {
+        let cp = |k: usize| s.point(PointRef::Control(c, k)).ok();
+        let (Some(p0), Some(p1), Some(p3)) = (cp(0), cp(1), cp(3)) else {
+            return false;
+        };
+        let x = 4.0 * i as f64;
+        let leg = p1 - p0;
+        let d = w4_direction(i);
+        (p0 - Point2::new(x, 0.0)).norm() <= tol
+            && (p3 - Point2::new(x + 3.0, 0.0)).norm() <= tol
+            && cross(leg, d).abs() <= tol * leg.norm()
+            && leg.dot(&d) > 0.0
+    })
+}
+
+/// The z-component of the cross product of two plane vectors.
+fn cross(a: Vector2<f64>, b: Vector2<f64>) -> f64 {
+    a.x * b.y - a.y * b.x
+}
+
+/// The W1 validity check for one drag update, independent of the solver: the start leg
+/// P₁ − P₀ parallel to `d` (|sin| < 1e-7) with the same sense, P₃ where it was (`p3`, to
+/// 1e-12) and P₁ at the drag target (to 1e-9). `points` are P₀…P₃ after the update.
+pub fn w1_valid(
+    points: &[Point2<f64>; 4],
+    d: Vector2<f64>,
+    target: Point2<f64>,
+    p3: Point2<f64>,
+) -> bool {
+    let leg = points[1] - points[0];
+    let sin = cross(leg, d) / (leg.norm() * d.norm());
+    sin.abs() < 1e-7
+        && leg.dot(&d) > 0.0
+        && (points[3] - p3).norm() <= 1e-12
+        && (points[1] - target).norm() <= 1e-9
+}
+
+/// The least displacement of W1's free points P₀ and P₂ that meets the constraints after P₁
+/// is pinned at `target`, computed by hand: P₂ is not constrained and stays, and P₀ must lie on
+/// the line through the target along `d`, so it moves by its distance to that line,
+/// |cross(target − P₀, d)|/|d|. `before` are P₀…P₃ before the update.
+pub fn w1_min_norm_displacement(
+    before: &[Point2<f64>; 4],
+    d: Vector2<f64>,
+    target: Point2<f64>,
+) -> f64 {
+    cross(target - before[0], d).abs() / d.norm()
+}
+
+/// The W3a validity check, independent of the solver: every joint coincident to `tol`, both
+/// tangents there parallel (|sin| ≤ `tol`) to the joint's fixed W3 direction Tₖ and along it,
+/// the first point at J₀ and the last at J_N + (−0.3, 0.4).
+///
+/// ```
+/// use camber_sketch::{workloads, PointRef};
+/// let (mut s, segs) = workloads::w3a_chain(4)?;
+/// // Moving the last point breaks no joint: the start is already valid. Bend a joint.
+/// assert!(workloads::w3a_valid(&s, &segs, 1e-9));
+/// let p = s.point(PointRef::Control(segs[1], 1))?;
+/// s.set_point(PointRef::Control(segs[1], 1), p + nalgebra::Vector2::new(0.0, 0.1))?;
+/// assert!(!workloads::w3a_valid(&s, &segs, 1e-9));
+/// s.solve()?;
+/// assert!(camber_sketch::workloads::w3a_valid(&s, &segs, 1e-9));
+/// # Ok::<(), camber_sketch::Error>(())
+/// ```
+pub fn w3a_valid(s: &Sketch, segs: &[EntityId], tol: f64) -> bool {
+    let cp = |seg: EntityId, i: usize| s.point(PointRef::Control(seg, i)).ok();
+    let n = segs.len();
+    let (Some(&first), Some(&last)) = (segs.first(), segs.last()) else {
+        return true;
+    };
+    let along = |v: Vector2<f64>, t: Vector2<f64>| {
+        v.dot(&t) > 0.0 && cross(v, t).abs() <= tol * v.norm() * t.norm()
+    };
+    let ends_ok = cp(first, 0).is_some_and(|p| (p - sine_joint(0)).norm() <= tol)
+        && cp(last, 3)
+            .is_some_and(|p| (p - (sine_joint(n) + Vector2::new(-0.3, 0.4))).norm() <= tol);
+    let joints_ok = segs.windows(2).enumerate().all(|(i, pair)| {
+        let t = sine_tangent(i + 1);
+        let (Some(a2), Some(a3), Some(b0), Some(b1)) = (
+            cp(pair[0], 2),
+            cp(pair[0], 3),
+            cp(pair[1], 0),
+            cp(pair[1], 1),
+        ) else {
+            return false;
+        };
+        (a3 - b0).norm() <= tol && along(a3 - a2, t) && along(b1 - b0, t)
+    });
+    ends_ok && joints_ok
 }
 
 /// The three circles of W2 as (centre, radius): leading edge, thickness, trailing edge.
@@ -391,15 +504,7 @@ pub fn w2_perturbed(
     trials: usize,
     seed: u64,
 ) -> Result<Vec<Sketch>> {
-    let mut state = seed;
-    let mut noise = move || {
-        state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = state;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^= z >> 31;
-        (z >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-    };
+    let mut noise = uniform_noise(seed);
     let n = base.entity(w.curve)?.points().len();
     let mut out = Vec::with_capacity(trials);
     for _ in 0..trials {
@@ -412,6 +517,19 @@ pub fn w2_perturbed(
         out.push(s);
     }
     Ok(out)
+}
+
+/// A seeded splitmix64 generator of uniform numbers in [−1, 1).
+fn uniform_noise(seed: u64) -> impl FnMut() -> f64 {
+    let mut state = seed;
+    move || {
+        state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = state;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^= z >> 31;
+        (z >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+    }
 }
 
 /// W2's validity check at tolerance 1e-6: the curve's ends on the LE and TE circles with the
@@ -542,4 +660,47 @@ pub fn w2_2cubic_valid(s: &Sketch, curves: [EntityId; 2]) -> bool {
             nearest.distance - r >= -tol
         }
     })
+}
+
+/// W2 `2cubic`'s perturbed starts: `trials` copies of the solved sketch `base` with the seven
+/// points Q₀…Q₆ moved by uniform noise in [−δ, δ]² (a seeded splitmix64 generator); Q₃, held
+/// by both curves, moves as one point.
+///
+/// # Errors
+/// Errors of reading or moving the points (none for a W2 `2cubic` sketch).
+pub fn w2_2cubic_perturbed(
+    base: &Sketch,
+    curves: [EntityId; 2],
+    delta: f64,
+    trials: usize,
+    seed: u64,
+) -> Result<Vec<Sketch>> {
+    let mut noise = uniform_noise(seed);
+    // Q₀…Q₆ as the slots holding each: Q₃ is the end of the first curve and the start of the
+    // second.
+    let slots: [&[PointRef]; 7] = [
+        &[PointRef::Control(curves[0], 0)],
+        &[PointRef::Control(curves[0], 1)],
+        &[PointRef::Control(curves[0], 2)],
+        &[
+            PointRef::Control(curves[0], 3),
+            PointRef::Control(curves[1], 0),
+        ],
+        &[PointRef::Control(curves[1], 1)],
+        &[PointRef::Control(curves[1], 2)],
+        &[PointRef::Control(curves[1], 3)],
+    ];
+    let mut out = Vec::with_capacity(trials);
+    for _ in 0..trials {
+        let mut s = base.clone();
+        for refs in slots {
+            let shift = Vector2::new(delta * noise(), delta * noise());
+            for &r in refs {
+                let p = s.point(r)?;
+                s.set_point(r, p + shift)?;
+            }
+        }
+        out.push(s);
+    }
+    Ok(out)
 }
