@@ -17,6 +17,7 @@
 //! camber check SKETCH.json                              DOF, redundant and conflicting constraints
 //! camber render SKETCH.json -o PIC.svg [--combs]        draw a sketch with constraint glyphs
 //! camber demo [-o DIR]                                  solve the bundled blade section
+//! camber bench [--only W2,W3] [--quick] [--sizes N,…] [--json]   the standard workloads
 //! ```
 //!
 //! Every failure prints one line `error: <file>: <problem>` on stderr and exits with code 2;
@@ -31,6 +32,7 @@
 //! # Ok::<(), anyhow::Error>(())
 //! ```
 
+pub mod bench;
 pub mod commands;
 pub mod curve_file;
 pub mod draw;
@@ -40,7 +42,7 @@ pub mod svg;
 use anyhow::Result;
 use clap::{Parser, Subcommand};
 
-use commands::{check, demo, eval, op, render, render_curve, solve, surface};
+use commands::{bench as bench_cmd, check, demo, eval, op, render, render_curve, solve, surface};
 
 /// The camber command line: curve files, surface deformation and SVG pictures.
 #[derive(Debug, Parser)]
@@ -80,6 +82,8 @@ pub enum Command {
     Render(render::RenderArgs),
     /// Solve the bundled blade section, write blade_section.svg, print the report.
     Demo(demo::DemoArgs),
+    /// Run the standard workloads W1–W4: median, p95 and valid counts per case.
+    Bench(bench_cmd::BenchArgs),
 }
 
 /// Which operation works on which curve type, shown under `camber op --help`.
@@ -101,6 +105,7 @@ pub fn run(cli: &Cli) -> Result<()> {
         Command::Check(a) => check::run(a),
         Command::Render(a) => render::run(a),
         Command::Demo(a) => demo::run(a),
+        Command::Bench(a) => bench_cmd::run(a),
     }
 }
 

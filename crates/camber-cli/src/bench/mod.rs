@@ -1,0 +1,347 @@
+//! The standard workloads of `shared/benchmarks/WORKLOADS.md`, run and measured for
+//! `camber bench`: what to run ([`Plan`]), one result row per case ([`Row`]), the statistics
+//! (median and p95 by nearest rank) and the plain-text table.
+//!
+//! The sketches come from [`camber_sketch::workloads`], and so do the validity checks: every
+//! result is judged by reading the solved geometry, never by the solver's status, so a solve
+//! that reports success on a wrong answer counts as invalid, and a failed solve (which leaves
+//! the sketch as it was) counts as invalid unless its start was already valid.
+//!
+//! ```
+//! use camber_cli::bench::{run, Plan, Workload};
+//! let plan = Plan::quick().with_only(&[Workload::W4]);
+//! let rows = run(&plan, &indicatif::ProgressBar::hidden())?;
+//! assert_eq!(rows.len(), 1);
+//! assert_eq!(rows[0].valid, rows[0].samples); // every whole-sketch solve is valid
+//! # Ok::<(), anyhow::Error>(())
+//! ```
+
+mod runners;
+
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+use std::time::Duration;
+
+use anyhow::Result;
+use indicatif::ProgressBar;
+use serde::Serialize;
+
+/// A standard workload.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, clap::ValueEnum, Serialize)]
+#[value(rename_all = "verbatim")]
+pub enum Workload {
+    /// W1: drag the second control point of a cubic with a directional start tangent.
+    #[value(alias = "w1")]
+    W1,
+    /// W2: a curve tangent to three circles, as one B-spline and as two cubics.
+    #[value(alias = "w2")]
+    W2,
+    /// W3: the G1 chain along a sine wave with free joint directions and fixed chords.
+    #[value(alias = "w3")]
+    W3,
+    /// W3a: the same chain with the joint directions fixed (affine).
+    #[value(alias = "w3a", alias = "W3A")]
+    W3a,
+    /// W4: many independent small components in one sketch.
+    #[value(alias = "w4")]
+    W4,
+}
+
+impl Workload {
+    /// Every workload, in table order.
+    pub const ALL: [Workload; 5] = [
+        Workload::W1,
+        Workload::W2,
+        Workload::W3,
+        Workload::W3a,
+        Workload::W4,
+    ];
+
+    /// "W1", "W2", "W3", "W3a", "W4".
+    pub fn name(self) -> &'static str {
+        match self {
+            Workload::W1 => "W1",
+            Workload::W2 => "W2",
+            Workload::W3 => "W3",
+            Workload::W3a => "W3a",
+            Workload::W4 => "W4",
+        }
+    }
+}
+
+/// What `camber bench` runs: the workloads and their sizes and repetitions. [`Plan::standard`]
+/// is WORKLOADS.md as written; [`Plan::quick`] is a smaller run for tests and smoke checks
+/// (the same procedures on fewer trials and smaller sizes, labelled "quick" in the output).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Plan {
+    /// "standard" or "quick".
+    pub mode: &'static str,
+    /// The workloads to run, in table order.
+    pub only: Vec<Workload>,
+    /// W1: runs of the 200 drag targets.
+    pub w1_runs: usize,
+    /// W2: perturbed starts per representation and δ.
+    pub w2_trials: usize,
+    /// W3 and W3a: chain lengths N.
+    pub chain_sizes: Vec<usize>,
+    /// W4: independent components in the sketch.
+    pub w4_components: usize,
+    /// W4: solves of the whole sketch.
+    pub w4_repeats: usize,
+}
+
+impl Plan {
+    /// WORKLOADS.md as written: W1 200 targets × 5 runs, W2 100 trials per representation and
+    /// δ, W3 and W3a for N = 10, 100, 1,000, 10,000, W4 with 10,000 components.
+    pub fn standard() -> Self {
+        Plan {
+            mode: "standard",
+            only: Workload::ALL.to_vec(),
+            w1_runs: 5,
+            w2_trials: 100,
+            chain_sizes: vec![10, 100, 1_000, 10_000],
+            w4_components: 10_000,
+            w4_repeats: 5,
+        }
+    }
+
+    /// A small run: W1 200 targets × 1 run, W2 10 trials, chains N = 10 and 100, W4 with 100
+    /// components.
+    pub fn quick() -> Self {
+        Plan {
+            mode: "quick",
+            only: Workload::ALL.to_vec(),
+            w1_runs: 1,
+            w2_trials: 10,
+            chain_sizes: vec![10, 100],
+            w4_components: 100,
+            w4_repeats: 2,
+        }
+    }
+
+    /// Keeps only `only` (all when empty), in table order.
+    pub fn with_only(mut self, only: &[Workload]) -> Self {
+        if !only.is_empty() {
+            self.only = Workload::ALL
+                .into_iter()
+                .filter(|w| only.contains(w))
+                .collect();
+        }
+        self
+    }
+
+    /// Replaces the W3/W3a chain lengths.
+    pub fn with_chain_sizes(mut self, sizes: &[usize]) -> Self {
+        if !sizes.is_empty() {
+            self.chain_sizes = sizes.to_vec();
+        }
+        self
+    }
+
+    /// Solves timed for a chain of `n` segments: 20 up to N = 100, 5 up to 1,000, 3 above
+    /// (2 in the quick mode).
+    pub fn chain_repeats(&self, n: usize) -> usize {
+        if self.mode == "quick" {
+            2
+        } else if n <= 100 {
+            20
+        } else if n <= 1_000 {
+            5
+        } else {
+            3
+        }
+    }
+
+    /// The number of timed solves or updates, for the progress bar.
+    pub fn steps(&self) -> u64 {
+        let mut n = 0;
+        for w in &self.only {
+            n += match w {
+                Workload::W1 => 2 * self.w1_runs * 200,
+                Workload::W2 => 4 * self.w2_trials,
+                Workload::W3 | Workload::W3a => self
+                    .chain_sizes
+                    .iter()
+                    .map(|&s| self.chain_repeats(s))
+                    .sum(),
+                Workload::W4 => self.w4_repeats,
+            };
+        }
+        n as u64
+    }
+}
+
+/// "moved / min-norm" over W1's updates: the displacement of the free points divided by the
+/// least displacement that meets the constraints (1.00 is minimum-norm behaviour).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Ratio {
+    /// The median over the updates.
+    pub median: f64,
+    /// The largest.
+    pub max: f64,
+}
+
+/// One measured case: a workload at one representation, perturbation or size.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Row {
+    /// The workload.
+    pub workload: Workload,
+    /// The case within it ("row form", "bspline7 δ=0.05", "N=1000", …).
+    pub case: String,
+    /// The problem size where it varies (W3/W3a segments, W4 components).
+    pub size: Option<usize>,
+    /// Timed solves or drag updates.
+    pub samples: usize,
+    /// Median time, seconds.
+    pub median_s: f64,
+    /// 95th percentile time (nearest rank), seconds.
+    pub p95_s: f64,
+    /// Samples whose result passed the workload's own validity check.
+    pub valid: usize,
+    /// Samples whose solve or update returned an error.
+    pub failed: usize,
+    /// Which solver finished each component, counted over the samples.
+    pub solvers: BTreeMap<String, usize>,
+    /// W3/W3a: the growth exponent log(t₂/t₁)/log(N₂/N₁) of the median from the previous size.
+    pub growth: Option<f64>,
+    /// W1: moved / min-norm.
+    pub moved_over_min_norm: Option<Ratio>,
+}
+
+/// The q-quantile (0 < q ≤ 1) of `sorted` by nearest rank: the ⌈q·n⌉-th smallest.
+///
+/// ```
+/// let v = [1.0, 2.0, 3.0, 4.0];
+/// assert_eq!(camber_cli::bench::quantile(&v, 0.5), 2.0);
+/// assert_eq!(camber_cli::bench::quantile(&v, 0.95), 4.0);
+/// ```
+pub fn quantile(sorted: &[f64], q: f64) -> f64 {
+    if sorted.is_empty() {
+        return f64::NAN;
+    }
+    let rank = (q * sorted.len() as f64).ceil() as usize;
+    sorted[rank.clamp(1, sorted.len()) - 1]
+}
+
+/// Sorted seconds of `times`.
+fn seconds(times: &[Duration]) -> Vec<f64> {
+    let mut s: Vec<f64> = times.iter().map(Duration::as_secs_f64).collect();
+    s.sort_by(f64::total_cmp);
+    s
+}
+
+/// A row with the times' median and p95 filled in and no extras.
+fn row(workload: Workload, case: String, times: &[Duration], valid: usize) -> Row {
+    let s = seconds(times);
+    Row {
+        workload,
+        case,
+        size: None,
+        samples: times.len(),
+        median_s: quantile(&s, 0.5),
+        p95_s: quantile(&s, 0.95),
+        valid,
+        failed: 0,
+        solvers: BTreeMap::new(),
+        growth: None,
+        moved_over_min_norm: None,
+    }
+}
+
+/// Runs the plan's workloads in table order, ticking `bar` once per timed sample.
+///
+/// # Errors
+/// A workload sketch that cannot be built, or a W2 rough start that does not solve (the base
+/// every trial starts from).
+pub fn run(plan: &Plan, bar: &ProgressBar) -> Result<Vec<Row>> {
+    let mut rows = Vec::new();
+    for w in &plan.only {
+        match w {
+            Workload::W1 => rows.extend(runners::w1(plan, bar)?),
+            Workload::W2 => rows.extend(runners::w2(plan, bar)?),
+            Workload::W3 => rows.extend(runners::chains(plan, false, bar)?),
+            Workload::W3a => rows.extend(runners::chains(plan, true, bar)?),
+            Workload::W4 => rows.push(runners::w4(plan, bar)?),
+        }
+    }
+    Ok(rows)
+}
+
+/// A duration in seconds as "12.3 µs", "4.56 ms" or "1.23 s".
+///
+/// ```
+/// assert_eq!(camber_cli::bench::human(2.5e-6), "2.5 µs");
+/// assert_eq!(camber_cli::bench::human(0.0123), "12.30 ms");
+/// assert_eq!(camber_cli::bench::human(4.0), "4.00 s");
+/// ```
+pub fn human(s: f64) -> String {
+    if !s.is_finite() {
+        "-".to_owned()
+    } else if s < 1e-3 {
+        format!("{:.1} µs", s * 1e6)
+    } else if s < 1.0 {
+        format!("{:.2} ms", s * 1e3)
+    } else {
+        format!("{s:.2} s")
+    }
+}
+
+/// The notes column: solver counts, failures, growth, the W1 ratio.
+fn notes(r: &Row) -> String {
+    let mut parts = Vec::new();
+    if let Some(ratio) = r.moved_over_min_norm {
+        parts.push(format!(
+            "moved/min-norm {:.3} (max {:.3})",
+            ratio.median, ratio.max
+        ));
+    }
+    if let Some(g) = r.growth {
+        parts.push(format!("growth {g:.2}"));
+    }
+    if !r.solvers.is_empty() {
+        let list: Vec<String> = r.solvers.iter().map(|(k, n)| format!("{k} {n}")).collect();
+        parts.push(format!("solver: {}", list.join(", ")));
+    }
+    if r.failed > 0 {
+        parts.push(format!("{} failed", r.failed));
+    }
+    parts.join("; ")
+}
+
+/// The plain-text table: one line per row with median, p95, valid count and notes.
+pub fn table(plan: &Plan, rows: &[Row]) -> String {
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "camber bench ({} plan; times per solve or drag update)",
+        plan.mode
+    );
+    let _ = writeln!(
+        out,
+        "{:<5} {:<22} {:>7} {:>11} {:>11} {:>11}  notes",
+        "load", "case", "samples", "median", "p95", "valid"
+    );
+    for r in rows {
+        let _ = writeln!(
+            out,
+            "{:<5} {:<22} {:>7} {:>11} {:>11} {:>11}  {}",
+            r.workload.name(),
+            r.case,
+            r.samples,
+            human(r.median_s),
+            human(r.p95_s),
+            format!("{}/{}", r.valid, r.samples),
+            notes(r)
+        );
+    }
+    out.trim_end().to_owned()
+}
+
+/// The JSON document of `camber bench --json`: the plan and the rows.
+#[derive(Debug, Serialize)]
+pub struct Report<'a> {
+    /// What was run.
+    pub plan: &'a Plan,
+    /// One per case.
+    pub rows: &'a [Row],
+}

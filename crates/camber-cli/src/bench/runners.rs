@@ -1,0 +1,212 @@
+//! One function per workload: build the sketch (untimed), time each solve or drag update on
+//! its own, judge each result with the workload's validity check.
+
+use std::collections::BTreeMap;
+use std::time::{Duration, Instant};
+
+use anyhow::{anyhow, Context, Result};
+use camber_sketch::workloads as wl;
+use camber_sketch::{PointRef, Sketch, SketchReport, TangentForm};
+use indicatif::ProgressBar;
+use nalgebra::Point2;
+
+use super::{quantile, row, Plan, Ratio, Row, Workload};
+
+/// Tolerance of the W2, W3, W3a and W4 validity checks (WORKLOADS.md).
+const TOL: f64 = 1e-6;
+
+/// Adds one count per solved component to `solvers`.
+fn count_solvers(solvers: &mut BTreeMap<String, usize>, report: &SketchReport) {
+    for c in &report.components {
+        *solvers.entry(format!("{:?}", c.report.solver)).or_default() += 1;
+    }
+}
+
+/// W1 in both tangent forms: 200 targets on the circle of radius 0.2 through P₁, each update
+/// timed, repeated `plan.w1_runs` times from the start; moved / min-norm per update.
+pub(super) fn w1(plan: &Plan, bar: &ProgressBar) -> Result<Vec<Row>> {
+    let mut rows = Vec::new();
+    for (name, form) in [
+        ("drag, row form", TangentForm::Row),
+        ("drag, elimination", TangentForm::Elimination),
+    ] {
+        bar.set_message(format!("W1 {name}"));
+        let (s, c, d) = wl::w1(form)?;
+        let p1 = PointRef::Control(c, 1);
+        let targets = wl::w1_targets(s.point(p1)?);
+        let p3 = s.point(PointRef::Control(c, 3))?;
+        let (mut times, mut ratios, mut valid, mut failed) = (Vec::new(), Vec::new(), 0, 0);
+        for _ in 0..plan.w1_runs {
+            let mut session = s.drag(p1)?;
+            let points = |session: &camber_sketch::DragSession| -> Result<[Point2<f64>; 4]> {
+                let mut out = [Point2::origin(); 4];
+                for (k, p) in out.iter_mut().enumerate() {
+                    *p = session.point(PointRef::Control(c, k))?;
+                }
+                Ok(out)
+            };
+            let mut before = points(&session)?;
+            for &target in &targets {
+                let t0 = Instant::now();
+                let outcome = session.update(target);
+                times.push(t0.elapsed());
+                bar.inc(1);
+                failed += usize::from(outcome.is_err());
+                let after = points(&session)?;
+                if wl::w1_valid(&after, d, target, p3) {
+                    valid += 1;
+                }
+                let least = wl::w1_min_norm_displacement(&before, d, target);
+                if least > 1e-12 {
+                    let moved = ((after[0] - before[0]).norm_squared()
+                        + (after[2] - before[2]).norm_squared())
+                    .sqrt();
+                    ratios.push(moved / least);
+                }
+                before = after;
+            }
+        }
+        ratios.sort_by(f64::total_cmp);
+        let mut r = row(Workload::W1, name.to_owned(), &times, valid);
+        r.failed = failed;
+        r.moved_over_min_norm = Some(Ratio {
+            median: quantile(&ratios, 0.5),
+            max: ratios.last().copied().unwrap_or(f64::NAN),
+        });
+        rows.push(r);
+    }
+    Ok(rows)
+}
+
+/// Times one solve of each start, judging each result with `valid`.
+fn trials(
+    case: String,
+    starts: Vec<Sketch>,
+    valid: impl Fn(&Sketch) -> bool,
+    bar: &ProgressBar,
+) -> Row {
+    let (mut times, mut ok, mut failed) = (Vec::new(), 0, 0);
+    let mut solvers = BTreeMap::new();
+    for mut s in starts {
+        let t0 = Instant::now();
+        let outcome = s.solve();
+        times.push(t0.elapsed());
+        bar.inc(1);
+        match outcome {
+            Ok(report) => count_solvers(&mut solvers, &report),
+            Err(_) => failed += 1,
+        }
+        ok += usize::from(valid(&s));
+    }
+    let mut r = row(Workload::W2, case, &times, ok);
+    r.failed = failed;
+    r.solvers = solvers;
+    r
+}
+
+/// The perturbation sizes of W2 with their seeds.
+const W2_DELTAS: [(f64, u64); 2] = [(0.01, 1), (0.05, 2)];
+
+/// W2 in both representations: the rough start solved once (untimed) as the base, then
+/// `plan.w2_trials` seeded perturbed starts per δ, one timed solve each.
+pub(super) fn w2(plan: &Plan, bar: &ProgressBar) -> Result<Vec<Row>> {
+    let mut rows = Vec::new();
+    bar.set_message("W2 bspline7");
+    let (mut base, w) = wl::w2_bspline7()?;
+    base.solve()
+        .map_err(|e| anyhow!("{e}"))
+        .context("W2 bspline7: the rough start does not solve")?;
+    for (delta, seed) in W2_DELTAS {
+        let starts = wl::w2_perturbed(&base, &w, delta, plan.w2_trials, seed)?;
+        let case = format!("bspline7 δ={delta}");
+        rows.push(trials(case, starts, |s| wl::w2_valid(s, &w), bar));
+    }
+    bar.set_message("W2 2cubic");
+    let (mut base, curves, _) = wl::w2_2cubic()?;
+    base.solve()
+        .map_err(|e| anyhow!("{e}"))
+        .context("W2 2cubic: the rough start does not solve")?;
+    for (delta, seed) in W2_DELTAS {
+        let starts = wl::w2_2cubic_perturbed(&base, curves, delta, plan.w2_trials, seed)?;
+        let case = format!("2cubic δ={delta}");
+        rows.push(trials(
+            case,
+            starts,
+            |s| wl::w2_2cubic_valid(s, curves),
+            bar,
+        ));
+    }
+    Ok(rows)
+}
+
+/// W3 (`affine` false) or W3a (true) for every chain size: one full solve timed per repeat,
+/// each from the unsolved chain, with the growth exponent of the median between sizes.
+pub(super) fn chains(plan: &Plan, affine: bool, bar: &ProgressBar) -> Result<Vec<Row>> {
+    let workload = if affine { Workload::W3a } else { Workload::W3 };
+    let mut rows: Vec<Row> = Vec::new();
+    for &n in &plan.chain_sizes {
+        bar.set_message(format!("{} N={n}", workload.name()));
+        let (chain, segs) = if affine {
+            wl::w3a_chain(n)?
+        } else {
+            wl::w3_chain(n)?
+        };
+        let (mut times, mut valid, mut failed) = (Vec::<Duration>::new(), 0, 0);
+        let mut solvers = BTreeMap::new();
+        for _ in 0..plan.chain_repeats(n) {
+            let mut s = chain.clone();
+            let t0 = Instant::now();
+            let outcome = s.solve();
+            times.push(t0.elapsed());
+            bar.inc(1);
+            match outcome {
+                Ok(report) => count_solvers(&mut solvers, &report),
+                Err(_) => failed += 1,
+            }
+            let ok = if affine {
+                wl::w3a_valid(&s, &segs, TOL)
+            } else {
+                wl::w3_valid(&s, &segs, TOL)
+            };
+            valid += usize::from(ok);
+        }
+        let mut r = row(workload, format!("N={n}"), &times, valid);
+        r.size = Some(n);
+        r.failed = failed;
+        r.solvers = solvers;
+        if let Some(prev) = rows.last() {
+            if let Some(m) = prev.size {
+                r.growth = Some((r.median_s / prev.median_s).ln() / (n as f64 / m as f64).ln());
+            }
+        }
+        rows.push(r);
+    }
+    Ok(rows)
+}
+
+/// W4: `plan.w4_components` independent cubics in one sketch, the whole sketch solved
+/// `plan.w4_repeats` times from the unsolved state.
+pub(super) fn w4(plan: &Plan, bar: &ProgressBar) -> Result<Row> {
+    let n = plan.w4_components;
+    bar.set_message(format!("W4 {n} components"));
+    let (sketch, curves) = wl::w4(n)?;
+    let (mut times, mut valid, mut failed) = (Vec::new(), 0, 0);
+    let mut solvers = BTreeMap::new();
+    for _ in 0..plan.w4_repeats {
+        let mut s = sketch.clone();
+        let t0 = Instant::now();
+        let outcome = s.solve();
+        times.push(t0.elapsed());
+        bar.inc(1);
+        match outcome {
+            Ok(report) => count_solvers(&mut solvers, &report),
+            Err(_) => failed += 1,
+        }
+        valid += usize::from(wl::w4_valid(&s, &curves, TOL));
+    }
+    let mut r = row(Workload::W4, format!("{n} components"), &times, valid);
+    r.size = Some(n);
+    r.failed = failed;
+    r.solvers = solvers;
+    Ok(r)
+}

@@ -1,0 +1,68 @@
+//! `camber bench`: run the standard workloads W1–W4 and print medians, p95 and valid counts
+//! as a table, or as JSON with `--json`. See [`crate::bench`] for what is measured.
+
+use std::io::IsTerminal as _;
+use std::time::Duration;
+
+use anyhow::{Context, Result};
+use clap::Args;
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+
+use crate::bench::{self, Plan, Report, Workload};
+
+/// Arguments of `camber bench`.
+#[derive(Debug, Args)]
+pub struct BenchArgs {
+    /// Run only these workloads (repeat the flag or give a comma list: `--only W2,W3a`).
+    #[arg(long, value_enum, value_delimiter = ',', value_name = "W")]
+    pub only: Vec<Workload>,
+    /// A small run (fewer trials and sizes; labelled "quick"), for smoke tests.
+    #[arg(long)]
+    pub quick: bool,
+    /// Chain lengths for W3 and W3a instead of 10,100,1000,10000.
+    #[arg(long, value_delimiter = ',', value_name = "N")]
+    pub sizes: Vec<usize>,
+    /// Print JSON (the plan and one object per case) instead of the table.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// Runs the chosen workloads and prints the table or the JSON. The progress bar goes to
+/// stderr, and only when stderr is a terminal and the output is not JSON.
+pub fn run(args: &BenchArgs) -> Result<()> {
+    if let Some(0) = args.sizes.iter().copied().min() {
+        anyhow::bail!("--sizes: a chain needs at least one segment");
+    }
+    let plan = if args.quick {
+        Plan::quick()
+    } else {
+        Plan::standard()
+    }
+    .with_only(&args.only)
+    .with_chain_sizes(&args.sizes);
+    let bar = if args.json || !std::io::stderr().is_terminal() {
+        ProgressBar::hidden()
+    } else {
+        let bar = ProgressBar::with_draw_target(Some(plan.steps()), ProgressDrawTarget::stderr());
+        if let Ok(style) =
+            ProgressStyle::with_template("{bar:30} {pos}/{len} solves, {elapsed} {msg}")
+        {
+            bar.set_style(style);
+        }
+        bar.enable_steady_tick(Duration::from_millis(200));
+        bar
+    };
+    let rows = bench::run(&plan, &bar);
+    bar.finish_and_clear();
+    let rows = rows?;
+    let text = if args.json {
+        serde_json::to_string_pretty(&Report {
+            plan: &plan,
+            rows: &rows,
+        })
+        .context("cannot write the report as JSON")?
+    } else {
+        bench::table(&plan, &rows)
+    };
+    crate::print_stdout(&text)
+}
