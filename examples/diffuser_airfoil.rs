@@ -1,7 +1,8 @@
 //! The diffuser airfoil: a clamped cubic B-spline with seven control points held tangent to a
 //! leading-edge circle, a thickness circle (at a free contact parameter) and a trailing-edge
 //! circle, solved from a rough start and then dragged. Prints which solver ran and why, the
-//! contact parameter, and the clearance to each circle.
+//! contact parameter, and the clearance to each circle; exits non-zero when the curve crosses
+//! a circle or leaves the thickness circle.
 //!
 //! Run with `cargo run --example diffuser_airfoil`.
 
@@ -98,12 +99,15 @@ fn print_clearances(
     };
     for ((centre, r), name) in CIRCLES.iter().zip(["LE", "TH", "TE"]) {
         let nearest = closest_point(c, &Point2::new(centre[0], centre[1]))?;
+        let clearance = nearest.distance - r;
         println!(
-            "  {name}: clearance {:+.2e} at ({:.4}, {:.4})",
-            nearest.distance - r,
-            nearest.point.x,
-            nearest.point.y
+            "  {name}: clearance {clearance:+.2e} at ({:.4}, {:.4})",
+            nearest.point.x, nearest.point.y
         );
+        // The curve touches TH and never comes inside any circle.
+        if clearance < -1e-6 || (name == "TH" && clearance > 1e-6) {
+            return Err(format!("the curve misses or crosses the {name} circle").into());
+        }
     }
     Ok(())
 }

@@ -47,7 +47,10 @@ fn w1_and_w4_quick_json() {
     assert_eq!(v["plan"]["mode"], "quick");
     let rows = rows(&v);
     // Table order whatever the order of --only: W1 (two forms), then W4.
-    let names: Vec<&str> = rows.iter().map(|r| r["workload"].as_str().unwrap()).collect();
+    let names: Vec<&str> = rows
+        .iter()
+        .map(|r| r["workload"].as_str().unwrap())
+        .collect();
     assert_eq!(names, ["W1", "W1", "W4"]);
     for r in rows {
         let (median, p95) = (f(r, "median_s"), f(r, "p95_s"));

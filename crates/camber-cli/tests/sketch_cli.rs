@@ -300,3 +300,50 @@ fn render_draws_points_lines_circles_and_their_glyphs() {
     let scale = 400.0 / 3.5; // the larger side of the box is 3.5 (x from 0 to 3.5)
     assert!(vb[0] + vb[2] > 3.5 * scale);
 }
+
+#[test]
+fn every_bundled_sketch_solves_and_draws_from_the_command_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let curve = camber_cli::commands::render::CURVE;
+    // (file, curves drawn as polylines, lines, circles)
+    let expected = [
+        ("blade_section.json", 4, 0, 0),
+        ("diffuser.json", 1, 0, 3),
+        ("two_curves.json", 2, 2, 2),
+        ("w3a_chain_1000.json", 1000, 0, 0),
+    ];
+    for (name, curves, lines, circles) in expected {
+        let out = dir.path().join(name);
+        let pic = dir.path().join(format!("{name}.svg"));
+        camber()
+            .arg("solve")
+            .arg(sketch(name))
+            .arg("-o")
+            .arg(&out)
+            .arg("--svg")
+            .arg(&pic)
+            .assert()
+            .success()
+            .stdout(predicate::str::contains("component 1"))
+            .stdout(predicate::str::contains("wrote"));
+        // The solved file loads, and solving it again leaves nothing to move.
+        let mut solved =
+            camber_sketch::file::from_json(&std::fs::read_to_string(&out).unwrap()).unwrap();
+        for c in solved.solve_all().unwrap().components {
+            for r in &c.report.residuals {
+                assert!(r.max_abs < 1e-9, "{name}: {r:?}");
+            }
+        }
+        let text = std::fs::read_to_string(&pic).unwrap();
+        let doc = roxmltree::Document::parse(&text).unwrap();
+        let vb = view_box(&doc);
+        assert!(
+            vb.len() == 4 && vb[2] > 0.0 && vb[3] > 0.0,
+            "{name}: {vb:?}"
+        );
+        assert_eq!(count(&doc, "polyline", "stroke", curve), curves, "{name}");
+        assert_eq!(count(&doc, "line", "stroke", curve), lines, "{name}");
+        assert_eq!(count(&doc, "circle", "stroke", curve), circles, "{name}");
+        assert_eq!(count(&doc, "line", "stroke", CONFLICT), 0, "{name}");
+    }
+}

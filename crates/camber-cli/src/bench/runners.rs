@@ -7,6 +7,7 @@ use std::time::{Duration, Instant};
 use anyhow::{anyhow, Context, Result};
 use camber_sketch::workloads as wl;
 use camber_sketch::{PointRef, Sketch, SketchReport, TangentForm};
+use camber_solve::SolverKind;
 use indicatif::ProgressBar;
 use nalgebra::Point2;
 
@@ -18,7 +19,12 @@ const TOL: f64 = 1e-6;
 /// Adds one count per solved component to `solvers`.
 fn count_solvers(solvers: &mut BTreeMap<String, usize>, report: &SketchReport) {
     for c in &report.components {
-        *solvers.entry(format!("{:?}", c.report.solver)).or_default() += 1;
+        let name = match c.report.solver {
+            // Nothing ran: the component was already satisfied.
+            SolverKind::None => "none needed".to_owned(),
+            other => format!("{other:?}"),
+        };
+        *solvers.entry(name).or_default() += 1;
     }
 }
 
