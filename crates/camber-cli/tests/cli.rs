@@ -510,6 +510,13 @@ fn bad_curve_files_fail_with_one_plain_line() {
                 "-o".into(),
                 dir.path().join("p.svg").display().to_string(),
             ],
+            vec![
+                "op".to_owned(),
+                path.display().to_string(),
+                "reverse".into(),
+                "-o".into(),
+                dir.path().join("r.json").display().to_string(),
+            ],
         ] {
             let err = failure(camber().args(&args));
             assert!(err.contains(name) && err.contains(message), "{err}");
