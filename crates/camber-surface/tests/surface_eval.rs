@@ -157,3 +157,18 @@ fn json_round_trip_and_validation() {
     let short = text.replacen("\"degree_u\":2", "\"degree_u\":3", 1);
     assert!(serde_json::from_str::<NurbsSurface<f64>>(&short).is_err());
 }
+
+#[test]
+fn an_absurd_degree_in_a_file_is_an_error_not_an_overflow() {
+    let s = sample_surface::<f64>().unwrap();
+    let text = serde_json::to_string(&s).unwrap();
+    for (field, value) in [("degree_u", 2), ("degree_v", 3)] {
+        let huge = text.replacen(
+            &format!("\"{field}\":{value}"),
+            &format!("\"{field}\":{}", usize::MAX),
+            1,
+        );
+        assert_ne!(huge, text);
+        assert!(serde_json::from_str::<NurbsSurface<f64>>(&huge).is_err());
+    }
+}
