@@ -338,8 +338,13 @@ impl<T: Scalar> ControlNet<T> {
     /// result has degree p + times and every distinct knot's multiplicity grows by `times`.
     /// An interior knot of multiplicity above p (a break in the curve) is handled by elevating
     /// the pieces on either side and joining them with multiplicity p + times + 1.
+    ///
+    /// Fails with [`Error::DegreeTooHigh`] when p + times exceeds
+    /// [`MAX_DEGREE`](crate::knots::MAX_DEGREE) (an untrusted count cannot overflow or exhaust
+    /// memory).
     pub fn elevate_degree(&self, times: usize) -> Result<Self> {
         self.check()?;
+        crate::knots::check_degree(self.degree.saturating_add(times))?;
         if times == 0 {
             return Ok(self.clone());
         }

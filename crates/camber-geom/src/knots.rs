@@ -10,6 +10,12 @@ use crate::curve::check_interval;
 use crate::errors::{Error, Result};
 use crate::scalar::{cst, from_usize, re, Scalar};
 
+/// The largest degree a B-spline, NURBS curve or surface may have (given or reached by degree
+/// elevation). Far above any design degree (CAD works below 30); it exists so that a file
+/// saying `"degree": 1000000` is refused with [`Error::DegreeTooHigh`] instead of asking for
+/// (p + 1)² scratch values per evaluation.
+pub const MAX_DEGREE: usize = 256;
+
 /// A non-decreasing sequence of finite knots.
 ///
 /// ```
@@ -155,7 +161,7 @@ impl<T: Scalar> KnotVector<T> {
     }
 
     /// Checks that this knot vector fits `control_points` control points of `degree`:
-    /// at least degree + 1 control points, knot count = control points + degree + 1, and a
+    /// a degree of at most [`MAX_DEGREE`], at least degree + 1 control points, knot count = control points + degree + 1, and a
     /// domain of positive length.
     pub fn check_for(&self, degree: usize, control_points: usize) -> Result<()> {
         check_enough_points(degree, control_points)?;
@@ -262,9 +268,22 @@ impl<T: Scalar> KnotVector<T> {
     }
 }
 
-/// Fails with [`Error::TooFewControlPoints`] unless `control_points` ≥ `degree` + 1, without
+/// Fails with [`Error::DegreeTooHigh`] when `degree` exceeds [`MAX_DEGREE`].
+pub(crate) fn check_degree(degree: usize) -> Result<()> {
+    if degree > MAX_DEGREE {
+        return Err(Error::DegreeTooHigh {
+            degree,
+            max: MAX_DEGREE,
+        });
+    }
+    Ok(())
+}
+
+/// Fails with [`Error::DegreeTooHigh`] above [`MAX_DEGREE`] and with
+/// [`Error::TooFewControlPoints`] unless `control_points` ≥ `degree` + 1, without
 /// overflowing for any degree (a file may say `"degree": 18446744073709551615`).
 fn check_enough_points(degree: usize, control_points: usize) -> Result<()> {
+    check_degree(degree)?;
     if control_points <= degree {
         return Err(Error::TooFewControlPoints {
             degree,

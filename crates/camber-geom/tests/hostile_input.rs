@@ -16,7 +16,10 @@ fn an_absurd_degree_in_a_file_is_an_error_not_an_overflow() {
     // 2⁶⁴ − 1 fits a usize: before the fix `degree + 1` overflowed (a panic in debug builds).
     let spline = format!(r#"{{"degree":{HUGE},"knots":[0,0,1,1],"control_points":[[0,0],[1,0]]}}"#);
     let err = serde_json::from_str::<BSplineCurve2<f64>>(&spline).unwrap_err();
-    assert!(err.to_string().contains("control points, found 2"), "{err}");
+    assert!(
+        err.to_string().contains("largest supported degree"),
+        "{err}"
+    );
     let spline3 =
         format!(r#"{{"degree":{HUGE},"knots":[0,0,1,1],"control_points":[[0,0,0],[1,0,0]]}}"#);
     assert!(serde_json::from_str::<BSplineCurve3<f64>>(&spline3).is_err());
@@ -33,17 +36,13 @@ fn an_absurd_degree_in_a_file_is_an_error_not_an_overflow() {
 
 #[test]
 fn knot_vector_helpers_take_any_degree() {
-    assert_eq!(
+    assert!(matches!(
         KnotVector::<f64>::clamped_uniform(HUGE, 3),
-        Err(Error::TooFewControlPoints {
-            degree: HUGE,
-            needed: HUGE,
-            found: 3
-        })
-    );
+        Err(Error::DegreeTooHigh { degree: HUGE, .. })
+    ));
     assert!(matches!(
         KnotVector::from_parameters(HUGE, &[0.0_f64, 1.0]),
-        Err(Error::TooFewControlPoints { found: 2, .. })
+        Err(Error::DegreeTooHigh { degree: HUGE, .. })
     ));
     let k = KnotVector::try_new(vec![0.0_f64, 0.0, 1.0, 1.0]).unwrap();
     assert!(k.check_for(HUGE, 2).is_err());
@@ -87,6 +86,42 @@ fn insertion_counts_do_not_overflow() {
             ..
         })
     ));
+}
+
+#[test]
+fn degrees_above_the_cap_are_refused_before_any_allocation() {
+    use camber_geom::knots::MAX_DEGREE;
+    use camber_geom::BezierCurve2;
+    let too_high = |degree| Error::DegreeTooHigh {
+        degree,
+        max: MAX_DEGREE,
+    };
+    // A file asking for degree 10⁶ on 10⁶ + 1 points would need ~10¹² scratch values per
+    // evaluation; it is refused by the knot-count check's degree test first.
+    let k = KnotVector::try_new(vec![0.0, 0.0, 1.0, 1.0]).unwrap();
+    assert_eq!(k.check_for(1_000_000, 1_000_001), Err(too_high(1_000_000)));
+    let spline = format!(
+        r#"{{"degree":{},"knots":[0,0,1,1],"control_points":[[0,0],[1,0]]}}"#,
+        MAX_DEGREE + 1
+    );
+    let err = serde_json::from_str::<BSplineCurve2<f64>>(&spline).unwrap_err();
+    assert!(
+        err.to_string().contains("largest supported degree"),
+        "{err}"
+    );
+    // Elevation by an untrusted count: an error, not an overflow or an endless loop.
+    let c = BSplineCurve2::try_new(1, k.clone(), vec![Point2::new(0.0, 0.0); 2]).unwrap();
+    assert_eq!(c.elevate_degree(HUGE), Err(too_high(HUGE)));
+    assert_eq!(c.elevate_degree(MAX_DEGREE), Err(too_high(MAX_DEGREE + 1)));
+    assert_eq!(
+        c.elevate_degree(MAX_DEGREE - 1).unwrap().degree(),
+        MAX_DEGREE
+    );
+    let n = NurbsCurve2::try_new(1, k, vec![Point2::new(0.0, 0.0); 2], vec![1.0, 2.0]).unwrap();
+    assert_eq!(n.elevate_degree(HUGE), Err(too_high(HUGE)));
+    let b = BezierCurve2::try_new(vec![Point2::new(0.0, 0.0); 3]).unwrap();
+    assert_eq!(b.try_elevate_degree(HUGE), Err(too_high(HUGE)));
+    assert_eq!(b.try_elevate_degree(0).unwrap(), b);
 }
 
 /// Any f64, with the awkward ones (NaN, ±∞, huge, tiny) drawn often.
