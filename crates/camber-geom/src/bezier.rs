@@ -263,6 +263,9 @@ impl<T: Scalar, const D: usize> BezierCurve<T, D> {
     /// assert_eq!(q.control_points()[1], Point2::new(1.0, 2.0));
     /// # Ok::<(), camber_geom::Error>(())
     /// ```
+    ///
+    /// It takes O((n + times)·times) time and trusts `times`; for a count from user input use
+    /// [`try_elevate_degree`](Self::try_elevate_degree), which bounds it.
     pub fn elevate_degree(&self, times: usize) -> Self {
         let mut points = Vec::with_capacity(self.control_points.len() + times);
         points.extend_from_slice(&self.control_points);
@@ -284,6 +287,25 @@ impl<T: Scalar, const D: usize> BezierCurve<T, D> {
         Self {
             control_points: points,
         }
+    }
+
+    /// [`elevate_degree`](Self::elevate_degree) for an untrusted count: fails with
+    /// [`Error::DegreeTooHigh`] when n + `times` exceeds
+    /// [`MAX_DEGREE`](crate::knots::MAX_DEGREE) (`times` = 0 always succeeds).
+    ///
+    /// ```
+    /// use camber_geom::{BezierCurve2, Error};
+    /// use nalgebra::Point2;
+    /// let line = BezierCurve2::<f64>::try_new(vec![Point2::new(0.0, 0.0), Point2::new(2.0, 4.0)])?;
+    /// assert_eq!(line.try_elevate_degree(2)?.degree(), 3);
+    /// assert!(matches!(line.try_elevate_degree(usize::MAX), Err(Error::DegreeTooHigh { .. })));
+    /// # Ok::<(), camber_geom::Error>(())
+    /// ```
+    pub fn try_elevate_degree(&self, times: usize) -> Result<Self> {
+        if times > 0 {
+            crate::knots::check_degree(self.degree().saturating_add(times))?;
+        }
+        Ok(self.elevate_degree(times))
     }
 
     /// The same curve traversed backwards: reversed(s) = C(1 − s) (control points in reverse

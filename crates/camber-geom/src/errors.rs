@@ -169,6 +169,23 @@ pub enum Error {
         /// The degree given.
         found: usize,
     },
+    /// A spline degree (given, or reached by degree elevation) above
+    /// [`MAX_DEGREE`](crate::knots::MAX_DEGREE): the basis tables grow like the square of the
+    /// degree, so an absurd degree from a file would exhaust memory instead of failing.
+    ///
+    /// ```
+    /// use camber_geom::{Error, KnotVector};
+    /// use camber_geom::knots::MAX_DEGREE;
+    /// let err = KnotVector::<f64>::clamped_uniform(MAX_DEGREE + 1, MAX_DEGREE + 2).unwrap_err();
+    /// assert_eq!(err, Error::DegreeTooHigh { degree: MAX_DEGREE + 1, max: MAX_DEGREE });
+    /// ```
+    #[error("degree {degree} is above the largest supported degree {max}")]
+    DegreeTooHigh {
+        /// The degree asked for (saturated at `usize::MAX` when the sum overflowed).
+        degree: usize,
+        /// The largest degree supported.
+        max: usize,
+    },
 }
 
 /// Result with camber-geom's [`Error`].

@@ -125,7 +125,9 @@ impl<T: Scalar> ControlNet<T> {
 impl<T: Scalar> ControlNet<T> {
     /// Number of control points, n + 1 (knots − degree − 1).
     pub fn point_count(&self) -> usize {
-        self.knots.len().saturating_sub(self.degree + 1)
+        self.knots
+            .len()
+            .saturating_sub(self.degree.saturating_add(1))
     }
 
     /// The `dim` coordinates of control point `i` (an empty slice when `i` is out of range).
@@ -190,7 +192,7 @@ impl<T: Scalar> ControlNet<T> {
         self.check()?;
         check_parameter(u, self.domain())?;
         let s = self.knots.multiplicity(u);
-        if s + times > self.degree {
+        if s.saturating_add(times) > self.degree {
             return Err(Error::KnotMultiplicity {
                 value: re(u),
                 multiplicity: s,
@@ -336,8 +338,13 @@ impl<T: Scalar> ControlNet<T> {
     /// result has degree p + times and every distinct knot's multiplicity grows by `times`.
     /// An interior knot of multiplicity above p (a break in the curve) is handled by elevating
     /// the pieces on either side and joining them with multiplicity p + times + 1.
+    ///
+    /// Fails with [`Error::DegreeTooHigh`] when p + times exceeds
+    /// [`MAX_DEGREE`](crate::knots::MAX_DEGREE) (an untrusted count cannot overflow or exhaust
+    /// memory).
     pub fn elevate_degree(&self, times: usize) -> Result<Self> {
         self.check()?;
+        crate::knots::check_degree(self.degree.saturating_add(times))?;
         if times == 0 {
             return Ok(self.clone());
         }

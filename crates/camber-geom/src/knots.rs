@@ -10,6 +10,12 @@ use crate::curve::check_interval;
 use crate::errors::{Error, Result};
 use crate::scalar::{cst, from_usize, re, Scalar};
 
+/// The largest degree a B-spline, NURBS curve or surface may have (given or reached by degree
+/// elevation). Far above any design degree (CAD works below 30); it exists so that a file
+/// saying `"degree": 1000000` is refused with [`Error::DegreeTooHigh`] instead of asking for
+/// (p + 1)² scratch values per evaluation.
+pub const MAX_DEGREE: usize = 256;
+
 /// A non-decreasing sequence of finite knots.
 ///
 /// ```
@@ -84,13 +90,7 @@ impl<T: Scalar> KnotVector<T> {
     /// The clamped uniform knot vector on [a, b] (see [`clamped_uniform`](Self::clamped_uniform)).
     pub fn clamped_uniform_on(degree: usize, control_points: usize, a: T, b: T) -> Result<Self> {
         check_interval(a, b)?;
-        if control_points < degree + 1 {
-            return Err(Error::TooFewControlPoints {
-                degree,
-                needed: degree + 1,
-                found: control_points,
-            });
-        }
+        check_enough_points(degree, control_points)?;
         let segments = control_points - degree;
         let mut knots = Vec::with_capacity(control_points + degree + 1);
         knots.extend(std::iter::repeat_n(a, degree + 1));
@@ -114,13 +114,7 @@ impl<T: Scalar> KnotVector<T> {
     /// ```
     pub fn from_parameters(degree: usize, parameters: &[T]) -> Result<Self> {
         let count = parameters.len();
-        if count < degree + 1 {
-            return Err(Error::TooFewControlPoints {
-                degree,
-                needed: degree + 1,
-                found: count,
-            });
-        }
+        check_enough_points(degree, count)?;
         let params = Self::try_new(parameters.to_vec())?;
         let (first, last) = (params.knots[0], params.knots[count - 1]);
         check_interval(first, last)?;
@@ -167,17 +161,13 @@ impl<T: Scalar> KnotVector<T> {
     }
 
     /// Checks that this knot vector fits `control_points` control points of `degree`:
-    /// at least degree + 1 control points, knot count = control points + degree + 1, and a
+    /// a degree of at most [`MAX_DEGREE`], at least degree + 1 control points, knot count = control points + degree + 1, and a
     /// domain of positive length.
     pub fn check_for(&self, degree: usize, control_points: usize) -> Result<()> {
-        if control_points < degree + 1 {
-            return Err(Error::TooFewControlPoints {
-                degree,
-                needed: degree + 1,
-                found: control_points,
-            });
-        }
-        let expected = control_points + degree + 1;
+        check_enough_points(degree, control_points)?;
+        // degree < control_points, so degree + 1 cannot overflow; the sum can only for counts
+        // no vector could hold, and then it cannot equal the knot count either.
+        let expected = control_points.saturating_add(degree + 1);
         if self.knots.len() != expected {
             return Err(Error::KnotCount {
                 expected,
@@ -205,7 +195,7 @@ impl<T: Scalar> KnotVector<T> {
         if self.knots.is_empty() {
             return (T::zero(), T::zero());
         }
-        if 2 * degree > m {
+        if degree.saturating_mul(2) > m {
             return (self.knots[0], self.knots[m]);
         }
         (self.knots[degree], self.knots[m - degree])
@@ -220,7 +210,7 @@ impl<T: Scalar> KnotVector<T> {
     /// On a vector too short for `degree` (fewer than p + 2 knots) it returns `degree`; callers
     /// validate with [`check_for`](Self::check_for) first.
     pub fn find_span(&self, degree: usize, u: T) -> usize {
-        let Some(n) = self.knots.len().checked_sub(degree + 2) else {
+        let Some(n) = self.knots.len().checked_sub(degree.saturating_add(2)) else {
             return degree;
         };
         if n < degree {
@@ -259,7 +249,9 @@ impl<T: Scalar> KnotVector<T> {
     /// The knot vector of the reversed curve: u ↦ a + b − u over the full knot range
     /// [u₀, u_m], which maps the domain [u_p, u_{m−p}] of a clamped vector onto itself.
     pub fn reversed(&self) -> Self {
-        let (first, last) = (self.knots[0], self.knots[self.knots.len() - 1]);
+        let (Some(&first), Some(&last)) = (self.knots.first(), self.knots.last()) else {
+            return self.clone();
+        };
         Self {
             knots: self.knots.iter().rev().map(|&k| first + last - k).collect(),
         }
@@ -274,6 +266,32 @@ impl<T: Scalar> KnotVector<T> {
             knots: self.knots.iter().map(|&k| a + (k - u0) * scale).collect(),
         })
     }
+}
+
+/// Fails with [`Error::DegreeTooHigh`] when `degree` exceeds [`MAX_DEGREE`].
+pub(crate) fn check_degree(degree: usize) -> Result<()> {
+    if degree > MAX_DEGREE {
+        return Err(Error::DegreeTooHigh {
+            degree,
+            max: MAX_DEGREE,
+        });
+    }
+    Ok(())
+}
+
+/// Fails with [`Error::DegreeTooHigh`] above [`MAX_DEGREE`] and with
+/// [`Error::TooFewControlPoints`] unless `control_points` ≥ `degree` + 1, without
+/// overflowing for any degree (a file may say `"degree": 18446744073709551615`).
+fn check_enough_points(degree: usize, control_points: usize) -> Result<()> {
+    check_degree(degree)?;
+    if control_points <= degree {
+        return Err(Error::TooFewControlPoints {
+            degree,
+            needed: degree.saturating_add(1),
+            found: control_points,
+        });
+    }
+    Ok(())
 }
 
 #[cfg(test)]

@@ -92,6 +92,8 @@ impl<T: Scalar, const D: usize> NurbsCurve<T, D> {
         control_points: Vec<Point<T, D>>,
         weights: Vec<T>,
     ) -> Result<Self> {
+        // Re-check the knot values too: a KnotVector may have been built unchecked.
+        knots.validate()?;
         knots.check_for(degree, control_points.len())?;
         check_points(&control_points)?;
         if weights.len() != control_points.len() {

@@ -481,3 +481,62 @@ fn serde_round_trip_and_rejections() {
     );
     assert!(err.is_err());
 }
+
+#[test]
+fn split_at_a_simple_knot_keeps_c2_and_the_third_derivative_jump() {
+    // U = {0,0,0,0,1/2,1,1,1,1}, P = (0,0), (1,2), (2,−1), (3,1), (4,0); split at the knot 1/2.
+    // Hodograph points Q_i = 3(P_{i+1} − P_i)/(u_{i+4} − u_{i+1}):
+    //   Q = (6,12), (3,−9), (3,6), (6,−6) on {0,0,0,1/2,1,1,1};
+    // second: R_i = 2(Q_{i+1} − Q_i)/(u′_{i+3} − u′_{i+1}) = (−12,−84), (0,30), (12,−48);
+    // third: S_i = (R_{i+1} − R_i)/(u″_{i+2} − u″_{i+1}) = (24,228) on [0,1/2), (24,−156) after.
+    // At 1/2: C = (P1 + 2P2 + P3)/4 = (2, 1/4), C′ = (Q1 + Q2)/2 = (3, −3/2), C″ = R1 = (0, 30).
+    let c = curve2(
+        3,
+        &[0., 0., 0., 0., 0.5, 1., 1., 1., 1.],
+        &[[0., 0.], [1., 2.], [2., -1.], [3., 1.], [4., 0.]],
+    );
+    let (left, right) = c.split(0.5).unwrap();
+    assert_eq!((left.domain(), right.domain()), ((0.0, 0.5), (0.5, 1.0)));
+    let l = left.derivatives(0.5, 3).unwrap();
+    let r = right.derivatives(0.5, 3).unwrap();
+    let shared = [
+        Vector2::new(2.0, 0.25),
+        Vector2::new(3.0, -1.5),
+        Vector2::new(0.0, 30.0),
+    ];
+    for k in 0..3 {
+        assert_vec_close(&l[k], &shared[k], 1e-12);
+        assert_vec_close(&r[k], &shared[k], 1e-12);
+    }
+    assert_vec_close(&l[3], &Vector2::new(24.0, 228.0), 1e-11);
+    assert_vec_close(&r[3], &Vector2::new(24.0, -156.0), 1e-11);
+    // The halves are clamped Bézier pieces here: 4 control points each, sharing C(1/2).
+    assert_eq!(left.control_points().len(), 4);
+    assert_eq!(right.control_points().len(), 4);
+    assert_vec_close(
+        &left.control_points()[3].coords,
+        &right.control_points()[0].coords,
+        1e-15,
+    );
+}
+
+proptest! {
+    /// Split exactly at an interior knot of multiplicity m: the halves agree at the joint in
+    /// every derivative of order ≤ p − m (where the original is C^{p−m}), cubic and quartic.
+    #[test]
+    fn split_at_a_knot_keeps_the_continuity_the_original_had(c in random_curve_of(3..=4), pick in 0usize..8) {
+        let (a, b) = c.domain();
+        let interior: Vec<f64> = c.breakpoints().into_iter().filter(|&k| k > a && k < b).collect();
+        prop_assume!(!interior.is_empty());
+        let u = interior[pick % interior.len()];
+        let order = c.degree() - c.knots().multiplicity(u);
+        let (left, right) = c.split(u).unwrap();
+        let l = left.derivatives(u, order).unwrap();
+        let r = right.derivatives(u, order).unwrap();
+        let o = c.derivatives(u, order).unwrap();
+        for k in 0..=order {
+            let tol = 1e-9 * (1.0 + o[k].norm());
+            prop_assert!((l[k] - r[k]).norm() < tol && (r[k] - o[k]).norm() < tol, "order {}: {:?} {:?} {:?}", k, l[k], r[k], o[k]);
+        }
+    }
+}

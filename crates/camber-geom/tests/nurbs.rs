@@ -389,6 +389,27 @@ proptest! {
     }
 }
 
+proptest! {
+    /// A rational curve split away from its knots: the two halves meet with equal position,
+    /// first and second derivatives (the original is C∞ there, so the joint is C2).
+    #[test]
+    fn split_joint_is_c2_where_the_original_was(curve in nurbs_curve(), t in 0.05f64..0.95) {
+        prop_assume!(curve.degree() >= 2);
+        let u = at(&curve, t);
+        // A tiny span next to the joint makes second derivatives ill-conditioned (round-off
+        // grows like 1/h²), which is not what this test is about.
+        prop_assume!(curve.knots().as_slice().iter().all(|&k| (k - u).abs() > 0.02));
+        let (left, right) = curve.split(u).unwrap();
+        let l = left.derivatives(u, 2).unwrap();
+        let r = right.derivatives(u, 2).unwrap();
+        let o = curve.derivatives(u, 2).unwrap();
+        for k in 0..=2 {
+            let tol = 1e-9 * (1.0 + o[k].norm());
+            prop_assert!((l[k] - r[k]).norm() < tol && (l[k] - o[k]).norm() < tol, "order {}", k);
+        }
+    }
+}
+
 #[test]
 fn validation_names_the_offending_weight() {
     let knots = KnotVector::try_new(vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0]).unwrap();

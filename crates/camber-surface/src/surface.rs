@@ -139,8 +139,9 @@ impl<T: Scalar> NurbsSurface<T> {
     ) -> Result<Self> {
         knots_u.validate()?;
         knots_v.validate()?;
-        let count_u = knots_u.len().saturating_sub(degree_u + 1);
-        let count_v = knots_v.len().saturating_sub(degree_v + 1);
+        // Saturating: a file may carry any degree, and an absurd one must be an error.
+        let count_u = knots_u.len().saturating_sub(degree_u.saturating_add(1));
+        let count_v = knots_v.len().saturating_sub(degree_v.saturating_add(1));
         knots_u.check_for(degree_u, count_u)?;
         knots_v.check_for(degree_v, count_v)?;
         if control_points.len() != count_u * count_v {

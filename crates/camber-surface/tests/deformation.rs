@@ -3,7 +3,7 @@
 
 use approx::assert_relative_eq;
 use camber_surface::examples::{crease_pair, creased_face, creased_neighbour};
-use camber_surface::{deform_to_g1, DeformOptions, Edge, Error};
+use camber_surface::{deform_to_g1, plane_angle_deg, DeformOptions, Edge, Error};
 
 #[test]
 fn ten_degree_crease_is_removed_and_the_edge_stays() {
@@ -25,6 +25,17 @@ fn ten_degree_crease_is_removed_and_the_edge_stays() {
         let u = k as f64 / 400.0;
         let moved = (deformed.point(u, 1.0).unwrap() - face.point(u, 1.0).unwrap()).norm();
         assert!(moved < 1e-3 * size, "u = {u}: {moved}");
+    }
+    // The angle stays below 0.1° between the samples too: checked densely against the
+    // neighbour's normal at the same edge parameter (its edge v = 0 runs like the face's v = 1).
+    let nb = &crease_pair(10.0).unwrap().1;
+    for k in 0..=400 {
+        let u = k as f64 / 400.0;
+        let n0 = deformed.normal(u, 1.0).unwrap();
+        let n1 = nb.surface.normal(u, 0.0).unwrap();
+        assert!((nb.surface.point(u, 0.0).unwrap() - face.point(u, 1.0).unwrap()).norm() < 1e-12);
+        let deg = plane_angle_deg(&n0, &n1);
+        assert!(deg < 0.1, "u = {u}: {deg}°");
     }
     // Something did move: the row next to the edge turns by about the crease.
     assert!(report.max_control_point_movement > 0.01 * size);

@@ -157,3 +157,75 @@ fn json_round_trip_and_validation() {
     let short = text.replacen("\"degree_u\":2", "\"degree_u\":3", 1);
     assert!(serde_json::from_str::<NurbsSurface<f64>>(&short).is_err());
 }
+
+#[test]
+fn an_absurd_degree_in_a_file_is_an_error_not_an_overflow() {
+    let s = sample_surface::<f64>().unwrap();
+    let text = serde_json::to_string(&s).unwrap();
+    for (field, value) in [("degree_u", 2), ("degree_v", 3)] {
+        let huge = text.replacen(
+            &format!("\"{field}\":{value}"),
+            &format!("\"{field}\":{}", usize::MAX),
+            1,
+        );
+        assert_ne!(huge, text);
+        assert!(serde_json::from_str::<NurbsSurface<f64>>(&huge).is_err());
+    }
+}
+
+#[test]
+fn rational_quarter_cylinder_by_hand() {
+    // u: the rational quadratic quarter circle of radius 2 from (2, 0) to (0, 2), weights
+    // 1, √2/2, 1; v: linear from z = 0 to z = 3. Every point lies on x² + y² = 4 with z = 3v;
+    // S_v = (0, 0, 3); the unit normal is radial; S(1/2, v) = (√2, √2, 3v); at u = 0,
+    // S_u = p·(w₁/w₀)·(P₁ − P₀) = 2·(√2/2)·(0, 2, 0) = (0, 2√2, 0); the u-isocurves have
+    // curvature 1/2.
+    let h = std::f64::consts::FRAC_1_SQRT_2;
+    let ring = [(2.0, 0.0, 1.0), (2.0, 2.0, h), (0.0, 2.0, 1.0)];
+    let mut points = Vec::new();
+    let mut weights = Vec::new();
+    for (x, y, w) in ring {
+        for z in [0.0, 3.0] {
+            points.push(Point3::new(x, y, z));
+            weights.push(w);
+        }
+    }
+    let s = NurbsSurface::try_new(
+        2,
+        KnotVector::try_new(vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0]).unwrap(),
+        1,
+        KnotVector::try_new(vec![0.0, 0.0, 1.0, 1.0]).unwrap(),
+        points,
+        weights,
+    )
+    .unwrap();
+    for i in 0..=10 {
+        for j in 0..=4 {
+            let (u, v) = (f64::from(i) / 10.0, f64::from(j) / 4.0);
+            let d = s.derivatives(u, v).unwrap();
+            let p = d.point;
+            assert_relative_eq!(p.x * p.x + p.y * p.y, 4.0, epsilon = 1e-13);
+            assert_relative_eq!(p.z, 3.0 * v, epsilon = 1e-14);
+            assert_relative_eq!(d.sv, Vector3::new(0.0, 0.0, 3.0), epsilon = 1e-13);
+            assert_relative_eq!(d.svv, Vector3::zeros(), epsilon = 1e-13);
+            assert_relative_eq!(d.suv, Vector3::zeros(), epsilon = 1e-12);
+            let radial = Vector3::new(p.x, p.y, 0.0) / 2.0;
+            let n = s.normal(u, v).unwrap();
+            assert_relative_eq!(n.dot(&radial).abs(), 1.0, epsilon = 1e-13);
+            let kappa = d.su.cross(&d.suu).norm() / d.su.norm().powi(3);
+            assert_relative_eq!(kappa, 0.5, epsilon = 1e-12);
+        }
+    }
+    let mid = s.point(0.5, 0.5).unwrap();
+    assert_relative_eq!(
+        mid,
+        Point3::new(2.0_f64.sqrt(), 2.0_f64.sqrt(), 1.5),
+        epsilon = 1e-14
+    );
+    let start = s.derivatives(0.0, 0.2).unwrap();
+    assert_relative_eq!(
+        start.su,
+        Vector3::new(0.0, 2.0 * 2.0_f64.sqrt(), 0.0),
+        epsilon = 1e-13
+    );
+}
