@@ -57,6 +57,15 @@ impl camber_solve::DynResidual for SharedResidual {
     ) -> camber_solve::Result<()> {
         self.0.jacobian(x, values, jac)
     }
+    fn weighted_hessian(
+        &self,
+        x: &[&[f64]],
+        weights: &[f64],
+        active: &[bool],
+        out: &mut [f64],
+    ) -> camber_solve::Result<bool> {
+        self.0.weighted_hessian(x, weights, active, out)
+    }
     fn as_any(&self) -> &dyn std::any::Any {
         self.0.as_any()
     }

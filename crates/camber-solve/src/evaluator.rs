@@ -26,6 +26,11 @@ pub(crate) struct Evaluator {
     x: Vec<f64>,
     jac: Vec<f64>,
     triplets: Vec<(usize, usize, f64)>,
+    /// Scratch of [`Evaluator::hessian`]: one residual's dense Hessian, its active blocks, its
+    /// multipliers, and the reduced triplets.
+    hess: Vec<f64>,
+    active: Vec<bool>,
+    hess_triplets: Vec<(usize, usize, f64)>,
 }
 
 impl Evaluator {
@@ -54,6 +59,9 @@ impl Evaluator {
             row_owner,
             jac: Vec::new(),
             triplets: Vec::new(),
+            hess: Vec::new(),
+            active: Vec::new(),
+            hess_triplets: Vec::new(),
         })
     }
 
@@ -115,6 +123,82 @@ impl Evaluator {
             row0 += dim;
         }
         Ok(())
+    }
+
+    /// H_z = Aᵀ·(Σᵢ λᵢ·∇²gᵢ(x(z)))·A, the Hessian of λᵀg over the reduced unknowns (the map
+    /// is affine, so it adds no curvature of its own), as a sparse symmetric matrix. `lambda`
+    /// has one multiplier per residual row; affine residuals and rows with λᵢ = 0 cost nothing.
+    /// Returns `None` when no residual contributes (H = 0).
+    ///
+    /// # Errors
+    /// Dimension errors for wrong lengths.
+    pub(crate) fn hessian(
+        &mut self,
+        problem: &Problem,
+        z: &[f64],
+        lambda: &[f64],
+    ) -> Result<Option<SparseMatrix>> {
+        check_len("multipliers", self.rows(), lambda.len())?;
+        self.map.expand(z, &mut self.x)?;
+        self.hess_triplets.clear();
+        let mut row0 = 0;
+        for rb in &problem.residuals {
+            let dim = rb.residual.dim();
+            let weights = &lambda[row0..row0 + dim];
+            row0 += dim;
+            if rb.residual.is_affine() || weights.iter().all(|w| *w == 0.0) {
+                continue;
+            }
+            // A block is active when one of its unknowns moves with z.
+            self.active.clear();
+            for b in &rb.blocks {
+                let (start, len) = problem.block_range(*b)?;
+                let moves = (start..start + len).any(|u| !self.map.row(u).0.is_empty());
+                self.active.push(moves);
+            }
+            if !self.active.iter().any(|a| *a) {
+                continue;
+            }
+            let slices = problem.gather(&self.x, &rb.blocks);
+            let ncols: usize = slices.iter().map(|s| s.len()).sum();
+            self.hess.clear();
+            self.hess.resize(ncols * ncols, 0.0);
+            if !rb
+                .residual
+                .weighted_hessian(&slices, weights, &self.active, &mut self.hess)?
+            {
+                continue;
+            }
+            // Local column → unknown index.
+            let mut unknowns: smallvec::SmallVec<[usize; 32]> = smallvec::SmallVec::new();
+            for b in &rb.blocks {
+                let (start, len) = problem.block_range(*b)?;
+                unknowns.extend(start..start + len);
+            }
+            for (p, up) in unknowns.iter().enumerate() {
+                let (tp, _) = self.map.row(*up);
+                if tp.is_empty() {
+                    continue;
+                }
+                for (q, uq) in unknowns.iter().enumerate() {
+                    let h = self.hess[p * ncols + q];
+                    if h == 0.0 {
+                        continue;
+                    }
+                    let (tq, _) = self.map.row(*uq);
+                    for (c1, a1) in tp {
+                        for (c2, a2) in tq {
+                            self.hess_triplets.push((*c1, *c2, h * a1 * a2));
+                        }
+                    }
+                }
+            }
+        }
+        if self.hess_triplets.is_empty() {
+            return Ok(None);
+        }
+        let n = self.cols();
+        SparseMatrix::try_from_triplets(n, n, &self.hess_triplets).map(Some)
     }
 
     /// The triplets of the last [`Evaluator::linearize`].

@@ -51,10 +51,12 @@
 pub mod analysis;
 pub mod autodiff;
 pub mod errors;
+pub mod hessian;
 pub mod ids;
 pub mod lsq;
 pub mod min_norm;
 pub mod problem;
+pub(crate) mod projected_cg;
 pub mod reduced;
 pub mod report;
 pub mod residual;

@@ -41,6 +41,8 @@ pub struct MinNormFactorization {
     /// Scratch for refinement: the residual J·Δz + g (m) and a correction (n).
     residual: Vec<f64>,
     correction: Vec<f64>,
+    /// Scratch of [`MinNormFactorization::project`]: J·W⁻¹·v (m).
+    rhs: Vec<f64>,
 }
 
 #[derive(Debug)]
@@ -139,6 +141,7 @@ impl MinNormFactorization {
             backend,
             residual: vec![0.0; rows],
             correction,
+            rhs: vec![0.0; rows],
         }
     }
 
@@ -211,6 +214,51 @@ impl MinNormFactorization {
 }
 
 impl MinNormFactorization {
+    /// The W-orthogonal projection of v onto the null space of J, in the metric of W⁻¹:
+    ///
+    /// P·v = W⁻¹·(v − Jᵀ·y),  y = (J·W⁻¹·Jᵀ)⁻¹·J·W⁻¹·v,
+    ///
+    /// so that J·P·v = 0 and y is the least-squares multiplier of v (the λ minimising
+    /// ‖v − Jᵀλ‖ in the W⁻¹ norm). This is the preconditioner of the projected conjugate
+    /// gradients of the second-order Newton step; with v = W·d it returns the part of d that
+    /// keeps J·d unchanged. Writes P·v into `out` and y into `multipliers`.
+    ///
+    /// ```
+    /// use camber_solve::{MinNormFactorization, SparseMatrix};
+    /// // J = [1 1]: the null space is spanned by (1, −1).
+    /// let j = SparseMatrix::try_from_triplets(1, 2, &[(0, 0, 1.0), (0, 1, 1.0)])?;
+    /// let mut f = MinNormFactorization::try_dense(&j, &[1.0, 1.0])?;
+    /// let (mut pv, mut y) = ([0.0; 2], [0.0; 1]);
+    /// f.project(&[3.0, 1.0], &mut pv, &mut y)?;
+    /// assert!((pv[0] - 1.0).abs() < 1e-15 && (pv[1] + 1.0).abs() < 1e-15);
+    /// assert!((y[0] - 2.0).abs() < 1e-15);
+    /// # Ok::<(), camber_solve::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`Error::Dimension`] for wrong lengths.
+    pub fn project(&mut self, v: &[f64], out: &mut [f64], multipliers: &mut [f64]) -> Result<()> {
+        check_len("projected vector", self.cols(), v.len())?;
+        check_len("projection", self.cols(), out.len())?;
+        check_len("multipliers", self.rows(), multipliers.len())?;
+        for (o, (vk, d)) in out.iter_mut().zip(v.iter().zip(&self.inv_w)) {
+            *o = vk * d;
+        }
+        let mut rhs = std::mem::take(&mut self.rhs);
+        self.apply_j(out, &mut rhs);
+        let outcome = self.solve(&rhs, out);
+        self.rhs = rhs;
+        outcome?;
+        for (o, (vk, d)) in out.iter_mut().zip(v.iter().zip(&self.inv_w)) {
+            *o += vk * d;
+        }
+        match &self.backend {
+            Backend::Dense { y, .. } => multipliers.copy_from_slice(y.as_slice()),
+            Backend::Sparse { y, .. } => multipliers.copy_from_slice(y),
+        }
+        Ok(())
+    }
+
     /// [`MinNormFactorization::solve`] followed by up to `steps` rounds of iterative refinement:
     /// r = J·Δz + g is what the step misses (rounding amplified by the condition of
     /// J·W⁻¹·Jᵀ), and Δz += step(r) removes most of it. Corrections lie in the range of W⁻¹·Jᵀ,

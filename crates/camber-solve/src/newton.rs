@@ -1,30 +1,42 @@
-//! Newton minimum-norm iterations with the null-space pull-back toward a reference point.
+//! Newton minimum-norm iterations with the null-space pull-back toward a reference point,
+//! and their second-order form.
 //!
 //! At the current z, with g = g(z), J = ∂g/∂z, the W-weighted pseudo-inverse
-//! J⁺ = W⁻¹·Jᵀ·(J·W⁻¹·Jᵀ)⁻¹ and d = z_ref − z, the step is
+//! J⁺ = W⁻¹·Jᵀ·(J·W⁻¹·Jᵀ)⁻¹ and d = z_ref − z, the Gauss–Newton pull-back step is
 //!
 //! Δz = −J⁺·g + (I − J⁺·J)·d = d − J⁺·(g + J·d),
 //!
-//! so one minimum-norm solve with the right-hand side g + J·d gives it (no inverse is formed;
-//! [`crate::MinNormFactorization`] does the solve). The first part drives g to zero; the second
-//! moves within the null space of J toward z_ref. It is exactly the step of the quadratic
-//! program min ½‖z + Δ − z_ref‖²_W subject to g + J·Δ = 0, so its fixed points are the points
-//! of g = 0 where W·(z − z_ref) lies in the range of Jᵀ: the first-order conditions of the
-//! solution W-nearest to z_ref, not just any solution.
+//! the step of the quadratic program min ½‖z + Δ − z_ref‖²_W subject to g + J·Δ = 0. The first
+//! part drives g to zero; the second moves within the null space of J toward z_ref. Its fixed
+//! points are the points of g = 0 where W·(z − z_ref) lies in the range of Jᵀ: the first-order
+//! conditions of the solution W-nearest to z_ref, not just any solution. It converges to them
+//! only linearly, though, at the rate of the constraints' curvature against W.
 //!
-//! **Damping.** Steps are accepted by backtracking on the merit
-//! φ(z) = ½‖z − z_ref‖²_W + μ‖g(z)‖₂ (an exact penalty; μ grows so that Δz is a descent
-//! direction, as in Nocedal & Wright §18.3). A pure decrease test on ‖g‖ would refuse the
-//! pull-back moves once g is zero. When the full step is refused, a second-order correction
-//! −J⁺·g(z + Δz) (same factorization) is tried before halving the step.
+//! **Second-order step.** With the multipliers λ of the previous step, the Hessian of the
+//! Lagrangian ½‖z − z_ref‖²_W + λᵀ·g is K = W + H, H = Σ λᵢ·∇²gᵢ (exact, from hyper-dual
+//! numbers, [`crate::hessian`]), and the quadratic program with K in place of W is Newton's
+//! method on the first-order conditions: quadratic convergence. It is solved by projected
+//! conjugate gradients on the same factorization ([`crate::projected_cg`]). Far from the
+//! solution its model can mislead, so every iteration tries the second-order step at full length
+//! (or with its second-order correction) and keeps it only if the merit accepts it; otherwise it
+//! takes the Gauss–Newton step with a backtracking search. Near the solution the second-order
+//! steps are accepted and the iteration count stops growing with the curvature.
+//!
+//! **Damping.** Steps are accepted by the merit φ(z) = ½‖z − z_ref‖²_W + μ‖g(z)‖₂ (an exact
+//! penalty; μ grows so that Δz is a descent direction and stays above ‖λ‖, as in Nocedal &
+//! Wright §18.3). A pure decrease test on ‖g‖ would refuse the pull-back moves once g is zero.
+//! When a full step is refused, a second-order correction −J⁺·g(z + Δz) (same factorization)
+//! is tried before the step is cut.
 //!
 //! **Bounds.** Trial points are clamped to the bounds of the reduced unknowns; an unknown at a
-//! bound whose step points outward is held there (its column dropped) for the iteration.
+//! bound whose Gauss–Newton step points outward is held there (its column dropped) for the
+//! iteration.
 
 use crate::errors::{Error, Result};
 use crate::evaluator::{max_abs, norm2, Evaluator};
 use crate::min_norm::MinNormFactorization;
 use crate::problem::Problem;
+use crate::projected_cg::{self, CgOutcome, QpData};
 use crate::solve::Options;
 
 /// Reusable buffers of the Newton iterations: a drag session keeps one and passes it to
@@ -38,12 +50,20 @@ pub struct NewtonWorkspace {
     gs: Vec<f64>,
     gs_trial: Vec<f64>,
     z_trial: Vec<f64>,
-    d: Vec<f64>,
-    r: Vec<f64>,
-    p: Vec<f64>,
     p2: Vec<f64>,
+    /// The Gauss–Newton pull-back step and the second-order step.
     step: Vec<f64>,
+    step2: Vec<f64>,
     drop: Vec<bool>,
+    /// c = W·(z − z_ref) of the quadratic step.
+    c: Vec<f64>,
+    /// Multipliers of the rows used: the current estimate, those of the Gauss–Newton and of
+    /// the second-order step, and a full-length copy for the Hessian.
+    lambda: Vec<f64>,
+    lambda_gn: Vec<f64>,
+    lambda2: Vec<f64>,
+    lambda_full: Vec<f64>,
+    cg: crate::projected_cg::CgWorkspace,
 }
 
 impl NewtonWorkspace {
@@ -72,6 +92,28 @@ fn select(g: &[f64], rows: Option<&[usize]>, out: &mut Vec<f64>) {
     }
 }
 
+/// Conjugate-gradient iterations of one quadratic step at most.
+const CG_MAX_ITERATIONS: usize = 50;
+
+/// Relative size of the projected residual at which the quadratic step is taken as solved.
+const CG_TOLERANCE: f64 = 1e-6;
+
+/// Writes the multipliers of the rows used (`rows`, all when None) into their places of the
+/// full-length `out`, zero elsewhere.
+fn spread(lambda: &[f64], rows: Option<&[usize]>, out: &mut [f64]) {
+    match rows {
+        None => out.copy_from_slice(lambda),
+        Some(rows) => {
+            out.fill(0.0);
+            for (i, l) in rows.iter().zip(lambda) {
+                if let Some(slot) = out.get_mut(*i) {
+                    *slot = *l;
+                }
+            }
+        }
+    }
+}
+
 /// ½‖z − z_ref‖²_W.
 fn distance(z: &[f64], reference: &[f64], w: &[f64]) -> f64 {
     z.iter()
@@ -82,7 +124,7 @@ fn distance(z: &[f64], reference: &[f64], w: &[f64]) -> f64 {
 }
 
 /// Runs Newton from `start` toward `reference` on the rows `rows` (all when None), leaving the
-/// final point in `ws.z`. The evaluator must be `ws.evaluator`'s content, passed separately.
+/// final point in `ws.z`.
 ///
 /// # Errors
 /// [`Error::RankDeficient`] when J·W⁻¹·Jᵀ cannot be factorized at an iterate,
@@ -112,18 +154,31 @@ pub(crate) fn run(
     }
     for v in [
         &mut ws.z_trial,
-        &mut ws.d,
-        &mut ws.p,
         &mut ws.p2,
         &mut ws.step,
+        &mut ws.step2,
+        &mut ws.c,
     ] {
         v.clear();
         v.resize(n, 0.0);
     }
     ws.drop.clear();
     ws.drop.resize(n, false);
+    let used_rows = rows.map_or(m, <[usize]>::len);
+    for v in [&mut ws.lambda, &mut ws.lambda_gn, &mut ws.lambda2] {
+        v.clear();
+        v.resize(used_rows, 0.0);
+    }
+    ws.lambda_full.clear();
+    ws.lambda_full.resize(m, 0.0);
     let weights = ev.map.weights().to_vec();
-    let mut mu = 0.0_f64;
+    let mut merit = Merit {
+        reference,
+        weights: &weights,
+        rows,
+        mu: 0.0,
+        inner_tol,
+    };
     let mut last_max: f64;
     for iteration in 0..settings.max_iterations {
         ev.linearize(problem, &ws.z, &mut ws.g)?;
@@ -131,31 +186,42 @@ pub(crate) fn run(
         let gnorm = norm2(&ws.gs);
         last_max = max_abs(&ws.gs);
 
-        // The step, holding unknowns at a bound whose step points outward.
+        // The Gauss–Newton pull-back step, holding unknowns at a bound whose step points
+        // outward.
         ws.drop.fill(false);
         let mut factorization;
         let mut pass = 0;
         loop {
-            for (((dk, held), rk), zk) in ws.d.iter_mut().zip(&ws.drop).zip(reference).zip(&ws.z) {
-                *dk = if *held { 0.0 } else { rk - zk };
+            for (k, ck) in ws.c.iter_mut().enumerate() {
+                *ck = if ws.drop[k] {
+                    0.0
+                } else {
+                    weights[k] * (ws.z[k] - reference[k])
+                };
             }
             let full = ev.jacobian(&ws.drop)?;
             let j = match rows {
                 Some(rows) => full.select_rows(rows),
                 None => full,
             };
-            ws.r.clear();
-            ws.r.resize(j.nrows(), 0.0);
-            j.mul_vec(&ws.d, &mut ws.r)?;
-            for (ri, gi) in ws.r.iter_mut().zip(&ws.gs) {
-                *ri += gi;
-            }
             factorization =
                 MinNormFactorization::try_auto(&j, &weights, options.dense_max_unknowns)?;
-            factorization.solve_refined(&ws.r, &mut ws.p, 2, 1e-3 * inner_tol)?;
-            for k in 0..n {
-                ws.step[k] = ws.d[k] + ws.p[k];
-            }
+            let data = QpData {
+                weights: &weights,
+                hessian: None,
+                gradient: &ws.c,
+                residuals: &ws.gs,
+                held: &ws.drop,
+            };
+            projected_cg::solve(
+                &mut factorization,
+                &data,
+                &mut ws.cg,
+                &mut ws.step,
+                &mut ws.lambda_gn,
+                CG_TOLERANCE,
+                CG_MAX_ITERATIONS,
+            )?;
             let mut changed = false;
             for k in 0..n {
                 let outward = (ws.z[k] <= ev.lower[k] && ws.step[k] < 0.0)
@@ -180,64 +246,60 @@ pub(crate) fn run(
             });
         }
 
-        // Merit φ = ½‖z − z_ref‖²_W + μ‖g‖ and its directional derivative along the step.
-        let gtd: f64 = (0..n)
-            .map(|k| weights[k] * (ws.z[k] - reference[k]) * ws.step[k])
-            .sum();
-        let quad: f64 = (0..n).map(|k| weights[k] * ws.step[k] * ws.step[k]).sum();
-        if gnorm > 0.0 {
-            let needed = (gtd + 0.5 * quad) / (0.5 * gnorm);
-            if mu < needed {
-                mu = 1.5 * needed;
-            }
-        }
-        let dphi = gtd - mu * gnorm;
-        let phi0 = distance(&ws.z, reference, &weights) + mu * gnorm;
-
-        let mut accepted = false;
-        let mut alpha = 1.0;
-        for attempt in 0..40 {
-            for k in 0..n {
-                ws.z_trial[k] = ws.z[k] + alpha * ws.step[k];
-            }
-            ev.clamp(&mut ws.z_trial);
-            let phi = match ev.residuals(problem, &ws.z_trial, &mut ws.g_trial) {
-                Ok(()) => {
-                    select(&ws.g_trial, rows, &mut ws.gs_trial);
-                    distance(&ws.z_trial, reference, &weights) + mu * norm2(&ws.gs_trial)
-                }
-                Err(_) => f64::INFINITY,
-            };
-            // Once g is met, rounding in φ can hide the small pull-back gains: a trial that
-            // keeps g met and does not move away from the reference is taken too.
-            let feasible = phi.is_finite()
-                && max_abs(&ws.gs_trial) <= inner_tol
-                && distance(&ws.z_trial, reference, &weights)
-                    <= distance(&ws.z, reference, &weights);
-            if phi <= phi0 + 1e-4 * alpha * dphi || feasible {
-                accepted = true;
-                break;
-            }
-            if attempt == 0 && phi.is_finite() {
-                // Second-order correction: remove what the curvature added to g.
-                factorization.solve(&ws.gs_trial, &mut ws.p2)?;
-                for k in 0..n {
-                    ws.p2[k] += ws.z_trial[k];
-                }
-                ev.clamp(&mut ws.p2);
-                if ev.residuals(problem, &ws.p2, &mut ws.g_trial).is_ok() {
-                    select(&ws.g_trial, rows, &mut ws.gs_trial);
-                    let phi = distance(&ws.p2, reference, &weights) + mu * norm2(&ws.gs_trial);
-                    if phi <= phi0 + 1e-4 * dphi {
-                        std::mem::swap(&mut ws.z_trial, &mut ws.p2);
-                        accepted = true;
-                        break;
+        // The second-order step with the multipliers of the previous iteration, taken only at
+        // full length (or with its second-order correction).
+        if iteration > 0 && ws.lambda.iter().any(|l| *l != 0.0) {
+            spread(&ws.lambda, rows, &mut ws.lambda_full);
+            if let Some(h) = ev.hessian(problem, &ws.z, &ws.lambda_full)? {
+                let data = QpData {
+                    weights: &weights,
+                    hessian: Some(&h),
+                    gradient: &ws.c,
+                    residuals: &ws.gs,
+                    held: &ws.drop,
+                };
+                let outcome = projected_cg::solve(
+                    &mut factorization,
+                    &data,
+                    &mut ws.cg,
+                    &mut ws.step2,
+                    &mut ws.lambda2,
+                    CG_TOLERANCE,
+                    CG_MAX_ITERATIONS,
+                )?;
+                if outcome != CgOutcome::NegativeCurvature {
+                    h.mul_vec(&ws.step2, &mut ws.p2)?;
+                    let bend = dot(&ws.step2, &ws.p2);
+                    std::mem::swap(&mut ws.step, &mut ws.step2);
+                    merit.raise_penalty(&ws.z, &ws.step, bend, gnorm, &ws.lambda2);
+                    let taken = merit.search(
+                        problem,
+                        ev,
+                        ws,
+                        &mut factorization,
+                        gnorm,
+                        SearchLength::FullOnly,
+                    )?;
+                    if taken.is_some() {
+                        std::mem::swap(&mut ws.lambda, &mut ws.lambda2);
+                        std::mem::swap(&mut ws.z, &mut ws.z_trial);
+                        continue;
                     }
+                    std::mem::swap(&mut ws.step, &mut ws.step2);
                 }
             }
-            alpha *= 0.5;
         }
-        if !accepted {
+
+        merit.raise_penalty(&ws.z, &ws.step, 0.0, gnorm, &ws.lambda_gn);
+        let taken = merit.search(
+            problem,
+            ev,
+            ws,
+            &mut factorization,
+            gnorm,
+            SearchLength::Backtrack,
+        )?;
+        let Some(alpha) = taken else {
             // No progress possible: a solution counts if the residuals are already met.
             if last_max <= inner_tol {
                 return Ok(NewtonRun {
@@ -251,6 +313,10 @@ pub(crate) fn run(
                 iterations: iteration,
                 max_residual: last_max,
             });
+        };
+        // λ moves with the accepted fraction of the step.
+        for (l, t) in ws.lambda.iter_mut().zip(&ws.lambda_gn) {
+            *l += alpha * (t - *l);
         }
         std::mem::swap(&mut ws.z, &mut ws.z_trial);
     }
@@ -271,4 +337,125 @@ pub(crate) fn run(
             max_residual: last_max,
         })
     }
+}
+
+/// How far a merit search may cut the step.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum SearchLength {
+    /// The full step or its second-order correction, nothing shorter.
+    FullOnly,
+    /// Halving down to 2⁻⁴⁰.
+    Backtrack,
+}
+
+/// The exact-penalty merit φ(z) = ½‖z − z_ref‖²_W + μ‖g(z)‖₂.
+struct Merit<'a> {
+    reference: &'a [f64],
+    weights: &'a [f64],
+    /// The rows g counts (all when None).
+    rows: Option<&'a [usize]>,
+    mu: f64,
+    inner_tol: f64,
+}
+
+impl Merit<'_> {
+    fn at(&self, z: &[f64], gs: &[f64]) -> f64 {
+        distance(z, self.reference, self.weights) + self.mu * norm2(gs)
+    }
+
+    /// ∇(½‖z − z_ref‖²_W)·Δ.
+    fn slope(&self, z: &[f64], step: &[f64]) -> f64 {
+        z.iter()
+            .zip(self.reference)
+            .zip(self.weights.iter().zip(step))
+            .map(|((a, b), (w, s))| w * (a - b) * s)
+            .sum()
+    }
+
+    /// Raises μ so that the step (which meets J·Δ = −g) descends on φ with room to spare:
+    /// μ ≥ (∇fᵀΔ + ½·max(ΔᵀKΔ, 0))/(½‖g‖) with K = W + H, `bend` = ΔᵀHΔ (Nocedal & Wright
+    /// 18.36), and μ above the multipliers' Euclidean norm, where the penalty is exact.
+    fn raise_penalty(&mut self, z: &[f64], step: &[f64], bend: f64, gnorm: f64, lambda: &[f64]) {
+        let quad: f64 = self
+            .weights
+            .iter()
+            .zip(step)
+            .map(|(w, s)| w * s * s)
+            .sum::<f64>()
+            + bend;
+        if gnorm > 0.0 {
+            let needed = (self.slope(z, step) + 0.5 * quad.max(0.0)) / (0.5 * gnorm);
+            if self.mu < needed {
+                self.mu = 1.5 * needed;
+            }
+        }
+        let lambda_norm = norm2(lambda);
+        if self.mu < lambda_norm {
+            self.mu = 1.5 * lambda_norm;
+        }
+    }
+
+    /// Searches along `ws.step` (slope ∇fᵀΔ − μ‖g‖), with one second-order correction
+    /// −J⁺·g(z + Δz) when the full step is refused: the accepted fraction (1 for the corrected
+    /// point), with the trial point left in `ws.z_trial`, or `None`.
+    fn search(
+        &self,
+        problem: &Problem,
+        ev: &mut Evaluator,
+        ws: &mut NewtonWorkspace,
+        factorization: &mut MinNormFactorization,
+        gnorm: f64,
+        length: SearchLength,
+    ) -> Result<Option<f64>> {
+        let rows = self.rows;
+        let dphi = self.slope(&ws.z, &ws.step) - self.mu * gnorm;
+        let d0 = distance(&ws.z, self.reference, self.weights);
+        let phi0 = d0 + self.mu * gnorm;
+        let mut alpha = 1.0;
+        for attempt in 0..40 {
+            for ((t, z), s) in ws.z_trial.iter_mut().zip(&ws.z).zip(&ws.step) {
+                *t = z + alpha * s;
+            }
+            ev.clamp(&mut ws.z_trial);
+            let phi = match ev.residuals(problem, &ws.z_trial, &mut ws.g_trial) {
+                Ok(()) => {
+                    select(&ws.g_trial, rows, &mut ws.gs_trial);
+                    self.at(&ws.z_trial, &ws.gs_trial)
+                }
+                Err(_) => f64::INFINITY,
+            };
+            // Once g is met, rounding in φ can hide the small pull-back gains: a trial that
+            // keeps g met and does not move away from the reference is taken too.
+            let feasible = phi.is_finite()
+                && max_abs(&ws.gs_trial) <= self.inner_tol
+                && distance(&ws.z_trial, self.reference, self.weights) <= d0;
+            if phi <= phi0 + 1e-4 * alpha * dphi || feasible {
+                return Ok(Some(alpha));
+            }
+            if attempt == 0 && phi.is_finite() {
+                // Second-order correction: remove what the curvature added to g.
+                factorization.solve(&ws.gs_trial, &mut ws.p2)?;
+                for (p, t) in ws.p2.iter_mut().zip(&ws.z_trial) {
+                    *p += t;
+                }
+                ev.clamp(&mut ws.p2);
+                if ev.residuals(problem, &ws.p2, &mut ws.g_trial).is_ok() {
+                    select(&ws.g_trial, rows, &mut ws.gs_trial);
+                    if self.at(&ws.p2, &ws.gs_trial) <= phi0 + 1e-4 * dphi {
+                        std::mem::swap(&mut ws.z_trial, &mut ws.p2);
+                        return Ok(Some(1.0));
+                    }
+                }
+            }
+            if length == SearchLength::FullOnly {
+                return Ok(None);
+            }
+            alpha *= 0.5;
+        }
+        Ok(None)
+    }
+}
+
+fn dot(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
 }

@@ -81,6 +81,25 @@ pub trait DynResidual: Debug + Send + Sync {
     /// # Errors
     /// [`Error::Dimension`] when a slice has the wrong length.
     fn jacobian(&self, x: &[&[f64]], values: &mut [f64], jac: &mut [f64]) -> Result<()>;
+    /// Writes H = Σᵢ λᵢ·∇²gᵢ(x) into `out` (row major, N × N with N = Σ|x_b|), leaving the
+    /// rows and columns of blocks whose `active` entry is false at zero; `weights` holds λ.
+    /// Returns whether second derivatives are available: the default says no (a residual that
+    /// only implements this trait by hand), and the solvers then treat its H as zero, which
+    /// slows Newton's convergence but not its result. Every [`Residual`] has them, by
+    /// hyper-dual numbers ([`crate::hessian`]).
+    ///
+    /// # Errors
+    /// [`Error::Dimension`] for wrong slice lengths.
+    fn weighted_hessian(
+        &self,
+        x: &[&[f64]],
+        weights: &[f64],
+        active: &[bool],
+        out: &mut [f64],
+    ) -> Result<bool> {
+        let _ = (x, weights, active, out);
+        Ok(false)
+    }
     /// The concrete residual, for downcasting.
     fn as_any(&self) -> &dyn Any;
 }
@@ -113,6 +132,17 @@ impl<R: Residual> DynResidual for R {
 
     fn jacobian(&self, x: &[&[f64]], values: &mut [f64], jac: &mut [f64]) -> Result<()> {
         autodiff::jacobian_with(self, x, values, jac, JacobianMode::Auto)
+    }
+
+    fn weighted_hessian(
+        &self,
+        x: &[&[f64]],
+        weights: &[f64],
+        active: &[bool],
+        out: &mut [f64],
+    ) -> Result<bool> {
+        crate::hessian::weighted_hessian(self, x, weights, active, out)?;
+        Ok(true)
     }
 
     fn as_any(&self) -> &dyn Any {
