@@ -12,6 +12,13 @@
 //! ∂/∂Pⱼ exactly. For NURBS with weights wⱼ, W = Σ wⱼNⱼ and W′ = Σ wⱼN′ⱼ:
 //! C = Σ wⱼNⱼPⱼ / W and C′ = (Σ wⱼN′ⱼPⱼ − W′·C) / W. Lines and Bézier curves are B-splines on
 //! clamped knots over [0, 1].
+//!
+//! When u is data (a contact at a given parameter, a joint at a curve's end), the weights being
+//! data too, C(u), C′(u) and C″(u) are fixed linear combinations of the p + 1 control points of
+//! u's span: [`CurveBasis::at`] precomputes those coefficients once and reads only the points
+//! whose coefficient is not zero up to the derivative order asked for (at a clamped end, C and
+//! C′ read two points), so a residual at a fixed parameter neither evaluates the basis again nor
+//! carries the other control points through its derivatives.
 
 use camber_solve::scalar::{cst, from_usize, re};
 use camber_solve::Scalar;
@@ -38,6 +45,17 @@ pub struct CurveBasis {
     knots: Vec<f64>,
     weights: Option<Vec<f64>>,
     count: usize,
+    /// Set by [`CurveBasis::at`]: the evaluation is at a fixed parameter and reads only the
+    /// control points of its span.
+    fixed: Option<FixedParameter>,
+}
+
+/// C(u) = Σ aᵣ·Qᵣ, C′(u) = Σ bᵣ·Qᵣ and (for `order` 2) C″(u) = Σ cᵣ·Qᵣ at a fixed u, where
+/// Qᵣ are the control points the basis reads, with (aᵣ, bᵣ, cᵣ) in `coefficients`.
+#[derive(Debug, Clone, PartialEq)]
+struct FixedParameter {
+    order: usize,
+    coefficients: SmallVec<[[f64; 3]; 8]>,
 }
 
 impl CurveBasis {
@@ -65,12 +83,89 @@ impl CurveBasis {
             knots,
             weights,
             count,
+            fixed: None,
         })
     }
 
-    /// The number of control points (blocks the evaluation reads).
+    /// The evaluation at the fixed parameter u (clamped to the domain) up to the derivative
+    /// `order` (1: C and C′, 2: also C″): the returned basis reads only the control points
+    /// whose coefficient in one of those is not zero, listed in the returned indices, and
+    /// ignores the parameter passed to [`CurveBasis::eval`] and [`CurveBasis::eval2`]
+    /// ([`CurveBasis::eval2`] needs `order` 2).
+    ///
+    /// ```
+    /// use camber_sketch::{curve_eval::CurveBasis, Entity};
+    /// use camber_geom::BezierCurve2;
+    /// use nalgebra::Point2;
+    /// let c = Entity::Bezier(BezierCurve2::try_new(vec![
+    ///     Point2::new(0.0, 0.0), Point2::new(1.0, 1.0), Point2::new(2.0, 1.0), Point2::new(3.0, 0.0),
+    /// ])?);
+    /// let full = CurveBasis::of(&c).ok_or("curve")?;
+    /// let (end, points) = full.at(1.0, 1);
+    /// assert_eq!(points.as_slice(), &[2, 3]); // C(1) = P₃, C′(1) = 3·(P₃ − P₂)
+    /// let (p, t) = end.eval::<f64>(&[&[2.0, 1.0][..], &[3.0, 0.0][..]], 0.0); // u is ignored
+    /// assert!((p[0] - 3.0).abs() < 1e-15 && (t[0] - 3.0).abs() < 1e-15 && (t[1] + 3.0).abs() < 1e-15);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn at(&self, u: f64, order: usize) -> (CurveBasis, SmallVec<[usize; 8]>) {
+        let p = self.degree;
+        if self.count == 0 || self.knots.len() < self.count + p + 1 {
+            return (self.clone(), (0..self.count).collect());
+        }
+        let order = order.min(2);
+        let (a, b) = self.domain();
+        let u = u.clamp(a, b);
+        let first = self.span(u) - p;
+        // Each coefficient is the evaluation with one control point at (1, 0), the rest at 0.
+        let mut unit: SmallVec<[[f64; 2]; 8]> = smallvec::smallvec![[0.0; 2]; self.count];
+        let mut coefficients: SmallVec<[[f64; 3]; 8]> = SmallVec::new();
+        let mut points = SmallVec::new();
+        for j in first..=first + p {
+            unit[j] = [1.0, 0.0];
+            let [c0, c1, c2] = {
+                let refs: SmallVec<[&[f64]; 8]> = unit.iter().map(|q| &q[..]).collect();
+                self.eval2::<f64>(&refs, u)
+            };
+            unit[j] = [0.0, 0.0];
+            let mut c = [c0[0], c1[0], c2[0]];
+            c[order + 1..].fill(0.0);
+            if c.iter().any(|v| *v != 0.0) {
+                coefficients.push(c);
+                points.push(j);
+            }
+        }
+        let basis = CurveBasis {
+            fixed: Some(FixedParameter {
+                order,
+                coefficients,
+            }),
+            ..self.clone()
+        };
+        (basis, points)
+    }
+
+    /// The number of control points the evaluation reads: all of them, or the p + 1 of the span
+    /// for a basis made by [`CurveBasis::at`].
     pub fn count(&self) -> usize {
-        self.count
+        match &self.fixed {
+            Some(f) => f.coefficients.len(),
+            None => self.count,
+        }
+    }
+
+    /// C, C′ and (up to the basis' order) C″ at a fixed parameter from the points it reads.
+    fn fixed_eval<T: Scalar>(f: &FixedParameter, points: &[&[T]], order: usize) -> [[T; 2]; 3] {
+        let mut out = [[T::zero(); 2]; 3];
+        for (q, c) in points.iter().zip(&f.coefficients) {
+            for (o, ck) in out.iter_mut().zip(c).take(order + 1) {
+                if *ck != 0.0 {
+                    let ck = cst::<T>(*ck);
+                    o[0] += ck * q[0];
+                    o[1] += ck * q[1];
+                }
+            }
+        }
+        out
     }
 
     /// The parametric domain [u_p, u_{n}] (n = number of control points).
@@ -111,6 +206,10 @@ impl CurveBasis {
     /// [`CurveBasis::count`] blocks). u is clamped to the domain (a contact parameter is
     /// bounded there; outside, the end span's polynomial would extrapolate).
     pub fn eval<T: Scalar>(&self, points: &[&[T]], u: T) -> ([T; 2], [T; 2]) {
+        if let Some(f) = &self.fixed {
+            let [c, c1, _] = Self::fixed_eval(f, points, 1);
+            return (c, c1);
+        }
         let zero = [T::zero(), T::zero()];
         let p = self.degree;
         if self.count == 0 || self.knots.len() < self.count + p + 1 || points.len() < self.count {
@@ -213,6 +312,10 @@ impl CurveBasis {
     /// N′ⱼ,ₚ = p·(Nⱼ,ₚ₋₁/Δⱼ − Nⱼ₊₁,ₚ₋₁/Δⱼ₊₁) with Δⱼ = u_{j+p} − u_j, applied twice for N″;
     /// for NURBS, C″ = (Σ wⱼN″ⱼPⱼ − 2W′·C′ − W″·C)/W. Same conventions as [`CurveBasis::eval`].
     pub fn eval2<T: Scalar>(&self, points: &[&[T]], u: T) -> [[T; 2]; 3] {
+        if let Some(f) = &self.fixed {
+            debug_assert!(f.order >= 2, "eval2 on a basis fixed at order {}", f.order);
+            return Self::fixed_eval(f, points, 2);
+        }
         let zero = [T::zero(), T::zero()];
         let p = self.degree;
         if self.count == 0 || self.knots.len() < self.count + p + 1 || points.len() < self.count {
@@ -383,6 +486,58 @@ mod tests {
                     assert_relative_eq!(mine[1], theirs.y, epsilon = 1e-8, max_relative = 1e-9);
                 }
             }
+        }
+        Ok(())
+    }
+
+    #[test]
+    fn a_fixed_parameter_reads_its_span_and_agrees_with_the_full_evaluation(
+    ) -> Result<(), Box<dyn std::error::Error>> {
+        let pts = vec![
+            Point2::new(0.0, 0.0),
+            Point2::new(1.0, 2.0),
+            Point2::new(2.0, -1.0),
+            Point2::new(3.0, 1.0),
+            Point2::new(4.0, 0.5),
+            Point2::new(5.0, 1.5),
+        ];
+        let knots = vec![0.0, 0.0, 0.0, 0.0, 0.3, 0.6, 1.0, 1.0, 1.0, 1.0];
+        let nu = NurbsCurve2::try_new(
+            3,
+            KnotVector::try_new(knots)?,
+            pts.clone(),
+            vec![1.0, 0.5, 2.0, 1.0, 0.8, 1.2],
+        )?;
+        let raw = blocks(&pts);
+        let refs: Vec<&[f64]> = raw.iter().map(|b| &b[..]).collect();
+        let full = CurveBasis::of(&Entity::Nurbs(nu)).ok_or("curve")?;
+        // (u, points read for C and C′, for C″ too): clamped ends need fewer points, and at the
+        // simple knot 0.6 the function starting there is zero with its first two derivatives.
+        let cases: [(f64, &[usize], &[usize]); 4] = [
+            (0.0, &[0, 1], &[0, 1, 2]),
+            (0.45, &[1, 2, 3, 4], &[1, 2, 3, 4]),
+            (0.6, &[2, 3, 4], &[2, 3, 4]),
+            (1.0, &[4, 5], &[3, 4, 5]),
+        ];
+        for (u, first_order, second_order) in cases {
+            let [a0, a1, a2] = full.eval2::<f64>(&refs, u);
+            let (fixed, points) = full.at(u, 2);
+            assert_eq!(points.as_slice(), second_order, "u = {u}");
+            assert_eq!(fixed.count(), second_order.len());
+            let read: Vec<&[f64]> = points.iter().map(|j| refs[*j]).collect();
+            let [b0, b1, b2] = fixed.eval2::<f64>(&read, 0.77);
+            for (x, y) in [(a0, b0), (a1, b1), (a2, b2)] {
+                assert_relative_eq!(x[0], y[0], epsilon = 1e-10, max_relative = 1e-12);
+                assert_relative_eq!(x[1], y[1], epsilon = 1e-10, max_relative = 1e-12);
+            }
+            let (fixed, points) = full.at(u, 1);
+            assert_eq!(points.as_slice(), first_order, "u = {u}");
+            let read: Vec<&[f64]> = points.iter().map(|j| refs[*j]).collect();
+            let (c, c1) = fixed.eval::<f64>(&read, 0.0);
+            assert_relative_eq!(c[0], a0[0], epsilon = 1e-12);
+            assert_relative_eq!(c[1], a0[1], epsilon = 1e-12);
+            assert_relative_eq!(c1[0], a1[0], epsilon = 1e-10, max_relative = 1e-12);
+            assert_relative_eq!(c1[1], a1[1], epsilon = 1e-10, max_relative = 1e-12);
         }
         Ok(())
     }

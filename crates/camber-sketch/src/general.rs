@@ -62,6 +62,7 @@ pub(crate) enum Check {
         u: CheckParam,
         side: CircleSide,
         rotation: Rotation,
+        floor: f64,
     },
     Line {
         curve: EntityId,
@@ -69,6 +70,7 @@ pub(crate) enum Check {
         u: CheckParam,
         side: LineSide,
         sense: Sense,
+        floor: f64,
     },
     Join {
         first: EntityId,
@@ -80,6 +82,7 @@ pub(crate) enum Check {
         u: CheckParam,
         v: CheckParam,
         sense: Sense,
+        floors: [f64; 2],
     },
     Angle {
         first: EntityId,
@@ -87,6 +90,15 @@ pub(crate) enum Check {
         cos: f64,
         sin: f64,
     },
+}
+
+/// The tangent speed |C′| below which a solved contact counts as a cusp: a millionth of the
+/// curve's mean speed before the solve (its control-polygon length over its parameter span).
+/// A solve that shrinks a curve a million times over has collapsed it, not touched anything.
+fn speed_floor(e: &Entity) -> f64 {
+    let length: f64 = e.points().windows(2).map(|w| (w[1] - w[0]).norm()).sum();
+    let (a, b) = e.domain().unwrap_or((0.0, 1.0));
+    1e-6 * length / (b - a).max(f64::MIN_POSITIVE)
 }
 
 fn kind<'a>(
@@ -118,13 +130,27 @@ fn curve_basis(lookup: &impl EntityLookup, id: EntityId) -> Result<(CurveBasis, 
     Ok((basis, slots))
 }
 
-/// The parameter of a contact: fixed, or a new bounded slot (appended to `slots`).
-fn contact_param(
-    basis: &CurveBasis,
+/// A curve's basis restricted to the fixed parameter u ([`CurveBasis::at`]) and the slots of
+/// the control points it reads.
+fn curve_basis_at(
+    lookup: &impl EntityLookup,
+    id: EntityId,
+    u: f64,
+) -> Result<(CurveBasis, Vec<Slot>)> {
+    let (basis, _) = curve_basis(lookup, id)?;
+    let (basis, points) = basis.at(u, 1);
+    Ok((basis, points.iter().map(|j| Slot::Point(id, *j)).collect()))
+}
+
+/// The basis, slots and parameter of a contact on `curve`: at a fixed parameter, the basis
+/// restricted to it and the slots of the control points it reads; at a free one, the whole
+/// curve and a new slot for u bounded to the domain (the last slot).
+fn curve_contact(
+    lookup: &impl EntityLookup,
     curve: EntityId,
     u: Contact,
-    slots: &mut Vec<Slot>,
-) -> Result<(Param, CheckParam)> {
+) -> Result<(CurveBasis, Vec<Slot>, Param, CheckParam)> {
+    let (basis, mut slots) = curve_basis(lookup, curve)?;
     let v = u.value();
     let (lo, hi) = basis.domain();
     if !v.is_finite() {
@@ -143,10 +169,15 @@ fn contact_param(
         });
     }
     Ok(match u {
-        Contact::At(_) => (Param::Fixed(v), CheckParam::Fixed(v)),
+        Contact::At(_) => {
+            let (basis, points) = basis.at(v, 1);
+            let slots = points.iter().map(|j| Slot::Point(curve, *j)).collect();
+            (basis, slots, Param::Fixed(v), CheckParam::Fixed(v))
+        }
         Contact::Free(_) => {
             slots.push(Slot::Contact { u0: v, lo, hi });
-            (Param::Block, CheckParam::Slot(slots.len() - 1))
+            let k = slots.len() - 1;
+            (basis, slots, Param::Block, CheckParam::Slot(k))
         }
     })
 }
@@ -211,8 +242,7 @@ pub(crate) fn compile_general(
     let name = c.kind_name();
     match c {
         Constraint::PointOnCurve { point, curve, u } => {
-            let (basis, mut slots) = curve_basis(lookup, *curve)?;
-            let (param, _) = contact_param(&basis, *curve, *u, &mut slots)?;
+            let (basis, mut slots, param, _) = curve_contact(lookup, *curve, *u)?;
             let (e, j) = single_block(lookup, *point)?;
             distinct(e, *curve)?;
             slots.push(Slot::Point(e, j));
@@ -227,8 +257,7 @@ pub(crate) fn compile_general(
         } => {
             distinct(*curve, *line)?;
             kind(lookup, *line, "line", is_line)?;
-            let (basis, mut slots) = curve_basis(lookup, *curve)?;
-            let (param, check_u) = contact_param(&basis, *curve, *u, &mut slots)?;
+            let (basis, mut slots, param, check_u) = curve_contact(lookup, *curve, *u)?;
             slots.extend([Slot::Point(*line, 0), Slot::Point(*line, 1)]);
             let check = Check::Line {
                 curve: *curve,
@@ -236,6 +265,7 @@ pub(crate) fn compile_general(
                 u: check_u,
                 side: *side,
                 sense: *sense,
+                floor: speed_floor(lookup.lookup(*curve)?),
             };
             out.push(general(
                 name,
@@ -252,8 +282,7 @@ pub(crate) fn compile_general(
             rotation,
         } => {
             kind(lookup, *circle, "circle", is_circle)?;
-            let (basis, mut slots) = curve_basis(lookup, *curve)?;
-            let (param, check_u) = contact_param(&basis, *curve, *u, &mut slots)?;
+            let (basis, mut slots, param, check_u) = curve_contact(lookup, *curve, *u)?;
             slots.extend([Slot::Point(*circle, 0), Slot::Radius(*circle)]);
             let check = Check::Circle {
                 curve: *curve,
@@ -261,6 +290,7 @@ pub(crate) fn compile_general(
                 u: check_u,
                 side: *side,
                 rotation: *rotation,
+                floor: speed_floor(lookup.lookup(*curve)?),
             };
             out.push(general(
                 name,
@@ -336,9 +366,19 @@ pub(crate) fn compile_general(
         }
         Constraint::G1JoinFree { first, second } | Constraint::G2Join { first, second } => {
             distinct(*first, *second)?;
-            let (b1, mut slots) = curve_basis(lookup, *first)?;
-            let (b2, s2) = curve_basis(lookup, *second)?;
-            slots.extend(s2);
+            // The joint's tangents (and curvatures) read only the end spans' control points.
+            let (full1, _) = curve_basis(lookup, *first)?;
+            let (full2, _) = curve_basis(lookup, *second)?;
+            let (u1, u2) = (full1.domain().1, full2.domain().0);
+            let ends = |order: usize| {
+                let ((b1, r1), (b2, r2)) = (full1.at(u1, order), full2.at(u2, order));
+                let slots: Vec<Slot> = r1
+                    .iter()
+                    .map(|j| Slot::Point(*first, *j))
+                    .chain(r2.iter().map(|j| Slot::Point(*second, *j)))
+                    .collect();
+                (b1, b2, slots)
+            };
             let mut joint = ETerms::new();
             for (r, sign) in [
                 (PointRef::End(*first), 1.0),
@@ -353,19 +393,20 @@ pub(crate) fn compile_general(
                 terms: joint,
                 target: [0.0; 2],
             });
-            let (u1, u2) = (b1.domain().1, b2.domain().0);
             let check = Check::Join {
                 first: *first,
                 second: *second,
             };
             if matches!(c, Constraint::G2Join { .. }) {
+                let (b1, b2, slots) = ends(2);
                 out.push(general(
                     name,
-                    CurvatureMatch::new((b1.clone(), u1), (b2.clone(), u2)),
-                    slots.clone(),
+                    CurvatureMatch::new((b1, u1), (b2, u2)),
+                    slots,
                     None,
                 ));
             }
+            let (b1, b2, slots) = ends(1);
             out.push(general(
                 name,
                 TangentsParallel::new((b1, u1), (b2, u2)),
@@ -381,17 +422,24 @@ pub(crate) fn compile_general(
             sense,
         } => {
             distinct(*first, *second)?;
-            let (b1, mut slots) = curve_basis(lookup, *first)?;
-            let (p1, c1) = contact_param(&b1, *first, *u, &mut slots)?;
-            let (b2, s2) = curve_basis(lookup, *second)?;
+            let (b1, mut slots, p1, c1) = curve_contact(lookup, *first, *u)?;
+            let (b2, s2, p2, c2) = curve_contact(lookup, *second, *v)?;
+            // The second curve's contact slot moves behind the first curve's slots.
+            let c2 = match c2 {
+                CheckParam::Slot(k) => CheckParam::Slot(k + slots.len()),
+                other => other,
+            };
             slots.extend(s2);
-            let (p2, c2) = contact_param(&b2, *second, *v, &mut slots)?;
             let check = Check::Curves {
                 first: *first,
                 second: *second,
                 u: c1,
                 v: c2,
                 sense: *sense,
+                floors: [
+                    speed_floor(lookup.lookup(*first)?),
+                    speed_floor(lookup.lookup(*second)?),
+                ],
             };
             out.push(general(
                 name,
@@ -505,6 +553,7 @@ impl Check {
                 side,
                 rotation,
                 u,
+                floor,
             } => {
                 let u = param(u)?;
                 let e = get(solved, curve)?;
@@ -513,7 +562,7 @@ impl Check {
                 };
                 let (p, t) = point_tangent(e, curve, u)?;
                 let speed = t[0].hypot(t[1]);
-                if speed.is_nan() || speed <= 1e-9 * (1.0 + radius) {
+                if speed.is_nan() || speed <= floor {
                     return Err(Error::Cusp {
                         constraint: owner,
                         speed,
@@ -538,6 +587,7 @@ impl Check {
                 side,
                 sense,
                 u,
+                floor,
             } => {
                 let u = param(u)?;
                 let e = get(solved, curve)?;
@@ -548,7 +598,7 @@ impl Check {
                 let len = d[0].hypot(d[1]);
                 let (_, t) = point_tangent(e, curve, u)?;
                 let speed = t[0].hypot(t[1]);
-                if speed.is_nan() || speed <= 1e-12 * (1.0 + len) {
+                if speed.is_nan() || speed <= floor {
                     return Err(Error::Cusp {
                         constraint: owner,
                         speed,
@@ -569,12 +619,13 @@ impl Check {
                 u,
                 v,
                 sense,
+                floors,
             } => {
                 let (u, v) = (param(u)?, param(v)?);
                 let (_, t1) = point_tangent(get(solved, first)?, first, u)?;
                 let (_, t2) = point_tangent(get(solved, second)?, second, v)?;
                 let (s1, s2) = (t1[0].hypot(t1[1]), t2[0].hypot(t2[1]));
-                if s1.is_nan() || s2.is_nan() || s1.min(s2) <= 1e-12 {
+                if s1.is_nan() || s2.is_nan() || s1 <= floors[0] || s2 <= floors[1] {
                     return Err(Error::Cusp {
                         constraint: owner,
                         speed: s1.min(s2),
@@ -616,12 +667,12 @@ impl Check {
     pub(crate) fn push_back(&self, lookup: &impl EntityLookup, s: f64) -> Result<Option<PushBack>> {
         match *self {
             Check::Circle { curve, circle, .. } => {
-                let (basis, mut slots) = curve_basis(lookup, curve)?;
+                let (basis, mut slots) = curve_basis_at(lookup, curve, s)?;
                 slots.extend([Slot::Point(circle, 0), Slot::Radius(circle)]);
                 Ok(Some((Arc::new(OnCircleAt::new(basis, s)), slots)))
             }
             Check::Line { curve, line, .. } => {
-                let (basis, mut slots) = curve_basis(lookup, curve)?;
+                let (basis, mut slots) = curve_basis_at(lookup, curve, s)?;
                 slots.extend([Slot::Point(line, 0), Slot::Point(line, 1)]);
                 Ok(Some((Arc::new(OnLineAt::new(basis, s)), slots)))
             }
