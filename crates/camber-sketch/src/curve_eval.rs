@@ -316,10 +316,30 @@ impl CurveBasis {
             debug_assert!(f.order >= 2, "eval2 on a basis fixed at order {}", f.order);
             return Self::fixed_eval(f, points, 2);
         }
+        let [c0, c1, c2, _] = self.derivatives(points, u, 2);
+        [c0, c1, c2]
+    }
+
+    /// C(u), C′(u), C″(u) and C‴(u) (the third derivative from one more application of the
+    /// derivative recursion, zero for degrees below 3; for NURBS,
+    /// C‴ = (Σ wⱼN‴ⱼPⱼ − 3W′·C″ − 3W″·C′ − W‴·C)/W). Same conventions as
+    /// [`CurveBasis::eval`]; a basis fixed by [`CurveBasis::at`] gives C‴ = 0 (it keeps
+    /// coefficients up to C″ only).
+    pub fn eval3<T: Scalar>(&self, points: &[&[T]], u: T) -> [[T; 2]; 4] {
+        if let Some(f) = &self.fixed {
+            let [c0, c1, c2] = Self::fixed_eval(f, points, 2);
+            return [c0, c1, c2, [T::zero(); 2]];
+        }
+        self.derivatives(points, u, 3)
+    }
+
+    /// C and its derivatives up to `order` (2 or 3; higher ones left at zero) on the full
+    /// basis.
+    fn derivatives<T: Scalar>(&self, points: &[&[T]], u: T, order: usize) -> [[T; 2]; 4] {
         let zero = [T::zero(), T::zero()];
         let p = self.degree;
         if self.count == 0 || self.knots.len() < self.count + p + 1 || points.len() < self.count {
-            return [zero; 3];
+            return [zero; 4];
         }
         let (a, b) = self.domain();
         let u = if re(u) < a {
@@ -397,9 +417,16 @@ impl CurveBasis {
         } else {
             smallvec::smallvec![T::zero(); p + 1]
         };
+        let n3 = if p >= 3 && order >= 3 {
+            let lower2 = derive(p - 2, &levels[p - 3]);
+            let lower1 = derive(p - 1, &lower2);
+            derive(p, &lower1)
+        } else {
+            smallvec::smallvec![T::zero(); p + 1]
+        };
         let first = k - p;
-        let mut c = [zero; 3];
-        let (mut w0, mut w1, mut w2) = (T::zero(), T::zero(), T::zero());
+        let mut c = [zero; 4];
+        let (mut w0, mut w1, mut w2, mut w3) = (T::zero(), T::zero(), T::zero(), T::zero());
         for r in 0..=p {
             let wr = cst::<T>(
                 self.weights
@@ -410,23 +437,29 @@ impl CurveBasis {
             w0 += wr * n0[r];
             w1 += wr * n1[r];
             w2 += wr * n2[r];
+            w3 += wr * n3[r];
             let q = points[first + r];
             for d in 0..2 {
                 c[0][d] += wr * n0[r] * q[d];
                 c[1][d] += wr * n1[r] * q[d];
                 c[2][d] += wr * n2[r] * q[d];
+                c[3][d] += wr * n3[r] * q[d];
             }
         }
         if self.weights.is_some() {
-            // Per coordinate: C = A/W, C′ = (A′ − W′C)/W, C″ = (A″ − 2W′C′ − W″C)/W.
-            let rational = |a0: T, a1: T, a2: T| {
-                let c0 = a0 / w0;
-                let c1 = (a1 - w1 * c0) / w0;
-                (c0, c1, (a2 - cst::<T>(2.0) * w1 * c1 - w2 * c0) / w0)
+            // Per coordinate: C = A/W, C′ = (A′ − W′C)/W, C″ = (A″ − 2W′C′ − W″C)/W,
+            // C‴ = (A‴ − 3W′C″ − 3W″C′ − W‴C)/W.
+            let three = cst::<T>(3.0);
+            let rational = |a: [T; 4]| {
+                let c0 = a[0] / w0;
+                let c1 = (a[1] - w1 * c0) / w0;
+                let c2 = (a[2] - cst::<T>(2.0) * w1 * c1 - w2 * c0) / w0;
+                let c3 = (a[3] - three * w1 * c2 - three * w2 * c1 - w3 * c0) / w0;
+                [c0, c1, c2, c3]
             };
-            let (x0, x1, x2) = rational(c[0][0], c[1][0], c[2][0]);
-            let (y0, y1, y2) = rational(c[0][1], c[1][1], c[2][1]);
-            return [[x0, y0], [x1, y1], [x2, y2]];
+            let x = rational([c[0][0], c[1][0], c[2][0], c[3][0]]);
+            let y = rational([c[0][1], c[1][1], c[2][1], c[3][1]]);
+            return [[x[0], y[0]], [x[1], y[1]], [x[2], y[2]], [x[3], y[3]]];
         }
         c
     }
@@ -484,6 +517,46 @@ mod tests {
                 for (mine, theirs) in [(e0, second[0]), (e1, second[1]), (e2, second[2])] {
                     assert_relative_eq!(mine[0], theirs.x, epsilon = 1e-8, max_relative = 1e-9);
                     assert_relative_eq!(mine[1], theirs.y, epsilon = 1e-8, max_relative = 1e-9);
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// C‴ of [`CurveBasis::eval3`] against central differences of C″ (inside the spans, for a
+    /// B-spline and a NURBS), and its lower derivatives equal to [`CurveBasis::eval2`]'s.
+    #[test]
+    fn the_third_derivative_matches_differences_of_the_second(
+    ) -> Result<(), Box<dyn std::error::Error>> {
+        let pts = vec![
+            Point2::new(0.0, 0.0),
+            Point2::new(1.0, 2.0),
+            Point2::new(2.0, -1.0),
+            Point2::new(3.0, 1.0),
+            Point2::new(4.0, 0.5),
+        ];
+        let knots = vec![0.0, 0.0, 0.0, 0.0, 0.4, 1.0, 1.0, 1.0, 1.0];
+        let bs = BSplineCurve2::try_new(3, KnotVector::try_new(knots.clone())?, pts.clone())?;
+        let nu = NurbsCurve2::try_new(
+            3,
+            KnotVector::try_new(knots)?,
+            pts.clone(),
+            vec![1.0, 0.5, 2.0, 1.0, 0.8],
+        )?;
+        let raw = blocks(&pts);
+        let refs: Vec<&[f64]> = raw.iter().map(|b| &b[..]).collect();
+        for e in [Entity::BSpline(bs), Entity::Nurbs(nu)] {
+            let basis = CurveBasis::of(&e).ok_or("curve")?;
+            for u in [0.1, 0.3, 0.55, 0.9] {
+                let [c0, c1, c2, c3] = basis.eval3::<f64>(&refs, u);
+                let [d0, d1, d2] = basis.eval2::<f64>(&refs, u);
+                assert_eq!([c0, c1, c2], [d0, d1, d2]);
+                let h = 1e-5;
+                let plus = basis.eval2::<f64>(&refs, u + h)[2];
+                let minus = basis.eval2::<f64>(&refs, u - h)[2];
+                for k in 0..2 {
+                    let central = (plus[k] - minus[k]) / (2.0 * h);
+                    assert_relative_eq!(c3[k], central, epsilon = 1e-5, max_relative = 1e-6);
                 }
             }
         }

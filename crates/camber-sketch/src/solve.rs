@@ -4,16 +4,17 @@
 //!
 //! An affine component takes the linear path; any other goes to [`camber_solve::solve()`]
 //! (selection by the DOF analysis). Contacts are then checked on the solved entities; a
-//! crossing is pushed back by one more row and the component solved again from the sketch's
-//! state, up to [`MAX_PUSH_BACKS`] times.
+//! crossing adds a clearance row on its side of the contact, a cusp the floor on the contact's
+//! tangent speed ([`crate::clearance`]), and the component is solved again from the sketch's
+//! state, up to [`MAX_ACTIVE_ROWS`] rows.
 
 use camber_solve::{solve_linear, DofAnalysis, SolveReport};
 
 use crate::build::{Component, ComponentProblem};
-use camber_solve::ConstraintId;
+use crate::clearance::ActiveRow;
 
 use crate::entity::Entity;
-use crate::errors::{Error, Result};
+use crate::errors::Result;
 use crate::ids::EntityId;
 use crate::sketch::Sketch;
 
@@ -33,8 +34,9 @@ pub fn default_options() -> camber_solve::Options {
 /// A solved component: its problem, the solver's report and the solved entities.
 type Solved = (ComponentProblem, SolveReport, Vec<(EntityId, Entity)>);
 
-/// Push-backs of crossing contacts tried per component solve before giving up.
-pub const MAX_PUSH_BACKS: usize = 4;
+/// Active rows (clearances of contacts that crossed, speed floors of contacts that collapsed)
+/// added per component solve before giving up.
+pub const MAX_ACTIVE_ROWS: usize = 4;
 
 /// How far (length units) a solved curve may lie past the line or circle it touches before the
 /// contact counts as crossed: 100 × the solve tolerance, at least 1e-9.
@@ -145,41 +147,39 @@ impl Sketch {
         Ok(report)
     }
 
-    /// Solves one component from the sketch's state and runs the contact checks. A contact
-    /// that crosses its target is pushed back: the solve restarts from the sketch's state with
-    /// one more row putting the deepest crossing point back on the target (the seed's
-    /// push-back), at most [`MAX_PUSH_BACKS`] times.
+    /// Solves one component from the sketch's state and runs the contact checks. A failed
+    /// contact check adds its active row ([`crate::clearance`]): a crossing the clearance on
+    /// its side of the contact (the curve touches the target there, at a free second point,
+    /// instead of crossing it), a cusp the floor on the contact's tangent speed. The solve then
+    /// restarts from the sketch's state, with at most [`MAX_ACTIVE_ROWS`] rows in all.
     fn solve_component(&self, comp: &Component) -> Result<Solved> {
-        let mut pushed: Vec<(ConstraintId, f64)> = Vec::new();
+        let mut rows: Vec<ActiveRow> = Vec::new();
         loop {
             let mut cp = self.build_component(comp, None)?;
-            for (owner, s) in &pushed {
-                cp.push_back(self, *owner, *s)?;
+            for row in &rows {
+                cp.add_active_row(self, *row)?;
             }
             let mut r = cp.solve(self.options())?;
             let x = cp.problem().values();
             let solved = cp.entities_at(self, x)?;
-            match cp.check_contacts(&solved, x, penetration_tolerance(self.options())) {
+            let e = match cp.check_contacts(&solved, x, penetration_tolerance(self.options())) {
                 Ok(()) => {
-                    if !pushed.is_empty() {
+                    if !rows.is_empty() {
                         r.reason = format!(
-                            "{}; after {} push-back(s) of crossing contacts",
+                            "{}; with {} active row(s) of contacts that crossed or collapsed",
                             r.reason,
-                            pushed.len()
+                            rows.len()
                         );
                     }
                     return Ok((cp, r, solved));
                 }
-                Err(Error::ContactCrossed {
-                    constraint,
-                    parameter,
-                    ..
-                }) if pushed.len() < MAX_PUSH_BACKS
-                    && !pushed.contains(&(constraint, parameter)) =>
-                {
-                    pushed.push((constraint, parameter));
+                Err(e) => e,
+            };
+            match cp.active_row_for(&e, x)? {
+                Some(row) if rows.len() < MAX_ACTIVE_ROWS && !rows.contains(&row) => {
+                    rows.push(row);
                 }
-                Err(e) => return Err(e),
+                _ => return Err(e),
             }
         }
     }
