@@ -28,13 +28,15 @@
 //! target itself: curvature at most 1/r toward a circle's centre, none toward a line), and
 //! Q(s) ≥ 0 away from u excludes a crossing further along.
 //!
-//! One [`Clearance`] row covers one side of the contact, the bracket B = [u, u + w] or
-//! [u − w, u] (cut to the domain; w is the half-width of the window the crossing check
-//! samples), and its value is
+//! One [`Clearance`] row covers one whole side of the contact, the bracket B = [u, b] or
+//! [a, u] of the domain [a, b], and its value is
 //!
 //! h(x) = w²·min_{s ∈ B} Q(s; x)
 //!
-//! (w² turns Q back into a length, so that one tolerance fits every row). By Danskin's theorem
+//! with w the half-width of the window the crossing check samples (w² turns Q back into a
+//! length, so that one tolerance fits every row). The bracket runs to the end of the curve, not
+//! only to the edge of that window: a row cut at the window would be met by a curve touching
+//! the target at the window's edge and crossing just past it. By Danskin's theorem
 //! h is differentiable wherever the minimiser s* is unique, with ∇h = w²·∂Q/∂x (s*, x): s* is
 //! located on the real parts (a sampled scan of B, then golden-section and Newton refinement)
 //! and the residual is evaluated at s₁ = s* − Q′(s*)/Q″(s*) in the scalar type. At a converged
@@ -64,22 +66,25 @@
 //! tangent collapsed, its speed floor is added; and the component is solved again from the
 //! sketch's state. Unlike a push-back of one sample onto the target at a fixed parameter, the
 //! second touching point slides freely, so the row neither conflicts with the contact a short
-//! distance away nor leaves the curve crossing beside the pinned sample. A result is still
-//! written back only after every check passes on the solved curve.
-
-use std::sync::Arc;
+//! distance away nor leaves the curve crossing beside the pinned sample.
+//!
+//! A contact whose tangent already points against its recorded direction at the start
+//! is headed for the cusp: when Newton alone fails
+//! from such a start, its floor is added before any fallback runs (a least-squares rescue would
+//! find some valid curve, but not the nearest one).
+//!
+//! An active row may turn out not to bind. At the solution z* of min ½‖z − z₀‖²_W subject to the
+//! rows, W·(z* − z₀) = Jᵀμ; an inequality h ≥ 0 binds only with μ ≥ 0, and with μ < 0 letting h
+//! grow would bring the curve closer to the start. Such a row is dropped and Newton resumes
+//! from z* toward z₀. A result is written back only
+//! after every check passes on the solved curve.
 
 use camber_solve::scalar::{cst, re};
-use camber_solve::{ConstraintId, Residual, Scalar};
+use camber_solve::{Residual, Scalar};
 use smallvec::SmallVec;
 
-use crate::build::ComponentProblem;
-use crate::compile::{EntityLookup, Piece};
-use crate::constraint::{CircleSide, LineSide};
 use crate::contact::{curve_at, dot, Param};
 use crate::curve_eval::CurveBasis;
-use crate::errors::{Error, Result};
-use crate::general::{curve_basis, point_tangent, side_width, Check, CheckParam, Slot};
 
 /// The fraction κ of its starting speed below which the tangent at a contact may not shrink
 /// once a solve has collapsed it into a cusp: the speed floor is f = κ·|C′₀(u)|.
@@ -135,15 +140,16 @@ pub struct Clearance {
     side: f64,
     /// +1 for the bracket after the contact, −1 for the one before.
     direction: f64,
-    /// The bracket's length w (parameter units).
+    /// The scale w (parameter units): h = w²·min Q.
     width: f64,
 }
 
 impl Clearance {
     /// The clearance of the curve `basis` (the whole curve, not [`CurveBasis::at`]) beside its
     /// contact at `u` with a circle or line: on the positive side of the target (outside the
-    /// circle, left of the line A → B) when `positive`, over [u, u + w] when `after`, else over
-    /// [u − w, u], w = `width` > 0.
+    /// circle, left of the line A → B) when `positive`, from u to the end of the domain when
+    /// `after`, else from its start to u; `width` > 0 is the scale w of the row (and sets the
+    /// scan's density, [`SAMPLES`] per w).
     pub fn new(
         basis: CurveBasis,
         u: Param,
@@ -275,43 +281,39 @@ impl Clearance {
     fn bracket(&self, u: f64) -> (f64, f64) {
         let (a, b) = self.basis.domain();
         if self.direction > 0.0 {
-            (u, (u + self.width).min(b))
+            (u, b.max(u))
         } else {
-            ((u - self.width).max(a), u)
+            (a.min(u), u)
         }
     }
 
-    /// Where Q is least over the bracket, from the real parts: a scan of [`SAMPLES`] points,
+    /// Where Q is least over the bracket, from the real parts: a scan ([`SAMPLES`] points per w),
     /// then golden-section and Newton refinement around the best one.
     fn locate(&self, points: &[&[f64]], u: f64, target: &[&[f64]]) -> Minimum {
         let (lo, hi) = self.bracket(u);
-        // The contact end of the bracket moves with u; the far end too unless the domain cut it.
-        let (a, b) = self.basis.domain();
+        // The contact end of the bracket moves with u; the far end is the end of the domain.
         let end = |s: f64| -> Minimum {
-            let far_cut = if self.direction > 0.0 {
-                hi >= b
-            } else {
-                lo <= a
-            };
             let at_contact = if self.direction > 0.0 {
                 s <= lo
             } else {
                 s >= hi
             };
-            if at_contact || !far_cut {
-                Minimum::Tied(s - u)
+            if at_contact {
+                Minimum::Contact
             } else {
                 Minimum::DomainEnd(s)
             }
         };
         if hi - lo <= 0.0 {
-            return Minimum::Tied(0.0);
+            return Minimum::Contact;
         }
         let at_u = self.basis.eval3(points, u);
         let q = |s: f64| self.q_at(points, target, u, &at_u, s);
-        let step = (hi - lo) / SAMPLES as f64;
+        // SAMPLES per width w, at least SAMPLES in all.
+        let count = ((SAMPLES as f64 * (hi - lo) / self.width).ceil() as usize).max(SAMPLES);
+        let step = (hi - lo) / count as f64;
         let mut best = (f64::INFINITY, lo);
-        for i in 0..=SAMPLES {
+        for i in 0..=count {
             let s = lo + step * i as f64;
             let v = q(s)[0];
             if v < best.0 || best.0.is_nan() {
@@ -378,10 +380,9 @@ enum Minimum {
     /// Inside the bracket at s*; with `true` when Q″(s*) > 0 and Q′(s*) = 0 up to the
     /// search's accuracy (the scalar-type Newton step applies).
     Interior(f64, bool),
-    /// At an end of the bracket that moves with u: the contact itself (Δ = 0) or u ± w; s* − u
-    /// is held.
-    Tied(f64),
-    /// At an end of the curve's domain that cut the bracket: s* is held.
+    /// At the contact itself: Q(u) = G″(u)/2, moving with u.
+    Contact,
+    /// At the end of the curve's domain: s* is held.
     DomainEnd(f64),
 }
 
@@ -411,7 +412,7 @@ impl Residual for Clearance {
         let at_u = self.basis.eval3(points, u);
         let q = |s: T| self.q_at(points, target, u, &at_u, s);
         let least = match self.locate(&prefs, re(u), &trefs) {
-            Minimum::Tied(delta) => q(u + cst::<T>(delta))[0],
+            Minimum::Contact => q(u)[0],
             Minimum::DomainEnd(s) => q(cst::<T>(s))[0],
             Minimum::Interior(s, false) => q(cst::<T>(s))[0],
             Minimum::Interior(s, true) => {
@@ -459,162 +460,6 @@ impl Residual for TangentSpeed {
         let (_, c1, _) = curve_at(&self.basis, self.u, x);
         let f = cst::<T>(self.speed);
         out[0] = cst::<T>(self.width) * (dot(c1, c1) - f * f) / (cst::<T>(2.0) * f);
-    }
-}
-
-/// A row the solve adds to a component after a failed contact check.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) enum ActiveRow {
-    /// The clearance h = 0 of a contact on the side after (or before) its parameter.
-    Clearance {
-        /// The contact constraint.
-        owner: ConstraintId,
-        /// The side.
-        after: bool,
-    },
-    /// The speed floor |C′(u)| = κ·|C′₀(u)| of a contact.
-    SpeedFloor {
-        /// The contact constraint.
-        owner: ConstraintId,
-    },
-}
-
-impl Check {
-    /// The curve and contact parameter of a circle or line contact, with the target's blocks,
-    /// its kind and whether the intended side is the positive one.
-    fn contact(&self) -> Option<(crate::ids::EntityId, CheckParam, [Slot; 2], Target, bool)> {
-        match *self {
-            Check::Circle {
-                curve,
-                circle,
-                u,
-                side,
-                ..
-            } => Some((
-                curve,
-                u,
-                [Slot::Point(circle, 0), Slot::Radius(circle)],
-                Target::Circle,
-                side == CircleSide::Outside,
-            )),
-            Check::Line {
-                curve,
-                line,
-                u,
-                side,
-                ..
-            } => Some((
-                curve,
-                u,
-                [Slot::Point(line, 0), Slot::Point(line, 1)],
-                Target::Line,
-                side == LineSide::Left,
-            )),
-            Check::Join { .. } | Check::Angle { .. } | Check::Curves { .. } => None,
-        }
-    }
-}
-
-impl ComponentProblem {
-    /// The circle or line contact check owned by `owner`.
-    fn contact_check(&self, owner: ConstraintId) -> Option<Check> {
-        self.checks
-            .iter()
-            .find(|(c, check)| *c == owner && check.contact().is_some())
-            .map(|(_, k)| *k)
-    }
-
-    /// The active row that answers a failed check at the solved unknowns `x`: a crossing gets
-    /// the clearance on its side of the contact, a cusp the speed floor. `None` for other
-    /// errors and for contacts that are not with a circle or a line.
-    pub(crate) fn active_row_for(&self, e: &Error, x: &[f64]) -> Result<Option<ActiveRow>> {
-        Ok(match *e {
-            Error::ContactCrossed {
-                constraint,
-                parameter,
-                ..
-            } => match self.contact_check(constraint).and_then(|c| c.contact()) {
-                Some((_, u, ..)) => Some(ActiveRow::Clearance {
-                    owner: constraint,
-                    after: parameter > self.check_param(x, u)?,
-                }),
-                None => None,
-            },
-            Error::Cusp { constraint, .. } => self
-                .contact_check(constraint)
-                .map(|_| ActiveRow::SpeedFloor { owner: constraint }),
-            _ => None,
-        })
-    }
-
-    /// Adds an active row, built against the problem's starting values (owned by the contact
-    /// constraint). Returns false when it does not apply (no such contact, or a vanishing
-    /// starting tangent for a speed floor).
-    pub(crate) fn add_active_row<L: EntityLookup>(
-        &mut self,
-        lookup: &L,
-        row: ActiveRow,
-    ) -> Result<bool> {
-        let owner = match row {
-            ActiveRow::Clearance { owner, .. } | ActiveRow::SpeedFloor { owner } => owner,
-        };
-        let Some((curve, u, target_slots, target, positive)) =
-            self.contact_check(owner).and_then(|c| c.contact())
-        else {
-            return Ok(false);
-        };
-        let (basis, mut slots) = curve_basis(lookup, curve)?;
-        let width = side_width(basis.domain());
-        let (name, residual): (&'static str, Arc<dyn camber_solve::DynResidual>) = match row {
-            ActiveRow::Clearance { after, .. } => {
-                let param = match u {
-                    CheckParam::Fixed(v) => Param::Fixed(v),
-                    CheckParam::Block(b) => {
-                        slots.push(Slot::Existing(b));
-                        Param::Block
-                    }
-                    CheckParam::Slot(_) => return Ok(false),
-                };
-                slots.extend(target_slots);
-                let h = Clearance::new(basis, param, target, positive, after, width);
-                ("clearance", Arc::new(h))
-            }
-            ActiveRow::SpeedFloor { .. } => {
-                let x = self.problem.values().to_vec();
-                let at = self.check_param(&x, u)?;
-                let entities = self.entities_at(lookup, &x)?;
-                let Some((_, e)) = entities.iter().find(|(id, _)| *id == curve) else {
-                    return Ok(false);
-                };
-                let (_, t) = point_tangent(e, curve, at)?;
-                let speed = SPEED_FLOOR * t[0].hypot(t[1]);
-                if !(speed.is_finite() && speed > 0.0) {
-                    return Ok(false);
-                }
-                let (basis, param) = match u {
-                    CheckParam::Fixed(v) => {
-                        let (fixed, points) = basis.at(v, 1);
-                        slots = points.iter().map(|j| Slot::Point(curve, *j)).collect();
-                        (fixed, Param::Fixed(v))
-                    }
-                    CheckParam::Block(b) => {
-                        slots.push(Slot::Existing(b));
-                        (basis, Param::Block)
-                    }
-                    CheckParam::Slot(_) => return Ok(false),
-                };
-                let f = TangentSpeed::new(basis, param, speed, width);
-                ("tangent speed floor", Arc::new(f))
-            }
-        };
-        let piece = Piece::General {
-            name,
-            residual,
-            slots,
-            check: None,
-        };
-        self.add_piece(owner, &piece)?;
-        Ok(true)
     }
 }
 
@@ -672,13 +517,13 @@ mod tests {
         out[0]
     }
 
-    /// min over (0, w] of G(s)/s² for the unit circle by a dense scan, G = (|C|² − 1)/2
+    /// min over (0, `end`] of G(s)/s² for the unit circle by a dense scan, G = (|C|² − 1)/2
     /// (the contact at s = 0 holds exactly, so the remainder is G itself).
-    fn scan(basis: &CurveBasis, pts: &[[f64; 2]], width: f64) -> f64 {
+    fn scan(basis: &CurveBasis, pts: &[[f64; 2]], end: f64) -> f64 {
         let refs: Vec<&[f64]> = pts.iter().map(|p| &p[..]).collect();
         (1..=20_000)
             .map(|i| {
-                let s = width * f64::from(i) / 20_000.0;
+                let s = end * f64::from(i) / 20_000.0;
                 let (c, _) = basis.eval::<f64>(&refs, s);
                 (c[0] * c[0] + c[1] * c[1] - 1.0) / 2.0 / (s * s)
             })
@@ -718,7 +563,7 @@ mod tests {
             );
             let v = value(&h, &blocks(&pts, &[&[0.0, 0.0], &[1.0]]));
             let limit = 0.5 * (0.81 + 6.0 * bend);
-            let least = scan(&bezier(&pts), &pts, 0.5).min(limit);
+            let least = scan(&bezier(&pts), &pts, 1.0).min(limit);
             assert!(
                 (v - 0.25 * least).abs() < 1e-9,
                 "bend {bend}: {v} vs {least}"

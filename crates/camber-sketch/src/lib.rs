@@ -64,6 +64,7 @@
 //!   ([`solve::default_options`]).
 //! - [`workloads`] builds the standard benchmark sketches (W1, the blade section, W2, W3a, W4).
 
+mod active;
 pub mod build;
 pub mod clearance;
 mod compile;
