@@ -109,29 +109,30 @@ impl CurveBasis {
     /// ```
     pub fn at(&self, u: f64, order: usize) -> (CurveBasis, SmallVec<[usize; 8]>) {
         let p = self.degree;
-        if self.count == 0 || self.knots.len() < self.count + p + 1 {
-            return (self.clone(), (0..self.count).collect());
-        }
         let order = order.min(2);
-        let (a, b) = self.domain();
-        let u = u.clamp(a, b);
-        let first = self.span(u) - p;
-        // Each coefficient is the evaluation with one control point at (1, 0), the rest at 0.
-        let mut unit: SmallVec<[[f64; 2]; 8]> = smallvec::smallvec![[0.0; 2]; self.count];
+        let Some((first, [n0, n1, n2])) = self.basis_derivatives(u) else {
+            return (self.clone(), (0..self.count).collect());
+        };
+        // Rᵣ = wᵣNᵣ/W and its derivatives (the rational basis; Nᵣ itself without weights).
+        let (mut w0, mut w1, mut w2) = (0.0, 0.0, 0.0);
+        for r in 0..=p {
+            let w = self.weight(first + r);
+            w0 += w * n0[r];
+            w1 += w * n1[r];
+            w2 += w * n2[r];
+        }
         let mut coefficients: SmallVec<[[f64; 3]; 8]> = SmallVec::new();
         let mut points = SmallVec::new();
-        for j in first..=first + p {
-            unit[j] = [1.0, 0.0];
-            let [c0, c1, c2] = {
-                let refs: SmallVec<[&[f64]; 8]> = unit.iter().map(|q| &q[..]).collect();
-                self.eval2::<f64>(&refs, u)
-            };
-            unit[j] = [0.0, 0.0];
-            let mut c = [c0[0], c1[0], c2[0]];
+        for r in 0..=p {
+            let w = self.weight(first + r);
+            let r0 = w * n0[r] / w0;
+            let r1 = (w * n1[r] - w1 * r0) / w0;
+            let r2 = (w * n2[r] - 2.0 * w1 * r1 - w2 * r0) / w0;
+            let mut c = [r0, r1, r2];
             c[order + 1..].fill(0.0);
             if c.iter().any(|v| *v != 0.0) {
                 coefficients.push(c);
-                points.push(j);
+                points.push(first + r);
             }
         }
         let basis = CurveBasis {
@@ -150,6 +151,25 @@ impl CurveBasis {
         match &self.fixed {
             Some(f) => f.coefficients.len(),
             None => self.count,
+        }
+    }
+
+    /// C′(u) alone: the same as `eval(points, u).1`, without the point's own sum at a fixed
+    /// parameter (residuals that only compare directions).
+    pub fn tangent<T: Scalar>(&self, points: &[&[T]], u: T) -> [T; 2] {
+        match &self.fixed {
+            Some(f) => {
+                let mut t = [T::zero(); 2];
+                for (q, c) in points.iter().zip(&f.coefficients) {
+                    if c[1] != 0.0 {
+                        let ck = cst::<T>(c[1]);
+                        t[0] += ck * q[0];
+                        t[1] += ck * q[1];
+                    }
+                }
+                t
+            }
+            None => self.eval(points, u).1,
         }
     }
 
@@ -317,9 +337,58 @@ impl CurveBasis {
             return Self::fixed_eval(f, points, 2);
         }
         let zero = [T::zero(), T::zero()];
-        let p = self.degree;
-        if self.count == 0 || self.knots.len() < self.count + p + 1 || points.len() < self.count {
+        if points.len() < self.count {
             return [zero; 3];
+        }
+        let Some((first, [n0, n1, n2])) = self.basis_derivatives(u) else {
+            return [zero; 3];
+        };
+        let mut c = [zero; 3];
+        let (mut w0, mut w1, mut w2) = (T::zero(), T::zero(), T::zero());
+        for r in 0..n0.len() {
+            let wr = cst::<T>(self.weight(first + r));
+            w0 += wr * n0[r];
+            w1 += wr * n1[r];
+            w2 += wr * n2[r];
+            let q = points[first + r];
+            for d in 0..2 {
+                c[0][d] += wr * n0[r] * q[d];
+                c[1][d] += wr * n1[r] * q[d];
+                c[2][d] += wr * n2[r] * q[d];
+            }
+        }
+        if self.weights.is_some() {
+            // Per coordinate: C = A/W, C′ = (A′ − W′C)/W, C″ = (A″ − 2W′C′ − W″C)/W.
+            let rational = |a0: T, a1: T, a2: T| {
+                let c0 = a0 / w0;
+                let c1 = (a1 - w1 * c0) / w0;
+                (c0, c1, (a2 - cst::<T>(2.0) * w1 * c1 - w2 * c0) / w0)
+            };
+            let (x0, x1, x2) = rational(c[0][0], c[1][0], c[2][0]);
+            let (y0, y1, y2) = rational(c[0][1], c[1][1], c[2][1]);
+            return [[x0, y0], [x1, y1], [x2, y2]];
+        }
+        c
+    }
+
+    /// The weight of control point j (1 for non-rational curves).
+    fn weight(&self, j: usize) -> f64 {
+        self.weights
+            .as_ref()
+            .and_then(|w| w.get(j).copied())
+            .unwrap_or(1.0)
+    }
+
+    /// The index of the first of the p + 1 basis functions that can be non-zero at u (clamped
+    /// to the domain) and their values, first and second derivatives, from the Cox–de Boor
+    /// triangle kept at degrees p − 2, p − 1 and p: N′ⱼ,ₚ = p·(Nⱼ,ₚ₋₁/Δⱼ − Nⱼ₊₁,ₚ₋₁/Δⱼ₊₁)
+    /// with Δⱼ = u_{j+p} − u_j (0/0 read as 0), applied twice for N″. `None` for a basis
+    /// without a valid knot vector.
+    #[allow(clippy::type_complexity)] // three parallel arrays of p + 1 values
+    fn basis_derivatives<T: Scalar>(&self, u: T) -> Option<(usize, [SmallVec<[T; 8]>; 3])> {
+        let p = self.degree;
+        if self.count == 0 || self.knots.len() < self.count + p + 1 {
+            return None;
         }
         let (a, b) = self.domain();
         let u = if re(u) < a {
@@ -361,7 +430,7 @@ impl CurveBasis {
         }
         // The derivative of degree-d functions (d + 1 of them) from degree-(d − 1) values.
         let derive = |d: usize, lower: &[T]| -> SmallVec<[T; 8]> {
-            let mut out: SmallVec<[T; 8]> = smallvec::smallvec![T::zero(); d + 1];
+            let mut out: SmallVec<[T; 8]> = smallvec::smallvec![T::zero(); p + 1];
             if d == 0 {
                 return out;
             }
@@ -385,11 +454,11 @@ impl CurveBasis {
             }
             out
         };
-        let n0 = &levels[p];
+        let n0 = levels[p].clone();
         let n1 = if p >= 1 {
             derive(p, &levels[p - 1])
         } else {
-            smallvec::smallvec![T::zero(); 1]
+            smallvec::smallvec![T::zero(); p + 1]
         };
         let n2 = if p >= 2 {
             let lower1 = derive(p - 1, &levels[p - 2]);
@@ -397,38 +466,7 @@ impl CurveBasis {
         } else {
             smallvec::smallvec![T::zero(); p + 1]
         };
-        let first = k - p;
-        let mut c = [zero; 3];
-        let (mut w0, mut w1, mut w2) = (T::zero(), T::zero(), T::zero());
-        for r in 0..=p {
-            let wr = cst::<T>(
-                self.weights
-                    .as_ref()
-                    .and_then(|w| w.get(first + r).copied())
-                    .unwrap_or(1.0),
-            );
-            w0 += wr * n0[r];
-            w1 += wr * n1[r];
-            w2 += wr * n2[r];
-            let q = points[first + r];
-            for d in 0..2 {
-                c[0][d] += wr * n0[r] * q[d];
-                c[1][d] += wr * n1[r] * q[d];
-                c[2][d] += wr * n2[r] * q[d];
-            }
-        }
-        if self.weights.is_some() {
-            // Per coordinate: C = A/W, C′ = (A′ − W′C)/W, C″ = (A″ − 2W′C′ − W″C)/W.
-            let rational = |a0: T, a1: T, a2: T| {
-                let c0 = a0 / w0;
-                let c1 = (a1 - w1 * c0) / w0;
-                (c0, c1, (a2 - cst::<T>(2.0) * w1 * c1 - w2 * c0) / w0)
-            };
-            let (x0, x1, x2) = rational(c[0][0], c[1][0], c[2][0]);
-            let (y0, y1, y2) = rational(c[0][1], c[1][1], c[2][1]);
-            return [[x0, y0], [x1, y1], [x2, y2]];
-        }
-        c
+        Some((k - p, [n0, n1, n2]))
     }
 }
 
