@@ -16,7 +16,7 @@
 //! Lagrangian ½‖z − z_ref‖²_W + λᵀ·g is K = W + H, H = Σ λᵢ·∇²gᵢ (exact, from hyper-dual
 //! numbers, [`crate::hessian`]), and the quadratic program with K in place of W is Newton's
 //! method on the first-order conditions: quadratic convergence. It is solved by projected
-//! conjugate gradients on the same factorization ([`crate::projected_cg`]). Far from the
+//! conjugate gradients on the same factorization (the `projected_cg` module). Far from the
 //! solution its model can mislead, so every iteration tries the second-order step at full length
 //! (or with its second-order correction) and keeps it only if the merit accepts it; otherwise it
 //! takes the Gauss–Newton step with a backtracking search. Near the solution the second-order
