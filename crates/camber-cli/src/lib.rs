@@ -1,5 +1,6 @@
 //! The `camber` command line as a library: the argument definitions, one module per
-//! subcommand, the curve file format and the SVG writer (which the sketch commands reuse).
+//! subcommand, the curve file format, the SVG writer (which the sketch commands reuse) and the
+//! scene that `render` draws.
 //!
 //! The binary (`src/main.rs`) only parses the arguments, calls [`run`] and turns an error into
 //! one line on stderr with exit code 2. The commands:
@@ -36,6 +37,7 @@ pub mod bench;
 pub mod commands;
 pub mod curve_file;
 pub mod draw;
+pub mod scene;
 pub mod sketch_file;
 pub mod svg;
 
