@@ -380,23 +380,22 @@ impl EditorState {
             ));
         }
         drag.updates += 1;
-        let mut changed = BTreeSet::new();
-        for (id, e) in drag.current.iter_mut() {
-            let mut points = Vec::with_capacity(e.points().len());
-            for i in 0..e.points().len() {
-                let p = drag
-                    .session
-                    .point(PointRef::Control(*id, i))
-                    .map_err(|err| Failure::new(500, describe_error(&self.sketch, &err)))?;
-                points.push(p);
-            }
+        // The entities whose points the update moved, rebuilt from the session's points.
+        let mut moved = Vec::new();
+        for (id, e) in &drag.current {
+            let points = (0..e.points().len())
+                .map(|i| drag.session.point(PointRef::Control(*id, i)))
+                .collect::<std::result::Result<Vec<_>, _>>()
+                .map_err(|err| Failure::new(500, describe_error(&self.sketch, &err)))?;
             if points.as_slice() != e.points() {
-                *e = e
+                let rebuilt = e
                     .with_points(&points, &e.scalars())
                     .map_err(|err| Failure::new(500, describe_error(&self.sketch, &err)))?;
-                changed.insert(*id);
+                moved.push((*id, rebuilt));
             }
         }
+        let changed: BTreeSet<EntityId> = moved.iter().map(|(id, _)| *id).collect();
+        drag.current.extend(moved);
         let view = View::with_overrides(&self.sketch, &drag.current);
         let scene = SceneJson::of(&view, &self.conflicting, |id| changed.contains(&id))?;
         Ok(Response::json(

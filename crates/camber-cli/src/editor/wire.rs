@@ -274,7 +274,8 @@ pub struct MoveJson {
     pub scene: SceneJson,
     /// Time of `DragSession::update`, in microseconds.
     pub update_us: f64,
-    /// Time of the whole request in the handler (update, drawing, JSON), in microseconds.
+    /// Time in the handler up to this answer: parsing the body, the update, rebuilding and
+    /// sampling the moved entities, their glyphs (not writing this JSON), in microseconds.
     pub handler_us: f64,
 }
 
