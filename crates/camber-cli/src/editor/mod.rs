@@ -643,3 +643,48 @@ fn write_atomically(path: &Path, text: &str) -> Result<()> {
         anyhow!("{}: cannot write: {e}", path.display())
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn saving_replaces_the_file_whole_and_leaves_no_temporary() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("s.json");
+        std::fs::write(&path, "old").unwrap();
+        write_atomically(&path, "new text").unwrap();
+        assert_eq!(std::fs::read_to_string(&path).unwrap(), "new text");
+        let names: Vec<_> = std::fs::read_dir(dir.path())
+            .unwrap()
+            .map(|e| e.unwrap().file_name())
+            .collect();
+        assert_eq!(names, ["s.json"]);
+        // A missing folder fails plainly, naming the file, and creates nothing.
+        let missing = dir.path().join("no/such/s.json");
+        let e = write_atomically(&missing, "x").unwrap_err().to_string();
+        assert!(
+            e.contains("cannot write") && e.contains("no such file or directory"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn unsaved_follows_the_versions_through_undo() {
+        let text = r#"{"version": 1,
+          "entities": [{"id": 0, "kind": "bezier", "control_points": [[0, 0], [1, 1], [2, 0]]}],
+          "constraints": [{"id": 1, "kind": "fixed", "target": {"point": {"start": 0}}}]}"#;
+        let sketch = crate::sketch_file::parse(text).unwrap();
+        let mut ed = EditorState::new(sketch, "s.json".into(), None).unwrap();
+        let unsaved = |ed: &EditorState| ed.state().unwrap().unsaved;
+        assert!(!unsaved(&ed));
+        assert_eq!(ed.handle("POST", "/api/solve", b"{}").status, 200);
+        assert!(unsaved(&ed));
+        assert_eq!(ed.handle("POST", "/api/undo", b"{}").status, 200);
+        assert!(!unsaved(&ed), "back at the loaded state");
+        // A new change after an undo gets a new version, never an old one.
+        assert_eq!(ed.handle("POST", "/api/solve", b"{}").status, 200);
+        assert!(unsaved(&ed));
+        assert_eq!(ed.version, 2);
+    }
+}
