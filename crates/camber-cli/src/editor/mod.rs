@@ -59,12 +59,6 @@ const STYLE: &str = include_str!("../../assets/editor.css");
 /// How many earlier states undo keeps.
 pub const UNDO_DEPTH: usize = 100;
 
-/// The largest component (in entities) a drag may start on. `Sketch::drag` analyses the
-/// component densely before the first update, which grows with the cube of its size: about
-/// 1.5 s for a chain of 200 cubic segments, minutes for 1,000, while the editor answers nothing
-/// else.
-pub const DRAG_MAX_ENTITIES: usize = ANALYSIS_MAX_ENTITIES;
-
 /// An HTTP answer: status, content type, body.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Response {
@@ -318,18 +312,6 @@ impl EditorState {
             .sketch
             .component_of(id)
             .map_err(|e| Failure::new(500, describe_error(&self.sketch, &e)))?;
-        if comp.entities.len() > DRAG_MAX_ENTITIES {
-            return Err(Failure::new(
-                422,
-                format!(
-                    "entity {} is in a component of {} entities; drags are limited to components \
-                     of at most {DRAG_MAX_ENTITIES} (a drag session starts with a dense analysis \
-                     that would take minutes at this size)",
-                    req.entity,
-                    comp.entities.len()
-                ),
-            ));
-        }
         let session = self
             .sketch
             .drag(point)
