@@ -1,5 +1,6 @@
 //! The `camber` command line as a library: the argument definitions, one module per
-//! subcommand, the curve file format and the SVG writer (which the sketch commands reuse).
+//! subcommand, the curve file format, the SVG writer (which the sketch commands reuse), the
+//! scene that `render` and the editor both draw, and the editor's request handling.
 //!
 //! The binary (`src/main.rs`) only parses the arguments, calls [`run`] and turns an error into
 //! one line on stderr with exit code 2. The commands:
@@ -16,6 +17,7 @@
 //! camber solve SKETCH.json -o OUT.json [--svg PIC.svg]   solve, write, report per component
 //! camber check SKETCH.json                              DOF, redundant and conflicting constraints
 //! camber render SKETCH.json -o PIC.svg [--combs]        draw a sketch with constraint glyphs
+//! camber edit SKETCH.json [--port N] [--bind ADDR] [-o OUT.json] [--open]   the web editor
 //! camber demo [-o DIR]                                  solve the bundled blade section
 //! camber bench [--only W2,W3] [--quick] [--sizes N,…] [--json]   the standard workloads
 //! ```
@@ -36,13 +38,17 @@ pub mod bench;
 pub mod commands;
 pub mod curve_file;
 pub mod draw;
+pub mod editor;
+pub mod scene;
 pub mod sketch_file;
 pub mod svg;
 
 use anyhow::Result;
 use clap::{Parser, Subcommand};
 
-use commands::{bench as bench_cmd, check, demo, eval, op, render, render_curve, solve, surface};
+use commands::{
+    bench as bench_cmd, check, demo, edit, eval, op, render, render_curve, solve, surface,
+};
 
 /// The camber command line: curve files, surface deformation and SVG pictures.
 #[derive(Debug, Parser)]
@@ -80,6 +86,8 @@ pub enum Command {
     Check(check::CheckArgs),
     /// Draw a sketch file as SVG with constraint glyphs; conflicting constraints in red.
     Render(render::RenderArgs),
+    /// Serve the interactive editor for a sketch file on this machine: drag points, solve, save.
+    Edit(edit::EditArgs),
     /// Solve the bundled blade section, write blade_section.svg, print the report.
     Demo(demo::DemoArgs),
     /// Run the standard workloads W1–W4: median, p95 and valid counts per case.
@@ -104,6 +112,7 @@ pub fn run(cli: &Cli) -> Result<()> {
         Command::Solve(a) => solve::run(a),
         Command::Check(a) => check::run(a),
         Command::Render(a) => render::run(a),
+        Command::Edit(a) => edit::run(a),
         Command::Demo(a) => demo::run(a),
         Command::Bench(a) => bench_cmd::run(a),
     }

@@ -297,8 +297,8 @@ impl Residual for TangentsParallel {
     }
     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
         let n1 = self.first.0.count();
-        let (_, t1) = self.first.0.eval(x, cst(self.first.1));
-        let (_, t2) = self.second.0.eval(&x[n1..], cst(self.second.1));
+        let t1 = self.first.0.tangent(x, cst(self.first.1));
+        let t2 = self.second.0.tangent(&x[n1..], cst(self.second.1));
         out[0] = cross(t1, t2) / (dot(t1, t1) * dot(t2, t2)).sqrt();
     }
 }

@@ -109,29 +109,30 @@ impl CurveBasis {
     /// ```
     pub fn at(&self, u: f64, order: usize) -> (CurveBasis, SmallVec<[usize; 8]>) {
         let p = self.degree;
-        if self.count == 0 || self.knots.len() < self.count + p + 1 {
-            return (self.clone(), (0..self.count).collect());
-        }
         let order = order.min(2);
-        let (a, b) = self.domain();
-        let u = u.clamp(a, b);
-        let first = self.span(u) - p;
-        // Each coefficient is the evaluation with one control point at (1, 0), the rest at 0.
-        let mut unit: SmallVec<[[f64; 2]; 8]> = smallvec::smallvec![[0.0; 2]; self.count];
+        let Some((first, [n0, n1, n2, _])) = self.basis_derivatives(u, false) else {
+            return (self.clone(), (0..self.count).collect());
+        };
+        // Rᵣ = wᵣNᵣ/W and its derivatives (the rational basis; Nᵣ itself without weights).
+        let (mut w0, mut w1, mut w2) = (0.0, 0.0, 0.0);
+        for r in 0..=p {
+            let w = self.weight(first + r);
+            w0 += w * n0[r];
+            w1 += w * n1[r];
+            w2 += w * n2[r];
+        }
         let mut coefficients: SmallVec<[[f64; 3]; 8]> = SmallVec::new();
         let mut points = SmallVec::new();
-        for j in first..=first + p {
-            unit[j] = [1.0, 0.0];
-            let [c0, c1, c2] = {
-                let refs: SmallVec<[&[f64]; 8]> = unit.iter().map(|q| &q[..]).collect();
-                self.eval2::<f64>(&refs, u)
-            };
-            unit[j] = [0.0, 0.0];
-            let mut c = [c0[0], c1[0], c2[0]];
+        for r in 0..=p {
+            let w = self.weight(first + r);
+            let r0 = w * n0[r] / w0;
+            let r1 = (w * n1[r] - w1 * r0) / w0;
+            let r2 = (w * n2[r] - 2.0 * w1 * r1 - w2 * r0) / w0;
+            let mut c = [r0, r1, r2];
             c[order + 1..].fill(0.0);
             if c.iter().any(|v| *v != 0.0) {
                 coefficients.push(c);
-                points.push(j);
+                points.push(first + r);
             }
         }
         let basis = CurveBasis {
@@ -150,6 +151,25 @@ impl CurveBasis {
         match &self.fixed {
             Some(f) => f.coefficients.len(),
             None => self.count,
+        }
+    }
+
+    /// C′(u) alone: the same as `eval(points, u).1`, without the point's own sum at a fixed
+    /// parameter (residuals that only compare directions).
+    pub fn tangent<T: Scalar>(&self, points: &[&[T]], u: T) -> [T; 2] {
+        match &self.fixed {
+            Some(f) => {
+                let mut t = [T::zero(); 2];
+                for (q, c) in points.iter().zip(&f.coefficients) {
+                    if c[1] != 0.0 {
+                        let ck = cst::<T>(c[1]);
+                        t[0] += ck * q[0];
+                        t[1] += ck * q[1];
+                    }
+                }
+                t
+            }
+            None => self.eval(points, u).1,
         }
     }
 
@@ -316,8 +336,39 @@ impl CurveBasis {
             debug_assert!(f.order >= 2, "eval2 on a basis fixed at order {}", f.order);
             return Self::fixed_eval(f, points, 2);
         }
-        let [c0, c1, c2, _] = self.derivatives(points, u, 2);
-        [c0, c1, c2]
+        let zero = [T::zero(), T::zero()];
+        if points.len() < self.count {
+            return [zero; 3];
+        }
+        let Some((first, [n0, n1, n2, _])) = self.basis_derivatives(u, false) else {
+            return [zero; 3];
+        };
+        let mut c = [zero; 3];
+        let (mut w0, mut w1, mut w2) = (T::zero(), T::zero(), T::zero());
+        for r in 0..n0.len() {
+            let wr = cst::<T>(self.weight(first + r));
+            w0 += wr * n0[r];
+            w1 += wr * n1[r];
+            w2 += wr * n2[r];
+            let q = points[first + r];
+            for d in 0..2 {
+                c[0][d] += wr * n0[r] * q[d];
+                c[1][d] += wr * n1[r] * q[d];
+                c[2][d] += wr * n2[r] * q[d];
+            }
+        }
+        if self.weights.is_some() {
+            // Per coordinate: C = A/W, C′ = (A′ − W′C)/W, C″ = (A″ − 2W′C′ − W″C)/W.
+            let rational = |a0: T, a1: T, a2: T| {
+                let c0 = a0 / w0;
+                let c1 = (a1 - w1 * c0) / w0;
+                (c0, c1, (a2 - cst::<T>(2.0) * w1 * c1 - w2 * c0) / w0)
+            };
+            let (x0, x1, x2) = rational(c[0][0], c[1][0], c[2][0]);
+            let (y0, y1, y2) = rational(c[0][1], c[1][1], c[2][1]);
+            return [[x0, y0], [x1, y1], [x2, y2]];
+        }
+        c
     }
 
     /// C(u), C′(u), C″(u) and C‴(u) (the third derivative from one more application of the
@@ -326,20 +377,70 @@ impl CurveBasis {
     /// [`CurveBasis::eval`]; a basis fixed by [`CurveBasis::at`] gives C‴ = 0 (it keeps
     /// coefficients up to C″ only).
     pub fn eval3<T: Scalar>(&self, points: &[&[T]], u: T) -> [[T; 2]; 4] {
+        let zero = [T::zero(), T::zero()];
         if let Some(f) = &self.fixed {
             let [c0, c1, c2] = Self::fixed_eval(f, points, 2);
-            return [c0, c1, c2, [T::zero(); 2]];
+            return [c0, c1, c2, zero];
         }
-        self.derivatives(points, u, 3)
+        if points.len() < self.count {
+            return [zero; 4];
+        }
+        let Some((first, n)) = self.basis_derivatives(u, true) else {
+            return [zero; 4];
+        };
+        let mut c = [zero; 4];
+        let mut w = [T::zero(); 4];
+        for r in 0..n[0].len() {
+            let wr = cst::<T>(self.weight(first + r));
+            let q = points[first + r];
+            for k in 0..4 {
+                w[k] += wr * n[k][r];
+                for d in 0..2 {
+                    c[k][d] += wr * n[k][r] * q[d];
+                }
+            }
+        }
+        if self.weights.is_some() {
+            // Per coordinate: C = A/W, C′ = (A′ − W′C)/W, C″ = (A″ − 2W′C′ − W″C)/W,
+            // C‴ = (A‴ − 3W′C″ − 3W″C′ − W‴C)/W.
+            let (two, three) = (cst::<T>(2.0), cst::<T>(3.0));
+            for d in 0..2 {
+                let c0 = c[0][d] / w[0];
+                let c1 = (c[1][d] - w[1] * c0) / w[0];
+                let c2 = (c[2][d] - two * w[1] * c1 - w[2] * c0) / w[0];
+                let c3 = (c[3][d] - three * w[1] * c2 - three * w[2] * c1 - w[3] * c0) / w[0];
+                c[0][d] = c0;
+                c[1][d] = c1;
+                c[2][d] = c2;
+                c[3][d] = c3;
+            }
+        }
+        c
     }
 
-    /// C and its derivatives up to `order` (2 or 3; higher ones left at zero) on the full
-    /// basis.
-    fn derivatives<T: Scalar>(&self, points: &[&[T]], u: T, order: usize) -> [[T; 2]; 4] {
-        let zero = [T::zero(), T::zero()];
+    /// The weight of control point j (1 for non-rational curves).
+    fn weight(&self, j: usize) -> f64 {
+        self.weights
+            .as_ref()
+            .and_then(|w| w.get(j).copied())
+            .unwrap_or(1.0)
+    }
+
+    /// The index of the first of the p + 1 basis functions that can be non-zero at u (clamped
+    /// to the domain) and their values, first and second derivatives (and third when `third`,
+    /// else zeros), from the Cox–de Boor triangle kept at degrees p − 3 to p:
+    /// N′ⱼ,ₚ = p·(Nⱼ,ₚ₋₁/Δⱼ − Nⱼ₊₁,ₚ₋₁/Δⱼ₊₁) with Δⱼ = u_{j+p} − u_j (0/0 read as 0),
+    /// applied twice for N″ and three times for N‴. `None` for a basis without a valid knot
+    /// vector.
+    #[allow(clippy::type_complexity)] // four parallel arrays of p + 1 values
+    fn basis_derivatives<T: Scalar>(
+        &self,
+        u: T,
+        third: bool,
+    ) -> Option<(usize, [SmallVec<[T; 8]>; 4])> {
         let p = self.degree;
-        if self.count == 0 || self.knots.len() < self.count + p + 1 || points.len() < self.count {
-            return [zero; 4];
+        if self.count == 0 || self.knots.len() < self.count + p + 1 {
+            return None;
         }
         let (a, b) = self.domain();
         let u = if re(u) < a {
@@ -381,7 +482,7 @@ impl CurveBasis {
         }
         // The derivative of degree-d functions (d + 1 of them) from degree-(d − 1) values.
         let derive = |d: usize, lower: &[T]| -> SmallVec<[T; 8]> {
-            let mut out: SmallVec<[T; 8]> = smallvec::smallvec![T::zero(); d + 1];
+            let mut out: SmallVec<[T; 8]> = smallvec::smallvec![T::zero(); p + 1];
             if d == 0 {
                 return out;
             }
@@ -405,11 +506,11 @@ impl CurveBasis {
             }
             out
         };
-        let n0 = &levels[p];
+        let n0 = levels[p].clone();
         let n1 = if p >= 1 {
             derive(p, &levels[p - 1])
         } else {
-            smallvec::smallvec![T::zero(); 1]
+            smallvec::smallvec![T::zero(); p + 1]
         };
         let n2 = if p >= 2 {
             let lower1 = derive(p - 1, &levels[p - 2]);
@@ -417,51 +518,14 @@ impl CurveBasis {
         } else {
             smallvec::smallvec![T::zero(); p + 1]
         };
-        let n3 = if p >= 3 && order >= 3 {
+        let n3 = if p >= 3 && third {
             let lower2 = derive(p - 2, &levels[p - 3]);
             let lower1 = derive(p - 1, &lower2);
             derive(p, &lower1)
         } else {
             smallvec::smallvec![T::zero(); p + 1]
         };
-        let first = k - p;
-        let mut c = [zero; 4];
-        let (mut w0, mut w1, mut w2, mut w3) = (T::zero(), T::zero(), T::zero(), T::zero());
-        for r in 0..=p {
-            let wr = cst::<T>(
-                self.weights
-                    .as_ref()
-                    .and_then(|w| w.get(first + r).copied())
-                    .unwrap_or(1.0),
-            );
-            w0 += wr * n0[r];
-            w1 += wr * n1[r];
-            w2 += wr * n2[r];
-            w3 += wr * n3[r];
-            let q = points[first + r];
-            for d in 0..2 {
-                c[0][d] += wr * n0[r] * q[d];
-                c[1][d] += wr * n1[r] * q[d];
-                c[2][d] += wr * n2[r] * q[d];
-                c[3][d] += wr * n3[r] * q[d];
-            }
-        }
-        if self.weights.is_some() {
-            // Per coordinate: C = A/W, C′ = (A′ − W′C)/W, C″ = (A″ − 2W′C′ − W″C)/W,
-            // C‴ = (A‴ − 3W′C″ − 3W″C′ − W‴C)/W.
-            let three = cst::<T>(3.0);
-            let rational = |a: [T; 4]| {
-                let c0 = a[0] / w0;
-                let c1 = (a[1] - w1 * c0) / w0;
-                let c2 = (a[2] - cst::<T>(2.0) * w1 * c1 - w2 * c0) / w0;
-                let c3 = (a[3] - three * w1 * c2 - three * w2 * c1 - w3 * c0) / w0;
-                [c0, c1, c2, c3]
-            };
-            let x = rational([c[0][0], c[1][0], c[2][0], c[3][0]]);
-            let y = rational([c[0][1], c[1][1], c[2][1], c[3][1]]);
-            return [[x[0], y[0]], [x[1], y[1]], [x[2], y[2]], [x[3], y[3]]];
-        }
-        c
+        Some((k - p, [n0, n1, n2, n3]))
     }
 }
 
@@ -548,15 +612,24 @@ mod tests {
         for e in [Entity::BSpline(bs), Entity::Nurbs(nu)] {
             let basis = CurveBasis::of(&e).ok_or("curve")?;
             for u in [0.1, 0.3, 0.55, 0.9] {
-                let [c0, c1, c2, c3] = basis.eval3::<f64>(&refs, u);
-                let [d0, d1, d2] = basis.eval2::<f64>(&refs, u);
-                assert_eq!([c0, c1, c2], [d0, d1, d2]);
+                let c = basis.eval3::<f64>(&refs, u);
+                let d = basis.eval2::<f64>(&refs, u);
+                for k in 0..3 {
+                    for i in 0..2 {
+                        assert_relative_eq!(
+                            c[k][i],
+                            d[k][i],
+                            epsilon = 1e-12,
+                            max_relative = 1e-12
+                        );
+                    }
+                }
                 let h = 1e-5;
                 let plus = basis.eval2::<f64>(&refs, u + h)[2];
                 let minus = basis.eval2::<f64>(&refs, u - h)[2];
-                for k in 0..2 {
-                    let central = (plus[k] - minus[k]) / (2.0 * h);
-                    assert_relative_eq!(c3[k], central, epsilon = 1e-5, max_relative = 1e-6);
+                for i in 0..2 {
+                    let central = (plus[i] - minus[i]) / (2.0 * h);
+                    assert_relative_eq!(c[3][i], central, epsilon = 1e-5, max_relative = 1e-6);
                 }
             }
         }

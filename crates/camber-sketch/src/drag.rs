@@ -132,21 +132,47 @@ impl Sketch {
         let cp = self.build_component(&comp, Some(point))?;
         let options = self.options();
         let lin = cp.problem().linearize()?;
-        let m = lin.g.len();
-        let a = analyze(&lin, options.rank_tolerance, options.tolerance)?;
-        if !a.conflicting.is_empty() {
-            return Err(Error::Conflicting {
-                constraints: a.conflicting,
-            });
-        }
+        let (m, n) = (lin.g.len(), lin.map.len());
         let pin = [m - 2, m - 1];
-        let rows = a.rows.independent;
-        if !(rows.contains(&pin[0]) && rows.contains(&pin[1])) {
-            return Err(Error::NotDraggable { point });
-        }
-        let j = lin.jacobian.select_rows(&rows);
-        let factorization =
-            MinNormFactorization::try_auto(&j, lin.map.weights(), options.dense_max_unknowns)?;
+        // As in a solve: small components are analysed up front (dependent rows dropped, the
+        // pin must stay independent); large ones go straight to the sparse factorization of
+        // every row and are analysed only when it meets dependent rows.
+        let analysed_rows = |max_entries: usize| -> Result<Vec<usize>> {
+            if m.saturating_mul(n) > max_entries {
+                return Err(Error::Solve(camber_solve::Error::RankDeficient { rows: m }));
+            }
+            let a = analyze(&lin, options.rank_tolerance, options.tolerance)?;
+            if !a.conflicting.is_empty() {
+                return Err(Error::Conflicting {
+                    constraints: a.conflicting,
+                });
+            }
+            let rows = a.rows.independent;
+            if !(rows.contains(&pin[0]) && rows.contains(&pin[1])) {
+                return Err(Error::NotDraggable { point });
+            }
+            Ok(rows)
+        };
+        let factorize = |rows: &[usize]| {
+            let j = lin.jacobian.select_rows(rows);
+            MinNormFactorization::try_auto(&j, lin.map.weights(), options.dense_max_unknowns)
+        };
+        let (rows, factorization) = if m.saturating_mul(n) <= options.dense_analysis_max_entries {
+            let rows = analysed_rows(options.dense_analysis_max_entries)?;
+            let f = factorize(&rows)?;
+            (rows, f)
+        } else {
+            let all: Vec<usize> = (0..m).collect();
+            match factorize(&all) {
+                Ok(f) => (all, f),
+                Err(camber_solve::Error::RankDeficient { .. }) => {
+                    let rows = analysed_rows(crate::solve::NAMING_ANALYSIS_MAX_ENTRIES)?;
+                    let f = factorize(&rows)?;
+                    (rows, f)
+                }
+                Err(e) => return Err(e.into()),
+            }
+        };
         let anchor = {
             let p = self.point(point)?;
             [p.x, p.y]
@@ -397,8 +423,11 @@ impl DragSession {
             return Ok(());
         }
         let updates = self.cp.entities_at(sketch, &self.x)?;
+        let contacts = self.cp.contacts_at(&self.x)?;
         let ids: Vec<EntityId> = updates.iter().map(|(id, _)| *id).collect();
         sketch.commit(updates, &ids);
+        // Free contact parameters moved with the drag: the constraints keep the solved ones.
+        sketch.store_contacts(&contacts);
         Ok(())
     }
 }

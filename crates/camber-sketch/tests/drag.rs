@@ -113,3 +113,81 @@ fn fixed_points_cannot_be_dragged() {
     ));
     let _ = Sense::Agree;
 }
+
+/// The editor's report: a drag on a 1,000-segment affine chain began with a dense SVD of the
+/// whole component (minutes). Like a solve, a large component now goes straight to the sparse
+/// factorization; the drag must start, follow the mouse and keep every joint.
+#[test]
+fn a_large_affine_component_drags_on_the_sparse_path() {
+    let (mut s, segs) = camber_sketch::workloads::w3a_chain(1000).unwrap();
+    s.solve().unwrap();
+    let dragged = PointRef::Control(segs[500], 1);
+    let start = s.point(dragged).unwrap();
+    let mut drag = s.drag(dragged).unwrap();
+    for k in 1..=5 {
+        let target = start + Vector2::new(0.0, 0.01 * f64::from(k));
+        drag.update(target).unwrap();
+        assert_abs_diff_eq!(drag.point(dragged).unwrap(), target, epsilon = 1e-10);
+    }
+    drag.finish(&mut s).unwrap();
+    // Every joint still closed with its tangent along the fixed direction.
+    for pair in segs.windows(2) {
+        let (a2, a3) = (
+            s.point(PointRef::Control(pair[0], 2)).unwrap(),
+            s.point(PointRef::Control(pair[0], 3)).unwrap(),
+        );
+        let (b0, b1) = (
+            s.point(PointRef::Control(pair[1], 0)).unwrap(),
+            s.point(PointRef::Control(pair[1], 1)).unwrap(),
+        );
+        assert_abs_diff_eq!(a3, b0, epsilon = 1e-9);
+        let (ta, tb) = (a3 - a2, b1 - b0);
+        assert!(cross(ta, tb).abs() <= 1e-9 * ta.norm() * tb.norm());
+    }
+}
+
+/// A drag on a nonlinear component moves free contact parameters; committing it must store the
+/// solved ones in their constraints, as a solve does.
+#[test]
+fn finish_stores_the_solved_free_contact_parameters() {
+    use camber_sketch::workloads::{w2_bspline7, W2_CIRCLES};
+    use camber_sketch::Contact;
+    let (mut s, w) = w2_bspline7().unwrap();
+    s.solve().unwrap();
+    let th = s
+        .constraints()
+        .find_map(|(id, c)| match c {
+            Constraint::TangentToCircle {
+                circle,
+                u: Contact::Free(_),
+                ..
+            } if *circle == w.circles[1] => Some(id),
+            _ => None,
+        })
+        .unwrap();
+    let u_of = |s: &camber_sketch::Sketch| match s.constraint(th).unwrap() {
+        Constraint::TangentToCircle { u, .. } => u.value(),
+        _ => unreachable!("the TH contact"),
+    };
+    let before = u_of(&s);
+    let dragged = PointRef::Control(w.curve, 3);
+    let p = s.point(dragged).unwrap();
+    let mut drag = s.drag(dragged).unwrap();
+    for k in 1..=5 {
+        drag.update(p + Vector2::new(0.004 * f64::from(k), 0.002 * f64::from(k)))
+            .unwrap();
+    }
+    drag.finish(&mut s).unwrap();
+    let after = u_of(&s);
+    assert!((after - before).abs() > 1e-6, "the contact did not move");
+    // The stored parameter is the contact: on the TH circle, tangent there.
+    let camber_sketch::Entity::BSpline(curve) = s.entity(w.curve).unwrap() else {
+        unreachable!("a B-spline")
+    };
+    use camber_geom::ParametricCurve;
+    let (q, t) = curve.point_and_derivative(after).unwrap();
+    let (c, r) = W2_CIRCLES[1];
+    let v = q - Point2::new(c[0], c[1]);
+    assert_abs_diff_eq!(v.norm(), r, epsilon = 1e-9);
+    assert!(v.dot(&t).abs() <= 1e-8 * t.norm());
+}

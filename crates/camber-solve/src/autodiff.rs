@@ -140,32 +140,22 @@ fn vector_range<R: Residual>(
     }
 }
 
-/// Inputs, outputs and blocks up to this many are kept in stack arrays; beyond, in vectors.
-const INLINE: usize = 16;
-
 /// Evaluates the residual with every input converted by `seed(flat index, value)` and hands the
-/// outputs to `take`. Small residuals use stack arrays, and everything stays in this frame:
-/// moving or growing inline buffers costs more than the evaluation itself.
-fn eval_seeded<R: Residual, D: Scalar>(
+/// outputs to `take`. Small residuals use stack arrays sized to them (8 or 16 inputs, rows and
+/// blocks), and everything stays in this frame: moving, growing or zeroing larger inline
+/// buffers costs more than the evaluation itself. Larger residuals use vectors.
+pub(crate) fn eval_seeded<R: Residual, D: Scalar>(
     residual: &R,
     x: &[&[f64]],
     seed: impl Fn(usize, f64) -> D,
     take: impl FnOnce(&[D]),
 ) {
     let n: usize = x.iter().map(|b| b.len()).sum();
-    let dim = residual.dim();
-    if n <= INLINE && dim <= INLINE && x.len() <= INLINE {
-        let mut flat = [D::zero(); INLINE];
-        let values = x.iter().flat_map(|b| b.iter());
-        for (f, (slot, v)) in flat.iter_mut().zip(values).enumerate() {
-            *slot = seed(f, *v);
-        }
-        let mut refs: [&[D]; INLINE] = [&[]; INLINE];
-        split_into(&flat, x, &mut refs);
-        let mut g = [D::zero(); INLINE];
-        let g = &mut g[..dim];
-        residual.eval(&refs[..x.len()], g);
-        take(g);
+    let size = n.max(residual.dim()).max(x.len());
+    if size <= 8 {
+        eval_inline::<R, D, 8>(residual, x, seed, take);
+    } else if size <= 16 {
+        eval_inline::<R, D, 16>(residual, x, seed, take);
     } else {
         let flat: Vec<D> = x
             .iter()
@@ -175,10 +165,30 @@ fn eval_seeded<R: Residual, D: Scalar>(
             .collect();
         let mut refs: Vec<&[D]> = vec![&[]; x.len()];
         split_into(&flat, x, &mut refs);
-        let mut g = vec![D::zero(); dim];
+        let mut g = vec![D::zero(); residual.dim()];
         residual.eval(&refs, &mut g);
         take(&g);
     }
+}
+
+/// [`eval_seeded`] with stack arrays of `N` entries (inputs, rows and blocks all ≤ N).
+fn eval_inline<R: Residual, D: Scalar, const N: usize>(
+    residual: &R,
+    x: &[&[f64]],
+    seed: impl Fn(usize, f64) -> D,
+    take: impl FnOnce(&[D]),
+) {
+    let mut flat = [D::zero(); N];
+    let values = x.iter().flat_map(|b| b.iter());
+    for (f, (slot, v)) in flat.iter_mut().zip(values).enumerate() {
+        *slot = seed(f, *v);
+    }
+    let mut refs: [&[D]; N] = [&[]; N];
+    split_into(&flat, x, &mut refs);
+    let mut g = [D::zero(); N];
+    let g = &mut g[..residual.dim()];
+    residual.eval(&refs[..x.len()], g);
+    take(g);
 }
 
 /// Cuts `flat` into one slice per block of `x` (same lengths), written to `refs`.

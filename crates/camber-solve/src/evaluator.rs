@@ -10,7 +10,7 @@ use crate::ids::{ConstraintId, Var};
 use crate::problem::{check_residual, Problem};
 use crate::reduced::ReducedMap;
 use crate::report::{per_constraint, ConstraintResidual};
-use crate::sparse::{check_len, SparseMatrix};
+use crate::sparse::{check_len, Assembler, SparseMatrix};
 
 /// Evaluation of a problem's residuals over z, with scratch kept between calls.
 #[derive(Debug, Clone)]
@@ -31,6 +31,9 @@ pub(crate) struct Evaluator {
     hess: Vec<f64>,
     active: Vec<bool>,
     hess_triplets: Vec<(usize, usize, f64)>,
+    /// The compressed forms of J and H, rebuilt only when their patterns change.
+    jac_asm: Assembler,
+    hess_asm: Assembler,
 }
 
 impl Evaluator {
@@ -62,6 +65,8 @@ impl Evaluator {
             hess: Vec::new(),
             active: Vec::new(),
             hess_triplets: Vec::new(),
+            jac_asm: Assembler::default(),
+            hess_asm: Assembler::default(),
         })
     }
 
@@ -109,12 +114,11 @@ impl Evaluator {
                 let (start, len) = problem.block_range(*b)?;
                 for u in start..start + len {
                     let (terms, _) = self.map.row(u);
+                    // Zero derivatives are kept: the pattern stays that of the residual's reads.
                     for row in 0..dim {
                         let d = self.jac[row * ncols + local];
-                        if d != 0.0 {
-                            for (col, a) in terms {
-                                self.triplets.push((row0 + row, *col, d * a));
-                            }
+                        for (col, a) in terms {
+                            self.triplets.push((row0 + row, *col, d * a));
                         }
                     }
                     local += 1;
@@ -182,9 +186,6 @@ impl Evaluator {
                 }
                 for (q, uq) in unknowns.iter().enumerate() {
                     let h = self.hess[p * ncols + q];
-                    if h == 0.0 {
-                        continue;
-                    }
                     let (tq, _) = self.map.row(*uq);
                     for (c1, a1) in tp {
                         for (c2, a2) in tq {
@@ -198,7 +199,10 @@ impl Evaluator {
             return Ok(None);
         }
         let n = self.cols();
-        SparseMatrix::try_from_triplets(n, n, &self.hess_triplets).map(Some)
+        self.hess_asm
+            .assemble(n, n, &self.hess_triplets, |_| true)
+            .cloned()
+            .map(Some)
     }
 
     /// The triplets of the last [`Evaluator::linearize`].
@@ -207,20 +211,15 @@ impl Evaluator {
         &self.triplets
     }
 
-    /// J_z of the last [`Evaluator::linearize`] as a sparse matrix, leaving out the columns
-    /// whose `drop_column` entry is true (they become zero columns).
-    pub(crate) fn jacobian(&self, drop_column: &[bool]) -> Result<SparseMatrix> {
-        if drop_column.iter().any(|d| *d) {
-            let kept: Vec<_> = self
-                .triplets
-                .iter()
-                .filter(|(_, c, _)| !drop_column.get(*c).copied().unwrap_or(false))
-                .copied()
-                .collect();
-            SparseMatrix::try_from_triplets(self.rows(), self.cols(), &kept)
-        } else {
-            SparseMatrix::try_from_triplets(self.rows(), self.cols(), &self.triplets)
-        }
+    /// J_z of the last [`Evaluator::linearize`] as a sparse matrix, with the columns whose
+    /// `drop_column` entry is true zeroed (they keep their place in the pattern).
+    pub(crate) fn jacobian(&mut self, drop_column: &[bool]) -> Result<SparseMatrix> {
+        let (rows, cols) = (self.rows(), self.cols());
+        self.jac_asm
+            .assemble(rows, cols, &self.triplets, |c| {
+                !drop_column.get(c).copied().unwrap_or(false)
+            })
+            .cloned()
     }
 
     /// Residual per constraint for the rows `g`.

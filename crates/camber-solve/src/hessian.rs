@@ -9,15 +9,18 @@
 //! row at once (its ε₁ε₂ part). So a residual reading k blocks costs k(k + 1)/2 evaluations,
 //! and blocks a residual does not move (fixed points, fixed circles) cost nothing.
 //!
-//! Blocks of 1 to 3 unknowns (parameters, planar and spatial points) use the vector form;
-//! larger blocks fall back to scalar `HyperDual64` evaluations per pair of columns. Affine
-//! residuals have H = 0 and are not evaluated at all.
+//! A residual with at most 8 unknowns in its active blocks (a joint between two curve ends, a
+//! distance, a point on a circle) is evaluated once instead, in `Dual2SVec64<N>`, whose second
+//! derivative part is the whole N × N Hessian of every row: one pass costs less than the
+//! k(k + 1)/2 passes once k > 2. Otherwise blocks of 1 to 3 unknowns (parameters, planar and
+//! spatial points) use the mixed vector form; larger blocks fall back to scalar `HyperDual64`
+//! evaluations per pair of columns. Affine residuals have H = 0 and are not evaluated at all.
 
-use num_dual::{HyperDual64, HyperDualSVec64};
+use num_dual::{Dual2SVec64, HyperDual64, HyperDualSVec64};
 
+use crate::autodiff::eval_seeded;
 use crate::errors::{Error, Result};
 use crate::residual::Residual;
-use crate::scalar::Scalar;
 
 /// Writes H = Σᵢ λᵢ·∇²gᵢ(x) into `out` (row major, N × N with N = Σ|x_b|, block 0's columns
 /// first, both triangles). `weights` holds λ (one per row); blocks whose `active` entry is
@@ -73,6 +76,25 @@ pub fn weighted_hessian<R: Residual>(
         return Ok(());
     }
     let mut out = Square { h: out, n };
+    // The flat columns of the active blocks.
+    let mut columns: [usize; WHOLE_MAX] = [0; WHOLE_MAX];
+    let mut count = 0;
+    let mut start = 0;
+    for (block, on) in x.iter().zip(active) {
+        if *on {
+            for c in start..start + block.len() {
+                if count < WHOLE_MAX {
+                    columns[count] = c;
+                }
+                count += 1;
+            }
+        }
+        start += block.len();
+    }
+    if count <= WHOLE_MAX {
+        whole(residual, x, weights, &columns[..count], &mut out);
+        return Ok(());
+    }
     let mut start_a = 0;
     for (a, block_a) in x.iter().enumerate() {
         let mut start_b = start_a;
@@ -137,57 +159,61 @@ fn mixed_block<R: Residual>(
     }
 }
 
-/// Inputs and rows up to this many live in stack arrays.
-const INLINE: usize = 16;
+/// Active unknowns up to this many are differentiated twice in one `Dual2SVec64` pass.
+const WHOLE_MAX: usize = 8;
 
-/// Evaluates the residual with every flat input converted by `seed` and hands the outputs to
-/// `take` (stack arrays for small residuals, as in [`crate::autodiff`]).
-fn eval_seeded<R: Residual, D: Scalar>(
+fn whole<R: Residual>(
     residual: &R,
     x: &[&[f64]],
-    seed: impl Fn(usize, f64) -> D,
-    take: impl FnOnce(&[D]),
+    weights: &[f64],
+    columns: &[usize],
+    out: &mut Square<'_>,
 ) {
-    let n: usize = x.iter().map(|b| b.len()).sum();
-    let dim = residual.dim();
-    if n <= INLINE && dim <= INLINE && x.len() <= INLINE {
-        let mut flat = [D::zero(); INLINE];
-        for (f, (slot, v)) in flat
-            .iter_mut()
-            .zip(x.iter().flat_map(|b| b.iter()))
-            .enumerate()
-        {
-            *slot = seed(f, *v);
-        }
-        let mut refs: [&[D]; INLINE] = [&[]; INLINE];
-        split_into(&flat, x, &mut refs);
-        let mut g = [D::zero(); INLINE];
-        let g = &mut g[..dim];
-        residual.eval(&refs[..x.len()], g);
-        take(g);
-    } else {
-        let flat: Vec<D> = x
-            .iter()
-            .flat_map(|b| b.iter())
-            .enumerate()
-            .map(|(f, v)| seed(f, *v))
-            .collect();
-        let mut refs: Vec<&[D]> = vec![&[]; x.len()];
-        split_into(&flat, x, &mut refs);
-        let mut g = vec![D::zero(); dim];
-        residual.eval(&refs, &mut g);
-        take(&g);
+    match columns.len() {
+        0 => {}
+        1 => whole_pass::<R, 1>(residual, x, weights, columns, out),
+        2 => whole_pass::<R, 2>(residual, x, weights, columns, out),
+        3 => whole_pass::<R, 3>(residual, x, weights, columns, out),
+        4 => whole_pass::<R, 4>(residual, x, weights, columns, out),
+        5 => whole_pass::<R, 5>(residual, x, weights, columns, out),
+        6 => whole_pass::<R, 6>(residual, x, weights, columns, out),
+        7 => whole_pass::<R, 7>(residual, x, weights, columns, out),
+        _ => whole_pass::<R, 8>(residual, x, weights, columns, out),
     }
 }
 
-/// Cuts `flat` into one slice per block of `x`.
-fn split_into<'a, D>(flat: &'a [D], x: &[&[f64]], refs: &mut [&'a [D]]) {
-    let mut rest = flat;
-    for (block, slot) in x.iter().zip(refs.iter_mut()) {
-        let (head, tail) = rest.split_at(block.len().min(rest.len()));
-        *slot = head;
-        rest = tail;
-    }
+/// One `Dual2SVec64<N>` evaluation seeding the N flat `columns`.
+fn whole_pass<R: Residual, const N: usize>(
+    residual: &R,
+    x: &[&[f64]],
+    weights: &[f64],
+    columns: &[usize],
+    out: &mut Square<'_>,
+) {
+    let seed = |f: usize, v: f64| {
+        let d = Dual2SVec64::<N>::from_re(v);
+        match columns.iter().position(|c| *c == f) {
+            Some(i) => d.derivative(i),
+            None => d,
+        }
+    };
+    eval_seeded(residual, x, seed, |g: &[Dual2SVec64<N>]| {
+        let mut acc = [[0.0; N]; N];
+        for (gi, w) in g.iter().zip(weights) {
+            if let Some(m) = &gi.v2.0 {
+                for (i, row) in acc.iter_mut().enumerate() {
+                    for (j, slot) in row.iter_mut().enumerate().skip(i) {
+                        *slot += w * m[(i, j)];
+                    }
+                }
+            }
+        }
+        for (i, row) in acc.iter().enumerate() {
+            for (j, v) in row.iter().enumerate().skip(i) {
+                out.set(columns[i], columns[j], *v);
+            }
+        }
+    });
 }
 
 fn vector_pair<R: Residual, const M: usize, const N: usize>(
@@ -254,6 +280,7 @@ fn scalar_pairs<R: Residual>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::scalar::Scalar;
     use approx::assert_relative_eq;
 
     /// Three blocks of sizes 2, 4 (beyond the vector forms) and 1, with cross terms everywhere.
@@ -322,6 +349,57 @@ mod tests {
         for r in 0..7 {
             for c in 0..7 {
                 assert_relative_eq!(h[r * 7 + c], h[c * 7 + r], epsilon = 0.0);
+            }
+        }
+    }
+
+    /// Ten unknowns (beyond the single pass): the block-pair forms must agree with central
+    /// differences too.
+    #[derive(Debug)]
+    struct Wide;
+
+    impl Residual for Wide {
+        fn name(&self) -> &str {
+            "wide"
+        }
+        fn dim(&self) -> usize {
+            1
+        }
+        fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+            let s: T = x[1].iter().fold(T::zero(), |a, b| a + *b * *b);
+            out[0] = x[0][0] * x[0][1] * x[2][0] + s.sqrt() * x[3][1] + (x[1][0] * x[1][5]).sin();
+        }
+    }
+
+    #[test]
+    fn block_pairs_match_central_differences() {
+        let x = [0.3, -1.2, 1.0, 2.0, -0.5, 0.25, 0.8, -0.3, 0.7, 0.4, -0.9];
+        let blocks = [&x[0..2], &x[2..8], &x[8..9], &x[9..11]];
+        let n = 11;
+        let mut h = vec![0.0; n * n];
+        weighted_hessian(&Wide, &blocks, &[1.5], &[true; 4], &mut h).unwrap();
+        let grad = |x: &[f64]| {
+            let b = [&x[0..2], &x[2..8], &x[8..9], &x[9..11]];
+            let (mut g, mut j) = ([0.0], vec![0.0; n]);
+            crate::autodiff::jacobian_with(
+                &Wide,
+                &b,
+                &mut g,
+                &mut j,
+                crate::autodiff::JacobianMode::Columns,
+            )
+            .unwrap();
+            j.iter().map(|v| 1.5 * v).collect::<Vec<_>>()
+        };
+        let step = 1e-6;
+        for c in 0..n {
+            let (mut xp, mut xm) = (x.to_vec(), x.to_vec());
+            xp[c] += step;
+            xm[c] -= step;
+            let (gp, gm) = (grad(&xp), grad(&xm));
+            for r in 0..n {
+                let fd = (gp[r] - gm[r]) / (2.0 * step);
+                assert_relative_eq!(h[r * n + c], fd, epsilon = 1e-7, max_relative = 1e-7);
             }
         }
     }

@@ -14,11 +14,11 @@
 
 use faer::linalg::solvers::Solve;
 use faer::sparse::linalg::solvers::Llt;
-use faer::sparse::{SparseColMat, Triplet};
-use faer::{MatMut, Side};
+use faer::MatMut;
 use nalgebra::{Cholesky, DMatrix, DVector, Dyn};
 
 use crate::errors::{Error, Result};
+use crate::normal::NormalCache;
 use crate::sparse::{check_len, SparseMatrix};
 
 /// A factorization of J·W⁻¹·Jᵀ, reusable for any number of right-hand sides (dragging: J and W
@@ -90,42 +90,27 @@ impl MinNormFactorization {
     /// # Errors
     /// As [`MinNormFactorization::try_dense`].
     pub fn try_sparse(j: &SparseMatrix, weights: &[f64]) -> Result<Self> {
+        Self::try_sparse_cached(j, weights, &mut NormalCache::new())
+    }
+
+    /// [`MinNormFactorization::try_sparse`] reusing the pattern work of `cache` when J has the
+    /// sparsity pattern of the cache's last factorization (Newton iterations, drag updates).
+    ///
+    /// # Errors
+    /// As [`MinNormFactorization::try_dense`].
+    pub fn try_sparse_cached(
+        j: &SparseMatrix,
+        weights: &[f64],
+        cache: &mut NormalCache,
+    ) -> Result<Self> {
         let inv_w = inverse_weights(j, weights)?;
-        let m = j.nrows();
-        // Columns of J as lists of (row, value): the rows of Jᵀ.
-        let mut col_entries: Vec<Vec<(usize, f64)>> = vec![Vec::new(); j.ncols()];
-        for i in 0..m {
-            let (cols, vals) = j.row(i);
-            for (c, v) in cols.iter().zip(vals) {
-                col_entries[*c].push((i, *v));
-            }
-        }
-        // Lower triangle of M = Σ_k d_k·J[:,k]·J[:,k]ᵀ (duplicates are summed by faer).
-        let mut triplets = Vec::new();
-        for (k, entries) in col_entries.iter().enumerate() {
-            for (a, (ia, va)) in entries.iter().enumerate() {
-                for (ib, vb) in &entries[..=a] {
-                    let (r, c) = if ia >= ib { (*ia, *ib) } else { (*ib, *ia) };
-                    triplets.push(Triplet::new(r, c, va * vb * inv_w[k]));
-                }
-            }
-        }
-        // A row with no entry leaves a zero diagonal; add explicit zeros so the pattern is whole
-        // and the factorization reports the rank deficiency.
-        for i in 0..m {
-            triplets.push(Triplet::new(i, i, 0.0));
-        }
-        let mat = SparseColMat::<usize, f64>::try_new_from_triplets(m, m, &triplets)
-            .map_err(|_| Error::RankDeficient { rows: m })?;
-        let llt = mat
-            .sp_cholesky(Side::Lower)
-            .map_err(|_| Error::RankDeficient { rows: m })?;
+        let llt = cache.factorize(j, &inv_w)?;
         Ok(Self::assemble(
             inv_w,
             Backend::Sparse {
                 j: j.clone(),
                 llt,
-                y: vec![0.0; m],
+                y: vec![0.0; j.nrows()],
             },
         ))
     }
@@ -150,10 +135,23 @@ impl MinNormFactorization {
     /// # Errors
     /// As [`MinNormFactorization::try_dense`].
     pub fn try_auto(j: &SparseMatrix, weights: &[f64], dense_max_unknowns: usize) -> Result<Self> {
+        Self::try_auto_cached(j, weights, dense_max_unknowns, &mut NormalCache::new())
+    }
+
+    /// [`MinNormFactorization::try_auto`] with the sparse path reusing `cache`.
+    ///
+    /// # Errors
+    /// As [`MinNormFactorization::try_dense`].
+    pub fn try_auto_cached(
+        j: &SparseMatrix,
+        weights: &[f64],
+        dense_max_unknowns: usize,
+        cache: &mut NormalCache,
+    ) -> Result<Self> {
         if j.ncols() <= dense_max_unknowns {
             Self::try_dense(j, weights)
         } else {
-            Self::try_sparse(j, weights)
+            Self::try_sparse_cached(j, weights, cache)
         }
     }
 }

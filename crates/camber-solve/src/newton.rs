@@ -16,7 +16,7 @@
 //! Lagrangian ½‖z − z_ref‖²_W + λᵀ·g is K = W + H, H = Σ λᵢ·∇²gᵢ (exact, from hyper-dual
 //! numbers, [`crate::hessian`]), and the quadratic program with K in place of W is Newton's
 //! method on the first-order conditions: quadratic convergence. It is solved by projected
-//! conjugate gradients on the same factorization ([`crate::projected_cg`]). Far from the
+//! conjugate gradients on the same factorization (the `projected_cg` module). Far from the
 //! solution its model can mislead, so every iteration tries the second-order step at full length
 //! (or with its second-order correction) and keeps it only if the merit accepts it; otherwise it
 //! takes the Gauss–Newton step with a backtracking search. Near the solution the second-order
@@ -36,7 +36,7 @@ use crate::errors::{Error, Result};
 use crate::evaluator::{max_abs, norm2, Evaluator};
 use crate::min_norm::MinNormFactorization;
 use crate::problem::Problem;
-use crate::projected_cg::{self, CgOutcome, QpData};
+use crate::projected_cg::{self, CgOutcome, QpData, Start};
 use crate::solve::Options;
 
 /// Reusable buffers of the Newton iterations: a drag session keeps one and passes it to
@@ -64,6 +64,8 @@ pub struct NewtonWorkspace {
     lambda2: Vec<f64>,
     lambda_full: Vec<f64>,
     cg: crate::projected_cg::CgWorkspace,
+    /// The pattern work of the sparse factorizations (J keeps its pattern between iterations).
+    normal: crate::normal::NormalCache,
 }
 
 impl NewtonWorkspace {
@@ -92,10 +94,8 @@ fn select(g: &[f64], rows: Option<&[usize]>, out: &mut Vec<f64>) {
     }
 }
 
-/// Conjugate-gradient iterations of one quadratic step at most.
-const CG_MAX_ITERATIONS: usize = 50;
-
-/// Relative size of the projected residual at which the quadratic step is taken as solved.
+/// Relative size of the projected residual at which a quadratic step is taken as solved (with
+/// H = 0 one conjugate-gradient iteration solves it exactly; this only ends the rounding).
 const CG_TOLERANCE: f64 = 1e-6;
 
 /// Writes the multipliers of the rows used (`rows`, all when None) into their places of the
@@ -180,6 +180,8 @@ pub(crate) fn run(
         inner_tol,
     };
     let mut last_max: f64;
+    // The longest Gauss–Newton step at which the second-order step is tried.
+    let mut second_order_gate = f64::INFINITY;
     for iteration in 0..settings.max_iterations {
         ev.linearize(problem, &ws.z, &mut ws.g)?;
         select(&ws.g, rows, &mut ws.gs);
@@ -204,14 +206,20 @@ pub(crate) fn run(
                 Some(rows) => full.select_rows(rows),
                 None => full,
             };
-            factorization =
-                MinNormFactorization::try_auto(&j, &weights, options.dense_max_unknowns)?;
+            factorization = MinNormFactorization::try_auto_cached(
+                &j,
+                &weights,
+                options.dense_max_unknowns,
+                &mut ws.normal,
+            )?;
             let data = QpData {
                 weights: &weights,
                 hessian: None,
                 gradient: &ws.c,
                 residuals: &ws.gs,
                 held: &ws.drop,
+                start: Start::Compute,
+                tolerance: CG_TOLERANCE,
             };
             projected_cg::solve(
                 &mut factorization,
@@ -219,8 +227,6 @@ pub(crate) fn run(
                 &mut ws.cg,
                 &mut ws.step,
                 &mut ws.lambda_gn,
-                CG_TOLERANCE,
-                CG_MAX_ITERATIONS,
             )?;
             let mut changed = false;
             for k in 0..n {
@@ -247,8 +253,11 @@ pub(crate) fn run(
         }
 
         // The second-order step with the multipliers of the previous iteration, taken only at
-        // full length (or with its second-order correction).
-        if iteration > 0 && ws.lambda.iter().any(|l| *l != 0.0) {
+        // full length (or with its second-order correction). After a refusal it is tried again
+        // once the Gauss–Newton steps have shrunk fourfold: far from the solution its model is
+        // poor, and each attempt costs a Hessian and a conjugate-gradient solve.
+        let gn_length = max_abs(&ws.step);
+        if iteration > 0 && gn_length <= second_order_gate && ws.lambda.iter().any(|l| *l != 0.0) {
             spread(&ws.lambda, rows, &mut ws.lambda_full);
             if let Some(h) = ev.hessian(problem, &ws.z, &ws.lambda_full)? {
                 let data = QpData {
@@ -257,6 +266,8 @@ pub(crate) fn run(
                     gradient: &ws.c,
                     residuals: &ws.gs,
                     held: &ws.drop,
+                    start: Start::Reuse,
+                    tolerance: CG_TOLERANCE,
                 };
                 let outcome = projected_cg::solve(
                     &mut factorization,
@@ -264,8 +275,6 @@ pub(crate) fn run(
                     &mut ws.cg,
                     &mut ws.step2,
                     &mut ws.lambda2,
-                    CG_TOLERANCE,
-                    CG_MAX_ITERATIONS,
                 )?;
                 if outcome != CgOutcome::NegativeCurvature {
                     h.mul_vec(&ws.step2, &mut ws.p2)?;
@@ -287,6 +296,7 @@ pub(crate) fn run(
                     }
                     std::mem::swap(&mut ws.step, &mut ws.step2);
                 }
+                second_order_gate = 0.25 * gn_length;
             }
         }
 

@@ -37,6 +37,17 @@ pub(crate) struct CgWorkspace {
     kp: Vec<f64>,
     hp: Vec<f64>,
     y: Vec<f64>,
+    /// Δ₀ = −J⁺·g of the last solve, for [`Start::Reuse`].
+    feasible: Vec<f64>,
+}
+
+/// Where the feasible start Δ₀ = −J⁺·g comes from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Start {
+    /// Solve for it.
+    Compute,
+    /// The last solve's, when the factorization and g are the same.
+    Reuse,
 }
 
 /// How the quadratic step ended.
@@ -64,12 +75,19 @@ pub(crate) struct QpData<'a> {
     pub(crate) residuals: &'a [f64],
     /// Unknowns held at a bound: their step stays zero.
     pub(crate) held: &'a [bool],
+    /// Where Δ₀ comes from.
+    pub(crate) start: Start,
+    /// The relative reduction of rᵀ·P·r at which the step counts as solved.
+    pub(crate) tolerance: f64,
 }
+
+/// Conjugate-gradient iterations of one quadratic step at most.
+pub(crate) const MAX_ITERATIONS: usize = 50;
 
 /// Solves the quadratic step into `step` and its multipliers λ⁺ into `lambda` (one per row of
 /// the factorization). Stops at once when the projected residual is rounding against the whole
 /// (the start is already stationary), and otherwise when rᵀ·P·r ≤ `tolerance`²·(r₀ᵀ·P·r₀) or
-/// after `max_iterations`.
+/// after [`MAX_ITERATIONS`].
 ///
 /// # Errors
 /// Dimension errors of the factorization's solves.
@@ -79,9 +97,8 @@ pub(crate) fn solve(
     ws: &mut CgWorkspace,
     step: &mut [f64],
     lambda: &mut [f64],
-    tolerance: f64,
-    max_iterations: usize,
 ) -> Result<CgOutcome> {
+    let (start, tolerance, max_iterations) = (data.start, data.tolerance, MAX_ITERATIONS);
     let n = step.len();
     for v in [&mut ws.r, &mut ws.v, &mut ws.p, &mut ws.kp, &mut ws.hp] {
         v.clear();
@@ -91,7 +108,11 @@ pub(crate) fn solve(
     ws.y.resize(lambda.len(), 0.0);
 
     // Feasible start: the minimum-norm solution of J·Δ = −g.
-    factorization.solve_refined(data.residuals, step, 2, 0.0)?;
+    if start == Start::Compute || ws.feasible.len() != n {
+        ws.feasible.resize(n, 0.0);
+        factorization.solve_refined(data.residuals, &mut ws.feasible, 2, 0.0)?;
+    }
+    step.copy_from_slice(&ws.feasible);
     apply_k(data, step, &mut ws.hp, &mut ws.r)?;
     for (r, c) in ws.r.iter_mut().zip(data.gradient) {
         *r += c;
@@ -255,6 +276,8 @@ mod tests {
                 gradient: &c,
                 residuals: &g,
                 held: &[false; 4],
+                start: Start::Compute,
+                tolerance: 1e-14,
             };
             let (mut step, mut lambda) = ([0.0; 4], [0.0; 2]);
             let out = solve(
@@ -263,8 +286,6 @@ mod tests {
                 &mut CgWorkspace::default(),
                 &mut step,
                 &mut lambda,
-                1e-14,
-                20,
             )
             .unwrap();
             assert!(matches!(out, CgOutcome::Converged { iterations, .. } if iterations <= 2));
@@ -293,6 +314,8 @@ mod tests {
             gradient: &c,
             residuals: &g,
             held: &[false; 3],
+            start: Start::Compute,
+            tolerance: 1e-14,
         };
         let (mut step, mut lambda) = ([0.0; 3], [0.0]);
         let out = solve(
@@ -301,8 +324,6 @@ mod tests {
             &mut CgWorkspace::default(),
             &mut step,
             &mut lambda,
-            1e-14,
-            10,
         )
         .unwrap();
         assert!(matches!(out, CgOutcome::Converged { iterations, .. } if iterations <= 1));
@@ -327,6 +348,8 @@ mod tests {
             gradient: &[0.0, 1.0],
             residuals: &[0.0],
             held: &[false; 2],
+            start: Start::Compute,
+            tolerance: 1e-14,
         };
         let (mut step, mut lambda) = ([0.0; 2], [0.0]);
         let out = solve(
@@ -335,8 +358,6 @@ mod tests {
             &mut CgWorkspace::default(),
             &mut step,
             &mut lambda,
-            1e-14,
-            10,
         )
         .unwrap();
         assert_eq!(out, CgOutcome::NegativeCurvature);

@@ -165,6 +165,11 @@ impl SparseMatrix {
         }
     }
 
+    /// The compressed-row arrays: row pointers, column indices and values.
+    pub(crate) fn raw(&self) -> (&[usize], &[usize], &[f64]) {
+        (&self.row_ptr, &self.col_idx, &self.values)
+    }
+
     /// Entry (i, j), zero when not stored or out of range.
     pub fn get(&self, i: usize, j: usize) -> f64 {
         let (cols, vals) = self.row(i);
@@ -215,6 +220,119 @@ impl SparseMatrix {
             col_idx,
             values,
         }
+    }
+}
+
+/// Builds compressed-row matrices from triplet lists that repeat their (row, column) sequence:
+/// the Jacobian and Hessian of every Newton iteration list their entries in the same order.
+/// The first list fixes the pattern (duplicates summed, explicit zeros kept, so a derivative
+/// that happens to vanish does not change it) and the slot of every triplet; a list with the
+/// same positions then only sums values into those slots. Another sequence rebuilds.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Assembler {
+    keys: Vec<(usize, usize)>,
+    slots: Vec<usize>,
+    matrix: Option<SparseMatrix>,
+}
+
+impl Assembler {
+    /// The `nrows × ncols` matrix of `triplets`, with every value multiplied by `keep(column)`
+    /// (0 or 1: columns left out keep their place in the pattern).
+    ///
+    /// # Errors
+    /// [`Error::UnknownUnknown`] for an index out of range, [`Error::NonFinite`] for a NaN or
+    /// infinite value.
+    pub(crate) fn assemble(
+        &mut self,
+        nrows: usize,
+        ncols: usize,
+        triplets: &[(usize, usize, f64)],
+        keep: impl Fn(usize) -> bool,
+    ) -> Result<&SparseMatrix> {
+        let same = self
+            .matrix
+            .as_ref()
+            .is_some_and(|m| m.nrows == nrows && m.ncols == ncols)
+            && self.keys.len() == triplets.len()
+            && self
+                .keys
+                .iter()
+                .zip(triplets)
+                .all(|(k, t)| k.0 == t.0 && k.1 == t.1);
+        if !same {
+            self.rebuild(nrows, ncols, triplets)?;
+        }
+        let Some(m) = self.matrix.as_mut() else {
+            return Err(Error::Dimension {
+                what: "assembled matrix",
+                expected: nrows,
+                found: 0,
+            });
+        };
+        m.values.fill(0.0);
+        for (k, ((_, c, v), slot)) in triplets.iter().zip(&self.slots).enumerate() {
+            if !v.is_finite() {
+                return Err(Error::NonFinite {
+                    what: "matrix entry",
+                    index: k,
+                    value: *v,
+                });
+            }
+            if keep(*c) {
+                m.values[*slot] += v;
+            }
+        }
+        Ok(m)
+    }
+
+    fn rebuild(
+        &mut self,
+        nrows: usize,
+        ncols: usize,
+        triplets: &[(usize, usize, f64)],
+    ) -> Result<()> {
+        self.keys.clear();
+        for &(r, c, _) in triplets {
+            if r >= nrows {
+                return Err(Error::UnknownUnknown {
+                    index: r,
+                    len: nrows,
+                });
+            }
+            if c >= ncols {
+                return Err(Error::UnknownUnknown {
+                    index: c,
+                    len: ncols,
+                });
+            }
+            self.keys.push((r, c));
+        }
+        let mut positions = self.keys.clone();
+        positions.sort_unstable();
+        positions.dedup();
+        let mut row_ptr = vec![0_usize; nrows + 1];
+        for &(r, _) in &positions {
+            row_ptr[r + 1] += 1;
+        }
+        for i in 0..nrows {
+            row_ptr[i + 1] += row_ptr[i];
+        }
+        let col_idx: Vec<usize> = positions.iter().map(|p| p.1).collect();
+        self.slots.clear();
+        for &(r, c) in &self.keys {
+            let cols = &col_idx[row_ptr[r]..row_ptr[r + 1]];
+            self.slots
+                .push(row_ptr[r] + cols.binary_search(&c).unwrap_or(0));
+        }
+        let values = vec![0.0; col_idx.len()];
+        self.matrix = Some(SparseMatrix {
+            nrows,
+            ncols,
+            row_ptr,
+            col_idx,
+            values,
+        });
+        Ok(())
     }
 }
 
@@ -281,5 +399,25 @@ mod tests {
                 found: 1
             })
         );
+    }
+
+    #[test]
+    fn the_assembler_keeps_its_pattern_and_sums_like_triplets() {
+        let mut asm = Assembler::default();
+        let t1 = [(0, 2, 1.0), (1, 0, 2.0), (0, 2, 0.5), (1, 1, 0.0)];
+        let a = asm.assemble(2, 3, &t1, |_| true).unwrap().clone();
+        assert_eq!(a.nnz(), 3); // the explicit zero at (1, 1) keeps its place
+        assert_relative_eq!(a.get(0, 2), 1.5);
+        let want = SparseMatrix::try_from_triplets(2, 3, &t1).unwrap();
+        assert_eq!(a.to_dense(), want.to_dense());
+        // Same positions, new values, column 0 left out.
+        let t2 = [(0, 2, 2.0), (1, 0, 3.0), (0, 2, 1.0), (1, 1, 4.0)];
+        let b = asm.assemble(2, 3, &t2, |c| c != 0).unwrap();
+        assert_relative_eq!(b.get(0, 2), 3.0);
+        assert_relative_eq!(b.get(1, 0), 0.0);
+        assert_relative_eq!(b.get(1, 1), 4.0);
+        // Another sequence rebuilds; bad entries are errors.
+        assert!(asm.assemble(2, 3, &[(2, 0, 1.0)], |_| true).is_err());
+        assert!(asm.assemble(2, 3, &[(0, 0, f64::NAN)], |_| true).is_err());
     }
 }

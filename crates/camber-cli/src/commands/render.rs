@@ -6,13 +6,13 @@ use std::collections::BTreeSet;
 use std::path::PathBuf;
 
 use anyhow::{anyhow, Context, Result};
-use camber_geom::ParametricCurve;
-use camber_sketch::{Constraint, ConstraintId, Entity, FixTarget, PointRef, Sketch, Target};
+use camber_sketch::{ConstraintId, Entity, Sketch};
 use clap::Args;
-use nalgebra::{Point2, Vector2};
+use nalgebra::Vector2;
 
 use crate::curve_file::write_text;
 use crate::draw::{self, Comb, SAMPLES_PER_PIECE, TEETH_PER_PIECE};
+use crate::scene::{as_curve, glyphs, Glyph, View};
 use crate::sketch_file::{self, describe_error};
 use crate::svg::{BBox, Style, Svg};
 
@@ -48,94 +48,6 @@ pub fn run(args: &RenderArgs) -> Result<()> {
     let svg = picture(&sketch, args.combs).with_context(|| args.input.display().to_string())?;
     write_text(&args.output, &svg)?;
     crate::print_stdout(&format!("wrote {}", args.output.display()))
-}
-
-/// One curve entity through the kernel's common face (lines are drawn as segments instead).
-fn as_curve(e: &Entity) -> Option<&dyn ParametricCurve<f64, 2>> {
-    match e {
-        Entity::Bezier(c) => Some(c),
-        Entity::BSpline(c) => Some(c),
-        Entity::Nurbs(c) => Some(c),
-        _ => None,
-    }
-}
-
-/// A glyph anchored in the sketch.
-enum Glyph {
-    /// An arrow from the point along the direction (tangency).
-    Arrow(Point2<f64>, Vector2<f64>),
-    /// A triangle under the point (fixed).
-    Fixed(Point2<f64>),
-    /// A ring around the point (coincidence, point on curve, custom).
-    Ring(Point2<f64>),
-}
-
-/// The glyphs of one constraint.
-fn glyphs(sketch: &Sketch, c: &Constraint) -> Result<Vec<Glyph>> {
-    let at = |curve, u| sketch.curve_point(curve, u);
-    let p = |r: PointRef| sketch.point(r);
-    Ok(match c {
-        Constraint::Fixed(FixTarget::Point(r)) => vec![Glyph::Fixed(p(*r)?)],
-        Constraint::Fixed(FixTarget::Entity(e)) => sketch
-            .entity(*e)?
-            .points()
-            .iter()
-            .map(|q| Glyph::Fixed(*q))
-            .collect(),
-        Constraint::Coincident(a, b) => vec![Glyph::Ring(p(*a)?), Glyph::Ring(p(*b)?)],
-        Constraint::PointAtParameter { curve, u, target } => {
-            let mut v = vec![Glyph::Ring(at(*curve, *u)?)];
-            match target {
-                Target::At(q) => v.push(Glyph::Ring(*q)),
-                Target::Point(r) => v.push(Glyph::Ring(p(*r)?)),
-            }
-            v
-        }
-        Constraint::TangentVectorAt { curve, u, vector } => {
-            vec![Glyph::Arrow(at(*curve, *u)?, *vector)]
-        }
-        Constraint::DirectionalTangentAt {
-            curve,
-            u,
-            direction,
-            sense,
-        } => vec![Glyph::Arrow(at(*curve, *u)?, direction * sense.sign())],
-        Constraint::StartTangent {
-            curve,
-            direction,
-            sense,
-            ..
-        } => vec![Glyph::Arrow(
-            p(PointRef::Start(*curve))?,
-            direction * sense.sign(),
-        )],
-        Constraint::EndTangent {
-            curve,
-            direction,
-            sense,
-            ..
-        } => vec![Glyph::Arrow(
-            p(PointRef::End(*curve))?,
-            direction * sense.sign(),
-        )],
-        Constraint::TangentToLineAt {
-            curve,
-            u,
-            direction,
-            sense,
-            ..
-        } => vec![Glyph::Arrow(at(*curve, *u)?, direction * sense.sign())],
-        Constraint::G1Join {
-            first, direction, ..
-        } => vec![Glyph::Arrow(p(PointRef::End(*first))?, *direction)],
-        Constraint::Custom(custom) => custom
-            .points()
-            .iter()
-            .map(|r| p(*r).map(Glyph::Ring))
-            .collect::<Result<_, _>>()?,
-        #[allow(unreachable_patterns)] // kinds added later get no glyph until they are drawn
-        _ => Vec::new(),
-    })
 }
 
 fn draw_glyph(svg: &mut Svg, g: &Glyph, size: f64, colour: &str) {
@@ -210,6 +122,7 @@ pub fn picture(sketch: &Sketch, combs: bool) -> Result<String> {
         }
     }
     let mut svg = Svg::new(bbox, 0.08);
+    let view = View::new(sketch);
     let size = 6.0 * svg.unit();
     for comb in &comb_list {
         comb.draw(&mut svg);
@@ -234,7 +147,7 @@ pub fn picture(sketch: &Sketch, combs: bool) -> Result<String> {
         } else {
             GLYPH
         };
-        for g in glyphs(sketch, c)? {
+        for g in glyphs(&view, c)? {
             draw_glyph(&mut svg, &g, size, colour);
         }
     }

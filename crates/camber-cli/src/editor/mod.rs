@@ -1,0 +1,672 @@
+//! `camber edit`: the interactive editor. One sketch is kept in memory; a single page draws it
+//! and drags its points through HTTP calls that this module answers.
+//!
+//! [`EditorState::handle`] takes a request as method, path and body and returns a
+//! [`Response`]; it knows nothing of sockets, so tests drive it directly. The server loop
+//! ([`server`]) only reads requests, checks where they come from, and writes the answers.
+//!
+//! The drag loop: `POST /api/drag/start` opens a [`camber_sketch::DragSession`] on the
+//! point; each `POST /api/drag/move` runs `DragSession::update` and answers with the entities
+//! that moved (control points and curve samples, drawn by [`crate::scene`] like `camber
+//! render`) and the glyphs of the constraints reading them; `POST /api/drag/end` commits the
+//! session to the sketch, which then is analysed again. An update the solver refuses answers
+//! 422 with the reason, and the session keeps its last valid geometry; the sketch changes only
+//! at the end of a drag, a solve or an undo, and never to an invalid state.
+//!
+//! ```
+//! use camber_cli::editor::EditorState;
+//! let text = r#"{"version": 1,
+//!   "entities": [{"id": 0, "kind": "bezier", "control_points": [[0, 0], [1, 1], [2, 0]]}],
+//!   "constraints": [{"id": 1, "kind": "fixed", "target": {"point": {"start": 0}}}]}"#;
+//! let sketch = camber_cli::sketch_file::parse(text)?;
+//! let mut editor = EditorState::new(sketch, "curve.json".into(), None)?;
+//! assert_eq!(editor.handle("POST", "/api/drag/start", br#"{"entity": 0, "index": 2}"#).status, 200);
+//! let moved = editor.handle("POST", "/api/drag/move", br#"{"to": [2, 1]}"#);
+//! assert_eq!(moved.status, 200, "{}", moved.text());
+//! assert_eq!(editor.handle("POST", "/api/drag/end", b"").status, 200);
+//! let end = editor.sketch().point(camber_sketch::PointRef::Control(camber_sketch::EntityId(0), 2))?;
+//! assert!((end.y - 1.0).abs() < 1e-12);
+//! assert_eq!(editor.handle("POST", "/api/drag/move", br#"{"to": [2, 1]}"#).status, 409);
+//! # Ok::<(), anyhow::Error>(())
+//! ```
+
+pub mod server;
+pub mod wire;
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+use anyhow::{anyhow, Result};
+use camber_sketch::{ConstraintId, DragSession, Entity, EntityId, PointRef, Sketch};
+use nalgebra::Point2;
+use serde::de::DeserializeOwned;
+use serde::Serialize;
+
+use crate::commands::render::ANALYSIS_MAX_ENTITIES;
+use crate::scene::View;
+use crate::sketch_file::{self, describe_error};
+use wire::{
+    AnalysisJson, ComponentJson, ComponentReportJson, ConstraintRef, DragMove, DragStart,
+    DraggedJson, ErrorJson, MoveJson, ReportJson, SavedJson, SceneJson, StateJson,
+};
+
+/// The page, its script and its style sheet, built into the binary.
+const PAGE: &str = include_str!("../../assets/editor.html");
+const SCRIPT: &str = include_str!("../../assets/editor.js");
+const STYLE: &str = include_str!("../../assets/editor.css");
+
+/// How many earlier states undo keeps.
+pub const UNDO_DEPTH: usize = 100;
+
+/// An HTTP answer: status, content type, body.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Response {
+    /// The status code.
+    pub status: u16,
+    /// The `Content-Type` header.
+    pub content_type: &'static str,
+    /// The body.
+    pub body: Vec<u8>,
+}
+
+impl Response {
+    /// A JSON answer.
+    pub fn json<T: Serialize>(status: u16, value: &T) -> Self {
+        match serde_json::to_vec(value) {
+            Ok(body) => Self {
+                status,
+                content_type: "application/json",
+                body,
+            },
+            Err(e) => Self::error(500, &format!("cannot write the answer as JSON: {e}")),
+        }
+    }
+
+    /// An error answer, `{"error": message}`.
+    pub fn error(status: u16, message: &str) -> Self {
+        let body = serde_json::to_vec(&ErrorJson {
+            error: message.to_owned(),
+        })
+        .unwrap_or_else(|_| b"{\"error\":\"error\"}".to_vec());
+        Self {
+            status,
+            content_type: "application/json",
+            body,
+        }
+    }
+
+    fn asset(content_type: &'static str, text: &'static str) -> Self {
+        Self {
+            status: 200,
+            content_type,
+            body: text.as_bytes().to_vec(),
+        }
+    }
+
+    /// The body as text (lossy), for messages and tests.
+    pub fn text(&self) -> String {
+        String::from_utf8_lossy(&self.body).into_owned()
+    }
+}
+
+/// A failed request: the status and the plain message the page shows.
+#[derive(Debug)]
+struct Failure(u16, String);
+
+impl Failure {
+    fn new(status: u16, message: impl Into<String>) -> Self {
+        Self(status, message.into())
+    }
+}
+
+impl From<anyhow::Error> for Failure {
+    fn from(e: anyhow::Error) -> Self {
+        Self(500, format!("{e:#}"))
+    }
+}
+
+type Answer = std::result::Result<Response, Failure>;
+
+/// A drag in progress: the session, and the geometry it shows now.
+#[derive(Debug)]
+struct Drag {
+    session: DragSession,
+    entity: EntityId,
+    index: usize,
+    linear: bool,
+    /// The entities of the dragged component at the session's current state.
+    current: BTreeMap<EntityId, Entity>,
+    updates: usize,
+    refused: usize,
+    update_time: Duration,
+}
+
+/// The editor: the sketch, the drag in progress, the undo history and the last report.
+#[derive(Debug)]
+pub struct EditorState {
+    sketch: Sketch,
+    file: PathBuf,
+    output: PathBuf,
+    /// A number per distinct state: new for every change, restored by undo.
+    version: u64,
+    next_version: u64,
+    saved_version: u64,
+    undo: Vec<(Sketch, u64)>,
+    drag: Option<Drag>,
+    components: Vec<ComponentJson>,
+    conflicting: BTreeSet<ConstraintId>,
+    report: Option<ReportJson>,
+}
+
+impl EditorState {
+    /// Loads a sketch file; `output` is where saving writes (the file itself by default).
+    ///
+    /// # Errors
+    /// The file cannot be read or is not a valid sketch (the message starts with its name).
+    pub fn load(file: &Path, output: Option<PathBuf>) -> Result<Self> {
+        let sketch = sketch_file::load(file)?;
+        Self::new(sketch, file.to_path_buf(), output)
+    }
+
+    /// An editor on a sketch that came from `file`.
+    ///
+    /// # Errors
+    /// The analysis of the sketch fails (it names the constraints).
+    pub fn new(sketch: Sketch, file: PathBuf, output: Option<PathBuf>) -> Result<Self> {
+        let mut state = Self {
+            sketch,
+            output: output.unwrap_or_else(|| file.clone()),
+            file,
+            version: 0,
+            next_version: 1,
+            saved_version: 0,
+            undo: Vec::new(),
+            drag: None,
+            components: Vec::new(),
+            conflicting: BTreeSet::new(),
+            report: None,
+        };
+        state.analyse()?;
+        Ok(state)
+    }
+
+    /// The sketch as committed (a drag in progress is not in it until it ends).
+    pub fn sketch(&self) -> &Sketch {
+        &self.sketch
+    }
+
+    /// Answers one request. `path` may carry a query string, which is ignored.
+    ///
+    /// | request | answer |
+    /// | --- | --- |
+    /// | `GET /`, `/editor.js`, `/editor.css` | the page |
+    /// | `GET /api/state` | [`StateJson`] |
+    /// | `POST /api/drag/start` [`DragStart`] | [`DraggedJson`] |
+    /// | `POST /api/drag/move` [`DragMove`] | [`MoveJson`]; 422 when the solver refuses |
+    /// | `POST /api/drag/end`, `/api/drag/cancel` | [`StateJson`] |
+    /// | `POST /api/solve`, `/api/undo` | [`StateJson`] |
+    /// | `POST /api/save` | [`SavedJson`] |
+    ///
+    /// Errors answer `{"error": "…"}`: 400 for a malformed body, 404 for an unknown path,
+    /// entity or point, 405 for a wrong method, 409 for an action that does not fit the state
+    /// (moving without a drag, saving during one, nothing to undo), 422 when the solver refuses
+    /// (the sketch and the drag keep their last valid geometry), 500 when writing fails.
+    pub fn handle(&mut self, method: &str, path: &str, body: &[u8]) -> Response {
+        let path = path.split(['?', '#']).next().unwrap_or_default();
+        let answer = match (method, path) {
+            ("GET" | "HEAD", "/" | "/index.html") => {
+                Ok(Response::asset("text/html; charset=utf-8", PAGE))
+            }
+            ("GET" | "HEAD", "/editor.js") => {
+                Ok(Response::asset("text/javascript; charset=utf-8", SCRIPT))
+            }
+            ("GET" | "HEAD", "/editor.css") => {
+                Ok(Response::asset("text/css; charset=utf-8", STYLE))
+            }
+            ("GET" | "HEAD", "/api/state") => self.state_answer(),
+            ("POST", "/api/drag/start") => self.drag_start(body),
+            ("POST", "/api/drag/move") => self.drag_move(body),
+            ("POST", "/api/drag/end") => self.drag_end(),
+            ("POST", "/api/drag/cancel") => self.drag_cancel(),
+            ("POST", "/api/solve") => self.solve(),
+            ("POST", "/api/undo") => self.undo(),
+            ("POST", "/api/save") => self.save(),
+            (_, p) if ROUTES.contains(&p) => {
+                Err(Failure::new(405, format!("{method} is not allowed on {p}")))
+            }
+            (_, p) => Err(Failure::new(404, format!("no such page: {p}"))),
+        };
+        answer.unwrap_or_else(|Failure(status, message)| Response::error(status, &message))
+    }
+
+    /// The whole state as the page shows it.
+    ///
+    /// # Errors
+    /// Evaluation failures while drawing (not for a sketch the library accepted).
+    pub fn state(&self) -> Result<StateJson> {
+        let scene = match &self.drag {
+            Some(d) => SceneJson::of(
+                &View::with_overrides(&self.sketch, &d.current),
+                &self.conflicting,
+                |_| true,
+            )?,
+            None => SceneJson::of(&View::new(&self.sketch), &self.conflicting, |_| true)?,
+        };
+        Ok(StateJson {
+            file: self.file.display().to_string(),
+            output: self.output.display().to_string(),
+            unsaved: self.version != self.saved_version,
+            can_undo: !self.undo.is_empty(),
+            dragging: self.drag.as_ref().map(|d| DraggedJson {
+                entity: d.entity.0,
+                index: d.index,
+                linear: d.linear,
+            }),
+            scene,
+            components: self.components.clone(),
+            report: self.report.clone(),
+        })
+    }
+
+    fn state_answer(&self) -> Answer {
+        Ok(Response::json(200, &self.state()?))
+    }
+
+    fn no_drag(&self, action: &str) -> std::result::Result<(), Failure> {
+        match &self.drag {
+            Some(d) => Err(Failure::new(
+                409,
+                format!(
+                    "cannot {action} during a drag (point {} of entity {}): end or cancel it first",
+                    d.index, d.entity.0
+                ),
+            )),
+            None => Ok(()),
+        }
+    }
+
+    fn drag_start(&mut self, body: &[u8]) -> Answer {
+        let req: DragStart = parse(body)?;
+        self.no_drag("start another drag")?;
+        let id = EntityId(req.entity);
+        let e = self
+            .sketch
+            .entity(id)
+            .map_err(|_| Failure::new(404, format!("entity {} does not exist", req.entity)))?;
+        let count = e.points().len();
+        if req.index >= count {
+            return Err(Failure::new(
+                404,
+                format!(
+                    "entity {} has {count} point(s), index {} does not exist",
+                    req.entity, req.index
+                ),
+            ));
+        }
+        let point = match e {
+            Entity::Point(_) => PointRef::Point(id),
+            _ => PointRef::Control(id, req.index),
+        };
+        let comp = self
+            .sketch
+            .component_of(id)
+            .map_err(|e| Failure::new(500, describe_error(&self.sketch, &e)))?;
+        let session = self
+            .sketch
+            .drag(point)
+            .map_err(|e| Failure::new(422, describe_error(&self.sketch, &e)))?;
+        let mut current = BTreeMap::new();
+        for c in &comp.entities {
+            if let Ok(e) = self.sketch.entity(*c) {
+                current.insert(*c, e.clone());
+            }
+        }
+        let linear = !self
+            .components
+            .iter()
+            .any(|c| c.nonlinear && c.entities.contains(&id.0));
+        let dragged = DraggedJson {
+            entity: id.0,
+            index: req.index,
+            linear,
+        };
+        self.drag = Some(Drag {
+            session,
+            entity: id,
+            index: req.index,
+            linear,
+            current,
+            updates: 0,
+            refused: 0,
+            update_time: Duration::ZERO,
+        });
+        Ok(Response::json(200, &dragged))
+    }
+
+    fn drag_move(&mut self, body: &[u8]) -> Answer {
+        let start = Instant::now();
+        let req: DragMove = parse(body)?;
+        let Some(drag) = self.drag.as_mut() else {
+            return Err(Failure::new(409, "no drag in progress: start one first"));
+        };
+        let t = Instant::now();
+        let result = drag.session.update(Point2::new(req.to[0], req.to[1]));
+        let update_time = t.elapsed();
+        drag.update_time += update_time;
+        if let Err(e) = result {
+            drag.refused += 1;
+            return Err(Failure::new(
+                422,
+                format!("move refused: {}", describe_error(&self.sketch, &e)),
+            ));
+        }
+        drag.updates += 1;
+        // The entities whose points the update moved, rebuilt from the session's points.
+        let mut moved = Vec::new();
+        for (id, e) in &drag.current {
+            let points = (0..e.points().len())
+                .map(|i| drag.session.point(PointRef::Control(*id, i)))
+                .collect::<std::result::Result<Vec<_>, _>>()
+                .map_err(|err| Failure::new(500, describe_error(&self.sketch, &err)))?;
+            if points.as_slice() != e.points() {
+                let rebuilt = e
+                    .with_points(&points, &e.scalars())
+                    .map_err(|err| Failure::new(500, describe_error(&self.sketch, &err)))?;
+                moved.push((*id, rebuilt));
+            }
+        }
+        let changed: BTreeSet<EntityId> = moved.iter().map(|(id, _)| *id).collect();
+        drag.current.extend(moved);
+        let view = View::with_overrides(&self.sketch, &drag.current);
+        let scene = SceneJson::of(&view, &self.conflicting, |id| changed.contains(&id))?;
+        Ok(Response::json(
+            200,
+            &MoveJson {
+                scene,
+                update_us: update_time.as_secs_f64() * 1e6,
+                handler_us: start.elapsed().as_secs_f64() * 1e6,
+            },
+        ))
+    }
+
+    fn drag_end(&mut self) -> Answer {
+        let Some(drag) = self.drag.take() else {
+            return Err(Failure::new(409, "no drag in progress"));
+        };
+        if drag.updates == 0 {
+            return self.state_answer();
+        }
+        let before = self.sketch.clone();
+        let (entity, index, linear) = (drag.entity, drag.index, drag.linear);
+        let (updates, refused, time) = (drag.updates, drag.refused, drag.update_time);
+        drag.session
+            .finish(&mut self.sketch)
+            .map_err(|e| Failure::new(422, describe_error(&self.sketch, &e)))?;
+        self.committed(before)?;
+        let comp = self
+            .components
+            .iter()
+            .find(|c| c.entities.contains(&entity.0));
+        let path = if linear {
+            "drag: linear minimum norm (cached factorization)"
+        } else {
+            "drag: Newton minimum norm (warm-started)"
+        };
+        let tries = updates + refused;
+        let mean_us = time.as_secs_f64() * 1e6 / tries as f64;
+        self.report = Some(ReportJson {
+            action: "drag",
+            summary: format!(
+                "dragged point {index} of entity {}: {updates} update(s), {refused} refused, \
+                 {mean_us:.1} µs per update",
+                entity.0
+            ),
+            components: comp
+                .map(|c| ComponentReportJson {
+                    entities: c.entities.clone(),
+                    solver: path.to_owned(),
+                    reason: format!("{updates} update(s), {refused} refused"),
+                    dof: c.analysis.as_ref().map(|a| a.dof),
+                    residual: c.residual,
+                    time_ms: time.as_secs_f64() * 1e3,
+                })
+                .into_iter()
+                .collect(),
+        });
+        self.state_answer()
+    }
+
+    fn drag_cancel(&mut self) -> Answer {
+        if self.drag.take().is_none() {
+            return Err(Failure::new(409, "no drag in progress"));
+        }
+        self.state_answer()
+    }
+
+    fn solve(&mut self) -> Answer {
+        self.no_drag("solve")?;
+        let before = self.sketch.clone();
+        let report = self.sketch.solve_all().map_err(|e| {
+            Failure::new(
+                422,
+                format!("solve failed: {}", describe_error(&before, &e)),
+            )
+        })?;
+        self.committed(before)?;
+        let components: Vec<ComponentReportJson> = report
+            .components
+            .iter()
+            .map(|c| {
+                let r = &c.report;
+                ComponentReportJson {
+                    entities: c.component.entities.iter().map(|e| e.0).collect(),
+                    solver: format!("{:?}", r.solver),
+                    reason: r.reason.clone(),
+                    dof: Some(r.dof),
+                    residual: r.residuals.iter().fold(0.0_f64, |m, g| m.max(g.max_abs)),
+                    time_ms: r.elapsed.as_secs_f64() * 1e3,
+                }
+            })
+            .collect();
+        self.report = Some(ReportJson {
+            action: "solve",
+            summary: format!("solved {} component(s)", components.len()),
+            components,
+        });
+        self.state_answer()
+    }
+
+    fn undo(&mut self) -> Answer {
+        self.no_drag("undo")?;
+        let Some((sketch, version)) = self.undo.pop() else {
+            return Err(Failure::new(409, "nothing to undo"));
+        };
+        self.sketch = sketch;
+        self.version = version;
+        self.report = None;
+        self.analyse()?;
+        self.state_answer()
+    }
+
+    fn save(&mut self) -> Answer {
+        self.no_drag("save")?;
+        let text = camber_sketch::file::to_json(&self.sketch)
+            .map_err(|e| Failure::new(422, format!("cannot save: {e}")))?;
+        write_atomically(&self.output, &text).map_err(|e| Failure::new(500, format!("{e:#}")))?;
+        self.saved_version = self.version;
+        Ok(Response::json(
+            200,
+            &SavedJson {
+                saved: self.output.display().to_string(),
+                bytes: text.len(),
+                state: self.state()?,
+            },
+        ))
+    }
+
+    /// After a change of the sketch: remember the state before it, give the new one a
+    /// version, analyse again.
+    fn committed(&mut self, before: Sketch) -> Result<()> {
+        if self.undo.len() == UNDO_DEPTH {
+            self.undo.remove(0);
+        }
+        self.undo.push((before, self.version));
+        self.version = self.next_version;
+        self.next_version += 1;
+        self.analyse()
+    }
+
+    /// Recomputes the components, their DOF analysis (small sketches) and their residuals.
+    fn analyse(&mut self) -> Result<()> {
+        let (components, conflicting) = analyse(&self.sketch)?;
+        self.components = components;
+        self.conflicting = conflicting;
+        Ok(())
+    }
+}
+
+/// Every path the editor answers, for telling 405 from 404.
+const ROUTES: [&str; 12] = [
+    "/",
+    "/index.html",
+    "/editor.js",
+    "/editor.css",
+    "/api/state",
+    "/api/drag/start",
+    "/api/drag/move",
+    "/api/drag/end",
+    "/api/drag/cancel",
+    "/api/solve",
+    "/api/undo",
+    "/api/save",
+];
+
+/// Parses a JSON request body; a malformed one is a 400 with serde's reason.
+fn parse<T: DeserializeOwned>(body: &[u8]) -> std::result::Result<T, Failure> {
+    serde_json::from_slice(body).map_err(|e| Failure::new(400, format!("bad request body: {e}")))
+}
+
+/// The components of a sketch with their analysis (for sketches of at most
+/// [`ANALYSIS_MAX_ENTITIES`] entities) and their largest residual now, and every constraint the
+/// analysis names conflicting.
+///
+/// # Errors
+/// Building a component's problem fails (the message names the constraint).
+pub fn analyse(sketch: &Sketch) -> Result<(Vec<ComponentJson>, BTreeSet<ConstraintId>)> {
+    let failed =
+        |e: camber_sketch::Error| anyhow!("analysis failed: {}", describe_error(sketch, &e));
+    let mut analyses: BTreeMap<EntityId, AnalysisJson> = BTreeMap::new();
+    let mut conflicting = BTreeSet::new();
+    if sketch.entities().count() <= ANALYSIS_MAX_ENTITIES {
+        for a in sketch.analyze().map_err(failed)? {
+            let d = &a.analysis;
+            conflicting.extend(d.conflicting.iter().copied());
+            if let Some(first) = a.component.entities.first() {
+                analyses.insert(
+                    *first,
+                    AnalysisJson {
+                        free_unknowns: d.free_unknowns,
+                        rank: d.rank,
+                        dof: d.dof,
+                        redundant: ConstraintRef::list(sketch, &d.redundant),
+                        conflicting: ConstraintRef::list(sketch, &d.conflicting),
+                    },
+                );
+            }
+        }
+    }
+    let mut out = Vec::new();
+    for comp in sketch.components() {
+        let Some(first) = comp.entities.first().copied() else {
+            continue;
+        };
+        let cp = sketch.component_problem(first).map_err(failed)?;
+        let lin = cp
+            .problem()
+            .linearize()
+            .map_err(|e| failed(camber_sketch::Error::from(e)))?;
+        let worst = lin
+            .g
+            .iter()
+            .enumerate()
+            .fold(None, |best: Option<(usize, f64)>, (i, g)| match best {
+                Some((_, b)) if b >= g.abs() => best,
+                _ if g.abs() > 0.0 => Some((i, g.abs())),
+                _ => best,
+            });
+        out.push(ComponentJson {
+            entities: comp.entities.iter().map(|e| e.0).collect(),
+            constraints: comp.constraints.iter().map(|c| c.0).collect(),
+            nonlinear: !lin.affine,
+            analysis: analyses.remove(&first),
+            residual: worst.map_or(0.0, |w| w.1),
+            worst: worst
+                .and_then(|(i, _)| lin.row_owner.get(i))
+                .map(|id| ConstraintRef::of(sketch, *id)),
+        });
+    }
+    Ok((out, conflicting))
+}
+
+/// Writes `text` to a temporary file beside `path`, then renames it over `path`, so a failed
+/// write never leaves half a sketch file.
+fn write_atomically(path: &Path, text: &str) -> Result<()> {
+    let name = path
+        .file_name()
+        .ok_or_else(|| anyhow!("{}: not a file name", path.display()))?;
+    let mut tmp_name = std::ffi::OsString::from(".");
+    tmp_name.push(name);
+    tmp_name.push(".camber-edit.tmp");
+    let tmp = path.with_file_name(tmp_name);
+    crate::curve_file::write_text(&tmp, text)?;
+    std::fs::rename(&tmp, path).map_err(|e| {
+        let _ = std::fs::remove_file(&tmp);
+        anyhow!("{}: cannot write: {e}", path.display())
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn saving_replaces_the_file_whole_and_leaves_no_temporary() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("s.json");
+        std::fs::write(&path, "old").unwrap();
+        write_atomically(&path, "new text").unwrap();
+        assert_eq!(std::fs::read_to_string(&path).unwrap(), "new text");
+        let names: Vec<_> = std::fs::read_dir(dir.path())
+            .unwrap()
+            .map(|e| e.unwrap().file_name())
+            .collect();
+        assert_eq!(names, ["s.json"]);
+        // A missing folder fails plainly, naming the file, and creates nothing.
+        let missing = dir.path().join("no/such/s.json");
+        let e = write_atomically(&missing, "x").unwrap_err().to_string();
+        assert!(
+            e.contains("cannot write") && e.contains("no such file or directory"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn unsaved_follows_the_versions_through_undo() {
+        let text = r#"{"version": 1,
+          "entities": [{"id": 0, "kind": "bezier", "control_points": [[0, 0], [1, 1], [2, 0]]}],
+          "constraints": [{"id": 1, "kind": "fixed", "target": {"point": {"start": 0}}}]}"#;
+        let sketch = crate::sketch_file::parse(text).unwrap();
+        let mut ed = EditorState::new(sketch, "s.json".into(), None).unwrap();
+        let unsaved = |ed: &EditorState| ed.state().unwrap().unsaved;
+        assert!(!unsaved(&ed));
+        assert_eq!(ed.handle("POST", "/api/solve", b"{}").status, 200);
+        assert!(unsaved(&ed));
+        assert_eq!(ed.handle("POST", "/api/undo", b"{}").status, 200);
+        assert!(!unsaved(&ed), "back at the loaded state");
+        // A new change after an undo gets a new version, never an old one.
+        assert_eq!(ed.handle("POST", "/api/solve", b"{}").status, 200);
+        assert!(unsaved(&ed));
+        assert_eq!(ed.version, 2);
+    }
+}

@@ -1,0 +1,298 @@
+//! The editor's JSON: what the page sends (request bodies) and what it gets back (the scene,
+//! the DOF analysis per component, the reports). docs/cli.md describes every field.
+//!
+//! Geometry goes out as the [`crate::scene`] computes it: control points in full precision,
+//! curve samples rounded to f32 (they are only drawn), glyphs in model coordinates.
+
+use std::collections::BTreeSet;
+
+use anyhow::Result;
+use camber_sketch::{ConstraintId, Entity, EntityId, Sketch};
+use serde::{Deserialize, Serialize};
+
+use crate::draw::{sample_curve, SAMPLES_PER_PIECE};
+use crate::scene::{as_curve, glyphs, kind_word, Glyph, View};
+
+/// `POST /api/drag/start`: the point to drag, as an entity and the index of its point
+/// (control point, line end 0 or 1, circle centre 0, point entity 0).
+#[derive(Debug, Clone, Copy, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DragStart {
+    /// The entity id.
+    pub entity: u64,
+    /// The point's index in the entity.
+    pub index: usize,
+}
+
+/// `POST /api/drag/move`: where the dragged point should go, in model coordinates.
+#[derive(Debug, Clone, Copy, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DragMove {
+    /// The target `[x, y]`.
+    pub to: [f64; 2],
+}
+
+/// One entity as drawn: its points (control points, line ends, circle centre, the point), the
+/// radius of a circle, the sampled polyline of a curve.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct EntityJson {
+    /// The entity id.
+    pub id: u64,
+    /// `point`, `line`, `circle`, `bezier`, `bspline` or `nurbs`.
+    pub kind: &'static str,
+    /// The entity's points in file order, in full precision.
+    pub points: Vec<[f64; 2]>,
+    /// A circle's radius.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub radius: Option<f64>,
+    /// Points along a curve (Bézier, B-spline, NURBS) for drawing.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub samples: Vec<[f32; 2]>,
+}
+
+impl EntityJson {
+    /// The drawing of one entity.
+    ///
+    /// # Errors
+    /// A curve that cannot be evaluated (not for an entity the sketch accepted).
+    pub fn of(id: EntityId, e: &Entity) -> Result<Self> {
+        let samples = match as_curve(e) {
+            Some(c) => sample_curve(c, SAMPLES_PER_PIECE)?
+                .iter()
+                .map(|p| [p.x as f32, p.y as f32])
+                .collect(),
+            None => Vec::new(),
+        };
+        Ok(Self {
+            id: id.0,
+            kind: kind_word(e),
+            points: e.points().iter().map(|p| [p.x, p.y]).collect(),
+            radius: match e {
+                Entity::Circle { radius, .. } => Some(*radius),
+                _ => None,
+            },
+            samples,
+        })
+    }
+}
+
+/// One glyph of one constraint.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct GlyphJson {
+    /// The constraint it marks.
+    pub constraint: u64,
+    /// `arrow`, `fixed` or `ring`.
+    pub shape: &'static str,
+    /// Where it sits.
+    pub at: [f64; 2],
+    /// An arrow's direction (any length).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub dir: Option<[f64; 2]>,
+    /// Whether the DOF analysis names the constraint conflicting (drawn in red).
+    pub conflicting: bool,
+}
+
+impl GlyphJson {
+    fn of(constraint: ConstraintId, g: Glyph, conflicting: bool) -> Self {
+        let (shape, at, dir) = match g {
+            Glyph::Arrow(p, d) => ("arrow", p, Some([d.x, d.y])),
+            Glyph::Fixed(p) => ("fixed", p, None),
+            Glyph::Ring(p) => ("ring", p, None),
+        };
+        Self {
+            constraint: constraint.0,
+            shape,
+            at: [at.x, at.y],
+            dir,
+            conflicting,
+        }
+    }
+}
+
+/// Entities and glyphs: the whole sketch, or the part a drag update changed.
+#[derive(Debug, Clone, PartialEq, Serialize, Default)]
+pub struct SceneJson {
+    /// Entities by increasing id.
+    pub entities: Vec<EntityJson>,
+    /// Glyphs by increasing constraint id.
+    pub glyphs: Vec<GlyphJson>,
+}
+
+impl SceneJson {
+    /// The entities whose ids pass `keep`, and the glyphs of the constraints that read one of
+    /// them, as `view` shows them.
+    ///
+    /// # Errors
+    /// Evaluation failures (not for a sketch the library accepted).
+    pub fn of(
+        view: &View,
+        conflicting: &BTreeSet<ConstraintId>,
+        keep: impl Fn(EntityId) -> bool,
+    ) -> Result<Self> {
+        let mut out = Self::default();
+        for (id, e) in view.entities() {
+            if keep(id) {
+                out.entities.push(EntityJson::of(id, e)?);
+            }
+        }
+        for (id, c) in view.sketch().constraints() {
+            if c.entities().iter().any(|e| keep(*e)) {
+                let red = conflicting.contains(&id);
+                for g in glyphs(view, c)? {
+                    out.glyphs.push(GlyphJson::of(id, g, red));
+                }
+            }
+        }
+        Ok(out)
+    }
+}
+
+/// A constraint named by id and kind.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ConstraintRef {
+    /// The constraint id.
+    pub id: u64,
+    /// Its kind in words ("G1 join", "tangent to circle", …).
+    pub kind: &'static str,
+}
+
+impl ConstraintRef {
+    /// The id with the kind the sketch gives it ("unknown" for an id it does not hold).
+    pub fn of(sketch: &Sketch, id: ConstraintId) -> Self {
+        Self {
+            id: id.0,
+            kind: sketch.constraint(id).map_or("unknown", |c| c.kind_name()),
+        }
+    }
+
+    /// [`ConstraintRef::of`] for a list.
+    pub fn list(sketch: &Sketch, ids: &[ConstraintId]) -> Vec<Self> {
+        ids.iter().map(|id| Self::of(sketch, *id)).collect()
+    }
+}
+
+/// The DOF analysis of one component (absent when the component is too large to analyse
+/// densely, see [`crate::commands::render::ANALYSIS_MAX_ENTITIES`]).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct AnalysisJson {
+    /// Free unknowns.
+    pub free_unknowns: usize,
+    /// Rank of the Jacobian.
+    pub rank: usize,
+    /// Degrees of freedom left.
+    pub dof: usize,
+    /// Constraints with consistent dependent rows.
+    pub redundant: Vec<ConstraintRef>,
+    /// Constraints with inconsistent dependent rows.
+    pub conflicting: Vec<ConstraintRef>,
+}
+
+/// One connected component: its ids, its DOF analysis, its largest residual now.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ComponentJson {
+    /// Entity ids.
+    pub entities: Vec<u64>,
+    /// Constraint ids.
+    pub constraints: Vec<u64>,
+    /// Whether a residual is nonlinear (Newton/SLSQP path) rather than affine.
+    pub nonlinear: bool,
+    /// The analysis, or `null` for a component too large to analyse here.
+    pub analysis: Option<AnalysisJson>,
+    /// max |g| over the component's residual rows at the current geometry.
+    pub residual: f64,
+    /// The constraint owning that largest row, if any row is non-zero.
+    pub worst: Option<ConstraintRef>,
+}
+
+/// One component's line of a report: what ran, how far from satisfied, how long.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ComponentReportJson {
+    /// Entity ids.
+    pub entities: Vec<u64>,
+    /// The solver (or the drag path) that ran.
+    pub solver: String,
+    /// Why that solver, or how the drag went.
+    pub reason: String,
+    /// Degrees of freedom left.
+    pub dof: Option<usize>,
+    /// Largest residual afterwards.
+    pub residual: f64,
+    /// Wall-clock time in milliseconds (for a drag: all updates together).
+    pub time_ms: f64,
+}
+
+/// The outcome of the last solve or drag.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ReportJson {
+    /// `solve` or `drag`.
+    pub action: &'static str,
+    /// One sentence for the status line.
+    pub summary: String,
+    /// One line per component the action touched.
+    pub components: Vec<ComponentReportJson>,
+}
+
+/// The point a drag session holds.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct DraggedJson {
+    /// The entity.
+    pub entity: u64,
+    /// The point's index in the entity.
+    pub index: usize,
+    /// Whether the component takes the linear path (a cached factorization) or Newton.
+    pub linear: bool,
+}
+
+/// Everything the page shows: `GET /api/state`, and the answer of every action that changes
+/// the sketch.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct StateJson {
+    /// The file the sketch came from.
+    pub file: String,
+    /// Where `POST /api/save` writes.
+    pub output: String,
+    /// Whether the sketch differs from what was last loaded or saved.
+    pub unsaved: bool,
+    /// Whether `POST /api/undo` has something to undo.
+    pub can_undo: bool,
+    /// The drag in progress, if any (the scene then shows its current geometry).
+    pub dragging: Option<DraggedJson>,
+    /// Every entity and glyph.
+    pub scene: SceneJson,
+    /// One entry per connected component.
+    pub components: Vec<ComponentJson>,
+    /// The last solve or drag, if any since the start.
+    pub report: Option<ReportJson>,
+}
+
+/// The answer to a successful `POST /api/drag/move`: the entities that moved and the glyphs
+/// of the constraints reading them, and the update's own time.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct MoveJson {
+    /// Changed entities and their glyphs.
+    #[serde(flatten)]
+    pub scene: SceneJson,
+    /// Time of `DragSession::update`, in microseconds.
+    pub update_us: f64,
+    /// Time in the handler up to this answer: parsing the body, the update, rebuilding and
+    /// sampling the moved entities, their glyphs (not writing this JSON), in microseconds.
+    pub handler_us: f64,
+}
+
+/// `POST /api/save`: where the sketch went, and the state (now saved).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SavedJson {
+    /// The file written.
+    pub saved: String,
+    /// Its size in bytes.
+    pub bytes: usize,
+    /// The state after saving.
+    pub state: StateJson,
+}
+
+/// An error answer: one plain sentence.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ErrorJson {
+    /// What went wrong.
+    pub error: String,
+}
