@@ -4,7 +4,7 @@
 
 use std::sync::Arc;
 
-use camber_solve::ConstraintId;
+use camber_solve::{ConstraintId, MinNormFactorization};
 
 use crate::build::ComponentProblem;
 use crate::clearance::{Clearance, TangentSpeed, Target, SPEED_FLOOR};
@@ -13,6 +13,10 @@ use crate::constraint::{CircleSide, LineSide, Rotation};
 use crate::contact::Param;
 use crate::errors::{Error, Result};
 use crate::general::{curve_basis, point_tangent, side_width, Check, CheckParam, Slot};
+
+/// Components with at most this many reduced unknowns factorize J·W⁻¹·Jᵀ densely for the
+/// multipliers.
+const DENSE_MAX_UNKNOWNS: usize = 256;
 
 /// A row the solve adds to a component after a failed contact check.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -165,30 +169,29 @@ impl ComponentProblem {
     /// (J·W⁻¹·Jᵀ)·μ = J·(z* − z₀). An active row stands for the inequality h ≥ 0, which binds
     /// only when its μ ≥ 0: with μ < 0, letting h grow would bring the curve closer to the
     /// start, so the row should be dropped.
+    ///
+    /// It takes one factorization of J·W⁻¹·Jᵀ (dense for small components, sparse otherwise)
+    /// and is skipped when there are no active rows.
     pub(crate) fn active_multipliers(&self, z_start: &[f64], count: usize) -> Result<Vec<f64>> {
+        if count == 0 {
+            return Ok(Vec::new());
+        }
         let lin = self.problem.linearize()?;
-        let j = lin.jacobian.to_dense();
-        let (m, n) = (j.nrows(), j.ncols());
+        let (m, n) = (lin.jacobian.nrows(), lin.jacobian.ncols());
         let z = lin.map.z0();
         if z.len() != z_start.len() || count > m {
             return Ok(vec![0.0; count]);
         }
         let w = lin.map.weights();
-        let mut jw = j.clone();
-        for c in 0..n {
-            let scale = 1.0 / w[c];
-            for r in 0..m {
-                jw[(r, c)] *= scale;
-            }
-        }
-        let a = &jw * j.transpose();
-        let moved = nalgebra::DVector::from_iterator(n, z.iter().zip(z_start).map(|(a, b)| a - b));
-        let b = &j * moved;
-        let mu = match a.svd(true, true).solve(&b, 1e-12) {
-            Ok(mu) => mu,
-            Err(_) => return Ok(vec![0.0; count]),
+        // project(v) with v = W·(z* − z₀) returns y = (J·W⁻¹·Jᵀ)⁻¹·J·(z* − z₀) = μ.
+        let v: Vec<f64> = (0..n).map(|k| w[k] * (z[k] - z_start[k])).collect();
+        let Ok(mut f) = MinNormFactorization::try_auto(&lin.jacobian, w, DENSE_MAX_UNKNOWNS) else {
+            // Dependent rows: no multiplier to read, so no row is dropped.
+            return Ok(vec![0.0; count]);
         };
-        Ok(mu.iter().skip(m - count).copied().collect())
+        let (mut out, mut mu) = (vec![0.0; n], vec![0.0; m]);
+        f.project(&v, &mut out, &mut mu)?;
+        Ok(mu.split_off(m - count))
     }
 
     /// Adds an active row, built against the problem's starting values (owned by the contact
@@ -259,5 +262,75 @@ impl ComponentProblem {
         };
         self.add_piece(owner, &piece)?;
         Ok(true)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::constraint::{Contact, FixTarget, Sense};
+    use crate::{Constraint, PointRef, Sketch};
+    use camber_geom::BezierCurve2;
+    use nalgebra::Point2;
+
+    /// The cubic of `tests/clearance.rs` that leaves the line y = 0 at u = 0 and dips below
+    /// it: P₃ and the line fixed, P₀…P₂ free.
+    fn dipping() -> (Sketch, ConstraintId) {
+        let mut s = Sketch::new();
+        let c = s
+            .add_bezier(
+                BezierCurve2::try_new(vec![
+                    Point2::new(0.0, 0.05),
+                    Point2::new(0.3, 0.02),
+                    Point2::new(0.6, -0.3),
+                    Point2::new(1.0, 0.5),
+                ])
+                .unwrap(),
+            )
+            .unwrap();
+        let line = s
+            .add_line(Point2::new(0.0, 0.0), Point2::new(1.0, 0.0))
+            .unwrap();
+        s.add_constraint(Constraint::Fixed(FixTarget::Entity(line)))
+            .unwrap();
+        s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::Control(c, 3))))
+            .unwrap();
+        let id = s
+            .add_constraint(Constraint::TangentToLine {
+                curve: c,
+                line,
+                u: Contact::At(0.0),
+                side: LineSide::Left,
+                sense: Sense::Agree,
+            })
+            .unwrap();
+        (s, id)
+    }
+
+    /// Solves the component with one active row and returns that row's multiplier.
+    fn multiplier(row: ActiveRow) -> f64 {
+        let (s, _) = dipping();
+        let comp = s.components().remove(0);
+        let mut cp = s.build_component(&comp, None).unwrap();
+        assert!(cp.add_active_row(&s, row).unwrap());
+        let z0 = cp.problem().reduced_map().unwrap().z0().to_vec();
+        cp.solve(s.options()).unwrap();
+        cp.active_multipliers(&z0, 1).unwrap()[0]
+    }
+
+    /// The clearance the crossing calls for binds (μ > 0: without it the curve would cross to
+    /// get closer to the start); a speed floor the solution does not need, which only shortens
+    /// the first leg from 0.9 to 0.225, does not (μ < 0: a longer leg is closer to the start),
+    /// so the solve would drop it.
+    #[test]
+    fn multipliers_tell_binding_rows_from_slack_ones() {
+        let (_, id) = dipping();
+        let clearance = multiplier(ActiveRow::Clearance {
+            owner: id,
+            after: true,
+        });
+        assert!(clearance > 0.0, "clearance μ = {clearance}");
+        let floor = multiplier(ActiveRow::SpeedFloor { owner: id });
+        assert!(floor < 0.0, "floor μ = {floor}");
     }
 }

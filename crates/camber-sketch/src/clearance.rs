@@ -149,7 +149,7 @@ impl Clearance {
     /// contact at `u` with a circle or line: on the positive side of the target (outside the
     /// circle, left of the line A → B) when `positive`, from u to the end of the domain when
     /// `after`, else from its start to u; `width` > 0 is the scale w of the row (and sets the
-    /// scan's density, [`SAMPLES`] per w).
+    /// scan's density: 32 samples per w).
     pub fn new(
         basis: CurveBasis,
         u: Param,

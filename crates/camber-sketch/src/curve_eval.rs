@@ -404,16 +404,16 @@ impl CurveBasis {
             // Per coordinate: C = A/W, C′ = (A′ − W′C)/W, C″ = (A″ − 2W′C′ − W″C)/W,
             // C‴ = (A‴ − 3W′C″ − 3W″C′ − W‴C)/W.
             let (two, three) = (cst::<T>(2.0), cst::<T>(3.0));
-            for d in 0..2 {
-                let c0 = c[0][d] / w[0];
-                let c1 = (c[1][d] - w[1] * c0) / w[0];
-                let c2 = (c[2][d] - two * w[1] * c1 - w[2] * c0) / w[0];
-                let c3 = (c[3][d] - three * w[1] * c2 - three * w[2] * c1 - w[3] * c0) / w[0];
-                c[0][d] = c0;
-                c[1][d] = c1;
-                c[2][d] = c2;
-                c[3][d] = c3;
-            }
+            let rational = |a: [T; 4]| {
+                let c0 = a[0] / w[0];
+                let c1 = (a[1] - w[1] * c0) / w[0];
+                let c2 = (a[2] - two * w[1] * c1 - w[2] * c0) / w[0];
+                let c3 = (a[3] - three * w[1] * c2 - three * w[2] * c1 - w[3] * c0) / w[0];
+                [c0, c1, c2, c3]
+            };
+            let x = rational([c[0][0], c[1][0], c[2][0], c[3][0]]);
+            let y = rational([c[0][1], c[1][1], c[2][1], c[3][1]]);
+            return [[x[0], y[0]], [x[1], y[1]], [x[2], y[2]], [x[3], y[3]]];
         }
         c
     }

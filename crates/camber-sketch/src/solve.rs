@@ -253,7 +253,11 @@ impl Sketch {
             let solved = cp.entities_at(self, x)?;
             let e = match cp.check_contacts(&solved, x, penetration_tolerance(self.options())) {
                 Ok(()) => {
-                    let mu = cp.active_multipliers(&z_start, rows.len())?;
+                    let mu = if rows.is_empty() {
+                        Vec::new()
+                    } else {
+                        cp.active_multipliers(&z_start, rows.len())?
+                    };
                     let scale = 1e-8 * mu.iter().fold(1.0_f64, |m, v| m.max(v.abs()));
                     let slack = mu
                         .iter()
