@@ -140,9 +140,7 @@ fn check_reports_dof_and_names_conflicts() {
         .arg(sketch("blade_section.json"))
         .assert()
         .success()
-        .stdout(predicate::str::contains(
-            "40 free unknowns, rank 16, DOF 24",
-        ))
+        .stdout(predicate::str::contains("32 free unknowns, rank 8, DOF 24"))
         .stdout(predicate::str::contains("conflicting: none"));
     let dir = tempfile::tempdir().unwrap();
     let bad = dir.path().join("conflict.json");

@@ -5,7 +5,7 @@
 //! Order matters because bindings do not chain: eliminations are bound first (a target that is
 //! fixed, already eliminated, or the base of another elimination falls back to the row form),
 //! then fixed points (a fixed point that is an elimination target is held by rows instead),
-//! then every row.
+//! then coincident points are merged ([`crate::merge`]), then every other row.
 
 use std::collections::{HashMap, HashSet};
 
@@ -115,6 +115,10 @@ pub struct ComponentProblem {
     pub(crate) contacts: Vec<(ConstraintId, BlockId)>,
     /// The honesty checks of contacts, joints and angles, with their owners.
     pub(crate) checks: Vec<(ConstraintId, Check)>,
+    /// Point blocks bound to a coincident one (block → the block whose unknowns it shares).
+    pub(crate) merged: HashMap<BlockId, BlockId>,
+    /// Constraints whose coincidence joined points already merged (redundant).
+    pub(crate) merged_redundant: Vec<ConstraintId>,
 }
 
 impl ComponentProblem {
@@ -329,6 +333,8 @@ pub(crate) fn build<L: EntityLookup>(
         nonlinear: None,
         contacts: Vec::new(),
         checks: Vec::new(),
+        merged: HashMap::new(),
+        merged_redundant: Vec::new(),
     };
     for id in &component.entities {
         let e = lookup.lookup(*id)?;
@@ -467,9 +473,42 @@ pub(crate) fn build<L: EntityLookup>(
         }
     }
 
-    for (id, pieces) in &compiled {
-        for piece in pieces {
-            cp.add_piece(*id, piece)?;
+    // Coincident points: one set of unknowns per class instead of two rows per pair.
+    let lists: Vec<(ConstraintId, &[Piece])> =
+        compiled.iter().map(|(id, p)| (*id, p.as_slice())).collect();
+    let merges = crate::merge::plan(
+        &lists,
+        |e, j| cp.point_block(e, j),
+        &fixed,
+        &targets,
+        &bases,
+    )?;
+    let mut groups: HashMap<BlockId, Vec<BlockId>> = HashMap::new();
+    for (b, r) in &merges.into {
+        groups.entry(*r).or_default().push(*b);
+    }
+    let mut representatives: Vec<_> = groups.into_iter().collect();
+    representatives.sort_unstable_by_key(|(r, _)| *r);
+    for (r, members) in &representatives {
+        for k in 0..2 {
+            let rep = cp.problem.unknown(*r, k)?;
+            let mut us = Vec::with_capacity(members.len());
+            for m in members {
+                us.push(cp.problem.unknown(*m, k)?);
+            }
+            cp.problem.merge_group(rep, &us)?;
+        }
+        for m in members {
+            cp.merged.insert(*m, *r);
+        }
+    }
+    cp.merged_redundant = merges.redundant;
+
+    for (ci, (id, pieces)) in compiled.iter().enumerate() {
+        for (pi, piece) in pieces.iter().enumerate() {
+            if !merges.replaced.contains(&(ci, pi)) {
+                cp.add_piece(*id, piece)?;
+            }
         }
     }
     for (id, piece) in &rows {

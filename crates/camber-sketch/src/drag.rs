@@ -217,6 +217,8 @@ impl Sketch {
         let (entity, index) = crate::general::single_block(self, point)?;
         let mut cp = self.build_component(comp, None)?;
         let block = cp.point_block(entity, index)?;
+        // A point merged into a coincident one moves with that one's unknowns.
+        let block = cp.merged.get(&block).copied().unwrap_or(block);
         for k in 0..2 {
             let u = cp.problem.unknown(block, k)?;
             if !matches!(cp.problem.binding(u)?, camber_solve::Binding::Free) {

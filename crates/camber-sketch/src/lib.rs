@@ -77,6 +77,7 @@ pub mod errors;
 pub mod file;
 mod general;
 pub mod ids;
+mod merge;
 pub mod residuals;
 pub mod sketch;
 pub mod solve;

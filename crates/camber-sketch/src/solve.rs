@@ -8,7 +8,7 @@
 //! tangent speed ([`crate::clearance`]), and the component is solved again from the sketch's
 //! state, up to [`MAX_ACTIVE_ROWS`] rows.
 
-use camber_solve::{solve_linear, DofAnalysis, SolveReport};
+use camber_solve::{solve_linear, ConstraintId, DofAnalysis, SolveReport};
 
 use crate::active::ActiveRow;
 use crate::build::{Component, ComponentProblem};
@@ -74,8 +74,9 @@ impl ComponentProblem {
     /// sketch) holds the result.
     pub(crate) fn solve(&mut self, options: &camber_solve::Options) -> Result<SolveReport> {
         if self.nonlinear.is_some() {
-            let report = camber_solve::solve(&mut self.problem, options)?;
+            let mut report = camber_solve::solve(&mut self.problem, options)?;
             self.check_orientations(self.problem.values())?;
+            self.name_merged_redundant(&mut report.redundant);
             return Ok(report);
         }
         let report = match solve_linear(&mut self.problem, options) {
@@ -93,6 +94,8 @@ impl ComponentProblem {
             other => other?,
         };
         self.check_orientations(self.problem.values())?;
+        let mut report = report;
+        self.name_merged_redundant(&mut report.redundant);
         Ok(report)
     }
 
@@ -129,6 +132,14 @@ impl ComponentProblem {
         };
         self.check_orientations(self.problem.values())?;
         Ok(report)
+    }
+
+    /// Adds the constraints whose coincidence joined points already merged ([`crate::merge`])
+    /// to a list of redundant constraints (sorted, without repeats).
+    pub(crate) fn name_merged_redundant(&self, redundant: &mut Vec<ConstraintId>) {
+        redundant.extend(self.merged_redundant.iter().copied());
+        redundant.sort_unstable();
+        redundant.dedup();
     }
 }
 
@@ -304,7 +315,8 @@ impl Sketch {
         let mut out = Vec::new();
         for comp in self.components() {
             let cp = self.build_component(&comp, None)?;
-            let analysis = cp.problem().analyze(self.options())?;
+            let mut analysis = cp.problem().analyze(self.options())?;
+            cp.name_merged_redundant(&mut analysis.redundant);
             out.push(ComponentAnalysis {
                 component: comp,
                 analysis,

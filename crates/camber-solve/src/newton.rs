@@ -25,8 +25,8 @@
 //! **Damping.** Steps are accepted by the merit φ(z) = ½‖z − z_ref‖²_W + μ‖g(z)‖₂ (an exact
 //! penalty; μ grows so that Δz is a descent direction and stays above ‖λ‖, as in Nocedal &
 //! Wright §18.3). A pure decrease test on ‖g‖ would refuse the pull-back moves once g is zero.
-//! When a full step is refused, a second-order correction −J⁺·g(z + Δz) (same factorization)
-//! is tried before the step is cut.
+//! When a full step is refused, second-order corrections −J⁺·g(z + Δz) (same factorization, up
+//! to three while each halves ‖g‖) are tried before the step is cut.
 //!
 //! **Bounds.** Trial points are clamped to the bounds of the reduced unknowns; an unknown at a
 //! bound whose Gauss–Newton step points outward is held there (its column dropped) for the
@@ -54,6 +54,8 @@ pub struct NewtonWorkspace {
     /// The Gauss–Newton pull-back step and the second-order step.
     step: Vec<f64>,
     step2: Vec<f64>,
+    /// A second-order correction.
+    soc: Vec<f64>,
     drop: Vec<bool>,
     /// c = W·(z − z_ref) of the quadratic step.
     c: Vec<f64>,
@@ -157,6 +159,7 @@ pub(crate) fn run(
         &mut ws.p2,
         &mut ws.step,
         &mut ws.step2,
+        &mut ws.soc,
         &mut ws.c,
     ] {
         v.clear();
@@ -349,6 +352,9 @@ pub(crate) fn run(
     }
 }
 
+/// Second-order corrections tried on a refused full step (chord iterations toward g = 0).
+const MAX_CORRECTIONS: usize = 3;
+
 /// How far a merit search may cut the step.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum SearchLength {
@@ -443,18 +449,29 @@ impl Merit<'_> {
                 return Ok(Some(alpha));
             }
             if attempt == 0 && phi.is_finite() {
-                // Second-order correction: remove what the curvature added to g.
-                factorization.solve(&ws.gs_trial, &mut ws.p2)?;
-                for (p, t) in ws.p2.iter_mut().zip(&ws.z_trial) {
-                    *p += t;
-                }
-                ev.clamp(&mut ws.p2);
-                if ev.residuals(problem, &ws.p2, &mut ws.g_trial).is_ok() {
+                // Second-order corrections: remove what the curvature added to g, with the
+                // factorization at z (a chord iteration), while they keep halving ‖g‖.
+                ws.p2.copy_from_slice(&ws.z_trial);
+                let mut last = norm2(&ws.gs_trial);
+                for _ in 0..MAX_CORRECTIONS {
+                    factorization.solve(&ws.gs_trial, &mut ws.soc)?;
+                    for (p, d) in ws.p2.iter_mut().zip(&ws.soc) {
+                        *p += d;
+                    }
+                    ev.clamp(&mut ws.p2);
+                    if ev.residuals(problem, &ws.p2, &mut ws.g_trial).is_err() {
+                        break;
+                    }
                     select(&ws.g_trial, rows, &mut ws.gs_trial);
                     if self.at(&ws.p2, &ws.gs_trial) <= phi0 + 1e-4 * dphi {
                         std::mem::swap(&mut ws.z_trial, &mut ws.p2);
                         return Ok(Some(1.0));
                     }
+                    let now = norm2(&ws.gs_trial);
+                    if now.is_nan() || now >= 0.5 * last {
+                        break;
+                    }
+                    last = now;
                 }
             }
             if length == SearchLength::FullOnly {

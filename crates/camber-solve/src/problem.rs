@@ -226,6 +226,47 @@ impl Problem {
         self.substitute(target, &[(Var::Unknown(source), 1.0)], 0.0)
     }
 
+    /// Merges every unknown of `members` into `representative` (x_m = x_r), the way coincident
+    /// points become one: when the representative is free it starts at the weighted mean
+    /// Σ w_i·x_i / Σ w_i of the group (its reduced unknown then carries the weight Σ w_i, see
+    /// [`Problem::reduced_map`]), so the least weighted move of the merged unknown is the least
+    /// move of every member: Σ w_i·(z − x_i)² = (Σ w_i)·(z − x̄)² + const. A fixed
+    /// representative keeps its value, and the members take it.
+    ///
+    /// ```
+    /// use camber_solve::{Problem, UnknownId};
+    /// let mut p = Problem::new();
+    /// let a = p.add_block(&[0.0])?;
+    /// let b = p.add_block(&[3.0])?;
+    /// let (ua, ub) = (p.unknown(a, 0)?, p.unknown(b, 0)?);
+    /// p.merge_group(ua, &[ub])?;
+    /// let map = p.reduced_map()?;
+    /// assert_eq!(map.len(), 1);
+    /// assert!((map.z0()[0] - 1.5).abs() < 1e-15 && (map.weights()[0] - 2.0).abs() < 1e-15);
+    /// # Ok::<(), camber_solve::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// As [`Problem::substitute`].
+    pub fn merge_group(&mut self, representative: UnknownId, members: &[UnknownId]) -> Result<()> {
+        if matches!(self.binding(representative)?, Binding::Free) {
+            let (mut sum, mut total) = (0.0, 0.0);
+            for u in std::iter::once(&representative).chain(members) {
+                self.binding(*u)?;
+                let w = self.weights[u.0];
+                sum += w * self.values[u.0];
+                total += w;
+            }
+            if total > 0.0 {
+                self.values[representative.0] = sum / total;
+            }
+        }
+        for m in members {
+            self.merge(*m, representative)?;
+        }
+        Ok(())
+    }
+
     /// The tangency elimination x_target,k = x_base,k + t·direction_k for every k, with t a
     /// new auxiliary unknown starting at `t0` (returned). The targets stop being unknowns of
     /// their own; the bases must not be substituted themselves (free or fixed).

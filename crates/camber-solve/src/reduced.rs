@@ -98,7 +98,9 @@ pub struct Linearization {
 impl Problem {
     /// Builds the map x = A·z + c from the current bindings and values.
     ///
-    /// A substitution term on a fixed unknown folds into the constant (a·value).
+    /// A substitution term on a fixed unknown folds into the constant (a·value). The weight of a
+    /// reduced unknown is its own plus w·a² for every unknown bound to it alone (x = a·z, a
+    /// merge): moving z moves them all, and each counts in ‖Δx‖²_W.
     ///
     /// # Errors
     /// [`Error::SubstitutionChain`] when a substitution refers to an unknown that is itself
@@ -163,6 +165,17 @@ impl Problem {
                 }
             }
             row_ptr.push(terms.len());
+        }
+        // An unknown bound to a single free one (a merge) moves with it: its weight adds to
+        // that one's, the metric of x pulled back through the binding (w·a² for x = a·z).
+        for (i, b) in self.bindings.iter().enumerate() {
+            if let Binding::Affine { terms: t, .. } = b {
+                if let [(Var::Unknown(u), a)] = t.as_slice() {
+                    if let Some(Some(col)) = column.get(u.0) {
+                        weights[*col] += self.weights[i] * a * a;
+                    }
+                }
+            }
         }
         Ok(ReducedMap {
             vars,

@@ -24,21 +24,42 @@ fn fixed_unknowns_do_not_move() {
 #[test]
 fn merged_unknowns_share_one_move() {
     // Blocks p = (0, 0), q = (2, 0) with q_x merged into p_x, and p_x + p_y = 3.
-    // Reduced unknowns z = (p_x, p_y, q_y); the merge imposes q_x = p_x.
-    // Min ‖Δz‖ with Δp_x + Δp_y = 3 → Δp_x = Δp_y = 1.5, so q_x = 1.5 too.
+    // Reduced unknowns z = (p_x, p_y, q_y); the merge imposes q_x = p_x, so moving z₀ moves two
+    // unknowns and its weight is 1 + 1 = 2: min 2·Δp_x² + Δp_y² with Δp_x + Δp_y = 3 gives
+    // Δp_x = 1, Δp_y = 2 (the least ‖Δx‖ over p and q together), and q_x = p_x = 1.
     let mut p = Problem::new();
     let a = p.add_block(&[0.0, 0.0]).unwrap();
     let b = p.add_block(&[2.0, 0.0]).unwrap();
     let (px, qx) = (p.unknown(a, 0).unwrap(), p.unknown(b, 0).unwrap());
     p.merge(qx, px).unwrap();
+    assert_relative_eq!(p.reduced_map().unwrap().weights()[0], 2.0);
     p.add_residual(row(&[1.0, 1.0], 3.0), &[a], ConstraintId(1))
         .unwrap();
     let r = solve_linear(&mut p, &Options::default()).unwrap();
-    assert_relative_eq!(p.values()[0], 1.5, epsilon = 1e-14);
-    assert_relative_eq!(p.values()[1], 1.5, epsilon = 1e-14);
-    assert_relative_eq!(p.values()[2], 1.5, epsilon = 1e-14);
+    assert_relative_eq!(p.values()[0], 1.0, epsilon = 1e-14);
+    assert_relative_eq!(p.values()[1], 2.0, epsilon = 1e-14);
+    assert_relative_eq!(p.values()[2], 1.0, epsilon = 1e-14);
     assert_relative_eq!(p.values()[3], 0.0);
     assert_eq!((r.rank, r.dof), (1, 2));
+}
+
+#[test]
+fn a_merged_group_starts_at_its_weighted_mean() {
+    // Two points merged as a group with weights 1 and 3: the shared unknown starts at
+    // (1·0 + 3·4)/4 = 3 with weight 4, which is where the least weighted move of the pair with
+    // nothing else to satisfy puts them.
+    let mut p = Problem::new();
+    let a = p.add_block(&[0.0]).unwrap();
+    let b = p.add_block(&[4.0]).unwrap();
+    let (ua, ub) = (p.unknown(a, 0).unwrap(), p.unknown(b, 0).unwrap());
+    p.set_weight(Var::Unknown(ub), 3.0).unwrap();
+    p.merge_group(ua, &[ub]).unwrap();
+    let map = p.reduced_map().unwrap();
+    assert_relative_eq!(map.z0()[0], 3.0, epsilon = 1e-15);
+    assert_relative_eq!(map.weights()[0], 4.0);
+    solve_linear(&mut p, &Options::default()).unwrap();
+    assert_relative_eq!(p.values()[0], 3.0, epsilon = 1e-15);
+    assert_relative_eq!(p.values()[1], 3.0, epsilon = 1e-15);
 }
 
 #[test]
