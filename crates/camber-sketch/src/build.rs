@@ -192,7 +192,7 @@ impl ComponentProblem {
         })
     }
 
-    fn add_piece(&mut self, owner: ConstraintId, piece: &Piece) -> Result<()> {
+    pub(crate) fn add_piece(&mut self, owner: ConstraintId, piece: &Piece) -> Result<()> {
         match piece {
             Piece::FixEntity(_) | Piece::FixPoint(..) | Piece::Eliminate { .. } => {}
             Piece::General {
@@ -224,6 +224,7 @@ impl ComponentProblem {
                             self.contacts.push((owner, b));
                             (b, Some(b))
                         }
+                        Slot::Existing(b) => (b, None),
                     };
                     blocks.push(block);
                     contact_blocks.push(contact);
@@ -559,44 +560,24 @@ impl ComponentProblem {
         Ok(out)
     }
 
-    /// Adds the row that pushes the crossing of `owner`'s contact at curve parameter `s` back
-    /// onto the target (owned by `owner`). Returns false when `owner` has no contact check.
-    pub(crate) fn push_back<L: EntityLookup>(
-        &mut self,
-        lookup: &L,
-        owner: ConstraintId,
-        s: f64,
-    ) -> Result<bool> {
-        let Some(check) = self
-            .checks
-            .iter()
-            .find(|(c, _)| *c == owner)
-            .map(|(_, k)| *k)
-        else {
-            return Ok(false);
-        };
-        let Some((residual, slots)) = check.push_back(lookup, s)? else {
-            return Ok(false);
-        };
-        let piece = Piece::General {
-            name: "push back",
-            residual,
-            slots,
-            check: None,
-        };
-        self.add_piece(owner, &piece)?;
-        Ok(true)
-    }
-
     /// The solved free contact parameters at `x`, with their constraints.
     pub(crate) fn contacts_at(&self, x: &[f64]) -> Result<Vec<(ConstraintId, usize, f64)>> {
         let mut out: Vec<(ConstraintId, usize, f64)> = Vec::with_capacity(self.contacts.len());
         for (c, b) in &self.contacts {
-            // The k-th free parameter of its constraint (push-back rows add none).
+            // The k-th free parameter of its constraint (clearance rows add none).
             let k = out.iter().filter(|(o, _, _)| o == c).count();
             out.push((*c, k, x[self.problem.unknown(*b, 0)?.index()]));
         }
         Ok(out)
+    }
+
+    /// A check's parameter at the unknowns `x` (NaN for an unresolved slot).
+    pub(crate) fn check_param(&self, x: &[f64], p: CheckParam) -> Result<f64> {
+        Ok(match p {
+            CheckParam::Fixed(u) => u,
+            CheckParam::Block(b) => x[self.problem.unknown(b, 0)?.index()],
+            CheckParam::Slot(_) => f64::NAN,
+        })
     }
 
     /// Runs the contact, joint and angle checks on the entities solved at `x`, allowing a
@@ -611,13 +592,7 @@ impl ComponentProblem {
             return Ok(());
         }
         let map: HashMap<EntityId, Entity> = solved.iter().cloned().collect();
-        let param = |p: CheckParam| -> Result<f64> {
-            Ok(match p {
-                CheckParam::Fixed(u) => u,
-                CheckParam::Block(b) => x[self.problem.unknown(b, 0)?.index()],
-                CheckParam::Slot(_) => f64::NAN,
-            })
-        };
+        let param = |p: CheckParam| self.check_param(x, p);
         for (owner, check) in &self.checks {
             check.verify(*owner, &map, &param, tolerance)?;
         }

@@ -17,7 +17,6 @@
 //! - [`CurvatureMatch`]: κ₁(u₁) − κ₂(u₂), κ = cross(C′, C″)/|C′|³;
 //! - [`CurveCurveContact`]: C₁(u) − C₂(v) and cross(C₁′(u), C₂′(v))/(|C₁′||C₂′|);
 //! - [`RadiusValue`]: r − R (affine);
-//! - [`OnCircleAt`], [`OnLineAt`]: C(s) on a circle or line at a fixed s (push-back rows).
 //!
 //! Each is zero exactly on the constraint and differentiable wherever its denominators are
 //! non-zero (positive radius and distance, non-degenerate directions and tangents).
@@ -37,7 +36,11 @@ pub enum Param {
 }
 
 /// C(u) and C′(u) from the first blocks, and the index of the next block.
-fn curve_at<T: Scalar>(basis: &CurveBasis, u: Param, x: &[&[T]]) -> ([T; 2], [T; 2], usize) {
+pub(crate) fn curve_at<T: Scalar>(
+    basis: &CurveBasis,
+    u: Param,
+    x: &[&[T]],
+) -> ([T; 2], [T; 2], usize) {
     let n = basis.count();
     let (uu, next) = match u {
         Param::Fixed(v) => (cst::<T>(v), n),
@@ -51,7 +54,7 @@ fn cross<T: Scalar>(a: [T; 2], b: [T; 2]) -> T {
     a[0] * b[1] - a[1] * b[0]
 }
 
-fn dot<T: Scalar>(a: [T; 2], b: [T; 2]) -> T {
+pub(crate) fn dot<T: Scalar>(a: [T; 2], b: [T; 2]) -> T {
     a[0] * b[0] + a[1] * b[1]
 }
 
@@ -325,66 +328,6 @@ impl Residual for RadiusValue {
     }
     fn is_affine(&self) -> bool {
         true
-    }
-}
-
-/// (|C(s) − c|² − r²)/(2r) = 0 at a fixed parameter s: the curve point lies on the circle
-/// (blocks: curve, centre, radius). Used to push back a crossing.
-#[derive(Debug, Clone, PartialEq)]
-pub struct OnCircleAt {
-    basis: CurveBasis,
-    s: f64,
-}
-
-impl OnCircleAt {
-    /// C(`s`) on the circle.
-    pub fn new(basis: CurveBasis, s: f64) -> Self {
-        Self { basis, s }
-    }
-}
-
-impl Residual for OnCircleAt {
-    fn name(&self) -> &str {
-        "push back onto circle"
-    }
-    fn dim(&self) -> usize {
-        1
-    }
-    fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
-        let (c, _, k) = curve_at(&self.basis, Param::Fixed(self.s), x);
-        let (centre, r) = (x[k], x[k + 1][0]);
-        let v = sub(&c, centre);
-        out[0] = (dot(v, v) - r * r) / (cst::<T>(2.0) * r);
-    }
-}
-
-/// cross(C(s) − A, d)/|d| = 0 at a fixed parameter s, d = B − A: the curve point lies on the
-/// line (blocks: curve, A, B). Used to push back a crossing.
-#[derive(Debug, Clone, PartialEq)]
-pub struct OnLineAt {
-    basis: CurveBasis,
-    s: f64,
-}
-
-impl OnLineAt {
-    /// C(`s`) on the line.
-    pub fn new(basis: CurveBasis, s: f64) -> Self {
-        Self { basis, s }
-    }
-}
-
-impl Residual for OnLineAt {
-    fn name(&self) -> &str {
-        "push back onto line"
-    }
-    fn dim(&self) -> usize {
-        1
-    }
-    fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
-        let (c, _, k) = curve_at(&self.basis, Param::Fixed(self.s), x);
-        let (a, b) = (x[k], x[k + 1]);
-        let d = sub(b, a);
-        out[0] = cross(sub(&c, a), d) / dot(d, d).sqrt();
     }
 }
 

@@ -110,7 +110,7 @@ impl CurveBasis {
     pub fn at(&self, u: f64, order: usize) -> (CurveBasis, SmallVec<[usize; 8]>) {
         let p = self.degree;
         let order = order.min(2);
-        let Some((first, [n0, n1, n2])) = self.basis_derivatives(u) else {
+        let Some((first, [n0, n1, n2, _])) = self.basis_derivatives(u, false) else {
             return (self.clone(), (0..self.count).collect());
         };
         // Rᵣ = wᵣNᵣ/W and its derivatives (the rational basis; Nᵣ itself without weights).
@@ -340,7 +340,7 @@ impl CurveBasis {
         if points.len() < self.count {
             return [zero; 3];
         }
-        let Some((first, [n0, n1, n2])) = self.basis_derivatives(u) else {
+        let Some((first, [n0, n1, n2, _])) = self.basis_derivatives(u, false) else {
             return [zero; 3];
         };
         let mut c = [zero; 3];
@@ -371,6 +371,53 @@ impl CurveBasis {
         c
     }
 
+    /// C(u), C′(u), C″(u) and C‴(u) (the third derivative from one more application of the
+    /// derivative recursion, zero for degrees below 3; for NURBS,
+    /// C‴ = (Σ wⱼN‴ⱼPⱼ − 3W′·C″ − 3W″·C′ − W‴·C)/W). Same conventions as
+    /// [`CurveBasis::eval`]; a basis fixed by [`CurveBasis::at`] gives C‴ = 0 (it keeps
+    /// coefficients up to C″ only).
+    pub fn eval3<T: Scalar>(&self, points: &[&[T]], u: T) -> [[T; 2]; 4] {
+        let zero = [T::zero(), T::zero()];
+        if let Some(f) = &self.fixed {
+            let [c0, c1, c2] = Self::fixed_eval(f, points, 2);
+            return [c0, c1, c2, zero];
+        }
+        if points.len() < self.count {
+            return [zero; 4];
+        }
+        let Some((first, n)) = self.basis_derivatives(u, true) else {
+            return [zero; 4];
+        };
+        let mut c = [zero; 4];
+        let mut w = [T::zero(); 4];
+        for r in 0..n[0].len() {
+            let wr = cst::<T>(self.weight(first + r));
+            let q = points[first + r];
+            for k in 0..4 {
+                w[k] += wr * n[k][r];
+                for d in 0..2 {
+                    c[k][d] += wr * n[k][r] * q[d];
+                }
+            }
+        }
+        if self.weights.is_some() {
+            // Per coordinate: C = A/W, C′ = (A′ − W′C)/W, C″ = (A″ − 2W′C′ − W″C)/W,
+            // C‴ = (A‴ − 3W′C″ − 3W″C′ − W‴C)/W.
+            let (two, three) = (cst::<T>(2.0), cst::<T>(3.0));
+            let rational = |a: [T; 4]| {
+                let c0 = a[0] / w[0];
+                let c1 = (a[1] - w[1] * c0) / w[0];
+                let c2 = (a[2] - two * w[1] * c1 - w[2] * c0) / w[0];
+                let c3 = (a[3] - three * w[1] * c2 - three * w[2] * c1 - w[3] * c0) / w[0];
+                [c0, c1, c2, c3]
+            };
+            let x = rational([c[0][0], c[1][0], c[2][0], c[3][0]]);
+            let y = rational([c[0][1], c[1][1], c[2][1], c[3][1]]);
+            return [[x[0], y[0]], [x[1], y[1]], [x[2], y[2]], [x[3], y[3]]];
+        }
+        c
+    }
+
     /// The weight of control point j (1 for non-rational curves).
     fn weight(&self, j: usize) -> f64 {
         self.weights
@@ -380,12 +427,17 @@ impl CurveBasis {
     }
 
     /// The index of the first of the p + 1 basis functions that can be non-zero at u (clamped
-    /// to the domain) and their values, first and second derivatives, from the Cox–de Boor
-    /// triangle kept at degrees p − 2, p − 1 and p: N′ⱼ,ₚ = p·(Nⱼ,ₚ₋₁/Δⱼ − Nⱼ₊₁,ₚ₋₁/Δⱼ₊₁)
-    /// with Δⱼ = u_{j+p} − u_j (0/0 read as 0), applied twice for N″. `None` for a basis
-    /// without a valid knot vector.
-    #[allow(clippy::type_complexity)] // three parallel arrays of p + 1 values
-    fn basis_derivatives<T: Scalar>(&self, u: T) -> Option<(usize, [SmallVec<[T; 8]>; 3])> {
+    /// to the domain) and their values, first and second derivatives (and third when `third`,
+    /// else zeros), from the Cox–de Boor triangle kept at degrees p − 3 to p:
+    /// N′ⱼ,ₚ = p·(Nⱼ,ₚ₋₁/Δⱼ − Nⱼ₊₁,ₚ₋₁/Δⱼ₊₁) with Δⱼ = u_{j+p} − u_j (0/0 read as 0),
+    /// applied twice for N″ and three times for N‴. `None` for a basis without a valid knot
+    /// vector.
+    #[allow(clippy::type_complexity)] // four parallel arrays of p + 1 values
+    fn basis_derivatives<T: Scalar>(
+        &self,
+        u: T,
+        third: bool,
+    ) -> Option<(usize, [SmallVec<[T; 8]>; 4])> {
         let p = self.degree;
         if self.count == 0 || self.knots.len() < self.count + p + 1 {
             return None;
@@ -466,7 +518,14 @@ impl CurveBasis {
         } else {
             smallvec::smallvec![T::zero(); p + 1]
         };
-        Some((k - p, [n0, n1, n2]))
+        let n3 = if p >= 3 && third {
+            let lower2 = derive(p - 2, &levels[p - 3]);
+            let lower1 = derive(p - 1, &lower2);
+            derive(p, &lower1)
+        } else {
+            smallvec::smallvec![T::zero(); p + 1]
+        };
+        Some((k - p, [n0, n1, n2, n3]))
     }
 }
 
@@ -522,6 +581,55 @@ mod tests {
                 for (mine, theirs) in [(e0, second[0]), (e1, second[1]), (e2, second[2])] {
                     assert_relative_eq!(mine[0], theirs.x, epsilon = 1e-8, max_relative = 1e-9);
                     assert_relative_eq!(mine[1], theirs.y, epsilon = 1e-8, max_relative = 1e-9);
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// C‴ of [`CurveBasis::eval3`] against central differences of C″ (inside the spans, for a
+    /// B-spline and a NURBS), and its lower derivatives equal to [`CurveBasis::eval2`]'s.
+    #[test]
+    fn the_third_derivative_matches_differences_of_the_second(
+    ) -> Result<(), Box<dyn std::error::Error>> {
+        let pts = vec![
+            Point2::new(0.0, 0.0),
+            Point2::new(1.0, 2.0),
+            Point2::new(2.0, -1.0),
+            Point2::new(3.0, 1.0),
+            Point2::new(4.0, 0.5),
+        ];
+        let knots = vec![0.0, 0.0, 0.0, 0.0, 0.4, 1.0, 1.0, 1.0, 1.0];
+        let bs = BSplineCurve2::try_new(3, KnotVector::try_new(knots.clone())?, pts.clone())?;
+        let nu = NurbsCurve2::try_new(
+            3,
+            KnotVector::try_new(knots)?,
+            pts.clone(),
+            vec![1.0, 0.5, 2.0, 1.0, 0.8],
+        )?;
+        let raw = blocks(&pts);
+        let refs: Vec<&[f64]> = raw.iter().map(|b| &b[..]).collect();
+        for e in [Entity::BSpline(bs), Entity::Nurbs(nu)] {
+            let basis = CurveBasis::of(&e).ok_or("curve")?;
+            for u in [0.1, 0.3, 0.55, 0.9] {
+                let c = basis.eval3::<f64>(&refs, u);
+                let d = basis.eval2::<f64>(&refs, u);
+                for k in 0..3 {
+                    for i in 0..2 {
+                        assert_relative_eq!(
+                            c[k][i],
+                            d[k][i],
+                            epsilon = 1e-12,
+                            max_relative = 1e-12
+                        );
+                    }
+                }
+                let h = 1e-5;
+                let plus = basis.eval2::<f64>(&refs, u + h)[2];
+                let minus = basis.eval2::<f64>(&refs, u - h)[2];
+                for i in 0..2 {
+                    let central = (plus[i] - minus[i]) / (2.0 * h);
+                    assert_relative_eq!(c[3][i], central, epsilon = 1e-5, max_relative = 1e-6);
                 }
             }
         }

@@ -17,16 +17,13 @@ use camber_solve::{BlockId, ConstraintId, DynResidual};
 use crate::compile::{ETerms, EntityLookup, Piece};
 use crate::constraint::{CircleSide, Constraint, Contact, LineSide, Rotation, Sense};
 use crate::contact::{
-    CircleContact, CurvatureMatch, CurveCurveContact, LineAngle, LineContact, OnCircle, OnCircleAt,
-    OnCurve, OnLineAt, Param, PointDistance, RadiusValue, TangentsParallel,
+    CircleContact, CurvatureMatch, CurveCurveContact, LineAngle, LineContact, OnCircle, OnCurve,
+    Param, PointDistance, RadiusValue, TangentsParallel,
 };
 use crate::curve_eval::CurveBasis;
 use crate::entity::Entity;
 use crate::errors::{Error, Result};
 use crate::ids::{EntityId, PointRef};
-
-/// A push-back row: the residual and the slots it reads.
-pub(crate) type PushBack = (Arc<dyn DynResidual>, Vec<Slot>);
 
 /// Samples of the crossing check on each side of a contact.
 const SIDE_SAMPLES: usize = 24;
@@ -40,6 +37,8 @@ pub(crate) enum Slot {
     Radius(EntityId),
     /// A new contact parameter starting at `u0`, bounded to [lo, hi].
     Contact { u0: f64, lo: f64, hi: f64 },
+    /// A block of the problem already built (a contact parameter read by a clearance row).
+    Existing(BlockId),
 }
 
 /// The parameter a check reads.
@@ -119,7 +118,10 @@ fn kind<'a>(
     }
 }
 
-fn curve_basis(lookup: &impl EntityLookup, id: EntityId) -> Result<(CurveBasis, Vec<Slot>)> {
+pub(crate) fn curve_basis(
+    lookup: &impl EntityLookup,
+    id: EntityId,
+) -> Result<(CurveBasis, Vec<Slot>)> {
     let e = kind(lookup, id, "curve", Entity::is_curve)?;
     let basis = CurveBasis::of(e).ok_or(Error::WrongEntityKind {
         entity: id,
@@ -128,18 +130,6 @@ fn curve_basis(lookup: &impl EntityLookup, id: EntityId) -> Result<(CurveBasis, 
     })?;
     let slots = (0..e.points().len()).map(|j| Slot::Point(id, j)).collect();
     Ok((basis, slots))
-}
-
-/// A curve's basis restricted to the fixed parameter u ([`CurveBasis::at`]) and the slots of
-/// the control points it reads.
-fn curve_basis_at(
-    lookup: &impl EntityLookup,
-    id: EntityId,
-    u: f64,
-) -> Result<(CurveBasis, Vec<Slot>)> {
-    let (basis, _) = curve_basis(lookup, id)?;
-    let (basis, points) = basis.at(u, 1);
-    Ok((basis, points.iter().map(|j| Slot::Point(id, *j)).collect()))
 }
 
 /// The basis, slots and parameter of a contact on `curve`: at a fixed parameter, the basis
@@ -478,14 +468,20 @@ impl Sampler {
 }
 
 /// C(s) and C′(s) of a solved curve entity.
-fn point_tangent(e: &Entity, id: EntityId, s: f64) -> Result<([f64; 2], [f64; 2])> {
+pub(crate) fn point_tangent(e: &Entity, id: EntityId, s: f64) -> Result<([f64; 2], [f64; 2])> {
     Ok(Sampler::new(e, id)?.at(s))
+}
+
+/// The half-width w = (b − a)/5 of the window beside a contact on the domain [a, b], where the
+/// crossing check samples and a clearance row looks.
+pub(crate) fn side_width((a, b): (f64, f64)) -> f64 {
+    (b - a) / 5.0
 }
 
 /// Parameters sampled on [u − w, u + w] ∩ [a, b].
 fn window(e: &Entity, u: f64) -> Vec<f64> {
     let (a, b) = e.domain().unwrap_or((0.0, 1.0));
-    let w = (b - a) / 5.0;
+    let w = side_width((a, b));
     let (lo, hi) = ((u - w).max(a), (u + w).min(b));
     let n = 2 * SIDE_SAMPLES;
     (0..=n)
@@ -660,24 +656,6 @@ impl Check {
             }
         }
         Ok(())
-    }
-
-    /// The residual and slots that put the curve point C(s) back on the target (the circle or
-    /// the line of a contact check): the push-back of a crossing.
-    pub(crate) fn push_back(&self, lookup: &impl EntityLookup, s: f64) -> Result<Option<PushBack>> {
-        match *self {
-            Check::Circle { curve, circle, .. } => {
-                let (basis, mut slots) = curve_basis_at(lookup, curve, s)?;
-                slots.extend([Slot::Point(circle, 0), Slot::Radius(circle)]);
-                Ok(Some((Arc::new(OnCircleAt::new(basis, s)), slots)))
-            }
-            Check::Line { curve, line, .. } => {
-                let (basis, mut slots) = curve_basis_at(lookup, curve, s)?;
-                slots.extend([Slot::Point(line, 0), Slot::Point(line, 1)]);
-                Ok(Some((Arc::new(OnLineAt::new(basis, s)), slots)))
-            }
-            Check::Join { .. } | Check::Angle { .. } | Check::Curves { .. } => Ok(None),
-        }
     }
 
     /// The check with its contact slot replaced by the problem block `slots[k]`.

@@ -51,9 +51,11 @@
 //!   stored back into the constraint after a successful solve.
 //! - Contact is honest: after a solve every contact must keep its recorded travel direction,
 //!   have a non-vanishing tangent, and stay on its recorded side near the contact (sampled on
-//!   the solved curve). A crossing is pushed back (the deepest crossing point is put on the
-//!   target and the solve restarts, see [`solve::MAX_PUSH_BACKS`]); if that fails, the error
-//!   names the constraint and nothing is written.
+//!   the solved curve). A crossing adds a clearance row on its side of the contact (the curve
+//!   must touch the target there at a free second point instead of crossing it), a collapsed
+//!   tangent a floor on its speed ([`clearance`]), and the solve restarts (see
+//!   [`solve::MAX_ACTIVE_ROWS`]); if that fails, the error names the constraint and nothing is
+//!   written.
 //! - Drag sessions on nonlinear components fix the dragged point in the problem and move it at
 //!   each update; Newton starts from the previous step and pulls toward it
 //!   ([`camber_solve::solve_newton_from`]), with the full selection as fallback.
@@ -62,7 +64,9 @@
 //!   ([`solve::default_options`]).
 //! - [`workloads`] builds the standard benchmark sketches (W1, the blade section, W2, W3a, W4).
 
+mod active;
 pub mod build;
+pub mod clearance;
 mod compile;
 pub mod constraint;
 pub mod contact;

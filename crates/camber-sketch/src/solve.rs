@@ -4,16 +4,17 @@
 //!
 //! An affine component takes the linear path; any other goes to [`camber_solve::solve()`]
 //! (selection by the DOF analysis). Contacts are then checked on the solved entities; a
-//! crossing is pushed back by one more row and the component solved again from the sketch's
-//! state, up to [`MAX_PUSH_BACKS`] times.
+//! crossing adds a clearance row on its side of the contact, a cusp the floor on the contact's
+//! tangent speed ([`crate::clearance`]), and the component is solved again from the sketch's
+//! state, up to [`MAX_ACTIVE_ROWS`] rows.
 
-use camber_solve::{solve_linear, DofAnalysis, SolveReport};
+use camber_solve::{solve_linear, ConstraintId, DofAnalysis, SolveReport};
 
+use crate::active::ActiveRow;
 use crate::build::{Component, ComponentProblem};
-use camber_solve::ConstraintId;
 
 use crate::entity::Entity;
-use crate::errors::{Error, Result};
+use crate::errors::Result;
 use crate::ids::EntityId;
 use crate::sketch::Sketch;
 
@@ -33,8 +34,9 @@ pub fn default_options() -> camber_solve::Options {
 /// A solved component: its problem, the solver's report and the solved entities.
 type Solved = (ComponentProblem, SolveReport, Vec<(EntityId, Entity)>);
 
-/// Push-backs of crossing contacts tried per component solve before giving up.
-pub const MAX_PUSH_BACKS: usize = 4;
+/// Active rows (clearances of contacts that crossed, speed floors of contacts that collapsed or
+/// started reversed) added per component solve before giving up.
+pub const MAX_ACTIVE_ROWS: usize = 4;
 
 /// How far (length units) a solved curve may lie past the line or circle it touches before the
 /// contact counts as crossed: 100 × the solve tolerance, at least 1e-9.
@@ -97,6 +99,41 @@ impl ComponentProblem {
         Ok(report)
     }
 
+    /// Solves by Newton alone (no fallback), from the problem's values toward them; checks the
+    /// tangent orientations.
+    pub(crate) fn solve_newton_only(
+        &mut self,
+        options: &camber_solve::Options,
+    ) -> Result<SolveReport> {
+        let report = camber_solve::solve_newton(&mut self.problem, options)?;
+        self.check_orientations(self.problem.values())?;
+        Ok(report)
+    }
+
+    /// Solves from the reduced point `z` (a previous solution) with the pull-back toward
+    /// `reference` (the start) by Newton, falling back to the full selection from the problem's
+    /// own values; checks the tangent orientations.
+    pub(crate) fn solve_from(
+        &mut self,
+        options: &camber_solve::Options,
+        z: &[f64],
+        reference: &[f64],
+    ) -> Result<SolveReport> {
+        let mut ws = camber_solve::NewtonWorkspace::new();
+        let report = match camber_solve::solve_newton_from(
+            &mut self.problem,
+            options,
+            &mut ws,
+            z,
+            reference,
+        ) {
+            Ok(r) => r,
+            Err(_) => camber_solve::solve(&mut self.problem, options)?,
+        };
+        self.check_orientations(self.problem.values())?;
+        Ok(report)
+    }
+
     /// Adds the constraints whose coincidence joined points already merged ([`crate::merge`])
     /// to a list of redundant constraints (sorted, without repeats).
     pub(crate) fn name_merged_redundant(&self, redundant: &mut Vec<ConstraintId>) {
@@ -156,41 +193,115 @@ impl Sketch {
         Ok(report)
     }
 
-    /// Solves one component from the sketch's state and runs the contact checks. A contact
-    /// that crosses its target is pushed back: the solve restarts from the sketch's state with
-    /// one more row putting the deepest crossing point back on the target (the seed's
-    /// push-back), at most [`MAX_PUSH_BACKS`] times.
+    /// Solves one component from the sketch's state and runs the contact checks, treating the
+    /// inequalities of honest contact as an active set ([`crate::clearance`]):
+    ///
+    /// - a failed check adds the row that answers it: a crossing the clearance on its side of
+    ///   the contact (the curve touches the target there, at a free second point, instead of
+    ///   crossing it), a cusp the floor on the contact's tangent speed; the solve restarts from
+    ///   the sketch's state;
+    /// - when a contact's tangent points the wrong way at the start, the first solve is Newton
+    ///   alone (or the solver the options force); if it fails, the floors of those contacts are
+    ///   added and the solve restarts, and if that fails too, the selection runs without them;
+    /// - when every check passes, an active row whose multiplier says it does not bind is
+    ///   dropped and the solve resumes from the current solution toward the same start.
+    ///
+    /// At most [`MAX_ACTIVE_ROWS`] rows are added (besides the predicted floors) and a row once
+    /// dropped is not added again, so the loop ends.
     fn solve_component(&self, comp: &Component) -> Result<Solved> {
-        let mut pushed: Vec<(ConstraintId, f64)> = Vec::new();
+        let forced = self.options().nonlinear.force.is_some();
+        let mut predicted: Option<Vec<ActiveRow>> = None;
+        let (mut floors_on, mut plain_fallback) = (false, false);
+        let mut rows: Vec<ActiveRow> = Vec::new();
+        let mut dropped: Vec<ActiveRow> = Vec::new();
+        let mut added = 0;
+        let mut warm: Option<Vec<f64>> = None;
         loop {
             let mut cp = self.build_component(comp, None)?;
-            for (owner, s) in &pushed {
-                cp.push_back(self, *owner, *s)?;
+            let first = predicted.is_none();
+            let reversed = match &predicted {
+                Some(p) => p.clone(),
+                None => cp.reversed_contacts(self)?,
+            };
+            predicted = Some(reversed.clone());
+            let mut live = Vec::with_capacity(rows.len());
+            for row in &rows {
+                if cp.add_active_row(self, *row)? {
+                    live.push(*row);
+                }
             }
-            let mut r = cp.solve(self.options())?;
+            rows = live;
+            let z_start = cp.problem().reduced_map()?.z0().to_vec();
+            let newton_only = first && !forced && cp.nonlinear.is_some() && !reversed.is_empty();
+            let solved = match warm.take() {
+                Some(z) => cp.solve_from(self.options(), &z, &z_start),
+                None if newton_only => cp.solve_newton_only(self.options()),
+                None => cp.solve(self.options()),
+            };
+            let mut r = match solved {
+                Ok(r) => r,
+                Err(e) => {
+                    if !floors_on && !plain_fallback && !reversed.is_empty() {
+                        // The plain solve failed on a start with reversed contacts: their floors.
+                        floors_on = true;
+                        for row in reversed {
+                            if !rows.contains(&row) {
+                                rows.push(row);
+                            }
+                        }
+                        continue;
+                    }
+                    if floors_on && !plain_fallback {
+                        // The floors did not help: the full selection without them.
+                        plain_fallback = true;
+                        rows.retain(|row| !reversed.contains(row));
+                        continue;
+                    }
+                    return Err(e);
+                }
+            };
             let x = cp.problem().values();
             let solved = cp.entities_at(self, x)?;
-            match cp.check_contacts(&solved, x, penetration_tolerance(self.options())) {
+            let e = match cp.check_contacts(&solved, x, penetration_tolerance(self.options())) {
                 Ok(()) => {
-                    if !pushed.is_empty() {
+                    let mu = if rows.is_empty() {
+                        Vec::new()
+                    } else {
+                        cp.active_multipliers(&z_start, rows.len())?
+                    };
+                    let scale = 1e-8 * mu.iter().fold(1.0_f64, |m, v| m.max(v.abs()));
+                    let slack = mu
+                        .iter()
+                        .enumerate()
+                        .filter(|(_, v)| **v < -scale)
+                        .min_by(|a, b| a.1.total_cmp(b.1));
+                    if let Some((k, _)) = slack {
+                        dropped.push(rows.remove(k));
+                        warm = Some(cp.problem().reduced_map()?.z0().to_vec());
+                        continue;
+                    }
+                    if !rows.is_empty() || !dropped.is_empty() {
                         r.reason = format!(
-                            "{}; after {} push-back(s) of crossing contacts",
+                            "{}; with {} active row(s) of honest contact ({} dropped as slack)",
                             r.reason,
-                            pushed.len()
+                            rows.len(),
+                            dropped.len()
                         );
                     }
                     return Ok((cp, r, solved));
                 }
-                Err(Error::ContactCrossed {
-                    constraint,
-                    parameter,
-                    ..
-                }) if pushed.len() < MAX_PUSH_BACKS
-                    && !pushed.contains(&(constraint, parameter)) =>
+                Err(e) => e,
+            };
+            match cp.active_row_for(&e, x)? {
+                Some(row)
+                    if added < MAX_ACTIVE_ROWS
+                        && !rows.contains(&row)
+                        && !dropped.contains(&row) =>
                 {
-                    pushed.push((constraint, parameter));
+                    rows.push(row);
+                    added += 1;
                 }
-                Err(e) => return Err(e),
+                _ => return Err(e),
             }
         }
     }

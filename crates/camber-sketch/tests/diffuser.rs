@@ -75,7 +75,9 @@ fn the_rough_start_solves_to_a_valid_airfoil() {
     valid(&s, &w).unwrap();
 }
 
-/// Runs `trials` perturbations of size δ from the base solution; returns the valid count.
+/// Runs `trials` perturbations of size δ from the base solution; returns the valid count. A
+/// solve that reports success must leave a valid airfoil, and a refused one must write
+/// nothing.
 fn perturbed(delta: f64, trials: usize, seed: u64) -> usize {
     let (s0, w) = base();
     let mut noise = Noise(seed);
@@ -87,8 +89,16 @@ fn perturbed(delta: f64, trials: usize, seed: u64) -> usize {
             let q = Point2::new(p.x + delta * noise.next(), p.y + delta * noise.next());
             s.set_point(PointRef::Control(w.curve, j), q).unwrap();
         }
-        if s.solve().is_ok() && valid(&s, &w).is_ok() {
-            ok += 1;
+        let before = s.clone();
+        match s.solve() {
+            Ok(_) => {
+                valid(&s, &w).unwrap();
+                ok += 1;
+            }
+            Err(_) => assert_eq!(
+                s.entities().collect::<Vec<_>>(),
+                before.entities().collect::<Vec<_>>()
+            ),
         }
     }
     ok
@@ -105,11 +115,11 @@ fn small_perturbations_solve_valid() {
 fn large_perturbations_solve_valid() {
     let n = 100;
     let ok = perturbed(0.05, n, 2);
-    // The issue asks 99 of 100. Measured: 96 with this seed. All four failures are at the
-    // leading-edge contact: starts whose nearest solution bends into the LE circle right after
-    // the contact or collapses the first leg P₁ − P₀ (a cusp); the push-back does not rescue
-    // them yet, so they are refused (nothing written), never accepted invalid.
-    assert!(ok >= 95, "{ok} of {n} valid");
+    // Issue 4 asks 99 of 100. The hard starts are at the leading-edge contact (radius 0.03,
+    // noise up to 0.05): the nearest curve would cross the LE circle beside the contact (a
+    // clearance row makes it touch there instead) or collapse the first leg into a cusp (the
+    // speed floor keeps a quarter of the leg's starting speed); see camber_sketch::clearance.
+    assert!(ok >= 99, "{ok} of {n} valid");
 }
 
 #[test]
@@ -160,10 +170,10 @@ fn a_failed_solve_leaves_the_sketch_unchanged() {
     assert_eq!(constraints_before, constraints_after);
 }
 
-/// W2 `2cubic`: solves from the rough start; seeded perturbations of the 7 points Q₀…Q₆ (the
-/// joint Q₃ moved as one point) mostly solve valid, and refused ones write nothing.
-#[test]
-fn two_cubics_solve_from_the_rough_start_and_perturbations() {
+/// W2 `2cubic` from its rough start, then `trials` seeded perturbations of size δ of the 7
+/// points Q₀…Q₆ (the joint Q₃ moved as one point); returns the valid count. Refused starts
+/// write nothing.
+fn two_cubics_perturbed(delta: f64, trials: usize, seed: u64) -> usize {
     use camber_sketch::workloads::{w2_2cubic, w2_2cubic_valid};
     let (mut s0, curves, _) = w2_2cubic().unwrap();
     s0.solve().unwrap();
@@ -178,59 +188,71 @@ fn two_cubics_solve_from_the_rough_start_and_perturbations() {
             _ => vec![PointRef::Control(curves[1], j - 3)],
         }
     };
-    for (delta, seed, need) in [(0.01, 3, 49), (0.05, 4, 45)] {
-        let mut noise = Noise(seed);
-        let mut ok = 0;
-        for _ in 0..50 {
-            let mut s = s0.clone();
-            for j in 0..7 {
-                let (dx, dy) = (delta * noise.next(), delta * noise.next());
-                for r in refs(j) {
-                    let p = s.point(r).unwrap();
-                    s.set_point(r, Point2::new(p.x + dx, p.y + dy)).unwrap();
-                }
-            }
-            if s.solve().is_ok() && w2_2cubic_valid(&s, curves) {
-                ok += 1;
+    let mut noise = Noise(seed);
+    let mut ok = 0;
+    for _ in 0..trials {
+        let mut s = s0.clone();
+        for j in 0..7 {
+            let (dx, dy) = (delta * noise.next(), delta * noise.next());
+            for r in refs(j) {
+                let p = s.point(r).unwrap();
+                s.set_point(r, Point2::new(p.x + dx, p.y + dy)).unwrap();
             }
         }
-        assert!(ok >= need, "δ = {delta}: {ok} of 50 valid");
+        let before = s.clone();
+        match s.solve() {
+            Ok(_) if w2_2cubic_valid(&s, curves) => ok += 1,
+            Ok(_) => panic!("δ = {delta}: a solve reported success on an invalid airfoil"),
+            Err(_) => assert_eq!(
+                s.entities().collect::<Vec<_>>(),
+                before.entities().collect::<Vec<_>>()
+            ),
+        }
     }
+    ok
+}
+
+#[test]
+fn two_cubics_small_perturbations_solve_valid() {
+    let ok = two_cubics_perturbed(0.01, 100, 3);
+    assert!(ok >= 99, "{ok} of 100 valid");
+}
+
+#[test]
+fn two_cubics_large_perturbations_solve_valid() {
+    let ok = two_cubics_perturbed(0.05, 100, 4);
+    assert!(ok >= 99, "{ok} of 100 valid");
 }
 
 /// The selected solve's displacement is no worse (within 1 %) than SLSQP's from the same
-/// perturbed start (10 starts per δ here; both minimise ½‖z − z₀‖²).
+/// perturbed start, both minimising ½‖z − z₀‖² over the same honest problem (the active rows
+/// of crossing or collapsing contacts come from the sketch, whichever solver runs): 20 starts
+/// per δ for each representation, every one solved by both.
 #[test]
 fn displacement_is_no_worse_than_slsqp() {
+    use camber_sketch::workloads::{w2_2cubic, w2_2cubic_perturbed, w2_perturbed};
     let (s0, w) = base();
+    let (mut c0, curves, _) = w2_2cubic().unwrap();
+    c0.solve().unwrap();
     let mut compared = 0;
     for (delta, seed) in [(0.01, 5), (0.05, 6)] {
-        let mut noise = Noise(seed);
-        for _ in 0..10 {
-            let mut s = s0.clone();
-            for j in 0..7 {
-                let p = s.point(PointRef::Control(w.curve, j)).unwrap();
-                let q = Point2::new(p.x + delta * noise.next(), p.y + delta * noise.next());
-                s.set_point(PointRef::Control(w.curve, j), q).unwrap();
-            }
-            let mut reference = s.clone();
+        let mut starts = w2_perturbed(&s0, &w, delta, 20, seed).unwrap();
+        starts.extend(w2_2cubic_perturbed(&c0, curves, delta, 20, seed).unwrap());
+        for s in starts {
+            let mut ours = s.clone();
+            let mut reference = s;
             reference.set_options(
                 camber_sketch::solve::default_options()
                     .with_force(Some(camber_solve::SolverChoice::Slsqp)),
             );
-            let (Ok(ours), Ok(theirs)) = (s.solve(), reference.solve()) else {
-                continue;
-            };
+            let (a, b) = (ours.solve().unwrap(), reference.solve().unwrap());
             let (a, b) = (
-                ours.components[0].report.displacement_norm,
-                theirs.components[0].report.displacement_norm,
+                a.components[0].report.displacement_norm,
+                b.components[0].report.displacement_norm,
             );
             assert!(a <= 1.01 * b + 1e-12, "δ = {delta}: {a} vs SLSQP {b}");
             compared += 1;
         }
     }
-    assert!(
-        compared >= 18,
-        "only {compared} of 20 starts solved by both"
-    );
+    assert_eq!(compared, 80);
 }

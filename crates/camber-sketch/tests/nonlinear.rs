@@ -239,8 +239,9 @@ fn conflicting_circles_are_named() {
 fn a_contact_on_the_wrong_side_is_refused() {
     let mut s = Sketch::new();
     // A straight segment can touch a circle only from outside: asking for the inside must fail
-    // (the crossing is found, and pushing it back contradicts the tangency or collapses the
-    // segment to a point, a cusp).
+    // (the crossing is found, and its clearance row, whose curvature margin at the contact is
+    // −|C′|²/(2r) < 0 for a segment, cannot be met; or the segment collapses to a point, a
+    // cusp).
     let c = s
         .add_line(Point2::new(-2.0, 1.3), Point2::new(2.0, 1.1))
         .unwrap();

@@ -1,0 +1,336 @@
+//! The active-set bookkeeping of honest contact (the mathematics is in [`crate::clearance`]):
+//! which row answers a failed contact check, which contacts start reversed, the multipliers
+//! that say whether an active row binds, and adding a row to a component's problem.
+
+use std::sync::Arc;
+
+use camber_solve::{ConstraintId, MinNormFactorization};
+
+use crate::build::ComponentProblem;
+use crate::clearance::{Clearance, TangentSpeed, Target, SPEED_FLOOR};
+use crate::compile::{EntityLookup, Piece};
+use crate::constraint::{CircleSide, LineSide, Rotation};
+use crate::contact::Param;
+use crate::errors::{Error, Result};
+use crate::general::{curve_basis, point_tangent, side_width, Check, CheckParam, Slot};
+
+/// Components with at most this many reduced unknowns factorize J·W⁻¹·Jᵀ densely for the
+/// multipliers.
+const DENSE_MAX_UNKNOWNS: usize = 256;
+
+/// A row the solve adds to a component after a failed contact check.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum ActiveRow {
+    /// The clearance h = 0 of a contact on the side after (or before) its parameter.
+    Clearance {
+        /// The contact constraint.
+        owner: ConstraintId,
+        /// The side.
+        after: bool,
+    },
+    /// The speed floor |C′(u)| = κ·|C′₀(u)| of a contact.
+    SpeedFloor {
+        /// The contact constraint.
+        owner: ConstraintId,
+    },
+}
+
+impl Check {
+    /// The curve and contact parameter of a circle or line contact, with the target's blocks,
+    /// its kind and whether the intended side is the positive one.
+    fn contact(&self) -> Option<(crate::ids::EntityId, CheckParam, [Slot; 2], Target, bool)> {
+        match *self {
+            Check::Circle {
+                curve,
+                circle,
+                u,
+                side,
+                ..
+            } => Some((
+                curve,
+                u,
+                [Slot::Point(circle, 0), Slot::Radius(circle)],
+                Target::Circle,
+                side == CircleSide::Outside,
+            )),
+            Check::Line {
+                curve,
+                line,
+                u,
+                side,
+                ..
+            } => Some((
+                curve,
+                u,
+                [Slot::Point(line, 0), Slot::Point(line, 1)],
+                Target::Line,
+                side == LineSide::Left,
+            )),
+            Check::Join { .. } | Check::Angle { .. } | Check::Curves { .. } => None,
+        }
+    }
+}
+
+impl ComponentProblem {
+    /// The circle or line contact check owned by `owner`.
+    fn contact_check(&self, owner: ConstraintId) -> Option<Check> {
+        self.checks
+            .iter()
+            .find(|(c, check)| *c == owner && check.contact().is_some())
+            .map(|(_, k)| *k)
+    }
+
+    /// The active row that answers a failed check at the solved unknowns `x`: a crossing gets
+    /// the clearance on its side of the contact, a cusp the speed floor. `None` for other
+    /// errors and for contacts that are not with a circle or a line.
+    pub(crate) fn active_row_for(&self, e: &Error, x: &[f64]) -> Result<Option<ActiveRow>> {
+        Ok(match *e {
+            Error::ContactCrossed {
+                constraint,
+                parameter,
+                ..
+            } => match self.contact_check(constraint).and_then(|c| c.contact()) {
+                Some((_, u, ..)) => Some(ActiveRow::Clearance {
+                    owner: constraint,
+                    after: parameter > self.check_param(x, u)?,
+                }),
+                None => None,
+            },
+            Error::Cusp { constraint, .. } => self
+                .contact_check(constraint)
+                .map(|_| ActiveRow::SpeedFloor { owner: constraint }),
+            _ => None,
+        })
+    }
+
+    /// The speed floors a start calls for: every circle or line contact whose tangent at the
+    /// start points against its recorded travel direction (rotation about the circle, sense
+    /// along the line). To reach a valid curve the tangent must turn through more than a right
+    /// angle against the target's normal, and the minimum-norm path turns it by shrinking it:
+    /// it runs into the cusp, or stalls beside it. With the floor the tangent turns at a fixed
+    /// length; [`ComponentProblem::active_multipliers`] drops the floor again when it is not
+    /// binding at the solution.
+    pub(crate) fn reversed_contacts<L: EntityLookup>(&self, lookup: &L) -> Result<Vec<ActiveRow>> {
+        let x = self.problem.values().to_vec();
+        let mut out = Vec::new();
+        let mut entities = None;
+        for (owner, check) in &self.checks {
+            let reversed = match *check {
+                Check::Circle {
+                    curve,
+                    circle,
+                    u,
+                    rotation,
+                    ..
+                } => {
+                    let solved = entities.get_or_insert(self.entities_at(lookup, &x)?);
+                    let (Some((_, e)), Some((_, crate::Entity::Circle { center, .. }))) = (
+                        solved.iter().find(|(id, _)| *id == curve),
+                        solved.iter().find(|(id, _)| *id == circle),
+                    ) else {
+                        continue;
+                    };
+                    let (p, t) = point_tangent(e, curve, self.check_param(&x, u)?)?;
+                    let turn = (p[0] - center.x) * t[1] - (p[1] - center.y) * t[0];
+                    match rotation {
+                        Rotation::CounterClockwise => turn < 0.0,
+                        Rotation::Clockwise => turn > 0.0,
+                    }
+                }
+                Check::Line {
+                    curve,
+                    line,
+                    u,
+                    sense,
+                    ..
+                } => {
+                    let solved = entities.get_or_insert(self.entities_at(lookup, &x)?);
+                    let (Some((_, e)), Some((_, crate::Entity::Line([a, b])))) = (
+                        solved.iter().find(|(id, _)| *id == curve),
+                        solved.iter().find(|(id, _)| *id == line),
+                    ) else {
+                        continue;
+                    };
+                    let (_, t) = point_tangent(e, curve, self.check_param(&x, u)?)?;
+                    sense.sign() * (t[0] * (b.x - a.x) + t[1] * (b.y - a.y)) < 0.0
+                }
+                Check::Join { .. } | Check::Angle { .. } | Check::Curves { .. } => false,
+            };
+            if reversed {
+                out.push(ActiveRow::SpeedFloor { owner: *owner });
+            }
+        }
+        Ok(out)
+    }
+
+    /// The multipliers μ of the last `count` rows (the active rows, one row each) at the
+    /// solved values z*, from the first-order conditions of min ½‖z − z₀‖²_W subject to the
+    /// rows: W·(z* − z₀) = Jᵀμ, solved in the least-squares sense as
+    /// (J·W⁻¹·Jᵀ)·μ = J·(z* − z₀). An active row stands for the inequality h ≥ 0, which binds
+    /// only when its μ ≥ 0: with μ < 0, letting h grow would bring the curve closer to the
+    /// start, so the row should be dropped.
+    ///
+    /// It takes one factorization of J·W⁻¹·Jᵀ (dense for small components, sparse otherwise)
+    /// and is skipped when there are no active rows.
+    pub(crate) fn active_multipliers(&self, z_start: &[f64], count: usize) -> Result<Vec<f64>> {
+        if count == 0 {
+            return Ok(Vec::new());
+        }
+        let lin = self.problem.linearize()?;
+        let (m, n) = (lin.jacobian.nrows(), lin.jacobian.ncols());
+        let z = lin.map.z0();
+        if z.len() != z_start.len() || count > m {
+            return Ok(vec![0.0; count]);
+        }
+        let w = lin.map.weights();
+        // project(v) with v = W·(z* − z₀) returns y = (J·W⁻¹·Jᵀ)⁻¹·J·(z* − z₀) = μ.
+        let v: Vec<f64> = (0..n).map(|k| w[k] * (z[k] - z_start[k])).collect();
+        let Ok(mut f) = MinNormFactorization::try_auto(&lin.jacobian, w, DENSE_MAX_UNKNOWNS) else {
+            // Dependent rows: no multiplier to read, so no row is dropped.
+            return Ok(vec![0.0; count]);
+        };
+        let (mut out, mut mu) = (vec![0.0; n], vec![0.0; m]);
+        f.project(&v, &mut out, &mut mu)?;
+        Ok(mu.split_off(m - count))
+    }
+
+    /// Adds an active row, built against the problem's starting values (owned by the contact
+    /// constraint). Returns false when it does not apply (no such contact, or a vanishing
+    /// starting tangent for a speed floor).
+    pub(crate) fn add_active_row<L: EntityLookup>(
+        &mut self,
+        lookup: &L,
+        row: ActiveRow,
+    ) -> Result<bool> {
+        let owner = match row {
+            ActiveRow::Clearance { owner, .. } | ActiveRow::SpeedFloor { owner } => owner,
+        };
+        let Some((curve, u, target_slots, target, positive)) =
+            self.contact_check(owner).and_then(|c| c.contact())
+        else {
+            return Ok(false);
+        };
+        let (basis, mut slots) = curve_basis(lookup, curve)?;
+        let width = side_width(basis.domain());
+        let (name, residual): (&'static str, Arc<dyn camber_solve::DynResidual>) = match row {
+            ActiveRow::Clearance { after, .. } => {
+                let param = match u {
+                    CheckParam::Fixed(v) => Param::Fixed(v),
+                    CheckParam::Block(b) => {
+                        slots.push(Slot::Existing(b));
+                        Param::Block
+                    }
+                    CheckParam::Slot(_) => return Ok(false),
+                };
+                slots.extend(target_slots);
+                let h = Clearance::new(basis, param, target, positive, after, width);
+                ("clearance", Arc::new(h))
+            }
+            ActiveRow::SpeedFloor { .. } => {
+                let x = self.problem.values().to_vec();
+                let at = self.check_param(&x, u)?;
+                let entities = self.entities_at(lookup, &x)?;
+                let Some((_, e)) = entities.iter().find(|(id, _)| *id == curve) else {
+                    return Ok(false);
+                };
+                let (_, t) = point_tangent(e, curve, at)?;
+                let speed = SPEED_FLOOR * t[0].hypot(t[1]);
+                if !(speed.is_finite() && speed > 0.0) {
+                    return Ok(false);
+                }
+                let (basis, param) = match u {
+                    CheckParam::Fixed(v) => {
+                        let (fixed, points) = basis.at(v, 1);
+                        slots = points.iter().map(|j| Slot::Point(curve, *j)).collect();
+                        (fixed, Param::Fixed(v))
+                    }
+                    CheckParam::Block(b) => {
+                        slots.push(Slot::Existing(b));
+                        (basis, Param::Block)
+                    }
+                    CheckParam::Slot(_) => return Ok(false),
+                };
+                let f = TangentSpeed::new(basis, param, speed, width);
+                ("tangent speed floor", Arc::new(f))
+            }
+        };
+        let piece = Piece::General {
+            name,
+            residual,
+            slots,
+            check: None,
+        };
+        self.add_piece(owner, &piece)?;
+        Ok(true)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::constraint::{Contact, FixTarget, Sense};
+    use crate::{Constraint, PointRef, Sketch};
+    use camber_geom::BezierCurve2;
+    use nalgebra::Point2;
+
+    /// The cubic of `tests/clearance.rs` that leaves the line y = 0 at u = 0 and dips below
+    /// it: P₃ and the line fixed, P₀…P₂ free.
+    fn dipping() -> (Sketch, ConstraintId) {
+        let mut s = Sketch::new();
+        let c = s
+            .add_bezier(
+                BezierCurve2::try_new(vec![
+                    Point2::new(0.0, 0.05),
+                    Point2::new(0.3, 0.02),
+                    Point2::new(0.6, -0.3),
+                    Point2::new(1.0, 0.5),
+                ])
+                .unwrap(),
+            )
+            .unwrap();
+        let line = s
+            .add_line(Point2::new(0.0, 0.0), Point2::new(1.0, 0.0))
+            .unwrap();
+        s.add_constraint(Constraint::Fixed(FixTarget::Entity(line)))
+            .unwrap();
+        s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::Control(c, 3))))
+            .unwrap();
+        let id = s
+            .add_constraint(Constraint::TangentToLine {
+                curve: c,
+                line,
+                u: Contact::At(0.0),
+                side: LineSide::Left,
+                sense: Sense::Agree,
+            })
+            .unwrap();
+        (s, id)
+    }
+
+    /// Solves the component with one active row and returns that row's multiplier.
+    fn multiplier(row: ActiveRow) -> f64 {
+        let (s, _) = dipping();
+        let comp = s.components().remove(0);
+        let mut cp = s.build_component(&comp, None).unwrap();
+        assert!(cp.add_active_row(&s, row).unwrap());
+        let z0 = cp.problem().reduced_map().unwrap().z0().to_vec();
+        cp.solve(s.options()).unwrap();
+        cp.active_multipliers(&z0, 1).unwrap()[0]
+    }
+
+    /// The clearance the crossing calls for binds (μ > 0: without it the curve would cross to
+    /// get closer to the start); a speed floor the solution does not need, which only shortens
+    /// the first leg from 0.9 to 0.225, does not (μ < 0: a longer leg is closer to the start),
+    /// so the solve would drop it.
+    #[test]
+    fn multipliers_tell_binding_rows_from_slack_ones() {
+        let (_, id) = dipping();
+        let clearance = multiplier(ActiveRow::Clearance {
+            owner: id,
+            after: true,
+        });
+        assert!(clearance > 0.0, "clearance μ = {clearance}");
+        let floor = multiplier(ActiveRow::SpeedFloor { owner: id });
+        assert!(floor < 0.0, "floor μ = {floor}");
+    }
+}
