@@ -134,7 +134,7 @@ impl ComponentProblem {
         Ok(report)
     }
 
-    /// Adds the constraints whose coincidence joined points already merged ([`crate::merge`])
+    /// Adds the constraints whose coincidence joined points already merged (module `merge`)
     /// to a list of redundant constraints (sorted, without repeats).
     pub(crate) fn name_merged_redundant(&self, redundant: &mut Vec<ConstraintId>) {
         redundant.extend(self.merged_redundant.iter().copied());
