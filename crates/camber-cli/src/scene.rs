@@ -9,20 +9,9 @@
 use std::collections::BTreeMap;
 
 use anyhow::Result;
-use camber_geom::ParametricCurve;
 use camber_sketch::{Constraint, EntityId, FixTarget, PointRef, Sketch, Target};
 use camber_sketch::{Entity, Error as SketchError};
 use nalgebra::{Point2, Vector2};
-
-/// One curve entity through the kernel's common face (lines are segments, not sampled).
-pub fn as_curve(e: &Entity) -> Option<&dyn ParametricCurve<f64, 2>> {
-    match e {
-        Entity::Bezier(c) => Some(c),
-        Entity::BSpline(c) => Some(c),
-        Entity::Nurbs(c) => Some(c),
-        _ => None,
-    }
-}
 
 /// The file-format word for an entity's kind (`"bezier"`, `"circle"`, …).
 pub fn kind_word(e: &Entity) -> &'static str {

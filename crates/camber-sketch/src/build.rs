@@ -57,6 +57,15 @@ impl camber_solve::DynResidual for SharedResidual {
     ) -> camber_solve::Result<()> {
         self.0.jacobian(x, values, jac)
     }
+    fn jacobian_active(
+        &self,
+        x: &[&[f64]],
+        active: &[bool],
+        values: &mut [f64],
+        jac: &mut [f64],
+    ) -> camber_solve::Result<()> {
+        self.0.jacobian_active(x, active, values, jac)
+    }
     fn weighted_hessian(
         &self,
         x: &[&[f64]],
@@ -591,7 +600,7 @@ impl ComponentProblem {
         if self.checks.is_empty() {
             return Ok(());
         }
-        let map: HashMap<EntityId, Entity> = solved.iter().cloned().collect();
+        let map: HashMap<EntityId, &Entity> = solved.iter().map(|(id, e)| (*id, e)).collect();
         let param = |p: CheckParam| self.check_param(x, p);
         for (owner, check) in &self.checks {
             check.verify(*owner, &map, &param, tolerance)?;

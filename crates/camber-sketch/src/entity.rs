@@ -67,6 +67,28 @@ struct BasisData<'a> {
 }
 
 impl Entity {
+    /// A curve entity (Bézier, B-spline, NURBS) through the geometry kernel's common face, for
+    /// evaluation and queries in f64; `None` for points, lines and circles.
+    ///
+    /// ```
+    /// use camber_geom::{BezierCurve2, ParametricCurve};
+    /// use camber_sketch::Entity;
+    /// use nalgebra::Point2;
+    /// let arc = BezierCurve2::try_new(vec![Point2::new(0.0, 0.0), Point2::new(1.0, 1.0), Point2::new(2.0, 0.0)])?;
+    /// let p = Entity::Bezier(arc).as_curve().map(|c| c.point(0.5)).transpose()?;
+    /// assert_eq!(p, Some(Point2::new(1.0, 0.5)));
+    /// assert!(Entity::Point(Point2::origin()).as_curve().is_none());
+    /// # Ok::<(), camber_geom::Error>(())
+    /// ```
+    pub fn as_curve(&self) -> Option<&dyn camber_geom::ParametricCurve<f64, 2>> {
+        match self {
+            Entity::Bezier(c) => Some(c),
+            Entity::BSpline(c) => Some(c),
+            Entity::Nurbs(c) => Some(c),
+            Entity::Point(_) | Entity::Line(_) | Entity::Circle { .. } => None,
+        }
+    }
+
     /// The kind as a word ("point", "line", "circle", "Bézier curve", …).
     pub fn kind_name(&self) -> &'static str {
         match self {

@@ -479,14 +479,12 @@ pub(crate) fn side_width((a, b): (f64, f64)) -> f64 {
 }
 
 /// Parameters sampled on [u − w, u + w] ∩ [a, b].
-fn window(e: &Entity, u: f64) -> Vec<f64> {
+fn window(e: &Entity, u: f64) -> impl Iterator<Item = f64> {
     let (a, b) = e.domain().unwrap_or((0.0, 1.0));
     let w = side_width((a, b));
     let (lo, hi) = ((u - w).max(a), (u + w).min(b));
     let n = 2 * SIDE_SAMPLES;
-    (0..=n)
-        .map(|i| lo + (hi - lo) * i as f64 / n as f64)
-        .collect()
+    (0..=n).map(move |i| lo + (hi - lo) * i as f64 / n as f64)
 }
 
 /// The deepest sample of the window around u where the signed clearance `gap` (positive on
@@ -500,10 +498,21 @@ fn deepest(
     gap: impl Fn([f64; 2]) -> f64,
 ) -> Result<()> {
     let mut worst: Option<(f64, f64)> = None;
-    let sampler = Sampler::new(e, curve)?;
+    if !e.is_curve() {
+        return Err(Error::WrongEntityKind {
+            entity: curve,
+            expected: "curve",
+            found: e.kind_name(),
+        });
+    }
+    // C(s) by the geometry kernel (a line segment is (1 − s)·P₀ + s·P₁).
+    let point = |s: f64| match e {
+        Entity::Line([a, b]) => Some(a + (b - a) * s),
+        _ => e.as_curve()?.point(s).ok(),
+    };
     for s in window(e, u) {
-        let (q, _) = sampler.at(s);
-        let d = gap(q);
+        // Samples lie in the domain; a kernel error (none expected) counts as a crossing.
+        let d = point(s).map_or(f64::NEG_INFINITY, |q| gap([q.x, q.y]));
         if d < -tolerance && worst.is_none_or(|(_, w)| d < w) {
             worst = Some((s, d));
         }
@@ -518,8 +527,11 @@ fn deepest(
     }
 }
 
-fn get(solved: &HashMap<EntityId, Entity>, id: EntityId) -> Result<&Entity> {
-    solved.get(&id).ok_or(Error::UnknownEntity { entity: id })
+fn get<'a>(solved: &HashMap<EntityId, &'a Entity>, id: EntityId) -> Result<&'a Entity> {
+    solved
+        .get(&id)
+        .copied()
+        .ok_or(Error::UnknownEntity { entity: id })
 }
 
 impl Check {
@@ -528,7 +540,7 @@ impl Check {
     pub(crate) fn verify(
         &self,
         owner: ConstraintId,
-        solved: &HashMap<EntityId, Entity>,
+        solved: &HashMap<EntityId, &Entity>,
         param: &dyn Fn(CheckParam) -> Result<f64>,
         tolerance: f64,
     ) -> Result<()> {

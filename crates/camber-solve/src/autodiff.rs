@@ -12,8 +12,9 @@
 //! The criterion bench `benches/jacobian.rs` compares them on five residual shapes. No mode wins
 //! everywhere (columns on a 2×4 coincidence, the whole pass on a 1×8 tangency, per block on the
 //! rest); per block is never more than about a quarter slower than the best and is what
-//! [`JacobianMode::Auto`] uses. Small residuals (≤ 16 inputs, rows and blocks) keep their scratch in stack
-//! arrays and do not allocate.
+//! [`JacobianMode::Auto`] uses. Small residuals (≤ 32 inputs, rows and blocks) keep their scratch in stack
+//! arrays and do not allocate. The solvers call [`jacobian_active`], which skips the columns of
+//! fixed blocks and packs the rest into as few vector passes as possible.
 
 use num_dual::{Dual64, DualSVec64};
 
@@ -109,6 +110,86 @@ struct Out<'a> {
     ncols: usize,
 }
 
+/// Writes g(x) into `values` and the columns of J = ∂g/∂x that belong to blocks whose `active`
+/// entry is true into `jac` (row major, `dim` rows, Σ|x_b| columns); the columns of inactive
+/// blocks (fixed unknowns, whose derivatives no solver reads) are left at zero and cost nothing.
+/// The active columns are packed into as few vector passes as the width allows
+/// (`DualSVec64<k>`, k ≤ 8): a curve contact reading seven control points and a free parameter
+/// (15 active columns) takes two passes, where one pass per block would take eight, each
+/// repeating the basis evaluation. When `active` is all true and every block fits one pass this
+/// is the per-block seeding of [`JacobianMode::PerBlock`] with fewer passes.
+///
+/// ```
+/// use camber_solve::{autodiff::jacobian_active, Residual, Scalar};
+/// #[derive(Debug)]
+/// struct Product;
+/// impl Residual for Product {
+///     fn name(&self) -> &str { "product" }
+///     fn dim(&self) -> usize { 1 }
+///     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) { out[0] = x[0][0] * x[1][0]; }
+/// }
+/// let (mut g, mut j) = ([0.0], [9.0, 9.0]);
+/// jacobian_active(&Product, &[&[3.0][..], &[5.0][..]], &[false, true], &mut g, &mut j)?;
+/// assert_eq!((g[0], j), (15.0, [0.0, 3.0]));
+/// # Ok::<(), camber_solve::Error>(())
+/// ```
+///
+/// # Errors
+/// [`Error::Dimension`] for wrong lengths of `values`, `jac` or `active`.
+pub fn jacobian_active<R: Residual>(
+    residual: &R,
+    x: &[&[f64]],
+    active: &[bool],
+    values: &mut [f64],
+    jac: &mut [f64],
+) -> Result<()> {
+    let dim = residual.dim();
+    let ncols: usize = x.iter().map(|b| b.len()).sum();
+    for (what, expected, found) in [
+        ("residual output", dim, values.len()),
+        ("Jacobian output", dim * ncols, jac.len()),
+        ("active blocks", x.len(), active.len()),
+    ] {
+        if expected != found {
+            return Err(Error::Dimension {
+                what,
+                expected,
+                found,
+            });
+        }
+    }
+    jac.fill(0.0);
+    let mut columns: smallvec::SmallVec<[usize; 32]> = smallvec::SmallVec::new();
+    let mut start = 0;
+    for (block, on) in x.iter().zip(active) {
+        if *on {
+            columns.extend(start..start + block.len());
+        }
+        start += block.len();
+    }
+    if columns.is_empty() || dim == 0 {
+        residual.eval(x, values);
+        return Ok(());
+    }
+    // Balanced passes: 15 columns as 8 + 7, 17 as 6 + 6 + 5.
+    let passes = columns.len().div_ceil(MAX_VECTOR_DIRECTIONS);
+    let width = columns.len().div_ceil(passes);
+    let mut out = Out { values, jac, ncols };
+    for chunk in columns.chunks(width) {
+        match chunk.len() {
+            1 => packed_pass::<R, 1>(residual, x, chunk, &mut out),
+            2 => packed_pass::<R, 2>(residual, x, chunk, &mut out),
+            3 => packed_pass::<R, 3>(residual, x, chunk, &mut out),
+            4 => packed_pass::<R, 4>(residual, x, chunk, &mut out),
+            5 => packed_pass::<R, 5>(residual, x, chunk, &mut out),
+            6 => packed_pass::<R, 6>(residual, x, chunk, &mut out),
+            7 => packed_pass::<R, 7>(residual, x, chunk, &mut out),
+            _ => packed_pass::<R, 8>(residual, x, chunk, &mut out),
+        }
+    }
+    Ok(())
+}
+
 fn per_block<R: Residual>(residual: &R, x: &[&[f64]], out: &mut Out<'_>) {
     let mut start = 0;
     for block in x {
@@ -141,7 +222,7 @@ fn vector_range<R: Residual>(
 }
 
 /// Evaluates the residual with every input converted by `seed(flat index, value)` and hands the
-/// outputs to `take`. Small residuals use stack arrays sized to them (8 or 16 inputs, rows and
+/// outputs to `take`. Small residuals use stack arrays sized to them (8, 16 or 32 inputs, rows and
 /// blocks), and everything stays in this frame: moving, growing or zeroing larger inline
 /// buffers costs more than the evaluation itself. Larger residuals use vectors.
 pub(crate) fn eval_seeded<R: Residual, D: Scalar>(
@@ -156,6 +237,8 @@ pub(crate) fn eval_seeded<R: Residual, D: Scalar>(
         eval_inline::<R, D, 8>(residual, x, seed, take);
     } else if size <= 16 {
         eval_inline::<R, D, 16>(residual, x, seed, take);
+    } else if size <= 32 {
+        eval_inline::<R, D, 32>(residual, x, seed, take);
     } else {
         let flat: Vec<D> = x
             .iter()
@@ -248,6 +331,36 @@ fn vector_pass<R: Residual, const N: usize>(
     });
 }
 
+/// One `DualSVec64<N>` pass seeding the flat columns `columns` (ascending, at most N of them,
+/// not necessarily contiguous) with the unit directions 0, 1, ….
+fn packed_pass<R: Residual, const N: usize>(
+    residual: &R,
+    x: &[&[f64]],
+    columns: &[usize],
+    out: &mut Out<'_>,
+) {
+    let seed = |f, v| {
+        let d = DualSVec64::<N>::from_re(v);
+        match columns.binary_search(&f) {
+            Ok(k) => d.derivative(k),
+            Err(_) => d,
+        }
+    };
+    eval_seeded(residual, x, seed, |g: &[DualSVec64<N>]| {
+        let rows = out.jac.chunks_exact_mut(out.ncols);
+        for ((gi, vi), row) in g.iter().zip(out.values.iter_mut()).zip(rows) {
+            *vi = gi.re;
+            if let Some(eps) = &gi.eps.0 {
+                for (c, e) in columns.iter().zip(eps.iter()) {
+                    if let Some(slot) = row.get_mut(*c) {
+                        *slot = *e;
+                    }
+                }
+            }
+        }
+    });
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -309,6 +422,73 @@ mod tests {
                 assert_relative_eq!(*got, *w, epsilon = 1e-14);
             }
         }
+    }
+
+    #[test]
+    fn active_blocks_get_the_hand_derivative_and_the_others_zero() {
+        let a = [0.3, -1.2];
+        let b = [1.0, 2.0, -0.5, 0.25, 3.0, -2.0, 0.1, 0.7, 1.5];
+        let c = [0.8];
+        let x = [&a[..], &b[..], &c[..]];
+        let want = hand_jacobian(&a, &b, &c);
+        let block_of = |col: usize| match col {
+            0..=1 => 0,
+            2..=10 => 1,
+            _ => 2,
+        };
+        // Every subset of the three blocks: 12, 10, 3, … active columns in 2, 2, 1, … passes.
+        for mask in 0..8_u8 {
+            let active = [mask & 1 != 0, mask & 2 != 0, mask & 4 != 0];
+            let mut g = [0.0; 3];
+            let mut j = vec![f64::NAN; 36];
+            jacobian_active(&Wide, &x, &active, &mut g, &mut j).unwrap();
+            assert_relative_eq!(g[1], 21.0625_f64.sqrt() + a[0].exp(), epsilon = 1e-14);
+            for (k, (got, w)) in j.iter().zip(&want).enumerate() {
+                let w = if active[block_of(k % 12)] { *w } else { 0.0 };
+                assert_relative_eq!(*got, w, epsilon = 1e-14);
+            }
+        }
+    }
+
+    /// 40 inputs (beyond the stack buffers): g = Σ xᵢ², ∂g/∂xᵢ = 2xᵢ, in five passes of 8.
+    #[derive(Debug)]
+    struct SumOfSquares;
+
+    impl Residual for SumOfSquares {
+        fn name(&self) -> &str {
+            "sum of squares"
+        }
+        fn dim(&self) -> usize {
+            1
+        }
+        fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+            out[0] = x
+                .iter()
+                .flat_map(|b| b.iter())
+                .fold(T::zero(), |a, v| a + *v * *v);
+        }
+    }
+
+    #[test]
+    fn many_active_columns_are_packed_into_passes_of_eight() {
+        let values: Vec<[f64; 2]> = (0..20)
+            .map(|i| [f64::from(i), -0.5 * f64::from(i)])
+            .collect();
+        let x: Vec<&[f64]> = values.iter().map(|v| &v[..]).collect();
+        let mut g = [0.0];
+        let mut j = vec![0.0; 40];
+        jacobian_active(&SumOfSquares, &x, &[true; 20], &mut g, &mut j).unwrap();
+        for (k, got) in j.iter().enumerate() {
+            assert_relative_eq!(*got, 2.0 * values[k / 2][k % 2], epsilon = 1e-15);
+        }
+        assert_eq!(
+            jacobian_active(&SumOfSquares, &x, &[true; 19], &mut g, &mut j),
+            Err(Error::Dimension {
+                what: "active blocks",
+                expected: 20,
+                found: 19
+            })
+        );
     }
 
     #[test]

@@ -23,13 +23,15 @@ pub(crate) struct Evaluator {
     pub(crate) upper: Vec<f64>,
     /// The owner of every residual row.
     pub(crate) row_owner: Vec<ConstraintId>,
+    /// For every residual in turn, one flag per block it reads: whether one of the block's
+    /// unknowns moves with z (a block of fixed unknowns needs no derivatives).
+    block_moves: Vec<bool>,
     x: Vec<f64>,
     jac: Vec<f64>,
     triplets: Vec<(usize, usize, f64)>,
-    /// Scratch of [`Evaluator::hessian`]: one residual's dense Hessian, its active blocks, its
-    /// multipliers, and the reduced triplets.
+    /// Scratch of [`Evaluator::hessian`]: one residual's dense Hessian and the reduced
+    /// triplets.
     hess: Vec<f64>,
-    active: Vec<bool>,
     hess_triplets: Vec<(usize, usize, f64)>,
     /// The compressed forms of J and H, rebuilt only when their patterns change.
     jac_asm: Assembler,
@@ -51,8 +53,13 @@ impl Evaluator {
             upper.push(hi);
         }
         let mut row_owner = Vec::with_capacity(problem.num_rows());
+        let mut block_moves = Vec::new();
         for rb in &problem.residuals {
             row_owner.extend(std::iter::repeat_n(rb.owner, rb.residual.dim()));
+            for b in &rb.blocks {
+                let (start, len) = problem.block_range(*b)?;
+                block_moves.push((start..start + len).any(|u| !map.row(u).0.is_empty()));
+            }
         }
         Ok(Self {
             x: vec![0.0; problem.num_unknowns()],
@@ -60,10 +67,10 @@ impl Evaluator {
             lower,
             upper,
             row_owner,
+            block_moves,
             jac: Vec::new(),
             triplets: Vec::new(),
             hess: Vec::new(),
-            active: Vec::new(),
             hess_triplets: Vec::new(),
             jac_asm: Assembler::default(),
             hess_asm: Assembler::default(),
@@ -100,6 +107,7 @@ impl Evaluator {
         self.map.expand(z, &mut self.x)?;
         self.triplets.clear();
         let mut row0 = 0;
+        let mut flags = 0;
         for rb in &problem.residuals {
             let dim = rb.residual.dim();
             let slices = problem.gather(&self.x, &rb.blocks);
@@ -107,7 +115,10 @@ impl Evaluator {
             self.jac.clear();
             self.jac.resize(dim * ncols, 0.0);
             let out = &mut g[row0..row0 + dim];
-            rb.residual.jacobian(&slices, out, &mut self.jac)?;
+            let moves = &self.block_moves[flags..flags + rb.blocks.len()];
+            flags += rb.blocks.len();
+            rb.residual
+                .jacobian_active(&slices, moves, out, &mut self.jac)?;
             check_residual(rb, out)?;
             let mut local = 0;
             for b in &rb.blocks {
@@ -146,21 +157,17 @@ impl Evaluator {
         self.map.expand(z, &mut self.x)?;
         self.hess_triplets.clear();
         let mut row0 = 0;
+        let mut flags = 0;
         for rb in &problem.residuals {
             let dim = rb.residual.dim();
             let weights = &lambda[row0..row0 + dim];
             row0 += dim;
-            if rb.residual.is_affine() || weights.iter().all(|w| *w == 0.0) {
-                continue;
-            }
-            // A block is active when one of its unknowns moves with z.
-            self.active.clear();
-            for b in &rb.blocks {
-                let (start, len) = problem.block_range(*b)?;
-                let moves = (start..start + len).any(|u| !self.map.row(u).0.is_empty());
-                self.active.push(moves);
-            }
-            if !self.active.iter().any(|a| *a) {
+            let moves = &self.block_moves[flags..flags + rb.blocks.len()];
+            flags += rb.blocks.len();
+            if rb.residual.is_affine()
+                || weights.iter().all(|w| *w == 0.0)
+                || !moves.iter().any(|a| *a)
+            {
                 continue;
             }
             let slices = problem.gather(&self.x, &rb.blocks);
@@ -169,7 +176,7 @@ impl Evaluator {
             self.hess.resize(ncols * ncols, 0.0);
             if !rb
                 .residual
-                .weighted_hessian(&slices, weights, &self.active, &mut self.hess)?
+                .weighted_hessian(&slices, weights, moves, &mut self.hess)?
             {
                 continue;
             }

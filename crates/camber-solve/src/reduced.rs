@@ -204,6 +204,7 @@ impl Problem {
         let mut row_residual = Vec::with_capacity(m);
         let mut triplets = Vec::new();
         let mut jac = Vec::new();
+        let mut moves: smallvec::SmallVec<[bool; 16]> = smallvec::SmallVec::new();
         let mut row0 = 0;
         let mut affine = true;
         for (r, rb) in self.residuals.iter().enumerate() {
@@ -214,7 +215,13 @@ impl Problem {
             jac.clear();
             jac.resize(dim * ncols, 0.0);
             let out = &mut g[row0..row0 + dim];
-            rb.residual.jacobian(&slices, out, &mut jac)?;
+            moves.clear();
+            for b in &rb.blocks {
+                let (start, len) = self.block_range(*b)?;
+                moves.push((start..start + len).any(|u| !map.row(u).0.is_empty()));
+            }
+            rb.residual
+                .jacobian_active(&slices, &moves, out, &mut jac)?;
             check_residual(rb, out)?;
             // Local column → flat unknown index.
             let mut local = 0;

@@ -81,6 +81,23 @@ pub trait DynResidual: Debug + Send + Sync {
     /// # Errors
     /// [`Error::Dimension`] when a slice has the wrong length.
     fn jacobian(&self, x: &[&[f64]], values: &mut [f64], jac: &mut [f64]) -> Result<()>;
+    /// [`DynResidual::jacobian`] where only the columns of blocks whose `active` entry is true
+    /// are needed (the others may be left at zero): the solvers never read the derivatives of
+    /// fixed unknowns. The default computes every column; every [`Residual`] skips the inactive
+    /// ones ([`crate::autodiff::jacobian_active`]).
+    ///
+    /// # Errors
+    /// [`Error::Dimension`] for wrong slice lengths.
+    fn jacobian_active(
+        &self,
+        x: &[&[f64]],
+        active: &[bool],
+        values: &mut [f64],
+        jac: &mut [f64],
+    ) -> Result<()> {
+        let _ = active;
+        self.jacobian(x, values, jac)
+    }
     /// Writes H = Σᵢ λᵢ·∇²gᵢ(x) into `out` (row major, N × N with N = Σ|x_b|), leaving the
     /// rows and columns of blocks whose `active` entry is false at zero; `weights` holds λ.
     /// Returns whether second derivatives are available: the default says no (a residual that
@@ -132,6 +149,16 @@ impl<R: Residual> DynResidual for R {
 
     fn jacobian(&self, x: &[&[f64]], values: &mut [f64], jac: &mut [f64]) -> Result<()> {
         autodiff::jacobian_with(self, x, values, jac, JacobianMode::Auto)
+    }
+
+    fn jacobian_active(
+        &self,
+        x: &[&[f64]],
+        active: &[bool],
+        values: &mut [f64],
+        jac: &mut [f64],
+    ) -> Result<()> {
+        autodiff::jacobian_active(self, x, active, values, jac)
     }
 
     fn weighted_hessian(

@@ -12,7 +12,7 @@ use nalgebra::Vector2;
 
 use crate::curve_file::write_text;
 use crate::draw::{self, Comb, SAMPLES_PER_PIECE, TEETH_PER_PIECE};
-use crate::scene::{as_curve, glyphs, Glyph, View};
+use crate::scene::{glyphs, Glyph, View};
 use crate::sketch_file::{self, describe_error};
 use crate::svg::{BBox, Style, Svg};
 
@@ -106,7 +106,7 @@ pub fn picture(sketch: &Sketch, combs: bool) -> Result<String> {
             bbox.include(center + Vector2::new(*radius, *radius));
             bbox.include(center - Vector2::new(*radius, *radius));
         }
-        if let Some(c) = as_curve(e) {
+        if let Some(c) = e.as_curve() {
             let samples = draw::sample_curve(c, SAMPLES_PER_PIECE)?;
             samples.iter().for_each(|p| bbox.include(*p));
             curves.push((c, samples, e.points().to_vec()));

@@ -11,7 +11,7 @@ use camber_sketch::{ConstraintId, Entity, EntityId, Sketch};
 use serde::{Deserialize, Serialize};
 
 use crate::draw::{sample_curve, SAMPLES_PER_PIECE};
-use crate::scene::{as_curve, glyphs, kind_word, Glyph, View};
+use crate::scene::{glyphs, kind_word, Glyph, View};
 
 /// `POST /api/drag/start`: the point to drag, as an entity and the index of its point
 /// (control point, line end 0 or 1, circle centre 0, point entity 0).
@@ -56,7 +56,7 @@ impl EntityJson {
     /// # Errors
     /// A curve that cannot be evaluated (not for an entity the sketch accepted).
     pub fn of(id: EntityId, e: &Entity) -> Result<Self> {
-        let samples = match as_curve(e) {
+        let samples = match e.as_curve() {
             Some(c) => sample_curve(c, SAMPLES_PER_PIECE)?
                 .iter()
                 .map(|p| [p.x as f32, p.y as f32])
