@@ -456,6 +456,9 @@ impl Residual for TangentSpeed {
     fn dim(&self) -> usize {
         1
     }
+    fn depends_on(&self, x: &[&[f64]], blocks: &mut [bool]) {
+        crate::contact::curve_support(&self.basis, self.u, x, blocks);
+    }
     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
         let (_, c1, _) = curve_at(&self.basis, self.u, x);
         let f = cst::<T>(self.speed);

@@ -50,6 +50,32 @@ pub(crate) fn curve_at<T: Scalar>(
     (c, c1, next)
 }
 
+/// Clears the flags of the curve's control-point blocks (the first `basis.count()`) outside
+/// the knot span of a free parameter u (read from the block after them); returns the index of
+/// the block after the curve's (and u's).
+pub(crate) fn curve_support(
+    basis: &CurveBasis,
+    u: Param,
+    x: &[&[f64]],
+    blocks: &mut [bool],
+) -> usize {
+    let n = basis.count();
+    match u {
+        Param::Fixed(_) => n,
+        Param::Block => {
+            if let Some(uu) = x.get(n).and_then(|b| b.first()) {
+                let keep = basis.support(*uu);
+                for (j, flag) in blocks.iter_mut().enumerate().take(n) {
+                    if !keep.contains(&j) {
+                        *flag = false;
+                    }
+                }
+            }
+            n + 1
+        }
+    }
+}
+
 fn cross<T: Scalar>(a: [T; 2], b: [T; 2]) -> T {
     a[0] * b[1] - a[1] * b[0]
 }
@@ -96,6 +122,9 @@ impl Residual for OnCurve {
     fn dim(&self) -> usize {
         2
     }
+    fn depends_on(&self, x: &[&[f64]], blocks: &mut [bool]) {
+        curve_support(&self.basis, self.u, x, blocks);
+    }
     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
         let (c, _, k) = curve_at(&self.basis, self.u, x);
         let q = x[k];
@@ -125,6 +154,9 @@ impl Residual for LineContact {
     }
     fn dim(&self) -> usize {
         2
+    }
+    fn depends_on(&self, x: &[&[f64]], blocks: &mut [bool]) {
+        curve_support(&self.basis, self.u, x, blocks);
     }
     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
         let (c, c1, k) = curve_at(&self.basis, self.u, x);
@@ -184,6 +216,9 @@ impl Residual for CircleContact {
     }
     fn dim(&self) -> usize {
         2
+    }
+    fn depends_on(&self, x: &[&[f64]], blocks: &mut [bool]) {
+        curve_support(&self.basis, self.u, x, blocks);
     }
     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
         let (c, c1, k) = curve_at(&self.basis, self.u, x);
@@ -353,6 +388,12 @@ impl Residual for CurveCurveContact {
     }
     fn dim(&self) -> usize {
         3
+    }
+    fn depends_on(&self, x: &[&[f64]], blocks: &mut [bool]) {
+        let k = curve_support(&self.first.0, self.first.1, x, blocks);
+        if let (Some(rest), Some(flags)) = (x.get(k..), blocks.get_mut(k..)) {
+            curve_support(&self.second.0, self.second.1, rest, flags);
+        }
     }
     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
         let (c1, t1, k) = curve_at(&self.first.0, self.first.1, x);

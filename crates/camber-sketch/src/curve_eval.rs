@@ -188,6 +188,34 @@ impl CurveBasis {
         out
     }
 
+    /// The control points C(u) and C′(u) depend on at the parameter u (clamped to the domain):
+    /// the p + 1 of u's knot span, or every point the basis reads for a basis made by
+    /// [`CurveBasis::at`]. Derivatives with respect to the others are zero near u.
+    ///
+    /// ```
+    /// use camber_geom::{BSplineCurve2, KnotVector};
+    /// use camber_sketch::{curve_eval::CurveBasis, Entity};
+    /// use nalgebra::Point2;
+    /// let knots = KnotVector::try_new(vec![0.0, 0.0, 0.0, 0.0, 0.25, 0.5, 0.75, 1.0, 1.0, 1.0, 1.0])?;
+    /// let points = (0..7).map(|i| Point2::new(f64::from(i), 0.0)).collect();
+    /// let c = Entity::BSpline(BSplineCurve2::try_new(3, knots, points)?);
+    /// let b = CurveBasis::of(&c).ok_or("curve")?;
+    /// assert_eq!(b.support(0.3), 1..5); // span [0.25, 0.5): P₁ … P₄
+    /// assert_eq!(b.support(1.0), 3..7);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn support(&self, u: f64) -> std::ops::Range<usize> {
+        if self.fixed.is_some()
+            || self.count == 0
+            || self.knots.len() < self.count + self.degree + 1
+        {
+            return 0..self.count();
+        }
+        let (a, b) = self.domain();
+        let k = self.span(u.clamp(a, b));
+        k.saturating_sub(self.degree)..(k + 1).min(self.count)
+    }
+
     /// The parametric domain [u_p, u_{n}] (n = number of control points).
     pub fn domain(&self) -> (f64, f64) {
         let a = self.knots.get(self.degree).copied().unwrap_or(0.0);

@@ -210,3 +210,50 @@ proptest! {
         prop_assert!(check(&r, &blocks) < 1e-6);
     }
 }
+
+/// A residual without its `depends_on`: derivatives over every block it reads.
+#[derive(Debug)]
+struct Unnarrowed<R>(R);
+
+impl<R: camber_solve::Residual> camber_solve::Residual for Unnarrowed<R> {
+    fn name(&self) -> &str {
+        self.0.name()
+    }
+    fn dim(&self) -> usize {
+        self.0.dim()
+    }
+    fn eval<T: camber_solve::Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+        self.0.eval(x, out);
+    }
+}
+
+/// The weighted Hessian over the blocks a residual says it depends on (the p + 1 control points
+/// of u's span) equals the one over every block, exactly: the others contribute zeros.
+fn same_hessian<R: camber_solve::Residual>(r: R, blocks: &[Vec<f64>]) -> bool {
+    use camber_solve::hessian::weighted_hessian;
+    let refs: Vec<&[f64]> = blocks.iter().map(|b| &b[..]).collect();
+    let n: usize = blocks.iter().map(Vec::len).sum();
+    let weights: Vec<f64> = (0..r.dim()).map(|i| 0.7 - 0.4 * i as f64).collect();
+    let active = vec![true; blocks.len()];
+    let (mut narrow, mut full) = (vec![0.0; n * n], vec![0.0; n * n]);
+    weighted_hessian(&r, &refs, &weights, &active, &mut narrow).unwrap();
+    weighted_hessian(&Unnarrowed(r), &refs, &weights, &active, &mut full).unwrap();
+    narrow
+        .iter()
+        .zip(&full)
+        .all(|(a, b)| (a - b).abs() <= 1e-12 * (1.0 + b.abs()))
+}
+
+proptest! {
+    #[test]
+    fn span_narrowed_hessians_match(wave in prop::collection::vec(-1.0..1.0_f64, 5), u in 0.0..=1.0_f64,
+                                    c in prop::array::uniform2(-3.0..3.0_f64), r in 0.1..2.0_f64) {
+        let circle = CircleContact::new(basis(), Param::Block, true);
+        prop_assert!(same_hessian(circle, &curve_blocks(&wave, &[vec![u], c.to_vec(), vec![r]])));
+        let line = LineContact::new(basis(), Param::Block);
+        let b = vec![c[0] + 1.0, c[1] - 0.5];
+        prop_assert!(same_hessian(line, &curve_blocks(&wave, &[vec![u], c.to_vec(), b])));
+        let speed = TangentSpeed::new(basis(), Param::Block, r, 0.2);
+        prop_assert!(same_hessian(speed, &curve_blocks(&wave, &[vec![u]])));
+    }
+}

@@ -112,7 +112,8 @@ struct Out<'a> {
 
 /// Writes g(x) into `values` and the columns of J = ∂g/∂x that belong to blocks whose `active`
 /// entry is true into `jac` (row major, `dim` rows, Σ|x_b| columns); the columns of inactive
-/// blocks (fixed unknowns, whose derivatives no solver reads) are left at zero and cost nothing.
+/// blocks (fixed unknowns, whose derivatives no solver reads) and of blocks the residual says
+/// it does not depend on ([`Residual::depends_on`]) are left at zero and cost nothing.
 /// The active columns are packed into as few vector passes as the width allows
 /// (`DualSVec64<k>`, k ≤ 8): a curve contact reading seven control points and a free parameter
 /// (15 active columns) takes two passes, where one pass per block would take eight, each
@@ -159,9 +160,11 @@ pub fn jacobian_active<R: Residual>(
         }
     }
     jac.fill(0.0);
+    let mut needed: smallvec::SmallVec<[bool; 16]> = active.iter().copied().collect();
+    residual.depends_on(x, &mut needed);
     let mut columns: smallvec::SmallVec<[usize; 32]> = smallvec::SmallVec::new();
     let mut start = 0;
-    for (block, on) in x.iter().zip(active) {
+    for (block, on) in x.iter().zip(&needed) {
         if *on {
             columns.extend(start..start + block.len());
         }

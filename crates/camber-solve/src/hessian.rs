@@ -24,7 +24,8 @@ use crate::residual::Residual;
 
 /// Writes H = Σᵢ λᵢ·∇²gᵢ(x) into `out` (row major, N × N with N = Σ|x_b|, block 0's columns
 /// first, both triangles). `weights` holds λ (one per row); blocks whose `active` entry is
-/// false are treated as constants (their rows and columns of H are left zero).
+/// false, and blocks the residual does not depend on ([`Residual::depends_on`]), are treated as
+/// constants (their rows and columns of H are left zero).
 ///
 /// ```
 /// use camber_solve::{hessian::weighted_hessian, Residual, Scalar};
@@ -76,6 +77,9 @@ pub fn weighted_hessian<R: Residual>(
         return Ok(());
     }
     let mut out = Square { h: out, n };
+    let mut needed: smallvec::SmallVec<[bool; 16]> = active.iter().copied().collect();
+    residual.depends_on(x, &mut needed);
+    let active = &needed[..];
     // The flat columns of the active blocks.
     let mut columns: [usize; WHOLE_MAX] = [0; WHOLE_MAX];
     let mut count = 0;

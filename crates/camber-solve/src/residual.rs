@@ -57,6 +57,14 @@ pub trait Residual: Debug + Send + Sync + 'static {
     fn is_affine(&self) -> bool {
         false
     }
+    /// Clears the entries of `blocks` (one per block of `x`, all true on entry) for the blocks
+    /// g does not depend on near x: every derivative with respect to them is zero there, so
+    /// Jacobians and Hessians skip them. A curve residual at a free parameter u reads every
+    /// control point but depends only on the p + 1 of u's knot span. Optional: the default
+    /// keeps every block, which is always correct.
+    fn depends_on(&self, x: &[&[f64]], blocks: &mut [bool]) {
+        let _ = (x, blocks);
+    }
 }
 
 /// The object-safe face of a [`Residual`], stored by the problem as `Box<dyn DynResidual>`.

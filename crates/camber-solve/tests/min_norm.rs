@@ -125,7 +125,8 @@ proptest! {
         let v = DVector::from_column_slice(&v);
         let null = &v - &pinv * (&m * &v);
         prop_assert!((&m * &null).amax() < 1e-9);
-        prop_assert!(dx.norm() <= (&dx + &null).norm() + 1e-12);
+        // (Relative: for a square, nearly singular M the null-space vector is rounding noise.)
+        prop_assert!(dx.norm() <= (&dx + &null).norm() + 1e-12 * (1.0 + dx.norm()));
     }
 
     #[test]
