@@ -1,12 +1,14 @@
 //! Benchmarks of the standard workloads on the linear path: W1 (drag update), the blade
 //! section (drag update, Jacobian assembly), W3a (G1 chain with fixed tangents, full solve) and
 //! W4 (10,000 independent components, one solve); and on the nonlinear path W2 `bspline7`
-//! (three-circle tangency, one solve from each of 100 perturbed starts per δ, valid counts
-//! printed) and a drag update on the solved diffuser.
+//! and `2cubic` (three-circle tangency, one solve from each of 100 perturbed starts per δ, valid
+//! counts printed), a drag update on the solved diffuser, and W3 (the G1 chain with free joint
+//! directions and chord lengths, N = 1,000 and 10,000).
 #![allow(missing_docs)] // criterion's macros generate undocumented items
 
 use camber_sketch::workloads::{
-    blade, w1, w1_targets, w2_bspline7, w2_perturbed, w2_valid, w3a_chain, w4,
+    blade, w1, w1_targets, w2_2cubic, w2_2cubic_perturbed, w2_2cubic_valid, w2_bspline7,
+    w2_perturbed, w2_valid, w3_chain, w3a_chain, w4,
 };
 use camber_sketch::{PointRef, TangentForm};
 use criterion::{criterion_group, criterion_main, BatchSize, BenchmarkId, Criterion};
@@ -126,12 +128,60 @@ fn bench_w2(c: &mut Criterion) {
     });
 }
 
+fn bench_w2_2cubic(c: &mut Criterion) {
+    let (mut base, curves, _) = w2_2cubic().expect("valid workload");
+    base.solve().expect("the rough start solves");
+    let mut group = c.benchmark_group("w2_2cubic_solve");
+    for (name, delta, seed) in [("delta_0.01", 0.01, 1), ("delta_0.05", 0.05, 2)] {
+        let starts =
+            w2_2cubic_perturbed(&base, curves, delta, 100, seed).expect("perturbed starts");
+        let valid = starts
+            .iter()
+            .filter(|s| {
+                let mut s = (*s).clone();
+                s.solve().is_ok() && w2_2cubic_valid(&s, curves)
+            })
+            .count();
+        eprintln!("w2 2cubic {name}: {valid} of 100 valid");
+        let mut k = 0;
+        group.bench_function(name, |b| {
+            b.iter_batched(
+                || {
+                    k = (k + 1) % starts.len();
+                    starts[k].clone()
+                },
+                |mut s| black_box(s.solve().is_ok()),
+                BatchSize::SmallInput,
+            )
+        });
+    }
+    group.finish();
+}
+
+fn bench_w3(c: &mut Criterion) {
+    let mut group = c.benchmark_group("w3_chain_solve");
+    group.sample_size(10);
+    for n in [1_000_usize, 10_000] {
+        let (s, _) = w3_chain(n).expect("valid chain");
+        group.bench_with_input(BenchmarkId::from_parameter(n), &n, |b, _| {
+            b.iter_batched(
+                || s.clone(),
+                |mut s| black_box(s.solve().expect("solve")),
+                BatchSize::LargeInput,
+            )
+        });
+    }
+    group.finish();
+}
+
 criterion_group!(
     benches,
     bench_w1,
     bench_blade,
     bench_w2,
+    bench_w2_2cubic,
     bench_w3a,
+    bench_w3,
     bench_w4
 );
 criterion_main!(benches);
