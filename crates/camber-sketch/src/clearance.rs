@@ -142,6 +142,48 @@ pub struct Clearance {
     direction: f64,
     /// The scale w (parameter units): h = w²·min Q.
     width: f64,
+    /// The last search, reused while the real parts of the inputs stay the same.
+    last: LocateCache,
+}
+
+/// The inputs (real parts of the control points, u and the target, flattened) and the result of
+/// the last minimiser search. A Jacobian evaluates the row in one dual pass per group of
+/// columns and a Hessian in one pass per pair of blocks, all at the same real point, and the
+/// search (a scan, golden section and Newton: some 200 curve evaluations) is the dearest part
+/// of each; the result depends only on the real parts, so it is computed once. Clones start
+/// empty and two caches always compare equal: the cache is not part of the residual's value.
+#[derive(Debug, Default)]
+struct LocateCache(std::sync::Mutex<Option<(SmallVec<[f64; 32]>, Minimum)>>);
+
+impl Clone for LocateCache {
+    fn clone(&self) -> Self {
+        Self::default()
+    }
+}
+
+impl PartialEq for LocateCache {
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
+}
+
+impl LocateCache {
+    /// The cached result for `key`, or `search()`'s (then cached). When another thread holds
+    /// the cache, searches without it.
+    fn get_or(&self, key: SmallVec<[f64; 32]>, search: impl FnOnce() -> Minimum) -> Minimum {
+        let Ok(mut slot) = self.0.try_lock() else {
+            return search();
+        };
+        if let Some((k, m)) = slot.as_ref() {
+            // Bitwise equality: a hit returns exactly what the search would.
+            if k.len() == key.len() && k.iter().zip(&key).all(|(a, b)| a.to_bits() == b.to_bits()) {
+                return *m;
+            }
+        }
+        let m = search();
+        *slot = Some((key, m));
+        m
+    }
 }
 
 impl Clearance {
@@ -165,6 +207,7 @@ impl Clearance {
             side: if positive { 1.0 } else { -1.0 },
             direction: if after { 1.0 } else { -1.0 },
             width,
+            last: LocateCache::default(),
         }
     }
 
@@ -309,13 +352,23 @@ impl Clearance {
         }
         let at_u = self.basis.eval3(points, u);
         let q = |s: f64| self.q_at(points, target, u, &at_u, s);
+        // Q alone for the scan and the golden section: the gap G(s) needs only C(s).
+        let g_u = self.gap(target, &[at_u[0], at_u[1], at_u[2]]);
+        let q_value = |s: f64| {
+            let delta = s - u;
+            if delta.abs() <= self.near() {
+                return self.taylor(target, &at_u, delta)[0];
+            }
+            let c = self.basis.point(points, s);
+            Self::quotient(self.gap(target, &[c, [0.0; 2], [0.0; 2]]), g_u, delta)[0]
+        };
         // SAMPLES per width w, at least SAMPLES in all.
         let count = ((SAMPLES as f64 * (hi - lo) / self.width).ceil() as usize).max(SAMPLES);
         let step = (hi - lo) / count as f64;
         let mut best = (f64::INFINITY, lo);
         for i in 0..=count {
             let s = lo + step * i as f64;
-            let v = q(s)[0];
+            let v = q_value(s);
             if v < best.0 || best.0.is_nan() {
                 best = (v, s);
             }
@@ -324,27 +377,27 @@ impl Clearance {
         let (mut l, mut r) = ((best.1 - step).max(lo), (best.1 + step).min(hi));
         let phi = 0.5 * (5f64.sqrt() - 1.0);
         let (mut x1, mut x2) = (r - phi * (r - l), l + phi * (r - l));
-        let (mut f1, mut f2) = (q(x1)[0], q(x2)[0]);
+        let (mut f1, mut f2) = (q_value(x1), q_value(x2));
         for _ in 0..24 {
             if f1 <= f2 {
                 r = x2;
                 x2 = x1;
                 f2 = f1;
                 x1 = r - phi * (r - l);
-                f1 = q(x1)[0];
+                f1 = q_value(x1);
             } else {
                 l = x1;
                 x1 = x2;
                 f1 = f2;
                 x2 = l + phi * (r - l);
-                f2 = q(x2)[0];
+                f2 = q_value(x2);
             }
         }
         let mut s = 0.5 * (l + r);
-        let mut fs = q(s)[0];
+        let mut fs = q_value(s);
         for e in [lo, hi] {
-            if q(e)[0] <= fs {
-                (s, fs) = (e, q(e)[0]);
+            if q_value(e) <= fs {
+                (s, fs) = (e, q_value(e));
             }
         }
         if s <= lo || s >= hi {
@@ -359,12 +412,12 @@ impl Clearance {
             if next <= lo || next >= hi {
                 // Q falls toward an end beyond the sampled neighbourhood: the end is least.
                 let e = if next <= lo { lo } else { hi };
-                if q(e)[0] <= fs {
+                if q_value(e) <= fs {
                     return end(e);
                 }
                 return Minimum::Interior(s, false);
             }
-            let fn_ = q(next)[0];
+            let fn_ = q_value(next);
             if fn_ > fs {
                 break;
             }
@@ -411,7 +464,14 @@ impl Residual for Clearance {
         let trefs: SmallVec<[&[f64]; 2]> = tr.iter().map(|p| &p[..]).collect();
         let at_u = self.basis.eval3(points, u);
         let q = |s: T| self.q_at(points, target, u, &at_u, s);
-        let least = match self.locate(&prefs, re(u), &trefs) {
+        let key: SmallVec<[f64; 32]> = pr
+            .iter()
+            .flatten()
+            .chain(tr.iter().flatten())
+            .copied()
+            .chain([re(u)])
+            .collect();
+        let least = match self.last.get_or(key, || self.locate(&prefs, re(u), &trefs)) {
             Minimum::Contact => q(u)[0],
             Minimum::DomainEnd(s) => q(cst::<T>(s))[0],
             Minimum::Interior(s, false) => q(cst::<T>(s))[0],

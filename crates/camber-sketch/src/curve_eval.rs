@@ -216,6 +216,63 @@ impl CurveBasis {
         k.saturating_sub(self.degree)..(k + 1).min(self.count)
     }
 
+    /// C(u) alone in f64 (u clamped to the domain), by the Cox–de Boor triangle of the p + 1
+    /// basis values without their derivatives: the cheap evaluation for dense sampling. Equal to
+    /// `eval(points, u).0` up to rounding.
+    ///
+    /// ```
+    /// use camber_sketch::{curve_eval::CurveBasis, Entity};
+    /// use nalgebra::Point2;
+    /// let line = Entity::Line([Point2::new(0.0, 0.0), Point2::new(2.0, 4.0)]);
+    /// let b = CurveBasis::of(&line).ok_or("not a curve")?;
+    /// assert_eq!(b.point(&[&[0.0, 0.0][..], &[2.0, 4.0][..]], 0.25), [0.5, 1.0]);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn point(&self, points: &[&[f64]], u: f64) -> [f64; 2] {
+        let p = self.degree;
+        if self.fixed.is_some()
+            || self.count == 0
+            || self.knots.len() < self.count + p + 1
+            || points.len() < self.count
+        {
+            return self.eval(points, u).0;
+        }
+        let (a, b) = self.domain();
+        let u = u.clamp(a, b);
+        let k = self.span(u);
+        let kn = &self.knots;
+        let mut n: SmallVec<[f64; 8]> = smallvec::smallvec![0.0; p + 1];
+        let mut left: SmallVec<[f64; 8]> = smallvec::smallvec![0.0; p + 1];
+        let mut right: SmallVec<[f64; 8]> = smallvec::smallvec![0.0; p + 1];
+        n[0] = 1.0;
+        for j in 1..=p {
+            left[j] = u - kn[k + 1 - j];
+            right[j] = kn[k + j] - u;
+            let mut saved = 0.0;
+            for r in 0..j {
+                let den = right[r + 1] + left[j - r];
+                let temp = if den.abs() > 0.0 { n[r] / den } else { 0.0 };
+                n[r] = saved + right[r + 1] * temp;
+                saved = left[j - r] * temp;
+            }
+            n[j] = saved;
+        }
+        let first = k - p;
+        let (mut c, mut w_sum) = ([0.0; 2], 0.0);
+        for (r, nr) in n.iter().enumerate() {
+            let w = self.weight(first + r) * nr;
+            let q = points[first + r];
+            c[0] += w * q[0];
+            c[1] += w * q[1];
+            w_sum += w;
+        }
+        if self.weights.is_some() {
+            c[0] /= w_sum;
+            c[1] /= w_sum;
+        }
+        c
+    }
+
     /// The parametric domain [u_p, u_{n}] (n = number of control points).
     pub fn domain(&self) -> (f64, f64) {
         let a = self.knots.get(self.degree).copied().unwrap_or(0.0);
@@ -598,6 +655,9 @@ mod tests {
                 };
                 assert_relative_eq!(c[0], p.x, epsilon = 1e-12);
                 assert_relative_eq!(c[1], p.y, epsilon = 1e-12);
+                let point_only = basis.point(&refs, u);
+                assert_relative_eq!(point_only[0], p.x, epsilon = 1e-12);
+                assert_relative_eq!(point_only[1], p.y, epsilon = 1e-12);
                 assert_relative_eq!(c1[0], d.x, epsilon = 1e-10);
                 assert_relative_eq!(c1[1], d.y, epsilon = 1e-10);
                 let second = match &e {
