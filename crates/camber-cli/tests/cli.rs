@@ -295,6 +295,11 @@ fn ops_that_do_not_apply_say_so() {
             &["split", "--at", "1", "--second", "y.json"][..],
             "cannot split at 1",
         ),
+        (
+            "bezier_cubic.json",
+            &["elevate", "--times", "1000000000000"][..],
+            "degree 1000000000003 is above the largest supported degree",
+        ),
     ];
     for (name, op, message) in cases {
         let err = failure(

@@ -209,6 +209,23 @@ pub enum Error {
         /// The id asked for.
         id: u64,
     },
+    /// A method that needs fixed contact targets (iterative displacement) met a contact whose
+    /// circle or line may move.
+    #[error("{constraint} touches {entity}, which is not fixed")]
+    TargetNotFixed {
+        /// The contact.
+        constraint: ConstraintId,
+        /// Its circle or line.
+        entity: EntityId,
+    },
+    /// An option out of its range.
+    #[error("{what}: {detail}")]
+    InvalidOption {
+        /// Which option.
+        what: &'static str,
+        /// What was wrong, with the value.
+        detail: String,
+    },
 }
 
 impl From<camber_solve::Error> for Error {

@@ -71,6 +71,7 @@ mod compile;
 pub mod constraint;
 pub mod contact;
 pub mod curve_eval;
+pub mod displacement;
 pub mod drag;
 pub mod entity;
 pub mod errors;

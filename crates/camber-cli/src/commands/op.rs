@@ -141,7 +141,7 @@ impl Op {
                 _ => return unsupported("it has no knots"),
             },
             (Op::Elevate { times, .. }, c) => match c {
-                Bezier(c) => vec![Bezier(c.elevate_degree(*times))],
+                Bezier(c) => vec![Bezier(c.try_elevate_degree(*times)?)],
                 BSpline(c) => vec![BSpline(c.elevate_degree(*times)?)],
                 Nurbs(c) => vec![Nurbs(c.elevate_degree(*times)?)],
                 Hermite(_) => return unsupported("a Hermite curve is always cubic"),
