@@ -75,6 +75,30 @@ fn demo_solves_the_blade_and_writes_its_picture() {
 }
 
 #[test]
+fn solve_by_displacement_reports_its_rounds_and_writes_a_valid_diffuser() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("solved.json");
+    camber()
+        .arg("solve")
+        .arg(sketch("diffuser.json"))
+        .arg("--displacement")
+        .arg("-o")
+        .arg(&out)
+        .assert()
+        .success()
+        .stdout(predicate::str::is_match("iterative displacement: [0-9]+ round\\(s\\), ").unwrap());
+    // The written sketch holds every constraint: solving it again changes nothing.
+    let mut after =
+        camber_sketch::file::from_json(&std::fs::read_to_string(&out).unwrap()).unwrap();
+    let report = after.solve_all().unwrap();
+    for c in &report.components {
+        for r in &c.report.residuals {
+            assert!(r.max_abs < 1e-9, "{r:?}");
+        }
+    }
+}
+
+#[test]
 fn solve_writes_a_solved_file_with_the_same_ids_and_a_report() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("solved.json");

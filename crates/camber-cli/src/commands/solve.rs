@@ -21,13 +21,34 @@ pub struct SolveArgs {
     /// Also draw the solved sketch as SVG.
     #[arg(long, value_name = "PIC.svg")]
     pub svg: Option<PathBuf>,
+    /// Solve contacts with fixed circles and lines by iterative displacement on the linear path
+    /// (the blade-design method, for comparison; SLSQP takes over when its rounds stall).
+    #[arg(long)]
+    pub displacement: bool,
 }
 
 /// Loads, solves every component, writes the result (and the picture), prints the report. A
 /// failed solve writes nothing and names the constraints at fault.
 pub fn run(args: &SolveArgs) -> Result<()> {
     let mut sketch = sketch_file::load(&args.input)?;
-    let report = solve(&mut sketch).with_context(|| args.input.display().to_string())?;
+    let report = if args.displacement {
+        let run = sketch
+            .solve_by_displacement(&camber_sketch::displacement::DisplacementOptions::default())
+            .map_err(|e| anyhow!("solve failed: {}", describe_error(&sketch, &e)))
+            .with_context(|| args.input.display().to_string())?;
+        crate::print_stdout(&format!(
+            "iterative displacement: {} round(s), {}",
+            run.rounds,
+            if run.converged {
+                "converged, validated by the sketch's solve"
+            } else {
+                "stalled, solved by SLSQP"
+            }
+        ))?;
+        run.report
+    } else {
+        solve(&mut sketch).with_context(|| args.input.display().to_string())?
+    };
     sketch_file::save(&args.output, &sketch)?;
     if let Some(pic) = &args.svg {
         let svg =
