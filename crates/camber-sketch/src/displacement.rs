@@ -172,14 +172,6 @@ fn cross(a: Vector2<f64>, b: Vector2<f64>) -> f64 {
     a.x * b.y - a.y * b.x
 }
 
-/// C(s) and C′(s) of a curve entity (a line is (1 − s)·P₀ + s·P₁).
-fn point_tangent(e: &Entity, s: f64) -> Option<(Point2<f64>, Vector2<f64>)> {
-    match e {
-        Entity::Line([a, b]) => Some((a + (b - a) * s, b - a)),
-        _ => e.as_curve()?.point_and_derivative(s).ok(),
-    }
-}
-
 /// The parameter in [lo, hi] where `f` is least: the best of `samples` + 1 samples, refined by
 /// golden section between its neighbours.
 fn least(f: impl Fn(f64) -> f64, lo: f64, hi: f64, samples: usize) -> f64 {
@@ -452,11 +444,14 @@ impl Sketch {
         for c in contacts {
             let e = self.entity(c.curve)?;
             let (lo, hi) = e.domain().unwrap_or((0.0, 1.0));
-            let gap = |s: f64| point_tangent(e, s).map_or(f64::INFINITY, |(q, _)| c.target.gap(q));
+            let gap = |s: f64| {
+                e.point_tangent(s)
+                    .map_or(f64::INFINITY, |(q, _)| c.target.gap(q))
+            };
             let deepest = least(gap, lo, hi, options.samples);
             let s = c.at.unwrap_or(deepest);
             params.push(s);
-            let Some((q, t)) = point_tangent(e, s) else {
+            let Some((q, t)) = e.point_tangent(s) else {
                 return Err(Error::UnknownEntity { entity: c.curve });
             };
             let (foot, direction) = c.target.foot(q);
@@ -518,7 +513,7 @@ impl Sketch {
             if c.at.is_some() && depth < -options.tolerance {
                 worst = worst.max(-depth);
                 if (deepest - s).abs() > 1e-6 * (hi - lo) {
-                    let (qd, _) = point_tangent(e, deepest).unwrap_or((q, t));
+                    let (qd, _) = e.point_tangent(deepest).unwrap_or((q, t));
                     rows.push(Constraint::PointAtParameter {
                         curve: c.curve,
                         u: deepest,

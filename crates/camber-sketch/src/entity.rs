@@ -89,6 +89,22 @@ impl Entity {
         }
     }
 
+    /// C(s) and C′(s) of a curve entity in f64 through the geometry kernel, a line counting as
+    /// the segment (1 − s)·P₀ + s·P₁; `None` for points and circles or s outside the domain.
+    ///
+    /// ```
+    /// use camber_sketch::Entity;
+    /// use nalgebra::{Point2, Vector2};
+    /// let line = Entity::Line([Point2::new(0.0, 0.0), Point2::new(2.0, 4.0)]);
+    /// assert_eq!(line.point_tangent(0.25), Some((Point2::new(0.5, 1.0), Vector2::new(2.0, 4.0))));
+    /// ```
+    pub fn point_tangent(&self, s: f64) -> Option<(Point2<f64>, nalgebra::Vector2<f64>)> {
+        match self {
+            Entity::Line([a, b]) => Some((a + (b - a) * s, b - a)),
+            _ => self.as_curve()?.point_and_derivative(s).ok(),
+        }
+    }
+
     /// The kind as a word ("point", "line", "circle", "Bézier curve", …).
     pub fn kind_name(&self) -> &'static str {
         match self {

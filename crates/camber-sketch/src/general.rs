@@ -443,33 +443,17 @@ pub(crate) fn compile_general(
     Ok(true)
 }
 
-/// A solved curve ready for repeated evaluation: its basis and its control points as blocks.
-struct Sampler {
-    basis: CurveBasis,
-    points: Vec<[f64; 2]>,
-}
-
-impl Sampler {
-    fn new(e: &Entity, id: EntityId) -> Result<Self> {
-        let basis = CurveBasis::of(e).ok_or(Error::WrongEntityKind {
+/// C(s) and C′(s) of a solved curve entity (s clamped to its domain).
+pub(crate) fn point_tangent(e: &Entity, id: EntityId, s: f64) -> Result<([f64; 2], [f64; 2])> {
+    let (a, b) = e.domain().unwrap_or((0.0, 1.0));
+    let (p, t) = e
+        .point_tangent(s.clamp(a, b))
+        .ok_or(Error::WrongEntityKind {
             entity: id,
             expected: "curve",
             found: e.kind_name(),
         })?;
-        let points = e.points().iter().map(|p| [p.x, p.y]).collect();
-        Ok(Self { basis, points })
-    }
-
-    /// C(s) and C′(s).
-    fn at(&self, s: f64) -> ([f64; 2], [f64; 2]) {
-        let refs: smallvec::SmallVec<[&[f64]; 16]> = self.points.iter().map(|p| &p[..]).collect();
-        self.basis.eval(&refs, s)
-    }
-}
-
-/// C(s) and C′(s) of a solved curve entity.
-pub(crate) fn point_tangent(e: &Entity, id: EntityId, s: f64) -> Result<([f64; 2], [f64; 2])> {
-    Ok(Sampler::new(e, id)?.at(s))
+    Ok(([p.x, p.y], [t.x, t.y]))
 }
 
 /// The half-width w = (b − a)/5 of the window beside a contact on the domain [a, b], where the
@@ -505,14 +489,11 @@ fn deepest(
             found: e.kind_name(),
         });
     }
-    // C(s) by the geometry kernel (a line segment is (1 − s)·P₀ + s·P₁).
-    let point = |s: f64| match e {
-        Entity::Line([a, b]) => Some(a + (b - a) * s),
-        _ => e.as_curve()?.point(s).ok(),
-    };
     for s in window(e, u) {
         // Samples lie in the domain; a kernel error (none expected) counts as a crossing.
-        let d = point(s).map_or(f64::NEG_INFINITY, |q| gap([q.x, q.y]));
+        let d = e
+            .point_tangent(s)
+            .map_or(f64::NEG_INFINITY, |(q, _)| gap([q.x, q.y]));
         if d < -tolerance && worst.is_none_or(|(_, w)| d < w) {
             worst = Some((s, d));
         }
