@@ -10,7 +10,7 @@ use camber_sketch::workloads::{
     blade, w1, w1_targets, w2_2cubic, w2_2cubic_perturbed, w2_2cubic_valid, w2_bspline7,
     w2_perturbed, w2_valid, w3_chain, w3a_chain, w4,
 };
-use camber_sketch::{PointRef, TangentForm};
+use camber_sketch::{PointRef, Sketch, TangentForm};
 use criterion::{criterion_group, criterion_main, BatchSize, BenchmarkId, Criterion};
 use nalgebra::{Point2, Vector2};
 use std::hint::black_box;
@@ -89,30 +89,12 @@ fn bench_w4(c: &mut Criterion) {
 fn bench_w2(c: &mut Criterion) {
     let (mut base, w) = w2_bspline7().expect("valid workload");
     base.solve().expect("the rough start solves");
-    let mut group = c.benchmark_group("w2_bspline7_solve");
-    for (name, delta, seed) in [("delta_0.01", 0.01, 1), ("delta_0.05", 0.05, 2)] {
-        let starts = w2_perturbed(&base, &w, delta, 100, seed).expect("perturbed starts");
-        let valid = starts
-            .iter()
-            .filter(|s| {
-                let mut s = (*s).clone();
-                s.solve().is_ok() && w2_valid(&s, &w)
-            })
-            .count();
-        eprintln!("w2 bspline7 {name}: {valid} of 100 valid");
-        let mut k = 0;
-        group.bench_function(name, |b| {
-            b.iter_batched(
-                || {
-                    k = (k + 1) % starts.len();
-                    starts[k].clone()
-                },
-                |mut s| black_box(s.solve().is_ok()),
-                BatchSize::SmallInput,
-            )
-        });
-    }
-    group.finish();
+    bench_w2_solves(
+        c,
+        "w2_bspline7_solve",
+        |delta, seed| w2_perturbed(&base, &w, delta, 100, seed).expect("perturbed starts"),
+        |s| w2_valid(s, &w),
+    );
 
     // A drag update on the solved diffuser (nonlinear: warm-started Newton).
     let dragged = PointRef::Control(w.curve, 3);
@@ -131,18 +113,35 @@ fn bench_w2(c: &mut Criterion) {
 fn bench_w2_2cubic(c: &mut Criterion) {
     let (mut base, curves, _) = w2_2cubic().expect("valid workload");
     base.solve().expect("the rough start solves");
-    let mut group = c.benchmark_group("w2_2cubic_solve");
+    bench_w2_solves(
+        c,
+        "w2_2cubic_solve",
+        |delta, seed| {
+            w2_2cubic_perturbed(&base, curves, delta, 100, seed).expect("perturbed starts")
+        },
+        |s| w2_2cubic_valid(s, curves),
+    );
+}
+
+/// One solve from each of the 100 perturbed starts `starts(δ, seed)` of a W2 representation,
+/// for δ = 0.01 and 0.05, with the valid count printed (`valid` is the workload's check).
+fn bench_w2_solves(
+    c: &mut Criterion,
+    group_name: &str,
+    starts: impl Fn(f64, u64) -> Vec<Sketch>,
+    valid: impl Fn(&Sketch) -> bool,
+) {
+    let mut group = c.benchmark_group(group_name);
     for (name, delta, seed) in [("delta_0.01", 0.01, 1), ("delta_0.05", 0.05, 2)] {
-        let starts =
-            w2_2cubic_perturbed(&base, curves, delta, 100, seed).expect("perturbed starts");
-        let valid = starts
+        let starts = starts(delta, seed);
+        let count = starts
             .iter()
             .filter(|s| {
                 let mut s = (*s).clone();
-                s.solve().is_ok() && w2_2cubic_valid(&s, curves)
+                s.solve().is_ok() && valid(&s)
             })
             .count();
-        eprintln!("w2 2cubic {name}: {valid} of 100 valid");
+        eprintln!("{group_name} {name}: {count} of {} valid", starts.len());
         let mut k = 0;
         group.bench_function(name, |b| {
             b.iter_batched(
