@@ -645,3 +645,48 @@ fn drag_round_trip_times() {
         );
     }
 }
+
+/// Issue 11, finding 1: the editor's Solve on a cubic touching 7 fixed circles at free
+/// contact parameters aborted the whole editor (NLopt's SLSQP given more equality rows than
+/// unknowns), losing unsaved work. It now answers, and the editor goes on serving.
+#[test]
+fn issue_11_solve_with_seven_contacts_answers_and_the_editor_survives() {
+    use camber_sketch::{CircleSide, Contact, Rotation};
+    let mut s = Sketch::new();
+    let curve = s
+        .add_bezier(
+            camber_geom::BezierCurve2::try_new(vec![
+                Point2::new(0.0, 0.0),
+                Point2::new(1.0, 1.5),
+                Point2::new(2.0, 1.5),
+                Point2::new(3.0, 0.0),
+            ])
+            .unwrap(),
+        )
+        .unwrap();
+    for i in 0..7 {
+        let c = s
+            .add_circle(Point2::new(0.3 + 0.4 * f64::from(i), 1.5), 0.3)
+            .unwrap();
+        s.add_constraint(Constraint::Fixed(FixTarget::Entity(c)))
+            .unwrap();
+        s.add_constraint(Constraint::TangentToCircle {
+            curve,
+            circle: c,
+            u: Contact::Free((f64::from(i) + 0.5) / 7.0),
+            side: CircleSide::Outside,
+            rotation: Rotation::Clockwise,
+        })
+        .unwrap();
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("seven.json");
+    std::fs::write(&input, camber_sketch::file::to_json(&s).unwrap()).unwrap();
+    let mut ed = EditorState::load(&input, Some(dir.path().join("out.json"))).unwrap();
+    let (status, solved) = post(&mut ed, "/api/solve", json!({}));
+    assert_eq!(status, 200, "{solved}");
+    let line = &solved["report"]["components"][0];
+    assert!(line["residual"].as_f64().unwrap() < 1e-9, "{line}");
+    // Still serving.
+    assert_eq!(state(&mut ed)["components"][0]["nonlinear"], true);
+}

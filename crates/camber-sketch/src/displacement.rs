@@ -19,10 +19,11 @@
 //! The converged state is then handed to the sketch's own solve with the contacts as they were
 //! (free parameters started at s*), which validates it, usually with no iteration left to do,
 //! and stores the contact parameters. When the rounds do not converge, or a round's linear
-//! system is inconsistent, SLSQP solves the original sketch from its own start instead. Either
+//! system is inconsistent, the sketch's own solve (its usual selection: Newton, SLSQP within
+//! its limits, least squares) solves the original sketch from its own start instead. Either
 //! way the sketch changes only on success.
 
-use camber_solve::{ConstraintId, SolverChoice};
+use camber_solve::ConstraintId;
 use nalgebra::{Point2, Vector2};
 
 use crate::constraint::{
@@ -40,7 +41,7 @@ const MAX_HALVINGS: i32 = 4;
 /// Limits of [`Sketch::solve_by_displacement`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DisplacementOptions {
-    /// Most rounds before SLSQP takes over (≥ 1).
+    /// Most rounds before the sketch's own solve takes over (≥ 1).
     pub max_rounds: usize,
     /// Largest gap and tangent mismatch (length units, and sine of the angle) accepted as
     /// converged; also the penetration below which a curve does not count as crossing. The
@@ -66,13 +67,14 @@ impl Default for DisplacementOptions {
 pub struct DisplacementReport {
     /// Rounds of linear solves run.
     pub rounds: usize,
-    /// Whether the rounds converged (otherwise SLSQP solved the sketch).
+    /// Whether the rounds converged (otherwise the sketch's own solve solved it from its start).
     pub converged: bool,
     /// Largest gap or tangent mismatch before the first round and after every round (length
     /// units / sine; `rounds` + 1 entries when there were contacts), for studies of the
     /// method's convergence.
     pub history: Vec<f64>,
-    /// The report of the final solve: the validating solve after convergence, or SLSQP's.
+    /// The report of the final solve: the validating solve after convergence, or the sketch's
+    /// own solve from its start.
     pub report: SketchReport,
 }
 
@@ -205,7 +207,8 @@ fn least(f: impl Fn(f64) -> f64, lo: f64, hi: f64, samples: usize) -> f64 {
 impl Sketch {
     /// Solves the sketch's contacts with fixed circles and lines by iterative displacement on
     /// the linear path (see the module documentation), then validates the result with the
-    /// sketch's own solve; hands over to SLSQP when the rounds do not converge. Every other
+    /// sketch's own solve, which also solves the sketch from its original start when the rounds do
+    /// not converge. Every other
     /// constraint must be affine (they are solved with the rows of each round); circles and
     /// lines that are contact targets must be fixed.
     ///
@@ -236,7 +239,7 @@ impl Sketch {
     ///
     /// # Errors
     /// [`Error::InvalidOption`] for bad options, [`Error::TargetNotFixed`] for a contact with a
-    /// circle or line that may move; the errors of the validating solve or of SLSQP. Nothing
+    /// circle or line that may move; the errors of the validating solve or of the sketch's own solve. Nothing
     /// changes on error.
     pub fn solve_by_displacement(
         &mut self,
@@ -326,12 +329,8 @@ impl Sketch {
                     result.add_constraint_with_id(c.id, constraint)?;
                 }
             }
-        } else {
-            let options = self.options().clone();
-            result.set_options(options.with_force(Some(SolverChoice::Slsqp)));
         }
         let report = result.solve()?;
-        result.set_options(self.options().clone());
         *self = result;
         Ok(DisplacementReport {
             rounds,

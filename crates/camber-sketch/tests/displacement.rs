@@ -14,7 +14,6 @@ use camber_sketch::workloads::{w2_bspline7, w2_perturbed, w2_valid};
 use camber_sketch::{
     CircleSide, Constraint, Contact, EntityId, Error, FixTarget, PointRef, Rotation, Sketch,
 };
-use camber_solve::SolverKind;
 use nalgebra::Point2;
 
 /// A symmetric cubic arc over the unit circle with its top at height `top` (ends fixed), and
@@ -139,13 +138,12 @@ fn the_diffuser_ends_valid_from_perturbed_starts() {
         assert!(w2_valid(&s, &w), "{r:?}");
         by_rounds += usize::from(r.converged);
         if !r.converged {
-            // Handed over: SLSQP solved the sketch from its own start.
-            assert_eq!(r.report.components[0].report.solver, SolverKind::Slsqp);
+            // Handed over: the sketch's own solve solved it from its own start (valid above).
             assert_eq!(r.history.len(), r.rounds + 1);
         }
     }
     // Measured: the rounds alone converge on 6 of these 10 starts; on the others a round
-    // reverses the thickness contact's tangent and SLSQP takes over (still valid, above).
+    // reverses the thickness contact's tangent and the usual solve takes over (still valid).
     assert!(
         by_rounds >= 4,
         "{by_rounds} of 10 converged by displacement"

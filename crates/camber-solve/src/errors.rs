@@ -187,6 +187,20 @@ pub enum Error {
         /// The largest absolute residual reached.
         max_residual: f64,
     },
+    /// A problem lies outside what a solver supports, so it was not handed to it (SLSQP
+    /// needs at most as many equality rows as unknowns and a dense workspace of a bounded
+    /// size; see [`crate::SLSQP_MAX_UNKNOWNS`]).
+    #[error("{solver} cannot take {rows} equality rows over {unknowns} unknowns: {why}")]
+    OutsideSolverLimits {
+        /// The solver ("SLSQP").
+        solver: &'static str,
+        /// Unknowns of the problem as handed over.
+        unknowns: usize,
+        /// Equality rows of the problem as handed over.
+        rows: usize,
+        /// Which limit is exceeded.
+        why: &'static str,
+    },
     /// An external optimizer reported a failure; nothing was written back.
     #[error("{solver} failed: {detail}")]
     OptimizerFailed {

@@ -19,6 +19,47 @@ pub enum SolverChoice {
     Soft,
 }
 
+/// The most unknowns a problem may have to be handed to SLSQP.
+///
+/// SLSQP is dense: NLopt sizes its workspace as about (3n + m)·(n + 2) doubles plus the m × n
+/// constraint Jacobian, and solves a dense least-squares subproblem of that size at every
+/// iteration (O(n³) work). At 2,000 unknowns that is about 130 MB and seconds per iteration;
+/// far beyond it NLopt's 32-bit workspace arithmetic overflows and the process is corrupted.
+/// Larger components stay on the sparse paths (Newton, Levenberg–Marquardt).
+pub const SLSQP_MAX_UNKNOWNS: usize = 2_000;
+
+/// Checks that a problem of `unknowns` unknowns and `rows` equality rows lies within what
+/// SLSQP supports: at least one unknown, no more equality rows than unknowns (NLopt 2.9's
+/// SLSQP writes past its workspace otherwise), and at most [`SLSQP_MAX_UNKNOWNS`] unknowns.
+///
+/// ```
+/// use camber_solve::nonlinear::{slsqp_supports, SLSQP_MAX_UNKNOWNS};
+/// assert!(slsqp_supports(15, 14).is_ok());
+/// assert!(slsqp_supports(15, 21).is_err());
+/// assert!(slsqp_supports(SLSQP_MAX_UNKNOWNS + 1, 10).is_err());
+/// ```
+///
+/// # Errors
+/// [`crate::Error::OutsideSolverLimits`] naming the limit exceeded.
+pub fn slsqp_supports(unknowns: usize, rows: usize) -> crate::Result<()> {
+    let why = if rows > unknowns {
+        Some("more equality rows than unknowns")
+    } else if unknowns > SLSQP_MAX_UNKNOWNS {
+        Some("more unknowns than the dense SLSQP takes (camber_solve::nonlinear::SLSQP_MAX_UNKNOWNS)")
+    } else {
+        None
+    };
+    match why {
+        Some(why) => Err(crate::Error::OutsideSolverLimits {
+            solver: "SLSQP",
+            unknowns,
+            rows,
+            why,
+        }),
+        None => Ok(()),
+    }
+}
+
 /// Tolerances, limits and choices of the nonlinear solvers.
 ///
 /// ```

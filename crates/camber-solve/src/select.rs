@@ -43,6 +43,9 @@ struct Start {
     conflicting: Vec<ConstraintId>,
     /// Independent rows when only consistent dependent rows exist (and may be dropped).
     independent: Option<Vec<usize>>,
+    /// A maximal independent set of rows at the start (when the analysis ran): what SLSQP
+    /// gets when the rows outnumber the unknowns.
+    basis: Option<Vec<usize>>,
     affine: bool,
     full_rank: bool,
 }
@@ -77,6 +80,7 @@ impl Start {
                     && !a.redundant.is_empty()
                     && options.drop_redundant)
                     .then(|| a.rows.independent.clone()),
+                basis: Some(a.rows.independent.clone()),
                 rank: a.rank,
                 dof: a.dof,
                 redundant: a.redundant,
@@ -95,6 +99,7 @@ impl Start {
                 redundant: Vec::new(),
                 conflicting: Vec::new(),
                 independent: None,
+                basis: None,
                 affine: lin.affine,
                 full_rank: true,
             },
@@ -181,19 +186,33 @@ fn newton_path(
     Ok((run.iterations, run.stationary, residuals, ws.z.clone()))
 }
 
+/// SLSQP from `start` toward `reference`, validated and written back. When the rows
+/// outnumber the unknowns SLSQP gets the independent `basis` rows only (NLopt's SLSQP takes at
+/// most as many equality rows as unknowns); without a basis it is not called
+/// ([`Error::OutsideSolverLimits`]).
 #[cfg(feature = "nlopt")]
 fn slsqp_path(
     problem: &mut Problem,
     options: &Options,
     start: &[f64],
     reference: &[f64],
+    basis: Option<&[usize]>,
 ) -> Result<(crate::slsqp::SlsqpRun, Vec<ConstraintResidual>, Vec<f64>)> {
     let mut ev = Evaluator::new(problem)?;
-    let (z, run) = crate::slsqp::run(problem, &mut ev, start, reference, options)?;
+    let rows = basis.filter(|_| ev.rows() > ev.cols());
+    let (z, run) = crate::slsqp::run(problem, &mut ev, start, reference, rows, options)?;
     let residuals = commit(problem, &mut ev, &z, options).map_err(|e| match e {
         Error::NotSatisfied { failed } if run.state.contains("Fail") => Error::OptimizerFailed {
             solver: "SLSQP",
-            detail: format!("{} with constraints not satisfied: {failed:?}", run.state),
+            detail: format!(
+                "{} with constraints not satisfied: {}",
+                run.state,
+                failed
+                    .iter()
+                    .map(|(c, g)| format!("{c} (max |g| = {g:.3e})"))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
         },
         e => e,
     })?;
@@ -206,6 +225,7 @@ fn slsqp_path(
     _: &Options,
     _: &[f64],
     _: &[f64],
+    _: Option<&[usize]>,
 ) -> Result<(SlsqpInfo, Vec<ConstraintResidual>, Vec<f64>)> {
     Err(Error::SolverUnavailable {
         solver: "SLSQP",
@@ -341,7 +361,13 @@ pub fn solve(problem: &mut Problem, options: &Options) -> Result<SolveReport> {
             start.rank, start.rows
         ));
     }
-    match slsqp_path(problem, options, &start.z0, &start.z0) {
+    match slsqp_path(
+        problem,
+        options,
+        &start.z0,
+        &start.z0,
+        start.basis.as_deref(),
+    ) {
         Ok((run, residuals, z)) => {
             let reason = format!(
                 "{} → SLSQP ({}, {} evaluations)",
@@ -436,7 +462,13 @@ fn forced(
             Ok(start.report(SolverKind::Newton, why, iterations, residuals, &z))
         }
         SolverChoice::Slsqp => {
-            let (run, residuals, z) = slsqp_path(problem, options, &start.z0, &start.z0)?;
+            let (run, residuals, z) = slsqp_path(
+                problem,
+                options,
+                &start.z0,
+                &start.z0,
+                start.basis.as_deref(),
+            )?;
             let reason = format!("{why} ({}, {} evaluations)", run.state, run.evaluations);
             Ok(start.report(SolverKind::Slsqp, reason, run.evaluations, residuals, &z))
         }

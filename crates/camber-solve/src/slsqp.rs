@@ -13,6 +13,10 @@
 //!
 //! The callbacks run inside C code and must not unwind: evaluation errors are stored and NaN is
 //! returned, and the stored error is reported after the optimizer returns.
+//!
+//! Only problems within [`crate::nonlinear::slsqp_supports`] reach NLopt: at most as many
+//! equality rows as unknowns (a caller with more rows hands over an independent subset, which
+//! [`run`] evaluates out of the full residual vector) and a bounded size.
 
 use std::cell::{Cell, RefCell};
 
@@ -40,6 +44,11 @@ struct Shared<'a> {
     objective: RefCell<ObjectiveEval>,
     reference: &'a [f64],
     options: &'a Options,
+    /// The rows handed to SLSQP (`None`: all), and for each problem row its position among
+    /// them.
+    rows: Option<(&'a [usize], Vec<Option<usize>>)>,
+    /// All residuals, when only a subset of rows is handed over.
+    all: RefCell<Vec<f64>>,
     evaluations: Cell<usize>,
     error: RefCell<Option<Error>>,
 }
@@ -75,17 +84,31 @@ impl Shared<'_> {
             return;
         };
         let n = z.len();
+        let Ok(mut all) = self.all.try_borrow_mut() else {
+            out.fill(f64::NAN);
+            return;
+        };
+        let g: &mut [f64] = if self.rows.is_some() { &mut all } else { out };
         let outcome = match gradient {
-            None => ev.residuals(self.problem, z, out),
-            Some(grad) => ev.linearize(self.problem, z, out).map(|()| {
+            None => ev.residuals(self.problem, z, g),
+            Some(grad) => ev.linearize(self.problem, z, g).map(|()| {
                 grad.fill(0.0);
-                for (i, j, v) in ev.triplets() {
-                    if let Some(slot) = grad.get_mut(i * n + j) {
+                for &(i, j, v) in ev.triplets() {
+                    let row = match &self.rows {
+                        Some((_, position)) => position.get(i).copied().flatten(),
+                        None => Some(i),
+                    };
+                    if let Some(slot) = row.and_then(|r| grad.get_mut(r * n + j)) {
                         *slot += v;
                     }
                 }
             }),
         };
+        if let Some((subset, _)) = &self.rows {
+            for (slot, &r) in out.iter_mut().zip(subset.iter()) {
+                *slot = all.get(r).copied().unwrap_or(f64::NAN);
+            }
+        }
         if let Err(e) = outcome {
             out.fill(f64::NAN);
             self.record(e);
@@ -95,21 +118,46 @@ impl Shared<'_> {
 
 /// Runs SLSQP from `start` (clamped into the box) with the objective measured from
 /// `reference`, returning the final point whatever NLopt's verdict (the caller validates it).
+/// With `rows`, only those residual rows (indices into the problem's rows, each at most once)
+/// are equality constraints; the caller still validates every row.
 ///
 /// # Errors
-/// An evaluation error raised inside a callback, or [`Error::OptimizerFailed`] when NLopt
-/// refuses the setup.
+/// [`Error::OutsideSolverLimits`] when the problem (or the row subset) lies outside
+/// [`crate::nonlinear::slsqp_supports`] — nothing is handed to NLopt then; an evaluation error
+/// raised inside a callback, or [`Error::OptimizerFailed`] when NLopt refuses the setup.
 pub(crate) fn run(
     problem: &Problem,
     ev: &mut Evaluator,
     start: &[f64],
     reference: &[f64],
+    rows: Option<&[usize]>,
     options: &Options,
 ) -> Result<(Vec<f64>, SlsqpRun)> {
     let n = ev.cols();
-    let m = ev.rows();
+    let all_rows = ev.rows();
+    let m = rows.map_or(all_rows, <[usize]>::len);
+    crate::nonlinear::slsqp_supports(n, m)?;
     crate::sparse::check_len("SLSQP start", n, start.len())?;
     crate::sparse::check_len("SLSQP reference", n, reference.len())?;
+    let rows = match rows {
+        Some(subset) => {
+            let mut position = vec![None; all_rows];
+            for (k, &r) in subset.iter().enumerate() {
+                match position.get_mut(r) {
+                    Some(slot @ None) => *slot = Some(k),
+                    _ => {
+                        return Err(Error::Dimension {
+                            what: "SLSQP row subset (a row out of range or repeated)",
+                            expected: all_rows,
+                            found: r,
+                        })
+                    }
+                }
+            }
+            Some((subset, position))
+        }
+        None => None,
+    };
     let settings = &options.nonlinear;
     let half = settings.search_box;
     let lower: Vec<f64> = (0..n)
@@ -136,6 +184,8 @@ pub(crate) fn run(
         evaluator: RefCell::new(ev),
         reference,
         options,
+        all: RefCell::new(vec![0.0; if rows.is_some() { all_rows } else { 0 }]),
+        rows,
         evaluations: Cell::new(0),
         error: RefCell::new(None),
     };

@@ -408,3 +408,83 @@ fn affine_problems_take_the_linear_path() {
     let again = solve(&mut p, &Options::default()).unwrap();
     assert_eq!(again.status, Status::AlreadySatisfied);
 }
+
+/// Three circles through (1, 1) over one point: three rows, two unknowns, rank 2 at the
+/// solution.
+#[cfg(feature = "nlopt")]
+fn three_circles_through_one_point() -> Problem {
+    let mut p = Problem::new();
+    let b = p.add_block(&[1.3, 0.8]).unwrap();
+    for (id, c) in [(1, [0.0, 0.0]), (2, [2.0, 0.0]), (3, [1.0, 3.0])] {
+        let r = ((1.0 - c[0]) * (1.0f64 - c[0]) + (1.0 - c[1]) * (1.0f64 - c[1])).sqrt();
+        p.add_residual(OnCircle { c, r }, &[b], ConstraintId(id))
+            .unwrap();
+    }
+    p
+}
+
+/// Issue 11: NLopt 2.9's SLSQP writes past its workspace when the equality rows outnumber the
+/// unknowns (the process aborted with 7 or more circle contacts on one cubic). A forced SLSQP
+/// on three rows over two unknowns gets an independent pair of rows and solves.
+#[cfg(feature = "nlopt")]
+#[test]
+fn issue_11_slsqp_gets_independent_rows_when_rows_outnumber_unknowns() {
+    let mut p = three_circles_through_one_point();
+    let r = solve(&mut p, &tight().with_force(Some(SolverChoice::Slsqp))).unwrap();
+    assert_eq!(r.solver, SolverKind::Slsqp);
+    assert_abs_diff_eq!(p.values()[0], 1.0, epsilon = 1e-8);
+    assert_abs_diff_eq!(p.values()[1], 1.0, epsilon = 1e-8);
+}
+
+/// Without an analysis to choose the rows from, SLSQP is not called at all: a typed error
+/// and an unchanged problem.
+#[cfg(feature = "nlopt")]
+#[test]
+fn issue_11_slsqp_is_refused_outside_its_limits() {
+    let mut p = three_circles_through_one_point();
+    let before = p.values().to_vec();
+    let options = forced(SolverChoice::Slsqp).with_dense_analysis_max_entries(0);
+    let e = solve(&mut p, &options).unwrap_err();
+    assert!(
+        matches!(
+            e,
+            Error::OutsideSolverLimits {
+                unknowns: 2,
+                rows: 3,
+                ..
+            }
+        ),
+        "{e}"
+    );
+    assert_eq!(
+        p.values().iter().map(|v| v.to_bits()).collect::<Vec<_>>(),
+        before.iter().map(|v| v.to_bits()).collect::<Vec<_>>()
+    );
+}
+
+#[test]
+fn issue_11_slsqp_limits() {
+    use camber_solve::nonlinear::{slsqp_supports, SLSQP_MAX_UNKNOWNS};
+    assert!(slsqp_supports(3, 3).is_ok());
+    assert!(slsqp_supports(SLSQP_MAX_UNKNOWNS, SLSQP_MAX_UNKNOWNS).is_ok());
+    assert!(slsqp_supports(2, 3).is_err());
+    assert!(slsqp_supports(SLSQP_MAX_UNKNOWNS + 1, 1).is_err());
+    // NLopt 2.9 sizes SLSQP's workspace in 32-bit ints: at the cap (n = m = the cap) it must
+    // fit, which is the reason the cap exists at all.
+    let (n, m) = (SLSQP_MAX_UNKNOWNS as i128, SLSQP_MAX_UNKNOWNS as i128);
+    // With equality rows only, NLopt's MINEQ = M − MEQ + 2·N1 is 2·N1.
+    let n1 = n + 1;
+    let mineq = 2 * n1;
+    let len_w = (3 * n1 + m) * (n1 + 1)
+        + (n1 - m + 1) * (mineq + 2)
+        + 2 * mineq
+        + (n1 + mineq) * (n1 - m)
+        + 2 * m
+        + n1
+        + (n + 1) * n / 2
+        + 2 * m
+        + 3 * n
+        + 3 * n1
+        + 1;
+    assert!(len_w < i128::from(i32::MAX) / 8, "{len_w}");
+}

@@ -22,7 +22,7 @@ pub struct SolveArgs {
     #[arg(long, value_name = "PIC.svg")]
     pub svg: Option<PathBuf>,
     /// Solve contacts with fixed circles and lines by iterative displacement on the linear path
-    /// (the blade-design method, for comparison; SLSQP takes over when its rounds stall).
+    /// (the blade-design method, for comparison; the usual solve takes over when its rounds stall).
     #[arg(long)]
     pub displacement: bool,
 }
@@ -42,7 +42,7 @@ pub fn run(args: &SolveArgs) -> Result<()> {
             if run.converged {
                 "converged, validated by the sketch's solve"
             } else {
-                "stalled, solved by SLSQP"
+                "stalled, solved by the usual solve"
             }
         ))?;
         run.report
