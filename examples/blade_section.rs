@@ -8,6 +8,7 @@
 //! Run with `cargo run --example blade_section`.
 
 use camber::geom::ParametricCurve;
+use camber::sketch::constraints::{Fixed, G1Join};
 use camber::sketch::{file, Constraint, Entity, EntityId, FixTarget, PointRef, Sketch};
 use nalgebra::{Point2, Vector2};
 
@@ -28,11 +29,11 @@ fn at(s: &Sketch, e: EntityId, u: f64) -> Result<(Point2<f64>, Vector2<f64>), St
 fn check_joints(s: &Sketch) -> Result<(f64, f64), String> {
     let (mut gap, mut sin) = (0.0_f64, 0.0_f64);
     for (id, c) in s.constraints() {
-        let Constraint::G1Join {
+        let Constraint::G1Join(G1Join {
             first,
             second,
             direction,
-        } = c
+        }) = c
         else {
             continue;
         };
@@ -67,7 +68,9 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
     let fixed: Vec<(PointRef, Point2<f64>)> = sketch
         .constraints()
         .filter_map(|(_, c)| match c {
-            Constraint::Fixed(FixTarget::Point(p)) => Some(*p),
+            Constraint::Fixed(Fixed {
+                target: FixTarget::Point(p),
+            }) => Some(*p),
             _ => None,
         })
         .map(|p| sketch.point(p).map(|at| (p, at)))

@@ -27,6 +27,10 @@ impl Residual for CurvatureAt {
         1
     }
 
+    fn block_sizes(&self) -> Option<Vec<usize>> {
+        Some(vec![2; 4])
+    }
+
     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
         let points: Vec<Point2<T>> = x.iter().map(|p| Point2::new(p[0], p[1])).collect();
         // The same camber-geom code that evaluates f64 curves runs here on dual numbers. A
@@ -56,6 +60,10 @@ impl Residual for EndTangentDirections {
 
     fn dim(&self) -> usize {
         2
+    }
+
+    fn block_sizes(&self) -> Option<Vec<usize>> {
+        Some(vec![2; 4])
     }
 
     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {

@@ -8,9 +8,8 @@
 
 use camber::geom::queries::closest_point;
 use camber::geom::{BSplineCurve2, KnotVector};
-use camber::sketch::{
-    CircleSide, Constraint, Contact, Entity, FixTarget, PointRef, Rotation, Sketch,
-};
+use camber::sketch::constraints::{Fixed, TangentToCircle};
+use camber::sketch::{CircleSide, Constraint, Contact, Entity, PointRef, Rotation, Sketch};
 use nalgebra::Point2;
 
 /// Centre and radius of the leading-edge, thickness and trailing-edge circles.
@@ -48,8 +47,8 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
     {
         let (c, r) = CIRCLES[k];
         let circle = sketch.add_circle(Point2::new(c[0], c[1]), r)?;
-        sketch.add_constraint(Constraint::Fixed(FixTarget::Entity(circle)))?;
-        let id = sketch.add_constraint(Constraint::TangentToCircle {
+        sketch.add_constraint(Fixed::entity(circle))?;
+        let id = sketch.add_constraint(TangentToCircle {
             curve,
             circle,
             u,
@@ -70,7 +69,7 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
         );
     }
     if let Some(id) = thickness_contact {
-        if let Constraint::TangentToCircle { u, .. } = sketch.constraint(id)? {
+        if let Constraint::TangentToCircle(TangentToCircle { u, .. }) = sketch.constraint(id)? {
             println!("thickness contact at u = {:.6}", u.value());
         }
     }

@@ -10,7 +10,8 @@
 use std::time::Instant;
 
 use camber::geom::BezierCurve2;
-use camber::sketch::{Constraint, FixTarget, PointRef, Sense, Sketch, TangentForm};
+use camber::sketch::constraints::{Fixed, StartTangent};
+use camber::sketch::{PointRef, Sense, Sketch, TangentForm};
 use nalgebra::{Point2, Vector2};
 
 fn cross(a: Vector2<f64>, b: Vector2<f64>) -> f64 {
@@ -27,8 +28,8 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
         Point2::new(2.2, 0.9),
         Point2::new(3.0, 0.0),
     ])?)?;
-    sketch.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::Control(c, 3))))?;
-    sketch.add_constraint(Constraint::StartTangent {
+    sketch.add_constraint(Fixed::point(PointRef::Control(c, 3)))?;
+    sketch.add_constraint(StartTangent {
         curve: c,
         direction: d,
         sense: Sense::Agree,

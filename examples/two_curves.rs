@@ -10,10 +10,9 @@
 //! Run with `cargo run --example two_curves`.
 
 use camber::geom::BezierCurve2;
+use camber::sketch::constraints::{CurveCurveTangent, Fixed, TangentToCircle, TangentToLine};
 use camber::sketch::workloads::{two_curves_valid, TwoCurves, TWO_CURVES_CIRCLES};
-use camber::sketch::{
-    CircleSide, Constraint, Contact, FixTarget, LineSide, Rotation, Sense, Sketch,
-};
+use camber::sketch::{CircleSide, Constraint, Contact, LineSide, Rotation, Sense, Sketch};
 use nalgebra::Point2;
 
 fn run() -> Result<(), Box<dyn std::error::Error>> {
@@ -38,18 +37,18 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
     let left = sketch.add_circle(Point2::new(lc[0], lc[1]), lr)?;
     let right = sketch.add_circle(Point2::new(rc[0], rc[1]), rr)?;
     for e in [inlet, outlet, left, right] {
-        sketch.add_constraint(Constraint::Fixed(FixTarget::Entity(e)))?;
+        sketch.add_constraint(Fixed::entity(e))?;
     }
 
     // The arch leaves along the inlet (curving to its right) and arrives on the right circle.
-    sketch.add_constraint(Constraint::TangentToLine {
+    sketch.add_constraint(TangentToLine {
         curve: lower,
         line: inlet,
         u: Contact::At(0.0),
         side: LineSide::Right,
         sense: Sense::Agree,
     })?;
-    sketch.add_constraint(Constraint::TangentToCircle {
+    sketch.add_constraint(TangentToCircle {
         curve: lower,
         circle: right,
         u: Contact::At(1.0),
@@ -57,14 +56,14 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
         rotation: Rotation::Clockwise,
     })?;
     // The valley leaves from the left circle and arrives along the outlet.
-    sketch.add_constraint(Constraint::TangentToCircle {
+    sketch.add_constraint(TangentToCircle {
         curve: upper,
         circle: left,
         u: Contact::At(0.0),
         side: CircleSide::Outside,
         rotation: Rotation::CounterClockwise,
     })?;
-    sketch.add_constraint(Constraint::TangentToLine {
+    sketch.add_constraint(TangentToLine {
         curve: upper,
         line: outlet,
         u: Contact::At(1.0),
@@ -72,7 +71,7 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
         sense: Sense::Agree,
     })?;
     // They start 0.25 apart and must touch where they like: u and v are unknowns.
-    let touch = sketch.add_constraint(Constraint::CurveCurveTangent {
+    let touch = sketch.add_constraint(CurveCurveTangent {
         first: lower,
         u: Contact::Free(0.5),
         second: upper,
@@ -97,7 +96,9 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
             c.report.solver, c.report.iterations, c.report.reason
         );
     }
-    if let Constraint::CurveCurveTangent { u, v, .. } = sketch.constraint(touch)? {
+    if let Constraint::CurveCurveTangent(CurveCurveTangent { u, v, .. }) =
+        sketch.constraint(touch)?
+    {
         let p = sketch.curve_point(lower, u.value())?;
         println!(
             "the curves touch at u = {:.6}, v = {:.6}, point ({:.4}, {:.4})",

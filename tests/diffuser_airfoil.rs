@@ -9,9 +9,8 @@
 
 use camber::geom::queries::closest_point;
 use camber::geom::{BSplineCurve2, KnotVector, ParametricCurve};
-use camber::sketch::{
-    CircleSide, Constraint, Contact, Entity, EntityId, FixTarget, PointRef, Rotation, Sketch,
-};
+use camber::sketch::constraints::{Fixed, TangentToCircle};
+use camber::sketch::{CircleSide, Contact, Entity, EntityId, PointRef, Rotation, Sketch};
 use nalgebra::Point2;
 
 const CIRCLES: [([f64; 2], f64); 3] = [
@@ -50,9 +49,8 @@ fn sketch() -> (Sketch, EntityId) {
     {
         let (c, r) = CIRCLES[k];
         let circle = s.add_circle(Point2::new(c[0], c[1]), r).unwrap();
-        s.add_constraint(Constraint::Fixed(FixTarget::Entity(circle)))
-            .unwrap();
-        s.add_constraint(Constraint::TangentToCircle {
+        s.add_constraint(Fixed::entity(circle)).unwrap();
+        s.add_constraint(TangentToCircle {
             curve,
             circle,
             u,

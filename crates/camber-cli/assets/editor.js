@@ -159,6 +159,9 @@ function drawGlyphs(constraint, list) {
       }, g);
     } else if (glyph.shape === "fixed") {
       element("polygon", { class: `glyph solid${red}`, points: `${x},${y} ${x - 6},${y + 10} ${x + 6},${y + 10}` }, g);
+    } else if (glyph.shape === "mark") {
+      const label = element("text", { class: `glyph-mark${red}`, x: x + 6, y: y - 6 }, g);
+      label.textContent = glyph.text;
     } else {
       element("circle", { class: `glyph${red}`, cx: x, cy: y, r: 8 }, g);
     }

@@ -9,7 +9,8 @@
 use std::collections::BTreeMap;
 
 use anyhow::Result;
-use camber_sketch::{Constraint, EntityId, FixTarget, PointRef, Sketch, Target};
+pub use camber_sketch::Glyph;
+use camber_sketch::{Constraint, EntityId, EntityLookup, PointRef, Sketch};
 use camber_sketch::{Entity, Error as SketchError};
 use nalgebra::{Point2, Vector2};
 
@@ -111,41 +112,6 @@ impl<'a> View<'a> {
         let e = self.entity(curve)?;
         Ok(combine(e.points(), &e.coefficients(curve, u, 1)?).coords)
     }
-
-    /// The end of a curve's domain (its start when `at_end` is false).
-    fn domain_end(&self, curve: EntityId, at_end: bool) -> Result<f64, SketchError> {
-        let e = self.entity(curve)?;
-        let (a, b) = e.domain().ok_or(SketchError::WrongEntityKind {
-            entity: curve,
-            expected: "curve",
-            found: e.kind_name(),
-        })?;
-        Ok(if at_end { b } else { a })
-    }
-
-    /// An arrow at C(u) along C′(u).
-    fn tangent_arrow(&self, curve: EntityId, u: f64) -> Result<Glyph, SketchError> {
-        Ok(Glyph::Arrow(
-            self.curve_point(curve, u)?,
-            self.curve_tangent(curve, u)?,
-        ))
-    }
-
-    /// An arrow at the middle of a line entity along it.
-    fn line_arrow(&self, line: EntityId) -> Result<Glyph, SketchError> {
-        let e = self.entity(line)?;
-        match e.points() {
-            [a, b] if matches!(e, Entity::Line(_)) => Ok(Glyph::Arrow(
-                Point2::from((a.coords + b.coords) / 2.0),
-                b - a,
-            )),
-            _ => Err(SketchError::WrongEntityKind {
-                entity: line,
-                expected: "line",
-                found: e.kind_name(),
-            }),
-        }
-    }
 }
 
 /// Σ cⱼ·Pⱼ over an entity's points.
@@ -156,27 +122,25 @@ fn combine(points: &[Point2<f64>], terms: &[(usize, f64)]) -> Point2<f64> {
         .fold(Point2::origin(), |s, v| s + v)
 }
 
-/// A constraint's mark in the picture.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Glyph {
-    /// An arrow from the point along the direction (tangencies, joins, line relations).
-    Arrow(Point2<f64>, Vector2<f64>),
-    /// A triangle under the point (fixed).
-    Fixed(Point2<f64>),
-    /// A ring around the point (coincidences, points on curves and circles, distances).
-    Ring(Point2<f64>),
+/// A view resolves entities for the constraint kinds' glyphs, replaced ones included.
+impl EntityLookup for View<'_> {
+    fn lookup(&self, id: EntityId) -> Result<&Entity, SketchError> {
+        self.entity(id)
+    }
 }
 
-/// The glyphs of one constraint, at the geometry `view` shows. A contact at a free parameter
-/// is marked at the parameter the constraint records (the last solved one).
+/// The glyphs of one constraint, at the geometry `view` shows: each kind places its own
+/// ([`Constraint::glyphs`]). A contact at a free parameter is marked at the parameter the
+/// constraint records (the last solved one).
 ///
 /// ```
-/// use camber_cli::scene::{glyphs, Glyph, View};
-/// use camber_sketch::{Constraint, FixTarget, PointRef, Sketch};
+/// use camber_cli::scene::{glyphs, View};
+/// use camber_sketch::constraints::Fixed;
+/// use camber_sketch::{Constraint, Glyph, PointRef, Sketch};
 /// use nalgebra::Point2;
 /// let mut s = Sketch::new();
 /// let p = s.add_point(Point2::new(1.0, 2.0))?;
-/// let fix = Constraint::Fixed(FixTarget::Point(PointRef::Point(p)));
+/// let fix = Constraint::from(Fixed::point(PointRef::Point(p)));
 /// assert_eq!(glyphs(&View::new(&s), &fix)?, vec![Glyph::Fixed(Point2::new(1.0, 2.0))]);
 /// # Ok::<(), anyhow::Error>(())
 /// ```
@@ -184,107 +148,14 @@ pub enum Glyph {
 /// # Errors
 /// A reference the view cannot resolve (not for a constraint the sketch accepted).
 pub fn glyphs(view: &View, c: &Constraint) -> Result<Vec<Glyph>> {
-    let p = |r: PointRef| view.point(r);
-    Ok(match c {
-        Constraint::Fixed(FixTarget::Point(r)) => vec![Glyph::Fixed(p(*r)?)],
-        Constraint::Fixed(FixTarget::Entity(e)) => view
-            .entity(*e)?
-            .points()
-            .iter()
-            .map(|q| Glyph::Fixed(*q))
-            .collect(),
-        Constraint::Coincident(a, b) => vec![Glyph::Ring(p(*a)?), Glyph::Ring(p(*b)?)],
-        Constraint::PointAtParameter { curve, u, target } => {
-            let mut v = vec![Glyph::Ring(view.curve_point(*curve, *u)?)];
-            match target {
-                Target::At(q) => v.push(Glyph::Ring(*q)),
-                Target::Point(r) => v.push(Glyph::Ring(p(*r)?)),
-            }
-            v
-        }
-        Constraint::TangentVectorAt { curve, u, vector } => {
-            vec![Glyph::Arrow(view.curve_point(*curve, *u)?, *vector)]
-        }
-        Constraint::DirectionalTangentAt {
-            curve,
-            u,
-            direction,
-            sense,
-        }
-        | Constraint::TangentToLineAt {
-            curve,
-            u,
-            direction,
-            sense,
-            ..
-        } => vec![Glyph::Arrow(
-            view.curve_point(*curve, *u)?,
-            direction * sense.sign(),
-        )],
-        Constraint::StartTangent {
-            curve,
-            direction,
-            sense,
-            ..
-        } => vec![Glyph::Arrow(
-            p(PointRef::Start(*curve))?,
-            direction * sense.sign(),
-        )],
-        Constraint::EndTangent {
-            curve,
-            direction,
-            sense,
-            ..
-        } => vec![Glyph::Arrow(
-            p(PointRef::End(*curve))?,
-            direction * sense.sign(),
-        )],
-        Constraint::G1Join {
-            first, direction, ..
-        } => vec![Glyph::Arrow(p(PointRef::End(*first))?, *direction)],
-        Constraint::Custom(custom) => custom
-            .points()
-            .iter()
-            .map(|r| p(*r).map(Glyph::Ring))
-            .collect::<Result<_, _>>()?,
-        Constraint::PointOnCurve { point, .. } | Constraint::PointOnCircle { point, .. } => {
-            vec![Glyph::Ring(p(*point)?)]
-        }
-        Constraint::TangentToLine { curve, u, .. }
-        | Constraint::TangentToCircle { curve, u, .. } => {
-            vec![view.tangent_arrow(*curve, u.value())?]
-        }
-        Constraint::CurveCurveTangent {
-            first,
-            u,
-            second,
-            v,
-            ..
-        } => vec![
-            view.tangent_arrow(*first, u.value())?,
-            Glyph::Ring(view.curve_point(*second, v.value())?),
-        ],
-        Constraint::G1JoinFree { first, .. } | Constraint::G2Join { first, .. } => {
-            vec![view.tangent_arrow(*first, view.domain_end(*first, true)?)?]
-        }
-        Constraint::Distance { a, b, .. } => vec![Glyph::Ring(p(*a)?), Glyph::Ring(p(*b)?)],
-        Constraint::Parallel(a, b) | Constraint::Perpendicular(a, b) => {
-            vec![view.line_arrow(*a)?, view.line_arrow(*b)?]
-        }
-        Constraint::Angle { first, second, .. } => {
-            vec![view.line_arrow(*first)?, view.line_arrow(*second)?]
-        }
-        // The circle itself shows its radius.
-        Constraint::Radius { .. } => Vec::new(),
-        #[allow(unreachable_patterns)] // kinds added later get no glyph until they are drawn
-        _ => Vec::new(),
-    })
+    Ok(c.glyphs(view)?)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use camber_sketch::{CircleSide, Contact, Rotation};
+    use camber_sketch::constraints::{Fixed, TangentToCircle};
+    use camber_sketch::{CircleSide, Contact, FixTarget, Rotation};
 
     #[test]
     fn overrides_move_points_and_glyphs_but_not_the_sketch() {
@@ -299,7 +170,9 @@ mod tests {
                 .unwrap(),
             )
             .unwrap();
-        let fix = Constraint::Fixed(FixTarget::Point(PointRef::End(c)));
+        let fix = Constraint::Fixed(Fixed {
+            target: FixTarget::Point(PointRef::End(c)),
+        });
         let moved = s
             .entity(c)
             .unwrap()
@@ -342,13 +215,13 @@ mod tests {
             )
             .unwrap();
         let circle = s.add_circle(Point2::origin(), 1.0).unwrap();
-        let touch = Constraint::TangentToCircle {
+        let touch = Constraint::TangentToCircle(TangentToCircle {
             curve: c,
             circle,
             u: Contact::Free(0.5),
             side: CircleSide::Outside,
             rotation: Rotation::Clockwise,
-        };
+        });
         match glyphs(&View::new(&s), &touch).unwrap().as_slice() {
             [Glyph::Arrow(at, d)] => {
                 assert!((at - Point2::new(0.0, 1.0)).norm() < 1e-12);

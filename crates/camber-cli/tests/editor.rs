@@ -9,6 +9,7 @@ use std::path::{Path, PathBuf};
 
 use camber_cli::editor::EditorState;
 use camber_geom::ParametricCurve;
+use camber_sketch::constraints::{Fixed, G1Join, TangentToCircle};
 use camber_sketch::workloads::{w2_valid, W2};
 use camber_sketch::{Constraint, Entity, EntityId, FixTarget, PointRef, Sketch};
 use nalgebra::{Point2, Vector2};
@@ -89,11 +90,11 @@ fn curve(s: &Sketch, id: EntityId) -> &dyn ParametricCurve<f64, 2> {
 fn assert_blade_valid(s: &Sketch, original: &Sketch) {
     for (id, c) in s.constraints() {
         match c {
-            Constraint::G1Join {
+            Constraint::G1Join(G1Join {
                 first,
                 second,
                 direction,
-            } => {
+            }) => {
                 let end = curve(s, *first).domain().1;
                 let start = curve(s, *second).domain().0;
                 let (pa, ta) = curve(s, *first).point_and_derivative(end).unwrap();
@@ -106,7 +107,9 @@ fn assert_blade_valid(s: &Sketch, original: &Sketch) {
                     assert!(t.dot(&d) > 0.0, "{id}: tangent flipped");
                 }
             }
-            Constraint::Fixed(FixTarget::Point(r)) => {
+            Constraint::Fixed(Fixed {
+                target: FixTarget::Point(r),
+            }) => {
                 let (now, then) = (s.point(*r).unwrap(), original.point(*r).unwrap());
                 assert!((now - then).norm() < 1e-12, "{id}: fixed point moved");
             }
@@ -668,9 +671,8 @@ fn issue_11_solve_with_seven_contacts_answers_and_the_editor_survives() {
         let c = s
             .add_circle(Point2::new(0.3 + 0.4 * f64::from(i), 1.5), 0.3)
             .unwrap();
-        s.add_constraint(Constraint::Fixed(FixTarget::Entity(c)))
-            .unwrap();
-        s.add_constraint(Constraint::TangentToCircle {
+        s.add_constraint(Fixed::entity(c)).unwrap();
+        s.add_constraint(TangentToCircle {
             curve,
             circle: c,
             u: Contact::Free((f64::from(i) + 0.5) / 7.0),

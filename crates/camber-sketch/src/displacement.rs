@@ -26,14 +26,18 @@
 use camber_solve::ConstraintId;
 use nalgebra::{Point2, Vector2};
 
-use crate::constraint::{
-    CircleSide, Constraint, Contact, LineSide, Rotation, Sense, TangentForm, Target,
+use crate::component::check::ContactTarget;
+use crate::constraints::{
+    Constraint, DirectionalTangentAt, EndTangent, PointAtParameter, StartTangent,
 };
 use crate::entity::Entity;
 use crate::errors::{Error, Result};
 use crate::ids::{EntityId, PointRef};
 use crate::sketch::Sketch;
 use crate::solve::SketchReport;
+use crate::vocabulary::{
+    CircleSide, Contact, FixTarget, LineSide, Rotation, Sense, TangentForm, Target,
+};
 
 /// Halvings of a round's move tried when its linear solve fails.
 const MAX_HALVINGS: i32 = 4;
@@ -214,7 +218,8 @@ impl Sketch {
     ///
     /// ```
     /// use camber_geom::BezierCurve2;
-    /// use camber_sketch::{CircleSide, Constraint, Contact, FixTarget, PointRef, Rotation, Sketch};
+    /// use camber_sketch::constraints::{Fixed, TangentToCircle};
+    /// use camber_sketch::{CircleSide, Contact, PointRef, Rotation, Sketch};
     /// use camber_sketch::displacement::DisplacementOptions;
     /// use nalgebra::Point2;
     /// let mut s = Sketch::new();
@@ -222,11 +227,11 @@ impl Sketch {
     ///     Point2::new(-2.0, 1.3), Point2::new(-0.7, 1.5), Point2::new(0.7, 1.5), Point2::new(2.0, 1.3),
     /// ])?)?;
     /// let circle = s.add_circle(Point2::new(0.0, 0.0), 1.0)?;
-    /// s.add_constraint(Constraint::Fixed(FixTarget::Entity(circle)))?;
+    /// s.add_constraint(Fixed::entity(circle))?;
     /// for end in [PointRef::Start(arc), PointRef::End(arc)] {
-    ///     s.add_constraint(Constraint::Fixed(FixTarget::Point(end)))?;
+    ///     s.add_constraint(Fixed::point(end))?;
     /// }
-    /// s.add_constraint(Constraint::TangentToCircle {
+    /// s.add_constraint(TangentToCircle {
     ///     curve: arc, circle, u: Contact::Free(0.5),
     ///     side: CircleSide::Outside, rotation: Rotation::Clockwise,
     /// })?;
@@ -320,13 +325,9 @@ impl Sketch {
             }
             for (c, s) in contacts.iter().zip(&params) {
                 if c.at.is_none() {
-                    let mut constraint = result.remove_constraint(c.id)?;
-                    if let Constraint::TangentToCircle { u, .. }
-                    | Constraint::TangentToLine { u, .. } = &mut constraint
-                    {
-                        *u = Contact::Free(*s);
-                    }
-                    result.add_constraint_with_id(c.id, constraint)?;
+                    // The free contact parameter starts the validating solve at s*.
+                    result.store_free(&[(c.id, 0, *s)]);
+                    result.mark_dirty(c.curve);
                 }
             }
         }
@@ -343,9 +344,9 @@ impl Sketch {
     /// The contacts the method handles (tangencies to fixed circles and lines), in id order.
     fn fixed_contacts(&self) -> Result<Vec<Contact2>> {
         let fixed = |id: EntityId| {
-            self.constraints().any(|(_, c)| {
-                matches!(c, Constraint::Fixed(crate::constraint::FixTarget::Entity(e)) if *e == id)
-            })
+            self.constraints().any(
+                |(_, c)| matches!(c, Constraint::Fixed(f) if f.target == FixTarget::Entity(id)),
+            )
         };
         let not_fixed = |constraint: ConstraintId, entity: EntityId| Error::TargetNotFixed {
             constraint,
@@ -357,60 +358,50 @@ impl Sketch {
         };
         let mut out = Vec::new();
         for (id, c) in self.constraints() {
-            match c {
-                Constraint::TangentToCircle {
-                    curve,
+            let Some(spec) = c.contact() else {
+                continue;
+            };
+            let target = match spec.target {
+                ContactTarget::Circle {
                     circle,
-                    u,
                     side,
                     rotation,
                 } => {
-                    let Entity::Circle { center, radius } = self.entity(*circle)? else {
-                        return Err(Error::UnknownEntity { entity: *circle });
+                    let Entity::Circle { center, radius } = self.entity(circle)? else {
+                        return Err(Error::UnknownEntity { entity: circle });
                     };
-                    if !fixed(*circle) {
-                        return Err(not_fixed(id, *circle));
+                    if !fixed(circle) {
+                        return Err(not_fixed(id, circle));
                     }
-                    out.push(Contact2 {
-                        id,
-                        curve: *curve,
-                        at: at(u),
-                        target: Shape::Circle {
-                            center: *center,
-                            radius: *radius,
-                            outside: matches!(side, CircleSide::Outside),
-                            counter_clockwise: matches!(rotation, Rotation::CounterClockwise),
-                        },
-                    });
+                    Shape::Circle {
+                        center: *center,
+                        radius: *radius,
+                        outside: matches!(side, CircleSide::Outside),
+                        counter_clockwise: matches!(rotation, Rotation::CounterClockwise),
+                    }
                 }
-                Constraint::TangentToLine {
-                    curve,
-                    line,
-                    u,
-                    side,
-                    sense,
-                } => {
-                    let Entity::Line([a, b]) = self.entity(*line)? else {
-                        return Err(Error::UnknownEntity { entity: *line });
+                ContactTarget::Line { line, side, sense } => {
+                    let Entity::Line([a, b]) = self.entity(line)? else {
+                        return Err(Error::UnknownEntity { entity: line });
                     };
-                    if !fixed(*line) {
-                        return Err(not_fixed(id, *line));
+                    if !fixed(line) {
+                        return Err(not_fixed(id, line));
                     }
                     let d = b - a;
-                    out.push(Contact2 {
-                        id,
-                        curve: *curve,
-                        at: at(u),
-                        target: Shape::Line {
-                            a: *a,
-                            direction: d / d.norm(),
-                            left: matches!(side, LineSide::Left),
-                            along: matches!(sense, Sense::Agree),
-                        },
-                    });
+                    Shape::Line {
+                        a: *a,
+                        direction: d / d.norm(),
+                        left: matches!(side, LineSide::Left),
+                        along: matches!(sense, Sense::Agree),
+                    }
                 }
-                _ => {}
-            }
+            };
+            out.push(Contact2 {
+                id,
+                curve: spec.curve,
+                at: at(&spec.u),
+                target,
+            });
         }
         Ok(out)
     }
@@ -479,45 +470,45 @@ impl Sketch {
                 1.0
             };
             worst = worst.max(c.target.gap(q).abs()).max(turn);
-            rows.push(Constraint::PointAtParameter {
+            rows.push(Constraint::from(PointAtParameter {
                 curve: c.curve,
                 u: s,
                 target: Target::At(goal),
-            });
+            }));
             // At a curve's end, the paper's form: the neighbouring control point on the tangent
             // ray, P₁ = P₀ + t·T, which cannot reverse the way a cross-product row can.
             rows.push(if s <= lo && e.is_clamped(false) {
-                Constraint::StartTangent {
+                Constraint::from(StartTangent {
                     curve: c.curve,
                     direction: asked,
                     sense: Sense::Agree,
                     form: TangentForm::Elimination,
-                }
+                })
             } else if s >= hi && e.is_clamped(true) {
-                Constraint::EndTangent {
+                Constraint::from(EndTangent {
                     curve: c.curve,
                     direction: asked,
                     sense: Sense::Agree,
                     form: TangentForm::Elimination,
-                }
+                })
             } else {
-                Constraint::DirectionalTangentAt {
+                Constraint::from(DirectionalTangentAt {
                     curve: c.curve,
                     u: s,
                     direction: asked,
                     sense: Sense::Agree,
-                }
+                })
             });
             let depth = gap(deepest);
             if c.at.is_some() && depth < -options.tolerance {
                 worst = worst.max(-depth);
                 if (deepest - s).abs() > 1e-6 * (hi - lo) {
                     let (qd, _) = e.point_tangent(deepest).unwrap_or((q, t));
-                    rows.push(Constraint::PointAtParameter {
+                    rows.push(Constraint::from(PointAtParameter {
                         curve: c.curve,
                         u: deepest,
                         target: Target::At(qd + (c.target.foot(qd).0 - qd) * fraction),
-                    });
+                    }));
                 }
             }
         }

@@ -17,13 +17,14 @@
 //! as long as no residual reads more than 8 blocks. The sketch itself is unchanged until
 //! [`DragSession::finish`].
 //!
-//! **Nonlinear components.** J changes with the unknowns, so nothing is cached but the Newton
-//! workspace. The dragged point (a single free block) is fixed in the problem and set to the
-//! target at each update; Newton minimum norm starts from the previous step's solution and
-//! pulls toward it ([`camber_solve::solve_newton_from`]), so each step moves the rest of the
-//! sketch as little as it can; if Newton fails, the full selection ([`camber_solve::solve()`])
-//! runs from the same state. The result must pass the orientation and contact checks of a
-//! solve, otherwise the session keeps its previous state.
+//! **Nonlinear components.** J changes with the unknowns, so the problem is built once and only
+//! its values change. The dragged point (a single free block) is fixed in the problem and set
+//! to the target at each update; the component's solve policy ([`crate::component::policy`])
+//! then runs warm: Newton minimum norm starts from the previous step's solution and pulls
+//! toward it, so each step moves the rest of the sketch as little as it can, with the full
+//! selection as fallback, the orientation and contact checks of a solve, and the active set of
+//! honest contact (a step that would cross a target gets its clearance row instead of being
+//! refused). If that fails too, the session keeps its previous state.
 
 use std::collections::BTreeMap;
 
@@ -31,20 +32,32 @@ use camber_solve::analysis::analyze;
 use camber_solve::{MinNormFactorization, ReducedMap};
 use nalgebra::Point2;
 
-use crate::build::ComponentProblem;
-use crate::compile::EntityLookup;
+use crate::component::policy::{self, Start};
+use crate::component::{Component, ComponentProblem, DRAG_CONSTRAINT};
 use crate::entity::Entity;
 use crate::errors::{Error, Result};
 use crate::ids::{EntityId, PointRef};
+use crate::lookup::EntityLookup;
 use crate::sketch::Sketch;
 
 /// The entity shapes a session started from, as an [`EntityLookup`] (knots, weights and kinds
 /// do not change during a drag).
-struct Shapes<'a>(&'a BTreeMap<EntityId, Entity>);
+#[derive(Debug)]
+struct Shapes(BTreeMap<EntityId, Entity>);
 
-impl EntityLookup for Shapes<'_> {
+impl EntityLookup for Shapes {
     fn lookup(&self, id: EntityId) -> Result<&Entity> {
         self.0.get(&id).ok_or(Error::UnknownEntity { entity: id })
+    }
+}
+
+impl Shapes {
+    fn of(sketch: &Sketch, comp: &Component) -> Result<Self> {
+        let mut shapes = BTreeMap::new();
+        for id in &comp.entities {
+            shapes.insert(*id, sketch.lookup(*id)?.clone());
+        }
+        Ok(Self(shapes))
     }
 }
 
@@ -54,14 +67,15 @@ const REFINEMENT_STEPS: usize = 2;
 /// An interactive drag of one point; see the module documentation.
 ///
 /// ```
-/// use camber_sketch::{Constraint, FixTarget, PointRef, Sketch};
+/// use camber_sketch::constraints::Fixed;
+/// use camber_sketch::{PointRef, Sketch};
 /// use camber_geom::BezierCurve2;
 /// use nalgebra::Point2;
 /// let mut s = Sketch::new();
 /// let c = s.add_bezier(BezierCurve2::try_new(vec![
 ///     Point2::new(0.0, 0.0), Point2::new(1.0, 1.0), Point2::new(2.0, 1.0), Point2::new(3.0, 0.0),
 /// ])?)?;
-/// s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::End(c))))?;
+/// s.add_constraint(Fixed::point(PointRef::End(c)))?;
 /// let mut drag = s.drag(PointRef::Control(c, 1))?;
 /// drag.update(Point2::new(1.2, 1.5))?;
 /// assert!((drag.point(PointRef::Control(c, 1))?.y - 1.5).abs() < 1e-12);
@@ -71,46 +85,59 @@ const REFINEMENT_STEPS: usize = 2;
 /// # Ok::<(), camber_sketch::Error>(())
 /// ```
 #[derive(Debug)]
-pub struct DragSession {
+#[allow(clippy::large_enum_variant)] // one session per drag, made once and never moved in a loop
+pub enum DragSession {
+    /// A drag on an affine component: the cached minimum-norm factorization.
+    Affine(AffineDrag),
+    /// A drag on a nonlinear component: the component's solve policy, warm started.
+    Nonlinear(NonlinearDrag),
+}
+
+/// What every drag session holds.
+#[derive(Debug)]
+struct Common {
     point: PointRef,
     revision: u64,
     cp: ComponentProblem,
+    /// The component's entities at the start (their shapes resolve point references).
+    shapes: Shapes,
+    moved: bool,
+    /// The current unknowns (all of them, fixed ones included).
+    x: Vec<f64>,
+}
+
+/// The state of a drag on an affine component (see the module documentation).
+#[derive(Debug)]
+pub struct AffineDrag {
+    common: Common,
     map: ReducedMap,
-    /// The cached factorization (affine components only).
-    factorization: Option<MinNormFactorization>,
+    factorization: MinNormFactorization,
     /// Rows of J kept (independent), and the two pin rows' positions in g.
     rows: Vec<usize>,
     row_owner: Vec<camber_solve::ConstraintId>,
     pin: [usize; 2],
-    /// The component's entities at the start (their shapes resolve point references).
-    shapes: BTreeMap<EntityId, Entity>,
     anchor: [f64; 2],
     tolerance: f64,
-    moved: bool,
     // Current state (pin rows of g relative to the anchor) and scratch.
     z: Vec<f64>,
-    x: Vec<f64>,
     g: Vec<f64>,
     z_new: Vec<f64>,
     x_new: Vec<f64>,
     g_new: Vec<f64>,
     g_sel: Vec<f64>,
     dz: Vec<f64>,
-    /// Present when the component is nonlinear: the warm-started Newton state.
-    nonlinear: Option<NonlinearDrag>,
 }
 
 /// The state of a drag on a nonlinear component: the dragged block is fixed in the problem and
-/// moved to the target at each update; Newton starts from the previous step's solution and
-/// pulls toward it, and the full selection ([`camber_solve::solve()`]) runs when it fails.
+/// moved to the target at each update; the component's solve policy runs from the previous
+/// step's solution, pulling toward it.
 #[derive(Debug)]
-struct NonlinearDrag {
+pub struct NonlinearDrag {
+    common: Common,
     block: camber_solve::BlockId,
     /// The reduced unknowns of the current state.
     z: Vec<f64>,
-    workspace: camber_solve::NewtonWorkspace,
     options: camber_solve::Options,
-    penetration: f64,
 }
 
 /// # Dragging
@@ -126,8 +153,9 @@ impl Sketch {
         let e = self.lookup(point.entity())?;
         e.resolve(point)?;
         let comp = self.component_of(point.entity())?;
-        if self.build_component(&comp, None)?.nonlinear.is_some() {
-            return self.drag_nonlinear(point, &comp);
+        let plain = self.build_component(&comp, None)?;
+        if plain.nonlinear.is_some() {
+            return self.drag_nonlinear(point, &comp, plain);
         }
         let cp = self.build_component(&comp, Some(point))?;
         let options = self.options();
@@ -179,43 +207,44 @@ impl Sketch {
         };
         let n = lin.map.len();
         let nx = lin.x.len();
-        let mut shapes = BTreeMap::new();
-        for id in &comp.entities {
-            shapes.insert(*id, self.lookup(*id)?.clone());
-        }
-        Ok(DragSession {
-            point,
-            revision: self.revision(),
+        Ok(DragSession::Affine(AffineDrag {
+            common: Common {
+                point,
+                revision: self.revision(),
+                cp,
+                shapes: Shapes::of(self, &comp)?,
+                moved: false,
+                x: lin.x,
+            },
             z: lin.map.z0().to_vec(),
-            x: lin.x,
             g: lin.g,
             row_owner: lin.row_owner,
-            shapes,
             map: lin.map,
-            cp,
-            factorization: Some(factorization),
+            factorization,
             pin,
             anchor,
             tolerance: options.tolerance,
-            moved: false,
             z_new: vec![0.0; n],
             x_new: vec![0.0; nx],
             g_new: vec![0.0; m],
             g_sel: vec![0.0; rows.len()],
             dz: vec![0.0; n],
             rows,
-            nonlinear: None,
-        })
+        }))
     }
 
     /// A drag session on a nonlinear component (see [`NonlinearDrag`]).
     fn drag_nonlinear(
         &self,
         point: PointRef,
-        comp: &crate::build::Component,
+        comp: &Component,
+        mut cp: ComponentProblem,
     ) -> Result<DragSession> {
-        let (entity, index) = crate::general::single_block(self, point)?;
-        let mut cp = self.build_component(comp, None)?;
+        let e = self.lookup(point.entity())?;
+        let (entity, index) = match e.resolve(point)?.as_slice() {
+            [(j, c)] if (c - 1.0).abs() <= 0.0 => (point.entity(), *j),
+            _ => return Err(Error::NotDraggable { point }),
+        };
         let block = cp.point_block(entity, index)?;
         // A point merged into a coincident one moves with that one's unknowns.
         let block = cp.merged.get(&block).copied().unwrap_or(block);
@@ -226,63 +255,27 @@ impl Sketch {
             }
         }
         cp.problem.fix_block(block)?;
-        let map = cp.problem.reduced_map()?;
-        let z = map.z0().to_vec();
+        let z = cp.problem.reduced_map()?.z0().to_vec();
         let x = cp.problem.values().to_vec();
-        let mut shapes = BTreeMap::new();
-        for id in &comp.entities {
-            shapes.insert(*id, self.lookup(*id)?.clone());
-        }
-        let anchor = {
-            let p = self.point(point)?;
-            [p.x, p.y]
-        };
-        let options = self.options().clone();
-        Ok(DragSession {
-            point,
-            revision: self.revision(),
-            z: Vec::new(),
-            x,
-            g: Vec::new(),
-            row_owner: Vec::new(),
-            shapes,
-            map,
-            cp,
-            factorization: None,
-            pin: [0, 0],
-            anchor,
-            tolerance: options.tolerance,
-            moved: false,
-            z_new: Vec::new(),
-            x_new: Vec::new(),
-            g_new: Vec::new(),
-            g_sel: Vec::new(),
-            dz: Vec::new(),
-            rows: Vec::new(),
-            nonlinear: Some(NonlinearDrag {
-                block,
-                z,
-                workspace: camber_solve::NewtonWorkspace::new(),
-                penetration: crate::solve::penetration_tolerance(&options),
-                options,
-            }),
-        })
+        Ok(DragSession::Nonlinear(NonlinearDrag {
+            common: Common {
+                point,
+                revision: self.revision(),
+                cp,
+                shapes: Shapes::of(self, comp)?,
+                moved: false,
+                x,
+            },
+            block,
+            z,
+            options: self.options().clone(),
+        }))
     }
 }
 
-impl DragSession {
-    /// Moves the dragged point to `target` and every other free unknown by the weighted
-    /// minimum norm from the current state, keeping every constraint.
-    ///
-    /// # Errors
-    /// [`Error::NonFinite`] for a bad target; [`Error::NotSatisfied`] or
-    /// [`Error::OrientationFlipped`] when the result would break a constraint (the session keeps
-    /// its previous state).
-    pub fn update(&mut self, target: Point2<f64>) -> Result<()> {
-        crate::entity::check_point("target", 0, &target)?;
-        if self.nonlinear.is_some() {
-            return self.update_nonlinear(target);
-        }
+impl AffineDrag {
+    /// One affine update (see the module documentation).
+    fn update(&mut self, target: Point2<f64>) -> Result<()> {
         let shift = [target.x - self.anchor[0], target.y - self.anchor[1]];
         for (k, r) in self.rows.iter().enumerate() {
             let mut v = self.g[*r];
@@ -293,10 +286,7 @@ impl DragSession {
             }
             self.g_sel[k] = v;
         }
-        let Some(factorization) = self.factorization.as_mut() else {
-            return Ok(());
-        };
-        factorization.solve_refined(
+        self.factorization.solve_refined(
             &self.g_sel,
             &mut self.dz,
             REFINEMENT_STEPS,
@@ -306,7 +296,10 @@ impl DragSession {
             *zn = z + d;
         }
         self.map.expand(&self.z_new, &mut self.x_new)?;
-        self.cp.problem.evaluate_at(&self.x_new, &mut self.g_new)?;
+        self.common
+            .cp
+            .problem
+            .evaluate_at(&self.x_new, &mut self.g_new)?;
         let mut worst = (0usize, 0.0_f64);
         for (i, v) in self.g_new.iter().enumerate() {
             let v = if i == self.pin[0] {
@@ -325,64 +318,75 @@ impl DragSession {
                 .row_owner
                 .get(worst.0)
                 .copied()
-                .unwrap_or(crate::build::DRAG_CONSTRAINT);
+                .unwrap_or(DRAG_CONSTRAINT);
             return Err(Error::NotSatisfied {
                 failed: vec![(owner, worst.1)],
             });
         }
-        self.cp.check_orientations(&self.x_new)?;
+        self.common.cp.check_orientations(&self.x_new)?;
         std::mem::swap(&mut self.z, &mut self.z_new);
-        std::mem::swap(&mut self.x, &mut self.x_new);
+        std::mem::swap(&mut self.common.x, &mut self.x_new);
         std::mem::swap(&mut self.g, &mut self.g_new);
-        self.moved = true;
+        self.common.moved = true;
         Ok(())
     }
+}
 
-    /// One nonlinear update: warm-started Newton, then the full selection; the state is kept
-    /// only when every constraint, orientation and contact check holds.
-    fn update_nonlinear(&mut self, target: Point2<f64>) -> Result<()> {
-        let Some(nl) = self.nonlinear.as_mut() else {
-            return Ok(());
+impl NonlinearDrag {
+    /// One nonlinear update: the solve policy, warm started from the previous step; the state
+    /// is kept only when every constraint, orientation and contact check holds.
+    fn update(&mut self, target: Point2<f64>) -> Result<()> {
+        let cp = &mut self.common.cp;
+        let before = cp.problem.block_values(self.block)?.to_vec();
+        cp.problem
+            .set_block_values(self.block, &[target.x, target.y])?;
+        let start = Start::Warm {
+            from: self.z.clone(),
+            toward: self.z.clone(),
         };
-        let problem = &mut self.cp.problem;
-        let before = problem.block_values(nl.block)?.to_vec();
-        problem.set_block_values(nl.block, &[target.x, target.y])?;
-        let z_prev = nl.z.clone();
-        let solved = camber_solve::solve_newton_from(
-            problem,
-            &nl.options,
-            &mut nl.workspace,
-            &z_prev,
-            &z_prev,
-        )
-        .or_else(|_| camber_solve::solve(problem, &nl.options));
-        let checked = solved.map_err(Error::from).and_then(|_| {
-            let x = self.cp.problem.values();
-            self.cp.check_orientations(x)?;
-            let entities = self.cp.entities_at(&Shapes(&self.shapes), x)?;
-            self.cp.check_contacts(&entities, x, nl.penetration)
-        });
-        match checked {
-            Ok(()) => {
-                nl.z = self.cp.problem.reduced_map()?.z0().to_vec();
-                self.x.clear();
-                self.x.extend_from_slice(self.cp.problem.values());
-                self.moved = true;
+        match policy::solve(cp, &self.common.shapes, &self.options, start) {
+            Ok(_) => {
+                self.z = cp.problem.reduced_map()?.z0().to_vec();
+                self.common.x.clear();
+                self.common.x.extend_from_slice(cp.problem.values());
+                self.common.moved = true;
                 Ok(())
             }
             Err(e) => {
-                // Back to the previous state: the dragged block, then every reduced unknown.
-                self.cp.problem.set_block_values(nl.block, &before)?;
-                let map = self.cp.problem.reduced_map()?;
-                self.cp.problem.apply_reduced(&map, &nl.z)?;
+                // The policy left the problem at its start: move the dragged block back too.
+                cp.problem.set_block_values(self.block, &before)?;
                 Err(e)
             }
+        }
+    }
+}
+
+impl DragSession {
+    fn common(&self) -> &Common {
+        match self {
+            DragSession::Affine(d) => &d.common,
+            DragSession::Nonlinear(d) => &d.common,
+        }
+    }
+
+    /// Moves the dragged point to `target` and every other free unknown by the weighted
+    /// minimum norm from the current state, keeping every constraint.
+    ///
+    /// # Errors
+    /// [`Error::NonFinite`] for a bad target; [`Error::NotSatisfied`] or
+    /// [`Error::OrientationFlipped`] when the result would break a constraint (the session keeps
+    /// its previous state).
+    pub fn update(&mut self, target: Point2<f64>) -> Result<()> {
+        crate::entity::check_point("target", 0, &target)?;
+        match self {
+            DragSession::Affine(d) => d.update(target),
+            DragSession::Nonlinear(d) => d.update(target),
         }
     }
 
     /// The dragged point.
     pub fn dragged(&self) -> PointRef {
-        self.point
+        self.common().point
     }
 
     /// The current location of a point of the dragged component.
@@ -390,23 +394,16 @@ impl DragSession {
     /// # Errors
     /// [`Error::UnknownEntity`] for an entity outside the component, [`Error::UnknownPoint`].
     pub fn point(&self, r: PointRef) -> Result<Point2<f64>> {
+        let c = self.common();
         let e = r.entity();
         let mut s = [0.0; 2];
-        let terms = self.entity_terms(r)?;
-        for (j, c) in terms {
-            let i = self.cp.point_unknown(e, j)?;
-            s[0] += c * self.x[i];
-            s[1] += c * self.x[i + 1];
+        let terms = c.shapes.lookup(e)?.resolve(r)?;
+        for (j, k) in terms {
+            let i = c.cp.point_unknown(e, j)?;
+            s[0] += k * c.x[i];
+            s[1] += k * c.x[i + 1];
         }
         Ok(Point2::new(s[0], s[1]))
-    }
-
-    fn entity_terms(&self, r: PointRef) -> Result<crate::entity::Terms> {
-        // The resolution only needs the entity's shape, which a drag does not change.
-        self.shapes
-            .get(&r.entity())
-            .ok_or(Error::UnknownEntity { entity: r.entity() })
-            .and_then(|e: &Entity| e.resolve(r))
     }
 
     /// Commits the current state to the sketch (nothing happens if no update succeeded).
@@ -415,21 +412,22 @@ impl DragSession {
     /// [`Error::StaleSession`] when the sketch was edited since the drag began; the sketch is
     /// unchanged then.
     pub fn finish(self, sketch: &mut Sketch) -> Result<()> {
-        if sketch.revision() != self.revision {
+        let c = self.common();
+        if sketch.revision() != c.revision {
             return Err(Error::StaleSession {
-                expected: self.revision,
+                expected: c.revision,
                 found: sketch.revision(),
             });
         }
-        if !self.moved {
+        if !c.moved {
             return Ok(());
         }
-        let updates = self.cp.entities_at(sketch, &self.x)?;
-        let contacts = self.cp.contacts_at(&self.x)?;
+        let updates = c.cp.entities_at(sketch, &c.x)?;
+        let free = c.cp.free_at(&c.x)?;
         let ids: Vec<EntityId> = updates.iter().map(|(id, _)| *id).collect();
         sketch.commit(updates, &ids);
-        // Free contact parameters moved with the drag: the constraints keep the solved ones.
-        sketch.store_contacts(&contacts);
+        // Free parameters moved with the drag: the constraints keep the solved ones.
+        sketch.store_free(&free);
         Ok(())
     }
 }

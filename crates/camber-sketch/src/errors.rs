@@ -218,6 +218,53 @@ pub enum Error {
         /// Its circle or line.
         entity: EntityId,
     },
+    /// A custom constraint read from a sketch file whose kind no registry decoded.
+    #[error(
+        "the custom constraint kind \"{name}\" was not decoded (register it in a CustomRegistry)"
+    )]
+    UnresolvedCustom {
+        /// The kind name in the file.
+        name: String,
+    },
+    /// A custom constraint's plain residual does not declare its block sizes, so its
+    /// arguments cannot be checked.
+    #[error(
+        "the custom residual \"{name}\" does not declare its block sizes (Residual::block_sizes)"
+    )]
+    UndeclaredBlocks {
+        /// The residual's name.
+        name: String,
+    },
+    /// A custom constraint's arguments do not match what its residual reads.
+    #[error(
+        "the custom residual \"{name}\" reads {expected:?} but the constraint gives {found:?}"
+    )]
+    CustomArgs {
+        /// The residual's name.
+        name: String,
+        /// The argument kinds the residual declares.
+        expected: Vec<crate::constraints::custom::ArgKind>,
+        /// The argument kinds given.
+        found: Vec<crate::constraints::custom::ArgKind>,
+    },
+    /// A constraint reads a free parameter another constraint does not have.
+    #[error("{constraint} reads free parameter {index} of {of}, which it does not have")]
+    UnknownFreeParameter {
+        /// The constraint reading it.
+        constraint: ConstraintId,
+        /// The constraint asked.
+        of: ConstraintId,
+        /// The index asked for.
+        index: usize,
+    },
+    /// A constraint cannot be removed while another reads its free parameters.
+    #[error("{constraint} is read by {by}")]
+    ConstraintInUse {
+        /// The constraint.
+        constraint: ConstraintId,
+        /// A constraint reading it.
+        by: ConstraintId,
+    },
     /// An option out of its range.
     #[error("{what}: {detail}")]
     InvalidOption {

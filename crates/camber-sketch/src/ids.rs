@@ -15,6 +15,7 @@ pub use camber_solve::ConstraintId;
 #[derive(
     Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize, serde::Deserialize,
 )]
+#[serde(transparent)]
 pub struct EntityId(pub u64);
 
 impl std::fmt::Display for EntityId {
@@ -35,8 +36,12 @@ impl std::fmt::Display for EntityId {
 /// use camber_sketch::{EntityId, PointRef};
 /// let p = PointRef::Control(EntityId(1), 2);
 /// assert_eq!(p.entity(), EntityId(1));
+/// // In sketch files: {"point": 3}, {"control": [3, 1]}, {"start": 3}, {"end": 3}.
+/// assert_eq!(serde_json::to_string(&p)?, r#"{"control":[1,2]}"#);
+/// # Ok::<(), serde_json::Error>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
 pub enum PointRef {
     /// A point entity.
     Point(EntityId),

@@ -2,7 +2,8 @@
 //! curves, held by affine and nonlinear constraints and solved by minimum-norm displacement.
 //!
 //! ```
-//! use camber_sketch::{Constraint, FixTarget, PointRef, Sense, Sketch, TangentForm};
+//! use camber_sketch::constraints::{Fixed, StartTangent};
+//! use camber_sketch::{PointRef, Sense, Sketch, TangentForm};
 //! use camber_geom::BezierCurve2;
 //! use nalgebra::{Point2, Vector2};
 //!
@@ -12,8 +13,8 @@
 //! let c = s.add_bezier(BezierCurve2::try_new(vec![
 //!     Point2::origin(), Point2::from(1.2 * d), Point2::new(2.2, 0.9), Point2::new(3.0, 0.0),
 //! ])?)?;
-//! s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::Control(c, 3))))?;
-//! s.add_constraint(Constraint::StartTangent { curve: c, direction: d, sense: Sense::Agree, form: TangentForm::Row })?;
+//! s.add_constraint(Fixed::point(PointRef::Control(c, 3)))?;
+//! s.add_constraint(StartTangent { curve: c, direction: d, sense: Sense::Agree, form: TangentForm::Row })?;
 //! let mut drag = s.drag(PointRef::Control(c, 1))?;
 //! drag.update(Point2::from(1.2 * d) + Vector2::new(0.0, 0.1))?;
 //! let (p0, p1) = (drag.point(PointRef::Control(c, 0))?, drag.point(PointRef::Control(c, 1))?);
@@ -24,74 +25,67 @@
 //! ```
 //!
 //! # Usage
-//! Add entities ([`Sketch::add_bezier`], …) and [`Constraint`]s, then [`Sketch::solve`]: every
-//! connected component containing an edited entity is solved on its own, and the result is
-//! written back only if every component succeeds. [`Sketch::analyze`] reports the DOF and names
-//! redundant and conflicting constraints. [`Sketch::drag`] starts an interactive
-//! [`DragSession`].
+//! Add entities ([`Sketch::add_bezier`], …) and constraints (any kind of [`constraints`]
+//! converts into a [`Constraint`]), then [`Sketch::solve`]: every connected component
+//! containing an edited entity is solved on its own, and the result is written back only if
+//! every component succeeds. [`Sketch::analyze`] reports the DOF and names redundant and
+//! conflicting constraints. [`Sketch::drag`] starts an interactive [`DragSession`].
 //!
 //! # Design
-//! - Each entity point (control point, line end, circle centre) is one parameter block (x, y)
-//!   of a [`camber_solve::Problem`]; knots and weights are data. With them fixed, curve points
-//!   and tangents at a given parameter are constant linear combinations of control points
-//!   ([`Entity::coefficients`]), so every built-in constraint is affine ([`residuals`]).
-//! - Entities and constraints are nodes of a petgraph graph; a constraint has an edge to every
-//!   entity it reads; connected components are independent problems.
-//! - `Fixed` binds unknowns (they leave the problem); start/end tangency comes in the row form
-//!   and in the paper's elimination form P₁ = P₀ + t·T, t > 0 ([`TangentForm`]).
-//! - Tangencies record their [`Sense`]; a solve that flips one is rejected.
-//! - Users add their own residuals with [`Constraint::Custom`].
-//! - A component whose residuals are all affine takes the linear path above. Any other goes to
-//!   [`camber_solve::solve()`], which picks Newton minimum norm, SLSQP or the least-squares
-//!   rescue from the DOF analysis; the component report's `solver` and `reason` say which ran
-//!   and why. The nonlinear constraints ([`Constraint::PointOnCurve`],
-//!   [`Constraint::TangentToLine`], [`Constraint::TangentToCircle`], circles and lines as
-//!   unknowns, [`Constraint::G1JoinFree`], …) are residuals of [`contact`]; a free contact
-//!   parameter ([`Contact::Free`]) is an unknown of its own bounded to the curve's domain,
-//!   stored back into the constraint after a successful solve.
-//! - Contact is honest: after a solve every contact must keep its recorded travel direction,
-//!   have a non-vanishing tangent, and stay on its recorded side near the contact (sampled on
-//!   the solved curve). A crossing adds a clearance row on its side of the contact (the curve
-//!   must touch the target there at a free second point instead of crossing it), a collapsed
-//!   tangent a floor on its speed ([`clearance`]), and the solve restarts (see
-//!   [`solve::MAX_ACTIVE_ROWS`]); if that fails, the error names the constraint and nothing is
-//!   written.
-//! - Drag sessions on nonlinear components fix the dragged point in the problem and move it at
-//!   each update; Newton starts from the previous step and pulls toward it
-//!   ([`camber_solve::solve_newton_from`]), with the full selection as fallback.
-//! - Small components are solved densely after a full rank analysis; large ones go straight to
-//!   the sparse factorization and are analysed only when it meets dependent rows
-//!   ([`solve::default_options`]).
-//! - [`workloads`] builds the standard benchmark sketches (W1, the blade section, W2, W3a, W4).
+//! The crate reads top to bottom, each layer using only the ones below it:
+//!
+//! - [`sketch`]: the graph (entities and constraints as petgraph nodes, an edge from a
+//!   constraint to every entity it reads), components, the dirty set, editing; [`solve`],
+//!   [`analysis`], [`drag`] and [`displacement`] add its solving faces; [`file`] its JSON form.
+//! - [`constraints`]: one module per constraint kind (its entities, validation, rows, checks,
+//!   file form and glyph), the [`Constraint`] enum generated from their list, and user kinds
+//!   through [`Custom`].
+//! - [`component`]: one connected component as a [`camber_solve::Problem`] built from the
+//!   kinds' pieces, the checks of a solved state, the active set of honest contact, and the one
+//!   solve policy used by solves and drags.
+//! - [`residuals`]: residuals several kinds share; [`curve_eval`], [`entity`], [`vocabulary`],
+//!   [`ids`]: the ground everything stands on.
+//!
+//! Each entity point (control point, line end, circle centre) is one parameter block (x, y) of
+//! the problem, a circle's radius a block of one; knots and weights are data. `Fixed` binds
+//! unknowns; coincident points merge into one set of unknowns; start/end tangency comes in the
+//! row form and in the paper's elimination form P₁ = P₀ + t·T, t > 0 ([`TangentForm`]).
+//! Tangencies record their [`Sense`] and contacts their side and travel direction, checked after
+//! every solve; a contact that crosses its target gets a clearance row (the curve must touch it
+//! at a free second point instead) and the solve runs again
+//! ([`residuals::clearance`], [`component::policy`]). An affine component takes the linear
+//! path; any other goes to [`camber_solve::solve()`], whose DOF analysis picks Newton minimum
+//! norm, SLSQP or least squares; the component report's `solver` and `reason` say which ran.
+//! [`workloads`] builds the standard benchmark sketches.
 
-mod active;
-pub mod build;
-pub mod clearance;
-mod compile;
-pub mod constraint;
-pub mod contact;
+pub mod analysis;
+pub mod component;
+pub mod constraints;
 pub mod curve_eval;
 pub mod displacement;
 pub mod drag;
 pub mod entity;
 pub mod errors;
 pub mod file;
-mod general;
 pub mod ids;
-mod merge;
+pub mod lookup;
 pub mod residuals;
 pub mod sketch;
 pub mod solve;
+pub mod vocabulary;
 pub mod workloads;
 
-pub use build::{Component, ComponentProblem, DRAG_CONSTRAINT};
-pub use constraint::{
-    CircleSide, Constraint, Contact, Custom, FixTarget, LineSide, Rotation, Sense, TangentForm,
-    Target,
-};
+pub use analysis::ComponentAnalysis;
+pub use component::{Component, ComponentProblem, DRAG_CONSTRAINT};
+pub use constraints::custom::{Arg, ArgKind, Args, CustomResidual};
+pub use constraints::{Constraint, Custom, Glyph};
 pub use drag::DragSession;
 pub use entity::{Entity, Terms};
 pub use errors::{Error, Result};
 pub use ids::{ConstraintId, EntityId, PointRef};
+pub use lookup::EntityLookup;
 pub use sketch::Sketch;
-pub use solve::{ComponentAnalysis, ComponentReport, SketchReport};
+pub use solve::{ComponentReport, SketchReport};
+pub use vocabulary::{
+    CircleSide, Contact, FixTarget, LineSide, Rotation, Sense, TangentForm, Target,
+};

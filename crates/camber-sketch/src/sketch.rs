@@ -15,12 +15,13 @@ use nalgebra::Point2;
 use petgraph::stable_graph::{NodeIndex, StableUnGraph};
 use petgraph::visit::NodeIndexable;
 
-use crate::build::{build, Component, ComponentProblem};
-use crate::compile::{compile, EntityLookup};
-use crate::constraint::Constraint;
+use crate::component::problem::build;
+use crate::component::{Component, ComponentProblem};
+use crate::constraints::Constraint;
 use crate::entity::{combine, Entity};
 use crate::errors::{Error, Result};
 use crate::ids::{EntityId, PointRef};
+use crate::lookup::EntityLookup;
 
 /// A node of the sketch graph.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -32,15 +33,16 @@ enum Node {
 /// A planar sketch of entities held by constraints.
 ///
 /// ```
-/// use camber_sketch::{Constraint, FixTarget, PointRef, Sketch, Target};
+/// use camber_sketch::constraints::{Fixed, PointAtParameter};
+/// use camber_sketch::{PointRef, Sketch, Target};
 /// use camber_geom::BezierCurve2;
 /// use nalgebra::Point2;
 /// let mut s = Sketch::new();
 /// let c = s.add_bezier(BezierCurve2::try_new(vec![
 ///     Point2::new(0.0, 0.0), Point2::new(1.0, 1.0), Point2::new(2.0, 0.0),
 /// ])?)?;
-/// s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::Start(c))))?;
-/// s.add_constraint(Constraint::PointAtParameter { curve: c, u: 0.5, target: Target::At(Point2::new(1.0, 1.0)) })?;
+/// s.add_constraint(Fixed::point(PointRef::Start(c)))?;
+/// s.add_constraint(PointAtParameter { curve: c, u: 0.5, target: Target::At(Point2::new(1.0, 1.0)) })?;
 /// let report = s.solve()?;
 /// assert_eq!(report.components.len(), 1);
 /// // C(½) = ¼P₀ + ½P₁ + ¼P₂ reaches (1, 1); P₀ stays.
@@ -260,13 +262,14 @@ impl Sketch {
     ///
     /// ```
     /// use camber_geom::BezierCurve2;
-    /// use camber_sketch::{Constraint, PointRef, Sketch, Target};
+    /// use camber_sketch::constraints::PointAtParameter;
+    /// use camber_sketch::{PointRef, Sketch, Target};
     /// use nalgebra::Point2;
     /// let mut s = Sketch::new();
     /// let line = BezierCurve2::try_new(vec![Point2::new(0.0, 0.0), Point2::new(2.0, 0.0)])?;
     /// let c = s.add_bezier(line)?;
     /// s.set_weight(PointRef::Control(c, 0), 4.0)?;
-    /// s.add_constraint(Constraint::PointAtParameter {
+    /// s.add_constraint(PointAtParameter {
     ///     curve: c,
     ///     u: 0.5,
     ///     target: Target::At(Point2::new(1.0, 1.0)),
@@ -341,6 +344,68 @@ impl Sketch {
     }
 }
 
+/// # Replacing geometry
+impl Sketch {
+    /// Replaces an entity by another of the same kind (a curve after knot insertion or
+    /// refinement, degree elevation, …), keeping its id. Every constraint that reads it must
+    /// still be valid (a parameter still inside the domain, a control point index still
+    /// there): they are checked against the new entity, and any failure leaves the sketch as
+    /// it was. Point weights of the entity are dropped (the point indices may mean other
+    /// points now). Marks the entity dirty.
+    ///
+    /// ```
+    /// use camber_geom::{BSplineCurve2, KnotVector};
+    /// use camber_sketch::{Entity, Sketch};
+    /// use nalgebra::Point2;
+    /// let mut s = Sketch::new();
+    /// let pts = (0..4).map(|i| Point2::new(f64::from(i), 0.0)).collect();
+    /// let c = BSplineCurve2::try_new(3, KnotVector::clamped_uniform(3, 4)?, pts)?;
+    /// let id = s.add_bspline(c.clone())?;
+    /// let refined = c.insert_knot(0.5, 1)?;
+    /// s.set_entity(id, Entity::BSpline(refined))?;
+    /// assert_eq!(s.entity(id)?.points().len(), 5);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`Error::UnknownEntity`]; [`Error::WrongEntityKind`] for another kind; the validation
+    /// errors of the entity or of a constraint reading it. Nothing changes then.
+    pub fn set_entity(&mut self, id: EntityId, entity: Entity) -> Result<()> {
+        let old = self.lookup(id)?;
+        if std::mem::discriminant(old) != std::mem::discriminant(&entity) {
+            return Err(Error::WrongEntityKind {
+                entity: id,
+                expected: old.kind_name(),
+                found: entity.kind_name(),
+            });
+        }
+        entity.validate()?;
+        let previous = match self.entities.get_mut(&id) {
+            Some(slot) => std::mem::replace(&mut slot.0, entity),
+            None => return Err(Error::UnknownEntity { entity: id }),
+        };
+        let readers: Vec<ConstraintId> = self
+            .constraints
+            .iter()
+            .filter(|(_, (c, _))| c.entities().contains(&id))
+            .map(|(cid, _)| *cid)
+            .collect();
+        for cid in readers {
+            let outcome = self.constraint(cid).and_then(|c| c.compile(self));
+            if let Err(e) = outcome {
+                if let Some(slot) = self.entities.get_mut(&id) {
+                    slot.0 = previous;
+                }
+                return Err(e);
+            }
+        }
+        self.weights.retain(|(entity, _), _| *entity != id);
+        self.dirty.insert(id);
+        self.revision += 1;
+        Ok(())
+    }
+}
+
 impl Sketch {
     /// Fails with [`Error::DuplicateId`] when an entity or a constraint already uses `id`.
     fn check_free_id(&self, id: u64) -> Result<()> {
@@ -358,11 +423,12 @@ impl Sketch {
 impl Sketch {
     /// Adds a constraint after validating it against the current entities (ids, indices,
     /// parameters inside the domains, finite numbers, non-zero directions, clamped ends for the
-    /// elimination form). Its entities become dirty; nothing is solved here.
+    /// elimination form, a custom residual's declared arguments). Its entities become dirty;
+    /// nothing is solved here. Any kind converts: `s.add_constraint(Horizontal::line(l))`.
     ///
     /// # Errors
     /// The validation errors; nothing is added then.
-    pub fn add_constraint(&mut self, constraint: Constraint) -> Result<ConstraintId> {
+    pub fn add_constraint(&mut self, constraint: impl Into<Constraint>) -> Result<ConstraintId> {
         self.add_constraint_with_id(ConstraintId(self.next_id), constraint)
     }
 
@@ -371,18 +437,28 @@ impl Sketch {
     /// ids continue past the largest id used.
     ///
     /// # Errors
-    /// [`Error::DuplicateId`] when an entity or constraint already has that id; the
+    /// [`Error::DuplicateId`] when an entity or constraint already has that id;
+    /// [`Error::UnknownConstraint`] for another constraint it reads that does not exist; the
     /// validation errors of [`Sketch::add_constraint`]. Nothing is added then.
     pub fn add_constraint_with_id(
         &mut self,
         id: ConstraintId,
-        constraint: Constraint,
+        constraint: impl Into<Constraint>,
     ) -> Result<ConstraintId> {
+        let constraint = constraint.into();
         self.check_free_id(id.0)?;
-        compile(self, &constraint)?;
+        constraint.compile(self)?;
+        let mut entities = constraint.entities();
+        for other in constraint.reads_constraints() {
+            for e in self.constraint(other)?.entities() {
+                if !entities.contains(&e) {
+                    entities.push(e);
+                }
+            }
+        }
         self.next_id = self.next_id.max(id.0.saturating_add(1));
         let node = self.graph.add_node(Node::Constraint(id));
-        for e in constraint.entities() {
+        for e in entities {
             if let Some((_, en)) = self.entities.get(&e) {
                 self.graph.add_edge(node, *en, ());
             }
@@ -412,8 +488,22 @@ impl Sketch {
     /// Removes a constraint; its entities become dirty.
     ///
     /// # Errors
-    /// [`Error::UnknownConstraint`].
+    /// [`Error::UnknownConstraint`]; [`Error::ConstraintInUse`] naming a constraint that reads
+    /// its free parameters.
     pub fn remove_constraint(&mut self, id: ConstraintId) -> Result<Constraint> {
+        if !self.constraints.contains_key(&id) {
+            return Err(Error::UnknownConstraint { constraint: id });
+        }
+        if let Some((by, _)) = self
+            .constraints
+            .iter()
+            .find(|(_, (c, _))| c.reads_constraints().contains(&id))
+        {
+            return Err(Error::ConstraintInUse {
+                constraint: id,
+                by: *by,
+            });
+        }
         let (c, node) = self
             .constraints
             .remove(&id)
@@ -511,22 +601,29 @@ impl Sketch {
         comp: &Component,
         pin: Option<PointRef>,
     ) -> Result<ComponentProblem> {
-        let mut list = Vec::with_capacity(comp.constraints.len());
+        let mut compiled = Vec::with_capacity(comp.constraints.len());
         for id in &comp.constraints {
-            list.push((*id, self.constraint(*id)?));
+            compiled.push((*id, self.constraint(*id)?.compile(self)?));
         }
-        build(self, comp, &list, pin)
+        build(self, comp, &compiled, pin)
+    }
+
+    /// Marks an entity as changed, so that the next solve solves its component.
+    pub(crate) fn mark_dirty(&mut self, id: EntityId) {
+        self.dirty.insert(id);
+        self.revision += 1;
     }
 
     pub(crate) fn is_dirty(&self, comp: &Component) -> bool {
         comp.entities.iter().any(|e| self.dirty.contains(e))
     }
 
-    /// Stores solved free contact parameters into their constraints.
-    pub(crate) fn store_contacts(&mut self, contacts: &[(ConstraintId, usize, f64)]) {
-        for (id, k, u) in contacts {
+    /// Stores solved free parameters (contact parameters, a custom constraint's own) into
+    /// their constraints: (constraint, k, value) for the k-th free parameter of each.
+    pub(crate) fn store_free(&mut self, free: &[(ConstraintId, usize, f64)]) {
+        for (id, k, u) in free {
             if let Some(slot) = self.constraints.get_mut(id) {
-                slot.0.set_contact_at(*k, *u);
+                slot.0.set_free_parameter(*k, *u);
             }
         }
     }

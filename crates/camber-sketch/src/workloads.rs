@@ -6,11 +6,12 @@
 use camber_geom::BezierCurve2;
 use nalgebra::{Point2, Vector2};
 
-use crate::constraint::{CircleSide, Constraint, Contact, FixTarget, Rotation, Sense, TangentForm};
+use crate::constraints::{Distance, Fixed, G1Join, G1JoinFree, StartTangent, TangentToCircle};
 use crate::entity::Entity;
 use crate::errors::Result;
 use crate::ids::{EntityId, PointRef};
 use crate::sketch::Sketch;
+use crate::vocabulary::{CircleSide, Contact, Rotation, Sense, TangentForm};
 
 mod two_curves;
 pub use two_curves::{two_curves, two_curves_valid, TwoCurves, TWO_CURVES_CIRCLES};
@@ -37,8 +38,8 @@ pub fn w1(form: TangentForm) -> Result<(Sketch, EntityId, Vector2<f64>)> {
         Point2::new(2.2, 0.9),
         Point2::new(3.0, 0.0),
     ])?)?;
-    s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::Control(c, 3))))?;
-    s.add_constraint(Constraint::StartTangent {
+    s.add_constraint(Fixed::point(PointRef::Control(c, 3)))?;
+    s.add_constraint(StartTangent {
         curve: c,
         direction: d,
         sense: Sense::Agree,
@@ -101,16 +102,14 @@ pub fn blade() -> Result<(Sketch, Blade)> {
         (0.8, 0.05),
         (1.0, 0.0),
     ]))?)?;
-    s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::Start(
-        pressure,
-    ))))?;
-    s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::End(suction))))?;
-    s.add_constraint(Constraint::G1Join {
+    s.add_constraint(Fixed::point(PointRef::Start(pressure)))?;
+    s.add_constraint(Fixed::point(PointRef::End(suction)))?;
+    s.add_constraint(G1Join {
         first: pressure,
         second: leading,
         direction: Vector2::new(-0.1, 0.015),
     })?;
-    s.add_constraint(Constraint::G1Join {
+    s.add_constraint(G1Join {
         first: leading,
         second: suction,
         direction: Vector2::new(0.05, 0.01),
@@ -158,13 +157,11 @@ fn sine_chain(n: usize) -> Result<(Sketch, Vec<EntityId>)> {
 /// Fixes the chain's first point, moves its last point by (−0.3, 0.4) and fixes it there.
 fn pin_chain_ends(s: &mut Sketch, segs: &[EntityId]) -> Result<()> {
     if let (Some(first), Some(last)) = (segs.first(), segs.last()) {
-        s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::Control(
-            *first, 0,
-        ))))?;
+        s.add_constraint(Fixed::point(PointRef::Control(*first, 0)))?;
         let end = PointRef::Control(*last, 3);
         let moved = s.point(end)? + Vector2::new(-0.3, 0.4);
         s.set_point(end, moved)?;
-        s.add_constraint(Constraint::Fixed(FixTarget::Point(end)))?;
+        s.add_constraint(Fixed::point(end))?;
     }
     Ok(())
 }
@@ -187,14 +184,14 @@ fn pin_chain_ends(s: &mut Sketch, segs: &[EntityId]) -> Result<()> {
 pub fn w3_chain(n: usize) -> Result<(Sketch, Vec<EntityId>)> {
     let (mut s, segs) = sine_chain(n)?;
     for pair in segs.windows(2) {
-        s.add_constraint(Constraint::G1JoinFree {
+        s.add_constraint(G1JoinFree {
             first: pair[0],
             second: pair[1],
         })?;
     }
     for &seg in &segs {
         let chord = (s.point(PointRef::End(seg))? - s.point(PointRef::Start(seg))?).norm();
-        s.add_constraint(Constraint::Distance {
+        s.add_constraint(Distance {
             a: PointRef::Start(seg),
             b: PointRef::End(seg),
             distance: chord,
@@ -247,7 +244,7 @@ pub fn w3_valid(s: &Sketch, segs: &[EntityId], tol: f64) -> bool {
 pub fn w3a_chain(n: usize) -> Result<(Sketch, Vec<EntityId>)> {
     let (mut s, segs) = sine_chain(n)?;
     for i in 1..n {
-        s.add_constraint(Constraint::G1Join {
+        s.add_constraint(G1Join {
             first: segs[i - 1],
             second: segs[i],
             direction: sine_tangent(i),
@@ -274,9 +271,9 @@ pub fn w4(n: usize) -> Result<(Sketch, Vec<EntityId>)> {
             Point2::new(x + 2.0, 1.0),
             Point2::new(x + 3.0, 0.0),
         ])?)?;
-        s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::Start(c))))?;
-        s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::End(c))))?;
-        s.add_constraint(Constraint::StartTangent {
+        s.add_constraint(Fixed::point(PointRef::Start(c)))?;
+        s.add_constraint(Fixed::point(PointRef::End(c)))?;
+        s.add_constraint(StartTangent {
             curve: c,
             direction: w4_direction(i),
             sense: Sense::Agree,
@@ -457,14 +454,14 @@ pub fn w2_bspline7() -> Result<(Sketch, W2)> {
     let mut circles = [c; 3];
     for (slot, (centre, r)) in circles.iter_mut().zip(W2_CIRCLES) {
         *slot = s.add_circle(Point2::new(centre[0], centre[1]), r)?;
-        s.add_constraint(Constraint::Fixed(FixTarget::Entity(*slot)))?;
+        s.add_constraint(Fixed::entity(*slot))?;
     }
     for (circle, u) in [
         (circles[0], Contact::At(0.0)),
         (circles[1], Contact::Free(u_th)),
         (circles[2], Contact::At(1.0)),
     ] {
-        s.add_constraint(Constraint::TangentToCircle {
+        s.add_constraint(TangentToCircle {
             curve: c,
             circle,
             u,
@@ -596,15 +593,15 @@ pub fn w2_2cubic() -> Result<(Sketch, [EntityId; 2], [EntityId; 3])> {
     let mut circles = [first; 3];
     for (slot, (centre, r)) in circles.iter_mut().zip(W2_CIRCLES) {
         *slot = s.add_circle(Point2::new(centre[0], centre[1]), r)?;
-        s.add_constraint(Constraint::Fixed(FixTarget::Entity(*slot)))?;
+        s.add_constraint(Fixed::entity(*slot))?;
     }
-    s.add_constraint(Constraint::G1JoinFree { first, second })?;
+    s.add_constraint(G1JoinFree { first, second })?;
     for (curve, circle, u) in [
         (first, circles[0], 0.0),
         (first, circles[1], 1.0),
         (second, circles[2], 1.0),
     ] {
-        s.add_constraint(Constraint::TangentToCircle {
+        s.add_constraint(TangentToCircle {
             curve,
             circle,
             u: Contact::At(u),

@@ -6,6 +6,10 @@
 #![allow(clippy::unwrap_used)]
 
 use camber_geom::{BSplineCurve2, BezierCurve2, KnotVector};
+use camber_sketch::constraints::{
+    Coincident, DirectionalTangentAt, Fixed, PointAtParameter, StartTangent, TangentToLineAt,
+    TangentVectorAt,
+};
 use camber_sketch::{
     Constraint, ConstraintId, Entity, EntityId, Error, FixTarget, PointRef, Sense, Sketch,
     TangentForm, Target,
@@ -24,8 +28,7 @@ fn sketch() -> (Sketch, EntityId) {
             .unwrap(),
         )
         .unwrap();
-    s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::Start(c))))
-        .unwrap();
+    s.add_constraint(Fixed::point(PointRef::Start(c))).unwrap();
     (s, c)
 }
 
@@ -56,12 +59,17 @@ fn unknown_ids() {
     let ghost = EntityId(99);
     refused(
         &mut s,
-        Constraint::Coincident(PointRef::Start(c), PointRef::Point(ghost)),
+        Constraint::Coincident(Coincident {
+            a: PointRef::Start(c),
+            b: PointRef::Point(ghost),
+        }),
         Error::UnknownEntity { entity: ghost },
     );
     refused(
         &mut s,
-        Constraint::Fixed(FixTarget::Point(PointRef::Control(c, 3))),
+        Constraint::Fixed(Fixed {
+            target: FixTarget::Point(PointRef::Control(c, 3)),
+        }),
         Error::UnknownPoint {
             entity: c,
             index: 3,
@@ -91,12 +99,12 @@ fn zero_tangent_direction() {
     let (mut s, c) = sketch();
     refused(
         &mut s,
-        Constraint::StartTangent {
+        Constraint::StartTangent(StartTangent {
             curve: c,
             direction: Vector2::zeros(),
             sense: Sense::Agree,
             form: TangentForm::Elimination,
-        },
+        }),
         Error::ZeroDirection {
             what: "tangent",
             x: 0.0,
@@ -105,13 +113,13 @@ fn zero_tangent_direction() {
     );
     refused(
         &mut s,
-        Constraint::TangentToLineAt {
+        Constraint::TangentToLineAt(TangentToLineAt {
             curve: c,
             u: 0.5,
             point: Point2::origin(),
             direction: Vector2::zeros(),
             sense: Sense::Agree,
-        },
+        }),
         Error::ZeroDirection {
             what: "line",
             x: 0.0,
@@ -125,12 +133,12 @@ fn parameter_outside_the_domain() {
     let (mut s, c) = sketch();
     refused(
         &mut s,
-        Constraint::DirectionalTangentAt {
+        Constraint::DirectionalTangentAt(DirectionalTangentAt {
             curve: c,
             u: 1.25,
             direction: Vector2::new(1.0, 0.0),
             sense: Sense::Agree,
-        },
+        }),
         Error::ParameterOutsideDomain {
             entity: c,
             value: 1.25,
@@ -141,11 +149,11 @@ fn parameter_outside_the_domain() {
     let p = s.add_point(Point2::origin()).unwrap();
     refused(
         &mut s,
-        Constraint::PointAtParameter {
+        Constraint::PointAtParameter(PointAtParameter {
             curve: p,
             u: 0.5,
             target: Target::At(Point2::origin()),
-        },
+        }),
         Error::WrongEntityKind {
             entity: p,
             expected: "curve",
@@ -159,11 +167,11 @@ fn non_finite_numbers() {
     let (mut s, c) = sketch();
     refused(
         &mut s,
-        Constraint::PointAtParameter {
+        Constraint::PointAtParameter(PointAtParameter {
             curve: c,
             u: 0.5,
             target: Target::At(Point2::new(1.0, f64::INFINITY)),
-        },
+        }),
         Error::NonFinite {
             what: "target",
             index: 1,
@@ -172,7 +180,7 @@ fn non_finite_numbers() {
     );
     let before = snapshot(&s);
     assert!(matches!(
-        s.add_constraint(Constraint::TangentVectorAt {
+        s.add_constraint(TangentVectorAt {
             curve: c,
             u: f64::NAN,
             vector: Vector2::new(1.0, 0.0)
@@ -210,11 +218,13 @@ fn elimination_needs_a_clamped_end() {
     let c = s
         .add_bspline(BSplineCurve2::try_new(2, knots, pts).unwrap())
         .unwrap();
-    let tangent = |form| Constraint::StartTangent {
-        curve: c,
-        direction: Vector2::new(1.0, 0.0),
-        sense: Sense::Agree,
-        form,
+    let tangent = |form| {
+        Constraint::StartTangent(StartTangent {
+            curve: c,
+            direction: Vector2::new(1.0, 0.0),
+            sense: Sense::Agree,
+            form,
+        })
     };
     refused(
         &mut s,

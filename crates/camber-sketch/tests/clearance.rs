@@ -10,10 +10,10 @@
 #![allow(clippy::unwrap_used)]
 
 use camber_geom::{BezierCurve2, KnotVector, NurbsCurve2, ParametricCurve};
-use camber_sketch::clearance::SPEED_FLOOR;
+use camber_sketch::constraints::{Fixed, TangentToCircle, TangentToLine};
+use camber_sketch::residuals::clearance::SPEED_FLOOR;
 use camber_sketch::{
-    CircleSide, Constraint, Contact, Entity, Error, FixTarget, LineSide, PointRef, Rotation, Sense,
-    Sketch,
+    CircleSide, Constraint, Contact, Entity, Error, LineSide, PointRef, Rotation, Sense, Sketch,
 };
 use nalgebra::Point2;
 
@@ -60,11 +60,10 @@ fn a_crossing_right_after_a_line_contact_becomes_an_osculation() {
     let line = s
         .add_line(Point2::new(0.0, 0.0), Point2::new(1.0, 0.0))
         .unwrap();
-    s.add_constraint(Constraint::Fixed(FixTarget::Entity(line)))
+    s.add_constraint(Fixed::entity(line)).unwrap();
+    s.add_constraint(Fixed::point(PointRef::Control(c, 3)))
         .unwrap();
-    s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::Control(c, 3))))
-        .unwrap();
-    s.add_constraint(Constraint::TangentToLine {
+    s.add_constraint(TangentToLine {
         curve: c,
         line,
         u: Contact::At(0.0),
@@ -108,14 +107,13 @@ fn a_nurbs_dipping_into_a_circle_touches_it_again_at_a_free_point() {
         .add_nurbs(NurbsCurve2::try_new(3, knots, pts, vec![1.0, 0.8, 1.2, 1.0, 1.0]).unwrap())
         .unwrap();
     let circle = s.add_circle(Point2::new(0.0, 0.0), 1.0).unwrap();
-    s.add_constraint(Constraint::Fixed(FixTarget::Entity(circle)))
-        .unwrap();
+    s.add_constraint(Fixed::entity(circle)).unwrap();
     for j in [0, 4] {
-        s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::Control(c, j))))
+        s.add_constraint(Fixed::point(PointRef::Control(c, j)))
             .unwrap();
     }
     let id = s
-        .add_constraint(Constraint::TangentToCircle {
+        .add_constraint(TangentToCircle {
             curve: c,
             circle,
             u: Contact::Free(0.35),
@@ -125,7 +123,7 @@ fn a_nurbs_dipping_into_a_circle_touches_it_again_at_a_free_point() {
         .unwrap();
     let report = s.solve().unwrap();
     assert!(report.components[0].report.reason.contains("active row"));
-    let Constraint::TangentToCircle { u, .. } = s.constraint(id).unwrap() else {
+    let Constraint::TangentToCircle(TangentToCircle { u, .. }) = s.constraint(id).unwrap() else {
         panic!("contact");
     };
     let u = u.value();
@@ -158,11 +156,10 @@ fn a_reversed_contact_keeps_a_quarter_of_its_tangent_speed() {
         .add_bezier(BezierCurve2::try_new(start.to_vec()).unwrap())
         .unwrap();
     let circle = s.add_circle(Point2::new(0.0, 0.0), 1.0).unwrap();
-    s.add_constraint(Constraint::Fixed(FixTarget::Entity(circle)))
+    s.add_constraint(Fixed::entity(circle)).unwrap();
+    s.add_constraint(Fixed::point(PointRef::Control(c, 3)))
         .unwrap();
-    s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::Control(c, 3))))
-        .unwrap();
-    s.add_constraint(Constraint::TangentToCircle {
+    s.add_constraint(TangentToCircle {
         curve: c,
         circle,
         u: Contact::At(0.0),
@@ -209,14 +206,13 @@ fn a_crossing_no_nearby_curve_avoids_is_refused() {
     let line = s
         .add_line(Point2::new(0.0, 0.0), Point2::new(1.0, 0.0))
         .unwrap();
-    s.add_constraint(Constraint::Fixed(FixTarget::Entity(line)))
-        .unwrap();
+    s.add_constraint(Fixed::entity(line)).unwrap();
     for j in [2, 3] {
-        s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::Control(c, j))))
+        s.add_constraint(Fixed::point(PointRef::Control(c, j)))
             .unwrap();
     }
     let id = s
-        .add_constraint(Constraint::TangentToLine {
+        .add_constraint(TangentToLine {
             curve: c,
             line,
             u: Contact::At(0.0),

@@ -6,6 +6,10 @@
 
 use approx::assert_abs_diff_eq;
 use camber_geom::{BSplineCurve2, BezierCurve2, KnotVector, NurbsCurve2, ParametricCurve};
+use camber_sketch::constraints::{
+    Coincident, DirectionalTangentAt, EndTangent, Fixed, G1Join, PointAtParameter, TangentToLineAt,
+    TangentVectorAt,
+};
 use camber_sketch::{
     Constraint, Entity, EntityId, Error, FixTarget, PointRef, Sense, Sketch, TangentForm, Target,
 };
@@ -39,10 +43,12 @@ fn components_and_the_dirty_set() {
     let a = cubic(&mut s, 0.0);
     let b = cubic(&mut s, 5.0);
     let p = s.add_point(Point2::new(10.0, 10.0)).unwrap();
-    s.add_constraint(Constraint::Coincident(PointRef::End(a), PointRef::Point(p)))
-        .unwrap();
-    s.add_constraint(Constraint::Fixed(FixTarget::Entity(b)))
-        .unwrap();
+    s.add_constraint(Coincident {
+        a: PointRef::End(a),
+        b: PointRef::Point(p),
+    })
+    .unwrap();
+    s.add_constraint(Fixed::entity(b)).unwrap();
     let comps = s.components();
     assert_eq!(comps.len(), 2);
     assert_eq!(comps[0].entities, vec![a, p]);
@@ -70,16 +76,15 @@ fn a_failing_component_leaves_every_component_unchanged() {
     let mut s = Sketch::new();
     let a = cubic(&mut s, 0.0);
     let b = cubic(&mut s, 5.0);
-    s.add_constraint(Constraint::PointAtParameter {
+    s.add_constraint(PointAtParameter {
         curve: a,
         u: 0.5,
         target: Target::At(Point2::new(1.5, 2.0)),
     })
     .unwrap();
-    s.add_constraint(Constraint::Fixed(FixTarget::Entity(b)))
-        .unwrap();
+    s.add_constraint(Fixed::entity(b)).unwrap();
     let bad = s
-        .add_constraint(Constraint::PointAtParameter {
+        .add_constraint(PointAtParameter {
             curve: b,
             u: 0.5,
             target: Target::At(Point2::new(0.0, 0.0)),
@@ -103,7 +108,7 @@ fn a_solve_that_would_flip_a_tangent_is_refused() {
     let a = cubic(&mut s, 0.0);
     // C′(0) = 3(1, 1) points along (1, 1); asking for the opposite sense is a flip.
     let id = s
-        .add_constraint(Constraint::DirectionalTangentAt {
+        .add_constraint(DirectionalTangentAt {
             curve: a,
             u: 0.0,
             direction: Vector2::new(1.0, 1.0),
@@ -142,36 +147,41 @@ fn every_constraint_on_splines_nurbs_lines_and_circles() {
     let circle = s.add_circle(Point2::new(2.0, -3.0), 0.5).unwrap();
     let dir = Vector2::new(1.0, -0.2);
     let cons = [
-        Constraint::Fixed(FixTarget::Point(PointRef::Start(spline))),
-        Constraint::G1Join {
+        Constraint::Fixed(Fixed {
+            target: FixTarget::Point(PointRef::Start(spline)),
+        }),
+        Constraint::G1Join(G1Join {
             first: spline,
             second: nurbs,
             direction: dir,
-        },
-        Constraint::TangentVectorAt {
+        }),
+        Constraint::TangentVectorAt(TangentVectorAt {
             curve: spline,
             u: 0.3,
             vector: Vector2::new(3.0, 1.0),
-        },
-        Constraint::TangentToLineAt {
+        }),
+        Constraint::TangentToLineAt(TangentToLineAt {
             curve: nurbs,
             u: 0.55,
             point: Point2::new(0.0, 2.0),
             direction: Vector2::new(1.0, 0.0),
             sense: Sense::Agree,
-        },
-        Constraint::PointAtParameter {
+        }),
+        Constraint::PointAtParameter(PointAtParameter {
             curve: line,
             u: 0.25,
             target: Target::Point(PointRef::Control(circle, 0)),
-        },
-        Constraint::EndTangent {
+        }),
+        Constraint::EndTangent(EndTangent {
             curve: nurbs,
             direction: Vector2::new(1.0, -1.0),
             sense: Sense::Agree,
             form: TangentForm::Elimination,
-        },
-        Constraint::Coincident(PointRef::Start(line), PointRef::Control(spline, 0)),
+        }),
+        Constraint::Coincident(Coincident {
+            a: PointRef::Start(line),
+            b: PointRef::Control(spline, 0),
+        }),
     ];
     for c in cons {
         s.add_constraint(c).unwrap();

@@ -21,6 +21,10 @@ impl Residual for UnitDistance {
     fn dim(&self) -> usize {
         1
     }
+
+    fn block_sizes(&self) -> Option<Vec<usize>> {
+        Some(vec![2, 2])
+    }
     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
         let (dx, dy) = (x[1][0] - x[0][0], x[1][1] - x[0][1]);
         out[0] = dx * dx + dy * dy - T::one();

@@ -7,6 +7,7 @@
 
 use camber_geom::queries::closest_point;
 use camber_geom::ParametricCurve;
+use camber_sketch::constraints::Coincident;
 use camber_sketch::workloads::{w2_bspline7, W2, W2_CIRCLES};
 use camber_sketch::{Entity, PointRef, Sketch};
 use nalgebra::Point2;
@@ -156,10 +157,10 @@ fn a_failed_solve_leaves_the_sketch_unchanged() {
     let (mut s, w) = base();
     // P1 on top of P0: the start tangent vanishes, so no tangency at the LE circle is
     // possible (a cusp) and the solve must fail without writing anything.
-    s.add_constraint(camber_sketch::Constraint::Coincident(
-        PointRef::Control(w.curve, 0),
-        PointRef::Control(w.curve, 1),
-    ))
+    s.add_constraint(camber_sketch::Constraint::Coincident(Coincident {
+        a: PointRef::Control(w.curve, 0),
+        b: PointRef::Control(w.curve, 1),
+    }))
     .unwrap();
     let before: Vec<_> = s.entities().map(|(i, e)| (i, e.clone())).collect();
     let constraints_before: Vec<_> = s.constraints().map(|(i, c)| (i, c.clone())).collect();

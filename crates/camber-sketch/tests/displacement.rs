@@ -9,11 +9,10 @@
 
 use approx::assert_abs_diff_eq;
 use camber_geom::BezierCurve2;
+use camber_sketch::constraints::{Fixed, TangentToCircle};
 use camber_sketch::displacement::DisplacementOptions;
 use camber_sketch::workloads::{w2_bspline7, w2_perturbed, w2_valid};
-use camber_sketch::{
-    CircleSide, Constraint, Contact, EntityId, Error, FixTarget, PointRef, Rotation, Sketch,
-};
+use camber_sketch::{CircleSide, Constraint, Contact, EntityId, Error, PointRef, Rotation, Sketch};
 use nalgebra::Point2;
 
 /// A symmetric cubic arc over the unit circle with its top at height `top` (ends fixed), and
@@ -35,14 +34,12 @@ fn arc_over_circle(top: f64, fix_circle: bool) -> (Sketch, EntityId, EntityId) {
         .unwrap();
     let circle = s.add_circle(Point2::new(0.0, 0.0), 1.0).unwrap();
     if fix_circle {
-        s.add_constraint(Constraint::Fixed(FixTarget::Entity(circle)))
-            .unwrap();
+        s.add_constraint(Fixed::entity(circle)).unwrap();
     }
     for end in [PointRef::Start(arc), PointRef::End(arc)] {
-        s.add_constraint(Constraint::Fixed(FixTarget::Point(end)))
-            .unwrap();
+        s.add_constraint(Fixed::point(end)).unwrap();
     }
-    s.add_constraint(Constraint::TangentToCircle {
+    s.add_constraint(TangentToCircle {
         curve: arc,
         circle,
         u: Contact::Free(0.4),
@@ -56,10 +53,10 @@ fn arc_over_circle(top: f64, fix_circle: bool) -> (Sketch, EntityId, EntityId) {
 fn contact_parameter(s: &Sketch) -> f64 {
     s.constraints()
         .find_map(|(_, c)| match c {
-            Constraint::TangentToCircle {
+            Constraint::TangentToCircle(TangentToCircle {
                 u: Contact::Free(u),
                 ..
-            } => Some(*u),
+            }) => Some(*u),
             _ => None,
         })
         .unwrap()

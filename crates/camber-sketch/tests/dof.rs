@@ -6,9 +6,10 @@
 #![allow(clippy::unwrap_used)]
 
 use camber_geom::BezierCurve2;
-use camber_sketch::{
-    Constraint, EntityId, Error, FixTarget, PointRef, Sense, Sketch, TangentForm, Target,
+use camber_sketch::constraints::{
+    DirectionalTangentAt, EndTangent, Fixed, PointAtParameter, StartTangent,
 };
+use camber_sketch::{Constraint, EntityId, Error, PointRef, Sense, Sketch, TangentForm, Target};
 use nalgebra::{Point2, Vector2};
 
 fn cubic(s: &mut Sketch) -> EntityId {
@@ -31,21 +32,19 @@ fn dof(s: &Sketch) -> usize {
 }
 
 fn fix_ends(s: &mut Sketch, c: EntityId) {
-    s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::Start(c))))
-        .unwrap();
-    s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::End(c))))
-        .unwrap();
+    s.add_constraint(Fixed::point(PointRef::Start(c))).unwrap();
+    s.add_constraint(Fixed::point(PointRef::End(c))).unwrap();
 }
 
 fn tangents(s: &mut Sketch, c: EntityId, form: TangentForm) {
-    s.add_constraint(Constraint::StartTangent {
+    s.add_constraint(StartTangent {
         curve: c,
         direction: Vector2::new(1.0, 1.0),
         sense: Sense::Agree,
         form,
     })
     .unwrap();
-    s.add_constraint(Constraint::EndTangent {
+    s.add_constraint(EndTangent {
         curve: c,
         direction: Vector2::new(1.0, -1.0),
         sense: Sense::Agree,
@@ -90,12 +89,12 @@ fn a_duplicated_constraint_is_redundant_and_named() {
     let mut s = Sketch::new();
     let c = cubic(&mut s);
     fix_ends(&mut s, c);
-    let tangent = Constraint::DirectionalTangentAt {
+    let tangent = Constraint::DirectionalTangentAt(DirectionalTangentAt {
         curve: c,
         u: 0.5,
         direction: Vector2::new(1.0, 0.1),
         sense: Sense::Agree,
-    };
+    });
     s.add_constraint(tangent.clone()).unwrap();
     let dup = s.add_constraint(tangent).unwrap();
     let a = &s.analyze().unwrap()[0].analysis;
@@ -111,10 +110,12 @@ fn a_duplicated_constraint_is_redundant_and_named() {
 fn contradictory_constraints_conflict_are_named_and_move_nothing() {
     let mut s = Sketch::new();
     let c = cubic(&mut s);
-    let at = |y: f64| Constraint::PointAtParameter {
-        curve: c,
-        u: 0.5,
-        target: Target::At(Point2::new(1.5, y)),
+    let at = |y: f64| {
+        Constraint::PointAtParameter(PointAtParameter {
+            curve: c,
+            u: 0.5,
+            target: Target::At(Point2::new(1.5, y)),
+        })
     };
     s.add_constraint(at(1.0)).unwrap();
     let bad = s.add_constraint(at(2.0)).unwrap();

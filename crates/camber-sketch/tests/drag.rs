@@ -6,8 +6,9 @@
 #![allow(clippy::unwrap_used)]
 
 use approx::assert_abs_diff_eq;
+use camber_sketch::constraints::{Fixed, TangentToCircle};
 use camber_sketch::workloads::{w1, w1_targets};
-use camber_sketch::{Constraint, Error, FixTarget, PointRef, Sense, TangentForm};
+use camber_sketch::{Constraint, Error, PointRef, Sense, TangentForm};
 use nalgebra::{Point2, Vector2};
 
 fn cross(a: Vector2<f64>, b: Vector2<f64>) -> f64 {
@@ -105,8 +106,7 @@ fn fixed_points_cannot_be_dragged() {
             point: PointRef::Control(c, 3)
         }
     );
-    s.add_constraint(Constraint::Fixed(FixTarget::Entity(c)))
-        .unwrap();
+    s.add_constraint(Fixed::entity(c)).unwrap();
     assert!(matches!(
         s.drag(PointRef::Control(c, 1)),
         Err(Error::NotDraggable { .. })
@@ -157,16 +157,16 @@ fn finish_stores_the_solved_free_contact_parameters() {
     let th = s
         .constraints()
         .find_map(|(id, c)| match c {
-            Constraint::TangentToCircle {
+            Constraint::TangentToCircle(TangentToCircle {
                 circle,
                 u: Contact::Free(_),
                 ..
-            } if *circle == w.circles[1] => Some(id),
+            }) if *circle == w.circles[1] => Some(id),
             _ => None,
         })
         .unwrap();
     let u_of = |s: &camber_sketch::Sketch| match s.constraint(th).unwrap() {
-        Constraint::TangentToCircle { u, .. } => u.value(),
+        Constraint::TangentToCircle(TangentToCircle { u, .. }) => u.value(),
         _ => unreachable!("the TH contact"),
     };
     let before = u_of(&s);

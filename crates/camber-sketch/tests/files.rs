@@ -11,6 +11,12 @@ use std::path::PathBuf;
 
 use approx::assert_abs_diff_eq;
 use camber_geom::{BSplineCurve2, BezierCurve2, KnotVector, NurbsCurve2};
+use camber_sketch::constraints::{
+    Angle, Coincident, CurveCurveTangent, DirectionalTangentAt, Distance, EndTangent, Fixed,
+    G1Join, G1JoinFree, G2Join, Parallel, Perpendicular, PointAtParameter, PointOnCircle,
+    PointOnCurve, Radius, StartTangent, TangentToCircle, TangentToLine, TangentToLineAt,
+    TangentVectorAt,
+};
 use camber_sketch::file::{from_json, from_json_with, to_json, CustomRegistry, FileError};
 use camber_sketch::{
     CircleSide, Constraint, Contact, Custom, EntityId, Error, FixTarget, LineSide, PointRef,
@@ -59,7 +65,7 @@ fn blade_section() -> Sketch {
     .unwrap();
     let trailing = bez(&[(1.0, 0.004), (1.006, 0.003), (1.006, -0.003), (1.0, -0.004)]).unwrap();
     let join = |s: &mut Sketch, first: EntityId, second: EntityId, d: (f64, f64)| {
-        s.add_constraint(Constraint::G1Join {
+        s.add_constraint(G1Join {
             first,
             second,
             direction: Vector2::new(d.0, d.1),
@@ -71,8 +77,7 @@ fn blade_section() -> Sketch {
     join(&mut s, suction, trailing, (1.0, -0.2));
     join(&mut s, trailing, pressure, (-1.0, -0.15));
     for p in [PointRef::Start(trailing), PointRef::End(trailing)] {
-        s.add_constraint(Constraint::Fixed(FixTarget::Point(p)))
-            .unwrap();
+        s.add_constraint(Fixed::point(p)).unwrap();
     }
     s
 }
@@ -160,108 +165,121 @@ fn every_kind() -> Sketch {
         .add_nurbs(NurbsCurve2::try_new(2, knots, cps, vec![1.0, 0.7, 1.3, 1.0]).unwrap())
         .unwrap();
     let cs = [
-        Constraint::Fixed(FixTarget::Entity(circle)),
-        Constraint::Fixed(FixTarget::Point(PointRef::Control(line, 0))),
-        Constraint::Coincident(PointRef::Point(p), PointRef::End(bez)),
-        Constraint::PointAtParameter {
+        Constraint::Fixed(Fixed {
+            target: FixTarget::Entity(circle),
+        }),
+        Constraint::Fixed(Fixed {
+            target: FixTarget::Point(PointRef::Control(line, 0)),
+        }),
+        Constraint::Coincident(Coincident {
+            a: PointRef::Point(p),
+            b: PointRef::End(bez),
+        }),
+        Constraint::PointAtParameter(PointAtParameter {
             curve: bs,
             u: 0.25,
             target: Target::At(Point2::new(0.1, 0.2)),
-        },
-        Constraint::PointAtParameter {
+        }),
+        Constraint::PointAtParameter(PointAtParameter {
             curve: nu,
             u: 0.75,
             target: Target::Point(PointRef::Start(bs)),
-        },
-        Constraint::TangentVectorAt {
+        }),
+        Constraint::TangentVectorAt(TangentVectorAt {
             curve: bez,
             u: 0.5,
             vector: Vector2::new(3.0, 0.1),
-        },
-        Constraint::DirectionalTangentAt {
+        }),
+        Constraint::DirectionalTangentAt(DirectionalTangentAt {
             curve: nu,
             u: 0.3,
             direction: Vector2::new(1.0, 0.2),
             sense: Sense::Oppose,
-        },
-        Constraint::StartTangent {
+        }),
+        Constraint::StartTangent(StartTangent {
             curve: bez,
             direction: Vector2::new(1.0, 1.0),
             sense: Sense::Agree,
             form: TangentForm::Elimination,
-        },
-        Constraint::EndTangent {
+        }),
+        Constraint::EndTangent(EndTangent {
             curve: bs,
             direction: Vector2::new(1.0, -1.0),
             sense: Sense::Oppose,
             form: TangentForm::Row,
-        },
-        Constraint::TangentToLineAt {
+        }),
+        Constraint::TangentToLineAt(TangentToLineAt {
             curve: nu,
             u: 0.9,
             point: Point2::new(0.0, 5.0),
             direction: Vector2::new(1.0, 0.0),
             sense: Sense::Agree,
-        },
-        Constraint::G1Join {
+        }),
+        Constraint::G1Join(G1Join {
             first: bs,
             second: nu,
             direction: Vector2::new(1.0, 0.0),
-        },
-        Constraint::PointOnCurve {
+        }),
+        Constraint::PointOnCurve(PointOnCurve {
             point: PointRef::Point(p),
             curve: bez,
             u: Contact::Free(0.4),
-        },
-        Constraint::TangentToLine {
+        }),
+        Constraint::TangentToLine(TangentToLine {
             curve: bs,
             line,
             u: Contact::Free(0.5),
             side: LineSide::Left,
             sense: Sense::Oppose,
-        },
-        Constraint::TangentToCircle {
+        }),
+        Constraint::TangentToCircle(TangentToCircle {
             curve: nu,
             circle,
             u: Contact::At(0.6),
             side: CircleSide::Outside,
             rotation: Rotation::Clockwise,
-        },
-        Constraint::PointOnCircle {
+        }),
+        Constraint::PointOnCircle(PointOnCircle {
             point: PointRef::Control(line2, 1),
             circle,
-        },
-        Constraint::Radius {
+        }),
+        Constraint::Radius(Radius {
             circle,
             radius: 0.75,
-        },
-        Constraint::Distance {
+        }),
+        Constraint::Distance(Distance {
             a: PointRef::Control(line, 0),
             b: PointRef::Control(line2, 0),
             distance: 2.0,
-        },
-        Constraint::Parallel(line, line2),
-        Constraint::Perpendicular(line, line2),
-        Constraint::Angle {
+        }),
+        Constraint::Parallel(Parallel {
+            first: line,
+            second: line2,
+        }),
+        Constraint::Perpendicular(Perpendicular {
+            first: line,
+            second: line2,
+        }),
+        Constraint::Angle(Angle {
             first: line,
             second: line2,
             angle: 0.3,
-        },
-        Constraint::G1JoinFree {
+        }),
+        Constraint::G1JoinFree(G1JoinFree {
             first: bez,
             second: bs,
-        },
-        Constraint::G2Join {
+        }),
+        Constraint::G2Join(G2Join {
             first: bs,
             second: nu,
-        },
-        Constraint::CurveCurveTangent {
+        }),
+        Constraint::CurveCurveTangent(CurveCurveTangent {
             first: bez,
             u: Contact::Free(0.2),
             second: nu,
             v: Contact::At(0.8),
             sense: Sense::Oppose,
-        },
+        }),
     ];
     for c in cs {
         s.add_constraint(c).unwrap();
@@ -453,6 +471,9 @@ impl Residual for Gap {
     fn dim(&self) -> usize {
         1
     }
+    fn block_sizes(&self) -> Option<Vec<usize>> {
+        Some(vec![2, 2])
+    }
     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
         out[0] = x[1][0] - x[0][0] - nalgebra::convert::<f64, T>(self.0);
     }
@@ -463,12 +484,12 @@ impl Residual for Gap {
 
 fn registry() -> CustomRegistry {
     let mut r = CustomRegistry::new();
-    r.register("gap", |params, points| {
+    r.register("gap", |params, args| {
         let gap = params
             .get("gap")
             .and_then(serde_json::Value::as_f64)
             .ok_or_else(|| "needs a number \"gap\"".to_owned())?;
-        Ok(Custom::new(Gap(gap), points))
+        Ok(Custom::plain(Gap(gap), args))
     });
     r
 }

@@ -8,12 +8,19 @@
 #![allow(clippy::unwrap_used)]
 
 use camber_geom::{BSplineCurve2, KnotVector};
-use camber_sketch::clearance::{Clearance, TangentSpeed, Target};
-use camber_sketch::contact::{
-    CircleContact, CurvatureMatch, CurveCurveContact, LineAngle, LineContact, OnCircle, OnCurve,
-    Param, PointDistance, RadiusValue, TangentsParallel,
-};
+use camber_sketch::constraints::angle::LineAngle;
+use camber_sketch::constraints::curve_curve_tangent::CurveCurveContact;
+use camber_sketch::constraints::distance::PointDistance;
+use camber_sketch::constraints::g1_join_free::TangentsParallel;
+use camber_sketch::constraints::g2_join::CurvatureMatch;
+use camber_sketch::constraints::point_on_circle::OnCircle;
+use camber_sketch::constraints::point_on_curve::OnCurve;
+use camber_sketch::constraints::radius::RadiusValue;
+use camber_sketch::constraints::tangent_to_circle::CircleContact;
+use camber_sketch::constraints::tangent_to_line::LineContact;
 use camber_sketch::curve_eval::CurveBasis;
+use camber_sketch::residuals::clearance::{Clearance, TangentSpeed, Target};
+use camber_sketch::residuals::Param;
 use camber_sketch::Entity;
 use camber_solve::testing::check_jacobian;
 use nalgebra::Point2;

@@ -7,11 +7,10 @@
 #![allow(clippy::unwrap_used)]
 
 use camber_geom::{BezierCurve2, ParametricCurve};
+use camber_sketch::constraints::{Fixed, TangentToCircle};
 use camber_sketch::displacement::DisplacementOptions;
 use camber_sketch::file::to_json;
-use camber_sketch::{
-    CircleSide, Constraint, Contact, Entity, EntityId, FixTarget, Rotation, Sketch,
-};
+use camber_sketch::{CircleSide, Contact, Entity, EntityId, Rotation, Sketch};
 use nalgebra::Point2;
 
 /// A cubic under `k` fixed circles of radius 0.3 in a row at height 1.5, each touched from
@@ -33,9 +32,8 @@ fn under_circles(k: usize) -> (Sketch, EntityId, Vec<EntityId>) {
     for i in 0..k {
         let x = 0.3 + 2.4 * i as f64 / (k - 1).max(1) as f64;
         let c = s.add_circle(Point2::new(x, 1.5), 0.3).unwrap();
-        s.add_constraint(Constraint::Fixed(FixTarget::Entity(c)))
-            .unwrap();
-        s.add_constraint(Constraint::TangentToCircle {
+        s.add_constraint(Fixed::entity(c)).unwrap();
+        s.add_constraint(TangentToCircle {
             curve,
             circle: c,
             u: Contact::Free((i as f64 + 0.5) / k as f64),

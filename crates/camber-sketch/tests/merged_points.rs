@@ -8,7 +8,8 @@
 
 use approx::assert_abs_diff_eq;
 use camber_geom::BezierCurve2;
-use camber_sketch::{Constraint, EntityId, Error, FixTarget, PointRef, Sketch};
+use camber_sketch::constraints::{Coincident, Fixed};
+use camber_sketch::{EntityId, Error, PointRef, Sketch};
 use nalgebra::Point2;
 
 fn cubic(s: &mut Sketch, x0: f64, y0: f64) -> EntityId {
@@ -28,8 +29,11 @@ fn joined(s: &mut Sketch) -> (EntityId, EntityId) {
     let a = cubic(s, 0.0, 0.0);
     // b starts 0.4 right of and 0.2 above a's end.
     let b = cubic(s, 3.4, 0.2);
-    s.add_constraint(Constraint::Coincident(PointRef::End(a), PointRef::Start(b)))
-        .unwrap();
+    s.add_constraint(Coincident {
+        a: PointRef::End(a),
+        b: PointRef::Start(b),
+    })
+    .unwrap();
     (a, b)
 }
 
@@ -75,16 +79,22 @@ fn duplicated_and_cyclic_coincidences_are_named_redundant() {
     let mut s = Sketch::new();
     let (a, b) = joined(&mut s);
     let dup = s
-        .add_constraint(Constraint::Coincident(PointRef::Start(b), PointRef::End(a)))
+        .add_constraint(Coincident {
+            a: PointRef::Start(b),
+            b: PointRef::End(a),
+        })
         .unwrap();
     let p = s.add_point(Point2::new(3.0, 0.5)).unwrap();
-    s.add_constraint(Constraint::Coincident(PointRef::Point(p), PointRef::End(a)))
-        .unwrap();
+    s.add_constraint(Coincident {
+        a: PointRef::Point(p),
+        b: PointRef::End(a),
+    })
+    .unwrap();
     let cycle = s
-        .add_constraint(Constraint::Coincident(
-            PointRef::Start(b),
-            PointRef::Point(p),
-        ))
+        .add_constraint(Coincident {
+            a: PointRef::Start(b),
+            b: PointRef::Point(p),
+        })
         .unwrap();
     let analysis = &s.analyze().unwrap()[0].analysis;
     assert_eq!(analysis.redundant, vec![dup, cycle]);
@@ -102,13 +112,13 @@ fn two_fixed_points_that_disagree_still_conflict() {
     let a = cubic(&mut s, 0.0, 0.0);
     let b = cubic(&mut s, 3.4, 0.2);
     let joint = s
-        .add_constraint(Constraint::Coincident(PointRef::End(a), PointRef::Start(b)))
+        .add_constraint(Coincident {
+            a: PointRef::End(a),
+            b: PointRef::Start(b),
+        })
         .unwrap();
-    s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::End(a))))
-        .unwrap();
-    let second = s
-        .add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::Start(b))))
-        .unwrap();
+    s.add_constraint(Fixed::point(PointRef::End(a))).unwrap();
+    let second = s.add_constraint(Fixed::point(PointRef::Start(b))).unwrap();
     let err = s.solve().unwrap_err();
     let Error::Conflicting { constraints } = err else {
         panic!("expected a conflict, got {err:?}");

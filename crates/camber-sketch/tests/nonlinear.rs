@@ -7,10 +7,13 @@
 
 use approx::assert_abs_diff_eq;
 use camber_geom::{BezierCurve2, ParametricCurve};
+use camber_sketch::constraints::{
+    Angle, CurveCurveTangent, Distance, Fixed, G1JoinFree, G2Join, Parallel, Perpendicular,
+    PointOnCircle, Radius, TangentToCircle, TangentToLine,
+};
 use camber_sketch::workloads::w2_bspline7;
 use camber_sketch::{
-    CircleSide, Constraint, Contact, Entity, Error, FixTarget, LineSide, PointRef, Rotation, Sense,
-    Sketch,
+    CircleSide, Constraint, Contact, Entity, Error, LineSide, PointRef, Rotation, Sense, Sketch,
 };
 use camber_solve::{SolverChoice, SolverKind};
 use nalgebra::{Point2, Vector2};
@@ -24,7 +27,8 @@ fn bezier(s: &Sketch, id: camber_sketch::EntityId) -> BezierCurve2<f64> {
 
 fn contact_u(s: &Sketch, id: camber_solve::ConstraintId) -> f64 {
     match s.constraint(id).unwrap() {
-        Constraint::TangentToLine { u, .. } | Constraint::TangentToCircle { u, .. } => u.value(),
+        Constraint::TangentToLine(TangentToLine { u, .. })
+        | Constraint::TangentToCircle(TangentToCircle { u, .. }) => u.value(),
         _ => panic!("not a contact"),
     }
 }
@@ -46,10 +50,9 @@ fn tangent_to_line_at_a_free_parameter() {
     let line = s
         .add_line(Point2::new(0.0, 0.0), Point2::new(1.0, 0.0))
         .unwrap();
-    s.add_constraint(Constraint::Fixed(FixTarget::Entity(line)))
-        .unwrap();
+    s.add_constraint(Fixed::entity(line)).unwrap();
     let id = s
-        .add_constraint(Constraint::TangentToLine {
+        .add_constraint(TangentToLine {
             curve: c,
             line,
             u: Contact::Free(0.5),
@@ -76,17 +79,17 @@ fn points_circles_and_distances() {
     let circle = s.add_circle(Point2::new(0.0, 0.0), 1.5).unwrap();
     let p = s.add_point(Point2::new(1.0, 1.0)).unwrap();
     let q = s.add_point(Point2::new(3.0, 1.0)).unwrap();
-    s.add_constraint(Constraint::Radius {
+    s.add_constraint(Radius {
         circle,
         radius: 2.0,
     })
     .unwrap();
-    s.add_constraint(Constraint::PointOnCircle {
+    s.add_constraint(PointOnCircle {
         point: PointRef::Point(p),
         circle,
     })
     .unwrap();
-    s.add_constraint(Constraint::Distance {
+    s.add_constraint(Distance {
         a: PointRef::Point(p),
         b: PointRef::Point(q),
         distance: 1.0,
@@ -111,8 +114,7 @@ fn parallel_perpendicular_and_angle_between_lines() {
     let base = s
         .add_line(Point2::new(0.0, 0.0), Point2::new(1.0, 0.0))
         .unwrap();
-    s.add_constraint(Constraint::Fixed(FixTarget::Entity(base)))
-        .unwrap();
+    s.add_constraint(Fixed::entity(base)).unwrap();
     let a = s
         .add_line(Point2::new(0.0, 1.0), Point2::new(1.0, 1.2))
         .unwrap();
@@ -122,11 +124,18 @@ fn parallel_perpendicular_and_angle_between_lines() {
     let c = s
         .add_line(Point2::new(0.0, 3.0), Point2::new(1.0, 3.4))
         .unwrap();
-    s.add_constraint(Constraint::Parallel(base, a)).unwrap();
-    s.add_constraint(Constraint::Perpendicular(base, b))
-        .unwrap();
+    s.add_constraint(Parallel {
+        first: base,
+        second: a,
+    })
+    .unwrap();
+    s.add_constraint(Perpendicular {
+        first: base,
+        second: b,
+    })
+    .unwrap();
     let theta = 30f64.to_radians();
-    s.add_constraint(Constraint::Angle {
+    s.add_constraint(Angle {
         first: base,
         second: c,
         angle: theta,
@@ -171,8 +180,7 @@ fn g1_join_with_a_free_direction() {
             .unwrap(),
         )
         .unwrap();
-    s.add_constraint(Constraint::G1JoinFree { first, second })
-        .unwrap();
+    s.add_constraint(G1JoinFree { first, second }).unwrap();
     s.solve().unwrap();
     let (c1, c2) = (bezier(&s, first), bezier(&s, second));
     let (p1, t1) = c1.point_and_derivative(1.0).unwrap();
@@ -206,19 +214,17 @@ fn conflicting_circles_are_named() {
     let mut s = Sketch::new();
     let small = s.add_circle(Point2::new(0.0, 0.0), 1.0).unwrap();
     let large = s.add_circle(Point2::new(0.0, 0.0), 2.0).unwrap();
-    s.add_constraint(Constraint::Fixed(FixTarget::Entity(small)))
-        .unwrap();
-    s.add_constraint(Constraint::Fixed(FixTarget::Entity(large)))
-        .unwrap();
+    s.add_constraint(Fixed::entity(small)).unwrap();
+    s.add_constraint(Fixed::entity(large)).unwrap();
     let p = s.add_point(Point2::new(1.5, 0.1)).unwrap();
     let a = s
-        .add_constraint(Constraint::PointOnCircle {
+        .add_constraint(PointOnCircle {
             point: PointRef::Point(p),
             circle: small,
         })
         .unwrap();
     let b = s
-        .add_constraint(Constraint::PointOnCircle {
+        .add_constraint(PointOnCircle {
             point: PointRef::Point(p),
             circle: large,
         })
@@ -246,10 +252,9 @@ fn a_contact_on_the_wrong_side_is_refused() {
         .add_line(Point2::new(-2.0, 1.3), Point2::new(2.0, 1.1))
         .unwrap();
     let circle = s.add_circle(Point2::new(0.0, 0.0), 1.0).unwrap();
-    s.add_constraint(Constraint::Fixed(FixTarget::Entity(circle)))
-        .unwrap();
+    s.add_constraint(Fixed::entity(circle)).unwrap();
     let id = s
-        .add_constraint(Constraint::TangentToCircle {
+        .add_constraint(TangentToCircle {
             curve: c,
             circle,
             u: Contact::Free(0.5),
@@ -270,7 +275,7 @@ fn a_contact_on_the_wrong_side_is_refused() {
     // The same contact asked from outside solves, and stores the solved parameter.
     s.remove_constraint(id).unwrap();
     let id = s
-        .add_constraint(Constraint::TangentToCircle {
+        .add_constraint(TangentToCircle {
             curve: c,
             circle,
             u: Contact::Free(0.5),
@@ -313,10 +318,9 @@ fn two_curves_touch_at_free_parameters() {
             .unwrap(),
         )
         .unwrap();
-    s.add_constraint(Constraint::Fixed(FixTarget::Entity(lower)))
-        .unwrap();
+    s.add_constraint(Fixed::entity(lower)).unwrap();
     let id = s
-        .add_constraint(Constraint::CurveCurveTangent {
+        .add_constraint(CurveCurveTangent {
             first: lower,
             u: Contact::Free(0.5),
             second: upper,
@@ -325,7 +329,9 @@ fn two_curves_touch_at_free_parameters() {
         })
         .unwrap();
     s.solve().unwrap();
-    let Constraint::CurveCurveTangent { u, v, .. } = s.constraint(id).unwrap().clone() else {
+    let Constraint::CurveCurveTangent(CurveCurveTangent { u, v, .. }) =
+        s.constraint(id).unwrap().clone()
+    else {
         panic!("constraint");
     };
     let (p1, t1) = bezier(&s, lower).point_and_derivative(u.value()).unwrap();
@@ -367,8 +373,7 @@ fn g2_join_matches_curvature() {
             .unwrap(),
         )
         .unwrap();
-    s.add_constraint(Constraint::G2Join { first, second })
-        .unwrap();
+    s.add_constraint(G2Join { first, second }).unwrap();
     s.solve().unwrap();
     let curvature = |c: &BezierCurve2<f64>, u: f64| {
         let [_, d1, d2] = c.second_order(u).unwrap();

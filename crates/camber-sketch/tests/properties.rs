@@ -8,7 +8,8 @@
 use approx::assert_abs_diff_eq;
 use camber_geom::bernstein::{bernstein, bernstein_derivatives};
 use camber_geom::{BezierCurve2, ParametricCurve};
-use camber_sketch::{Constraint, EntityId, Error, FixTarget, PointRef, Sense, Sketch};
+use camber_sketch::constraints::{DirectionalTangentAt, Fixed, PointAtParameter};
+use camber_sketch::{EntityId, Error, PointRef, Sense, Sketch};
 use camber_sketch::{TangentForm, Target};
 use nalgebra::{DMatrix, DVector, Point2, Vector2};
 use proptest::prelude::*;
@@ -40,18 +41,18 @@ proptest! {
         let start = BezierCurve2::try_new(points).unwrap();
         let mut s = Sketch::new();
         let c = s.add_bezier(start.clone()).unwrap();
-        s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::Control(c, 0)))).unwrap();
+        s.add_constraint(Fixed::point(PointRef::Control(c, 0))).unwrap();
         let (u1, u2, ut) = us;
         let mut targets = Vec::new();
         for (k, u) in [u1, u2].into_iter().enumerate() {
             let t = start.point(u).unwrap() + Vector2::new(offsets[2 * k], offsets[2 * k + 1]);
             targets.push((u, t));
-            s.add_constraint(Constraint::PointAtParameter { curve: c, u, target: Target::At(t) }).unwrap();
+            s.add_constraint(PointAtParameter { curve: c, u, target: Target::At(t) }).unwrap();
         }
         let d0 = start.derivative(ut).unwrap();
         prop_assume!(d0.norm() > 1e-3);
         let d = nalgebra::Rotation2::new(angle) * d0;
-        s.add_constraint(Constraint::DirectionalTangentAt { curve: c, u: ut, direction: d, sense: Sense::Agree }).unwrap();
+        s.add_constraint(DirectionalTangentAt { curve: c, u: ut, direction: d, sense: Sense::Agree }).unwrap();
 
         // J over the free unknowns (P₁, P₂, P₃ as x, y pairs) and g at the start.
         let x0 = flat(&s, c);
@@ -133,7 +134,7 @@ fn forms(offset: Vector2<f64>) -> (Outcome, Outcome) {
         let (mut s, c, d) = camber_sketch::workloads::w1(form).unwrap();
         let target = s.curve_point(c, 0.5).unwrap() + offset;
         let x0 = flat(&s, c);
-        s.add_constraint(Constraint::PointAtParameter {
+        s.add_constraint(PointAtParameter {
             curve: c,
             u: 0.5,
             target: Target::At(target),

@@ -11,9 +11,8 @@ use std::sync::Arc;
 
 use approx::assert_abs_diff_eq;
 use camber_geom::BezierCurve2;
-use camber_sketch::{
-    Constraint, Custom, Error, FixTarget, PointRef, Sense, Sketch, TangentForm, Target,
-};
+use camber_sketch::constraints::{Fixed, PointAtParameter, StartTangent};
+use camber_sketch::{Constraint, Custom, Error, PointRef, Sense, Sketch, TangentForm, Target};
 use camber_solve::{Residual, Scalar};
 use nalgebra::{Point2, Vector2};
 
@@ -30,6 +29,10 @@ impl Residual for CountingOffset {
     }
     fn dim(&self) -> usize {
         2
+    }
+
+    fn block_sizes(&self) -> Option<Vec<usize>> {
+        Some(vec![2, 2])
     }
     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
         self.calls.fetch_add(1, Ordering::Relaxed);
@@ -124,20 +127,20 @@ fn elimination_refuses_a_solve_that_needs_a_negative_t() {
         )
         .unwrap();
     let tangent = s
-        .add_constraint(Constraint::StartTangent {
+        .add_constraint(StartTangent {
             curve: c,
             direction: Vector2::new(1.0, 0.0),
             sense: Sense::Agree,
             form: TangentForm::Elimination,
         })
         .unwrap();
-    s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::Control(c, 1))))
+    s.add_constraint(Fixed::point(PointRef::Control(c, 1)))
         .unwrap();
     s.solve().unwrap();
     let before = s.entity(c).unwrap().clone();
 
     let ahead = s
-        .add_constraint(Constraint::PointAtParameter {
+        .add_constraint(PointAtParameter {
             curve: c,
             u: 0.0,
             target: Target::At(Point2::new(5.0, 1.0)),
@@ -152,7 +155,7 @@ fn elimination_refuses_a_solve_that_needs_a_negative_t() {
 
     // Behind P₁ instead (t = 2 > 0) the same system solves, the sense kept.
     s.remove_constraint(ahead).unwrap();
-    s.add_constraint(Constraint::PointAtParameter {
+    s.add_constraint(PointAtParameter {
         curve: c,
         u: 0.0,
         target: Target::At(Point2::new(-1.0, 1.0)),

@@ -6,7 +6,8 @@
 
 use approx::assert_relative_eq;
 use camber_geom::BezierCurve2;
-use camber_sketch::{Constraint, Error, FixTarget, PointRef, Sketch, Target};
+use camber_sketch::constraints::{Fixed, PointAtParameter};
+use camber_sketch::{Error, PointRef, Sketch, Target};
 use nalgebra::Point2;
 
 /// A straight quadratic P0 = (0, 0), P1 = (1, 0), P2 = (2, 0) whose midpoint C(½) is pulled to
@@ -23,7 +24,7 @@ fn pulled_quadratic(weights: [f64; 3]) -> (Sketch, camber_sketch::EntityId) {
     for (i, w) in weights.into_iter().enumerate() {
         s.set_weight(PointRef::Control(c, i), w).unwrap();
     }
-    s.add_constraint(Constraint::PointAtParameter {
+    s.add_constraint(PointAtParameter {
         curve: c,
         u: 0.5,
         target: Target::At(Point2::new(1.0, 1.0)),
@@ -66,9 +67,9 @@ fn heavier_points_move_less_while_dragging() {
     ])
     .unwrap();
     let c = s.add_bezier(cubic).unwrap();
-    s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::Control(c, 3))))
+    s.add_constraint(Fixed::point(PointRef::Control(c, 3)))
         .unwrap();
-    s.add_constraint(Constraint::PointAtParameter {
+    s.add_constraint(PointAtParameter {
         curve: c,
         u: 0.5,
         target: Target::At(Point2::new(1.5, 0.75)),

@@ -168,6 +168,21 @@ pub enum Error {
         /// The central-difference value.
         central: f64,
     },
+    /// A residual was given blocks of another count or length than it declares
+    /// ([`crate::Residual::block_sizes`]); nothing was added.
+    #[error(
+        "residual \"{residual}\" of {owner} reads blocks of lengths {expected:?} but was given {found:?}"
+    )]
+    BlockShape {
+        /// The residual's name.
+        residual: String,
+        /// The constraint it belongs to.
+        owner: ConstraintId,
+        /// The block lengths it declares.
+        expected: Vec<usize>,
+        /// The lengths of the blocks given.
+        found: Vec<usize>,
+    },
     /// The solver asked for was not built into this crate (a cargo feature is off).
     #[error("{solver} is not available: {reason}")]
     SolverUnavailable {

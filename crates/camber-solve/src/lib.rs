@@ -73,7 +73,7 @@ pub use ids::{AuxId, BlockId, ConstraintId, ResidualId, UnknownId, Var};
 pub use lsq::{solve_least_squares, LsqOptions, LsqReport};
 pub use min_norm::MinNormFactorization;
 pub use normal::NormalCache;
-pub use problem::{Binding, Problem};
+pub use problem::{Binding, Problem, ProblemState};
 pub use reduced::{Linearization, ReducedMap};
 pub use report::{ConstraintResidual, SolveReport, SolverKind, Status};
 pub use residual::{DynResidual, Residual};

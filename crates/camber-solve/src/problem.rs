@@ -125,10 +125,12 @@ impl Problem {
     }
 
     /// Adds a residual block reading `blocks` (in that order), owned by the caller's constraint
-    /// `owner`. The problem does not check the block lengths against what the residual expects.
+    /// `owner`. The blocks must have the count and lengths the residual declares, if it does
+    /// ([`Residual::block_sizes`]), which is what lets its `eval` index them freely.
     ///
     /// # Errors
-    /// [`Error::UnknownBlock`] for a block this problem did not issue.
+    /// [`Error::UnknownBlock`] for a block this problem did not issue; [`Error::BlockShape`]
+    /// for blocks of another count or length than declared. Nothing is added then.
     pub fn add_residual<R: Residual>(
         &mut self,
         residual: R,
@@ -141,15 +143,26 @@ impl Problem {
     /// [`Problem::add_residual`] for an already boxed residual.
     ///
     /// # Errors
-    /// [`Error::UnknownBlock`] for a block this problem did not issue.
+    /// [`Error::UnknownBlock`] for a block this problem did not issue;
+    /// [`Error::BlockShape`] when the blocks differ in count or length from the residual's
+    /// [`DynResidual::block_sizes`].
     pub fn add_dyn_residual(
         &mut self,
         residual: Box<dyn DynResidual>,
         blocks: &[BlockId],
         owner: ConstraintId,
     ) -> Result<ResidualId> {
+        let mut found = Vec::with_capacity(blocks.len());
         for b in blocks {
-            self.block_range(*b)?;
+            found.push(self.block_range(*b)?.1);
+        }
+        if let Some(expected) = residual.block_sizes().filter(|e| *e != found) {
+            return Err(Error::BlockShape {
+                residual: residual.name().to_owned(),
+                owner,
+                expected,
+                found,
+            });
         }
         self.residuals.push(ResidualBlock {
             residual,
@@ -157,6 +170,52 @@ impl Problem {
             owner,
         });
         Ok(ResidualId(self.residuals.len() - 1))
+    }
+}
+
+/// The values of a problem's unknowns and auxiliary unknowns at one moment, to go back to
+/// ([`Problem::state`], [`Problem::restore`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ProblemState {
+    values: Vec<f64>,
+    aux_values: Vec<f64>,
+}
+
+/// # Editing rows and states
+impl Problem {
+    /// Removes every residual block after the first `count` (rows added last, such as the
+    /// active rows of an inequality, can be taken back without rebuilding the problem).
+    /// Nothing happens when there are `count` or fewer.
+    pub fn truncate_residuals(&mut self, count: usize) {
+        self.residuals.truncate(count);
+    }
+
+    /// The current values of the unknowns and auxiliary unknowns.
+    pub fn state(&self) -> ProblemState {
+        ProblemState {
+            values: self.values.clone(),
+            aux_values: self.aux_values.clone(),
+        }
+    }
+
+    /// Goes back to a state taken from this problem (blocks and auxiliaries added since keep
+    /// their values).
+    ///
+    /// ```
+    /// use camber_solve::Problem;
+    /// let mut p = Problem::new();
+    /// let b = p.add_block(&[1.0, 2.0])?;
+    /// let saved = p.state();
+    /// p.set_block_values(b, &[5.0, 6.0])?;
+    /// p.restore(&saved);
+    /// assert_eq!(p.values(), &[1.0, 2.0]);
+    /// # Ok::<(), camber_solve::Error>(())
+    /// ```
+    pub fn restore(&mut self, state: &ProblemState) {
+        let n = state.values.len().min(self.values.len());
+        self.values[..n].copy_from_slice(&state.values[..n]);
+        let m = state.aux_values.len().min(self.aux_values.len());
+        self.aux_values[..m].copy_from_slice(&state.aux_values[..m]);
     }
 }
 

@@ -16,8 +16,16 @@ use crate::scalar::Scalar;
 /// A user constraint written once, generically over the scalar type.
 ///
 /// `x` holds one slice per parameter block the residual reads, in the order given to
-/// [`crate::Problem::add_residual`]; `out` has exactly [`Residual::dim`] entries. `eval` may assume
-/// those lengths (the problem checks them) and must not branch on derivative parts (compare
+/// [`crate::Problem::add_residual`]; `out` has exactly [`Residual::dim`] entries.
+///
+/// **Block shapes are declared, and checked once.** [`Residual::block_sizes`] says how many
+/// blocks the residual reads and how long each is. [`crate::Problem::add_residual`] compares
+/// that with the blocks it is given and refuses a mismatch with
+/// [`Error::BlockShape`](crate::Error::BlockShape) naming the residual; every later
+/// evaluation through the problem then hands `eval` exactly those shapes, so `eval` may index
+/// `x` and `out` freely. A residual that does not declare its blocks (`None`, the default)
+/// cannot be checked and must cope with whatever blocks it is given; camber-sketch refuses
+/// such residuals in custom constraints. `eval` must not branch on derivative parts (compare
 /// real parts with [`crate::scalar::re`] if it branches at all).
 ///
 /// ```
@@ -30,6 +38,7 @@ use crate::scalar::Scalar;
 /// impl Residual for Linear {
 ///     fn name(&self) -> &str { "linear" }
 ///     fn dim(&self) -> usize { 1 }
+///     fn block_sizes(&self) -> Option<Vec<usize>> { Some(vec![self.a.len()]) }
 ///     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
 ///         let mut s = camber_solve::scalar::cst::<T>(-self.b);
 ///         for (ai, xi) in self.a.iter().zip(x[0]) {
@@ -50,6 +59,12 @@ pub trait Residual: Debug + Send + Sync + 'static {
     fn name(&self) -> &str;
     /// Number of rows (residual values) this block contributes.
     fn dim(&self) -> usize;
+    /// The length of every block read, in order (`Some(vec![2, 2])` for two points): the
+    /// problem refuses blocks of another count or length (see the trait documentation).
+    /// `None` (the default) declares nothing and is not checked.
+    fn block_sizes(&self) -> Option<Vec<usize>> {
+        None
+    }
     /// Writes g(x) into `out` (`dim()` entries); `x` holds one slice per block read.
     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]);
     /// Whether g is affine in the unknowns it reads (g(x) = M·x + b with M, b constant). Only
@@ -76,6 +91,8 @@ pub trait DynResidual: Debug + Send + Sync {
     fn name(&self) -> &str;
     /// Number of rows.
     fn dim(&self) -> usize;
+    /// The length of every block read, in order, when the residual declares them.
+    fn block_sizes(&self) -> Option<Vec<usize>>;
     /// Whether the residual is affine in its unknowns.
     fn is_affine(&self) -> bool;
     /// Writes g(x) into `out`.
@@ -138,6 +155,10 @@ impl<R: Residual> DynResidual for R {
         Residual::dim(self)
     }
 
+    fn block_sizes(&self) -> Option<Vec<usize>> {
+        Residual::block_sizes(self)
+    }
+
     fn is_affine(&self) -> bool {
         Residual::is_affine(self)
     }
@@ -185,6 +206,50 @@ impl<R: Residual> DynResidual for R {
     }
 }
 
+/// A shared residual is a residual: one object can sit in several problems (a sketch builds a
+/// component's problem from the same constraint objects at every solve).
+impl<R: DynResidual + ?Sized> DynResidual for std::sync::Arc<R> {
+    fn name(&self) -> &str {
+        (**self).name()
+    }
+    fn dim(&self) -> usize {
+        (**self).dim()
+    }
+    fn block_sizes(&self) -> Option<Vec<usize>> {
+        (**self).block_sizes()
+    }
+    fn is_affine(&self) -> bool {
+        (**self).is_affine()
+    }
+    fn values(&self, x: &[&[f64]], out: &mut [f64]) -> Result<()> {
+        (**self).values(x, out)
+    }
+    fn jacobian(&self, x: &[&[f64]], values: &mut [f64], jac: &mut [f64]) -> Result<()> {
+        (**self).jacobian(x, values, jac)
+    }
+    fn jacobian_active(
+        &self,
+        x: &[&[f64]],
+        active: &[bool],
+        values: &mut [f64],
+        jac: &mut [f64],
+    ) -> Result<()> {
+        (**self).jacobian_active(x, active, values, jac)
+    }
+    fn weighted_hessian(
+        &self,
+        x: &[&[f64]],
+        weights: &[f64],
+        active: &[bool],
+        out: &mut [f64],
+    ) -> Result<bool> {
+        (**self).weighted_hessian(x, weights, active, out)
+    }
+    fn as_any(&self) -> &dyn Any {
+        (**self).as_any()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -200,6 +265,9 @@ mod tests {
         }
         fn dim(&self) -> usize {
             2
+        }
+        fn block_sizes(&self) -> Option<Vec<usize>> {
+            Some(vec![2, 1])
         }
         fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
             out[0] = x[0][0] * x[1][0] - T::one();

@@ -193,3 +193,50 @@ fn testing_module_accepts_the_nonlinear_residual() {
     .unwrap();
     assert!(worst.error < 1e-8);
 }
+
+/// |p − q|² − 1 over two declared point blocks.
+#[derive(Debug)]
+struct DeclaredDistance;
+
+impl Residual for DeclaredDistance {
+    fn name(&self) -> &str {
+        "declared distance"
+    }
+    fn dim(&self) -> usize {
+        1
+    }
+    fn block_sizes(&self) -> Option<Vec<usize>> {
+        Some(vec![2, 2])
+    }
+    fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+        let (dx, dy) = (x[1][0] - x[0][0], x[1][1] - x[0][1]);
+        out[0] = dx * dx + dy * dy - T::one();
+    }
+}
+
+/// Issue 12: a residual given fewer (or other) blocks than it reads is refused when it is
+/// added, with a typed error naming it, instead of panicking inside its `eval` later.
+#[test]
+fn issue_12_declared_block_shapes_are_checked_on_add() {
+    let mut p = Problem::new();
+    let a = p.add_block(&[0.0, 0.0]).unwrap();
+    let s = p.add_block(&[1.0]).unwrap();
+    assert_eq!(
+        p.add_residual(DeclaredDistance, &[a], ConstraintId(4)),
+        Err(Error::BlockShape {
+            residual: "declared distance".into(),
+            owner: ConstraintId(4),
+            expected: vec![2, 2],
+            found: vec![2],
+        })
+    );
+    assert!(matches!(
+        p.add_residual(DeclaredDistance, &[a, s], ConstraintId(4)),
+        Err(Error::BlockShape { .. })
+    ));
+    assert_eq!(p.num_rows(), 0);
+    let b = p.add_block(&[3.0, 4.0]).unwrap();
+    p.add_residual(DeclaredDistance, &[a, b], ConstraintId(4))
+        .unwrap();
+    assert_eq!(p.num_rows(), 1);
+}

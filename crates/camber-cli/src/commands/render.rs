@@ -77,6 +77,10 @@ fn draw_glyph(svg: &mut Svg, g: &Glyph, size: f64, colour: &str) {
             );
         }
         Glyph::Ring(q) => svg.circle(*q, size * 0.7, &Style::stroke(colour, 1.2)),
+        Glyph::Mark(q, text) => {
+            let at = q + Vector2::new(size * 0.6, size * 0.6);
+            svg.text(at, text, 11.0, crate::svg::Anchor::Start, colour);
+        }
     }
 }
 

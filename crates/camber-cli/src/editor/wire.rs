@@ -81,29 +81,34 @@ impl EntityJson {
 pub struct GlyphJson {
     /// The constraint it marks.
     pub constraint: u64,
-    /// `arrow`, `fixed` or `ring`.
+    /// `arrow`, `fixed`, `ring` or `mark`.
     pub shape: &'static str,
     /// Where it sits.
     pub at: [f64; 2],
     /// An arrow's direction (any length).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub dir: Option<[f64; 2]>,
+    /// A mark's text ("H", "V", "=", "R", …).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub text: Option<&'static str>,
     /// Whether the DOF analysis names the constraint conflicting (drawn in red).
     pub conflicting: bool,
 }
 
 impl GlyphJson {
     fn of(constraint: ConstraintId, g: Glyph, conflicting: bool) -> Self {
-        let (shape, at, dir) = match g {
-            Glyph::Arrow(p, d) => ("arrow", p, Some([d.x, d.y])),
-            Glyph::Fixed(p) => ("fixed", p, None),
-            Glyph::Ring(p) => ("ring", p, None),
+        let (shape, at, dir, text) = match g {
+            Glyph::Arrow(p, d) => ("arrow", p, Some([d.x, d.y]), None),
+            Glyph::Fixed(p) => ("fixed", p, None, None),
+            Glyph::Ring(p) => ("ring", p, None, None),
+            Glyph::Mark(p, t) => ("mark", p, None, Some(t)),
         };
         Self {
             constraint: constraint.0,
             shape,
             at: [at.x, at.y],
             dir,
+            text,
             conflicting,
         }
     }

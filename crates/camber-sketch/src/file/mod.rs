@@ -14,9 +14,9 @@
 //! }
 //! ```
 //!
-//! The file form is its own set of types (private here), separate from [`Constraint`](crate::Constraint): the
-//! file keeps snake-case tags and named fields whatever the Rust enum looks like, and a new
-//! constraint variant only needs one file variant and two match arms below.
+//! Each constraint kind's file form is its own struct's serde form under its tag
+//! ([`crate::constraints`]): the fields are named as in Rust, so a new kind needs nothing here.
+//! Entities have a file form of their own (private here).
 //!
 //! Loading ([`from_json`], [`from_json_with`]) runs in three stages, each reporting its own
 //! failures: JSON syntax and numbers (`1e999` is out of range, so no non-finite value gets in);
@@ -34,15 +34,15 @@ use std::sync::Arc;
 
 use serde_json::Value;
 
-use crate::constraint::Custom;
+use crate::constraints::custom::{Arg, Custom};
+use crate::constraints::Constraint;
 use crate::errors::Error;
-use crate::ids::{ConstraintId, EntityId, PointRef};
+use crate::ids::{ConstraintId, EntityId};
 use crate::sketch::Sketch;
 
-mod leaf;
 mod raw;
 
-use raw::{RawBody, RawConstraint, RawEntity, RawShape, RawSketch};
+use raw::{RawEntity, RawShape, RawSketch};
 
 /// The format version this build reads and writes.
 pub const FORMAT_VERSION: u64 = 1;
@@ -119,17 +119,18 @@ pub enum FileError {
     },
 }
 
-/// Decodes the parameters of one custom kind into a constraint over the given points.
+/// Decodes the parameters of one custom kind into a constraint over the given arguments.
 pub type CustomDecoder =
-    dyn Fn(&Value, Vec<PointRef>) -> std::result::Result<Custom, String> + Send + Sync;
+    dyn Fn(&Value, Vec<Arg>) -> std::result::Result<Custom, String> + Send + Sync;
 
 /// User-defined constraint kinds a sketch file may name: kind name → decoder.
 ///
 /// A custom constraint is stored as
-/// `{"id": 4, "kind": "custom", "name": "unit_apart", "points": [...], "params": {...}}`; on
-/// load the decoder registered under `name` receives `params` (`null` when absent) and the
-/// points, and returns the [`Custom`] constraint (or a message saying what is wrong). The
-/// loaded constraint remembers its name and parameters, so saving writes them back.
+/// `{"id": 4, "kind": "custom", "name": "unit_apart", "points": [...], "params": {...}}` (or
+/// with `"args"` instead of `"points"` when it reads more than points, see [`Arg`]); on load the
+/// decoder registered under `name` receives `params` (`null` when absent) and the arguments,
+/// and returns the [`Custom`] constraint (or a message saying what is wrong). The loaded
+/// constraint remembers its name and parameters, so saving writes them back.
 ///
 /// ```
 /// use camber_sketch::file::{from_json_with, to_json, CustomRegistry};
@@ -141,15 +142,16 @@ pub type CustomDecoder =
 /// impl Residual for Gap {
 ///     fn name(&self) -> &str { "gap" }
 ///     fn dim(&self) -> usize { 1 }
+///     fn block_sizes(&self) -> Option<Vec<usize>> { Some(vec![2, 2]) }
 ///     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
 ///         out[0] = x[1][0] - x[0][0] - nalgebra::convert::<f64, T>(self.0);
 ///     }
 ///     fn is_affine(&self) -> bool { true }
 /// }
 /// let mut registry = CustomRegistry::new();
-/// registry.register("gap", |params, points| {
+/// registry.register("gap", |params, args| {
 ///     let gap = params.get("gap").and_then(|v| v.as_f64()).ok_or("needs a number \"gap\"")?;
-///     Ok(Custom::new(Gap(gap), points))
+///     Ok(Custom::plain(Gap(gap), args))
 /// });
 /// let text = r#"{"version": 1,
 ///   "entities": [{"id": 0, "kind": "point", "at": [0, 0]}, {"id": 1, "kind": "point", "at": [5, 0]}],
@@ -179,7 +181,7 @@ impl CustomRegistry {
     /// Registers (or replaces) the decoder of the custom kind `name`.
     pub fn register<F>(&mut self, name: impl Into<String>, decoder: F) -> &mut Self
     where
-        F: Fn(&Value, Vec<PointRef>) -> std::result::Result<Custom, String> + Send + Sync + 'static,
+        F: Fn(&Value, Vec<Arg>) -> std::result::Result<Custom, String> + Send + Sync + 'static,
     {
         self.kinds.insert(name.into(), Arc::new(decoder));
         self
@@ -194,20 +196,6 @@ impl CustomRegistry {
 impl std::fmt::Debug for CustomRegistry {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_set().entries(self.kinds.keys()).finish()
-    }
-}
-
-impl Custom {
-    /// The same constraint, saved in sketch files as kind `name` with `params` (what a
-    /// [`CustomRegistry`] decoder registered under `name` reads back).
-    pub fn with_file_form(mut self, name: impl Into<String>, params: Value) -> Self {
-        self.file_form = Some((name.into(), params));
-        self
-    }
-
-    /// The kind name and parameters the constraint is saved under, if any.
-    pub fn file_form(&self) -> Option<(&str, &Value)> {
-        self.file_form.as_ref().map(|(n, p)| (n.as_str(), p))
     }
 }
 
@@ -286,18 +274,100 @@ pub fn from_json_with(
                 source,
             })?;
     }
-    for c in raw.constraints {
-        let kind = c.body.kind().to_owned();
-        let constraint = c.body.into_constraint(c.id, registry)?;
+    for (i, value) in raw.constraints.into_iter().enumerate() {
+        let (id, constraint) = load_constraint(i, value, registry)?;
+        let kind = constraint.tag().to_owned();
         sketch
-            .add_constraint_with_id(ConstraintId(c.id), constraint)
-            .map_err(|source| FileError::Constraint {
-                id: c.id,
-                kind,
-                source,
-            })?;
+            .add_constraint_with_id(ConstraintId(id), constraint)
+            .map_err(|source| FileError::Constraint { id, kind, source })?;
     }
     Ok(sketch)
+}
+
+/// One constraint of a file: its id, and the constraint in its kind's form (a custom one
+/// decoded through the registry). `i` is its place in the file, for error paths.
+fn load_constraint(
+    i: usize,
+    mut value: Value,
+    registry: &CustomRegistry,
+) -> std::result::Result<(u64, Constraint), FileError> {
+    let shape = |path: String, message: String| FileError::Shape { path, message };
+    let Value::Object(map) = &mut value else {
+        return Err(shape(
+            format!("constraints[{i}]"),
+            "expected an object with \"id\" and \"kind\"".into(),
+        ));
+    };
+    let id = match map.remove("id") {
+        Some(v) => v.as_u64().ok_or_else(|| {
+            shape(
+                format!("constraints[{i}].id"),
+                format!("expected a non-negative integer id, found {v}"),
+            )
+        })?,
+        None => {
+            return Err(shape(
+                format!("constraints[{i}]"),
+                "missing field `id`".into(),
+            ))
+        }
+    };
+    let kind = match map.get("kind") {
+        Some(Value::String(k)) => k.clone(),
+        Some(v) => {
+            return Err(shape(
+                format!("constraints[{i}].kind"),
+                format!("expected a kind name, found {v}"),
+            ))
+        }
+        None => {
+            return Err(shape(
+                format!("constraints[{i}]"),
+                "missing field `kind`".into(),
+            ))
+        }
+    };
+    let constraint = match Constraint::load(&kind, value) {
+        Some(Ok(c)) => c,
+        Some(Err(e)) => {
+            let path = if e.path == "." {
+                format!("constraints[{i}]")
+            } else {
+                format!("constraints[{i}].{}", e.path)
+            };
+            return Err(shape(path, e.message));
+        }
+        None => {
+            return Err(shape(
+                format!("constraints[{i}].kind"),
+                format!(
+                    "unknown constraint kind `{kind}`, expected one of: {}",
+                    Constraint::TAGS.join(", ")
+                ),
+            ))
+        }
+    };
+    let Constraint::Custom(custom) = constraint else {
+        return Ok((id, constraint));
+    };
+    let (name, params) = custom
+        .file_form()
+        .map(|(n, p)| (n.to_owned(), p.clone()))
+        .unwrap_or_default();
+    let decode = registry
+        .kinds
+        .get(&name)
+        .ok_or_else(|| FileError::UnregisteredCustom {
+            id,
+            name: name.clone(),
+        })?;
+    let decoded =
+        decode(&params, custom.args().to_vec()).map_err(|message| FileError::CustomParams {
+            id,
+            name: name.clone(),
+            message,
+        })?;
+    Ok((id, decoded.with_file_form(name, params).into()))
 }
 
 /// Writes a sketch as file text (one entity or constraint per line, a final newline), entities
@@ -313,15 +383,26 @@ pub fn to_json(sketch: &Sketch) -> std::result::Result<String, FileError> {
             shape: RawShape::from_entity(e),
         })
         .collect();
-    let constraints = sketch
-        .constraints()
-        .map(|(id, c)| {
-            Ok(RawConstraint {
-                id: id.0,
-                body: RawBody::from_constraint(id, c)?,
-            })
-        })
-        .collect::<std::result::Result<_, FileError>>()?;
+    let mut constraints = Vec::new();
+    for (id, c) in sketch.constraints() {
+        if let Constraint::Custom(custom) = c {
+            if custom.file_form().is_none() {
+                return Err(FileError::CustomNotSavable {
+                    id: id.0,
+                    name: custom.name().to_owned(),
+                });
+            }
+        }
+        let body = c.save().map_err(|e| FileError::Syntax {
+            message: e.to_string(),
+        })?;
+        // {"id": N, "kind": …, …}: the kind's own form behind the id.
+        constraints.push(format!(
+            "{{\"id\":{},{}",
+            id.0,
+            body.trim_start_matches('{')
+        ));
+    }
     // One entity or constraint per line: diffs stay readable and large files compact.
     let enc = |v: &dyn erased::Item| {
         v.encode().map_err(|e| FileError::Syntax {
@@ -329,7 +410,6 @@ pub fn to_json(sketch: &Sketch) -> std::result::Result<String, FileError> {
         })
     };
     let entities: Vec<RawEntity> = entities;
-    let constraints: Vec<RawConstraint> = constraints;
     let mut text = format!("{{\n  \"version\": {FORMAT_VERSION},\n  \"entities\": [");
     for (i, e) in entities.iter().enumerate() {
         text.push_str(if i == 0 { "\n    " } else { ",\n    " });
@@ -343,7 +423,7 @@ pub fn to_json(sketch: &Sketch) -> std::result::Result<String, FileError> {
     text.push_str("  \"constraints\": [");
     for (i, c) in constraints.iter().enumerate() {
         text.push_str(if i == 0 { "\n    " } else { ",\n    " });
-        text.push_str(&enc(c)?);
+        text.push_str(c);
     }
     text.push_str(if constraints.is_empty() {
         "]\n}\n"

@@ -5,11 +5,12 @@ use camber_geom::BezierCurve2;
 use nalgebra::{Point2, Vector2};
 
 use super::cross;
-use crate::constraint::{CircleSide, Constraint, Contact, FixTarget, LineSide, Rotation, Sense};
+use crate::constraints::{CurveCurveTangent, Fixed, TangentToCircle, TangentToLine};
 use crate::entity::Entity;
 use crate::errors::Result;
 use crate::ids::EntityId;
 use crate::sketch::Sketch;
+use crate::vocabulary::{CircleSide, Contact, LineSide, Rotation, Sense};
 
 /// The entities of the two-curve sketch ([`two_curves`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -73,37 +74,37 @@ pub fn two_curves() -> Result<(Sketch, TwoCurves)> {
     let left = s.add_circle(Point2::new(lc[0], lc[1]), lr)?;
     let right = s.add_circle(Point2::new(rc[0], rc[1]), rr)?;
     for e in [inlet, outlet, left, right] {
-        s.add_constraint(Constraint::Fixed(FixTarget::Entity(e)))?;
+        s.add_constraint(Fixed::entity(e))?;
     }
-    s.add_constraint(Constraint::TangentToLine {
+    s.add_constraint(TangentToLine {
         curve: lower,
         line: inlet,
         u: Contact::At(0.0),
         side: LineSide::Right,
         sense: Sense::Agree,
     })?;
-    s.add_constraint(Constraint::TangentToCircle {
+    s.add_constraint(TangentToCircle {
         curve: lower,
         circle: right,
         u: Contact::At(1.0),
         side: CircleSide::Outside,
         rotation: Rotation::Clockwise,
     })?;
-    s.add_constraint(Constraint::TangentToCircle {
+    s.add_constraint(TangentToCircle {
         curve: upper,
         circle: left,
         u: Contact::At(0.0),
         side: CircleSide::Outside,
         rotation: Rotation::CounterClockwise,
     })?;
-    s.add_constraint(Constraint::TangentToLine {
+    s.add_constraint(TangentToLine {
         curve: upper,
         line: outlet,
         u: Contact::At(1.0),
         side: LineSide::Left,
         sense: Sense::Agree,
     })?;
-    s.add_constraint(Constraint::CurveCurveTangent {
+    s.add_constraint(CurveCurveTangent {
         first: lower,
         u: Contact::Free(0.5),
         second: upper,

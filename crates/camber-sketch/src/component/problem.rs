@@ -1,84 +1,32 @@
-//! Building the [`Problem`] of one connected component: a block per entity point, bindings for
-//! fixed points and eliminated tangents, residual blocks for every other piece, and the
-//! orientation checks of the tangencies.
+//! Building the [`Problem`] of one connected component from its constraints' pieces: a block
+//! per entity point (and circle radius), bindings for fixed points and eliminated tangents,
+//! merged coincident points, residual blocks for every other piece, and the checks of the
+//! solved state.
 //!
 //! Order matters because bindings do not chain: eliminations are bound first (a target that is
 //! fixed, already eliminated, or the base of another elimination falls back to the row form),
 //! then fixed points (a fixed point that is an elimination target is held by rows instead),
-//! then coincident points are merged (module `merge`), then every other row.
+//! then coincident points are merged ([`super::merge`]), then every other row; a residual
+//! reading another constraint's free parameter comes after the constraint that owns it.
 
 use std::collections::{HashMap, HashSet};
+use std::sync::Arc;
 
 use camber_solve::{BlockId, ConstraintId, Problem, Var};
 use nalgebra::Point2;
+use smallvec::SmallVec;
 
-use crate::compile::{compile, ETerms, EntityLookup, Piece};
+use super::check::SolvedCheck;
+use super::piece::{ETerms, Piece, Slot};
+use super::Component;
 use crate::entity::Entity;
 use crate::errors::{Error, Result};
-use crate::general::{Check, CheckParam, Slot};
 use crate::ids::{EntityId, PointRef};
+use crate::lookup::EntityLookup;
 use crate::residuals::{DirectionCross, LineTangency, PointCombination};
 
 /// The constraint id owning the rows that pin a dragged point.
 pub const DRAG_CONSTRAINT: ConstraintId = ConstraintId(u64::MAX);
-
-/// A connected component of the sketch graph: entities and the constraints between them,
-/// each sorted by id.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Component {
-    /// The entities.
-    pub entities: Vec<EntityId>,
-    /// The constraints.
-    pub constraints: Vec<ConstraintId>,
-}
-
-/// A custom constraint's residual, shared between the sketch and every problem built from it.
-#[derive(Debug)]
-struct SharedResidual(std::sync::Arc<dyn camber_solve::DynResidual>);
-
-impl camber_solve::DynResidual for SharedResidual {
-    fn name(&self) -> &str {
-        self.0.name()
-    }
-    fn dim(&self) -> usize {
-        self.0.dim()
-    }
-    fn is_affine(&self) -> bool {
-        self.0.is_affine()
-    }
-    fn values(&self, x: &[&[f64]], out: &mut [f64]) -> camber_solve::Result<()> {
-        self.0.values(x, out)
-    }
-    fn jacobian(
-        &self,
-        x: &[&[f64]],
-        values: &mut [f64],
-        jac: &mut [f64],
-    ) -> camber_solve::Result<()> {
-        self.0.jacobian(x, values, jac)
-    }
-    fn jacobian_active(
-        &self,
-        x: &[&[f64]],
-        active: &[bool],
-        values: &mut [f64],
-        jac: &mut [f64],
-    ) -> camber_solve::Result<()> {
-        self.0.jacobian_active(x, active, values, jac)
-    }
-    fn weighted_hessian(
-        &self,
-        x: &[&[f64]],
-        weights: &[f64],
-        active: &[bool],
-        out: &mut [f64],
-    ) -> camber_solve::Result<bool> {
-        self.0.weighted_hessian(x, weights, active, out)
-    }
-    fn as_any(&self) -> &dyn std::any::Any {
-        self.0.as_any()
-    }
-}
 
 /// Blocks of one entity.
 #[derive(Debug, Clone)]
@@ -108,6 +56,14 @@ impl Orientation {
     }
 }
 
+/// A check of the solved state with its owner and the blocks of the owner's free parameters.
+#[derive(Debug, Clone)]
+pub(crate) struct CheckEntry {
+    pub(crate) owner: ConstraintId,
+    pub(crate) check: Arc<dyn SolvedCheck>,
+    pub(crate) free: SmallVec<[BlockId; 2]>,
+}
+
 /// The problem of one component, with the map from entity points to its blocks.
 ///
 /// Built by [`crate::Sketch::component_problem`]; exposed so that callers can inspect the
@@ -120,10 +76,11 @@ pub struct ComponentProblem {
     pub(crate) orientations: Vec<Orientation>,
     /// The first constraint whose residual is not affine, with the residual's name.
     pub(crate) nonlinear: Option<(ConstraintId, String)>,
-    /// Free contact parameters: the owning constraint and the block of one holding u.
-    pub(crate) contacts: Vec<(ConstraintId, BlockId)>,
-    /// The honesty checks of contacts, joints and angles, with their owners.
-    pub(crate) checks: Vec<(ConstraintId, Check)>,
+    /// Free parameters (contact parameters, a custom constraint's own unknowns): the owning
+    /// constraint and the block of one holding the value, in order per owner.
+    pub(crate) free: Vec<(ConstraintId, BlockId)>,
+    /// The checks of the solved state, with their owners.
+    pub(crate) checks: Vec<CheckEntry>,
     /// Point blocks bound to a coincident one (block → the block whose unknowns it shares).
     pub(crate) merged: HashMap<BlockId, BlockId>,
     /// Constraints whose coincidence joined points already merged (redundant).
@@ -161,10 +118,27 @@ impl ComponentProblem {
             })
     }
 
+    /// The block of an entity's `index`-th scalar (a circle's radius).
+    fn scalar_block(&self, entity: EntityId, index: usize) -> Result<BlockId> {
+        self.layout
+            .get(&entity)
+            .and_then(|b| b.scalars.get(index).copied())
+            .ok_or(Error::UnknownEntity { entity })
+    }
+
     /// The flat index of the x unknown of an entity point.
     pub(crate) fn point_unknown(&self, entity: EntityId, index: usize) -> Result<usize> {
         let b = self.point_block(entity, index)?;
         Ok(self.problem.unknown(b, 0)?.index())
+    }
+
+    /// The block of the `k`-th free parameter of a constraint.
+    pub(crate) fn free_block(&self, owner: ConstraintId, k: usize) -> Option<BlockId> {
+        self.free
+            .iter()
+            .filter(|(c, _)| *c == owner)
+            .nth(k)
+            .map(|(_, b)| *b)
     }
 
     /// Maps terms to (block, coefficient), merging repeated blocks.
@@ -201,65 +175,60 @@ impl ComponentProblem {
         })
     }
 
+    /// The block a slot denotes, creating the block of a new free parameter.
+    fn slot_block(&mut self, owner: ConstraintId, slot: Slot) -> Result<(BlockId, bool)> {
+        Ok(match slot {
+            Slot::Point(e, j) => (self.point_block(e, j)?, false),
+            Slot::Radius(e) => (self.scalar_block(e, 0)?, false),
+            Slot::Free { start, lo, hi } => {
+                let b = self.problem.add_block(&[start])?;
+                let u = self.problem.unknown(b, 0)?;
+                self.problem.set_bounds(Var::Unknown(u), lo, hi)?;
+                self.free.push((owner, b));
+                (b, true)
+            }
+            Slot::FreeOf(other, k) => (
+                self.free_block(other, k)
+                    .ok_or(Error::UnknownFreeParameter {
+                        constraint: owner,
+                        of: other,
+                        index: k,
+                    })?,
+                false,
+            ),
+            Slot::Existing(b) => (b, false),
+        })
+    }
+
     pub(crate) fn add_piece(&mut self, owner: ConstraintId, piece: &Piece) -> Result<()> {
         match piece {
             Piece::FixEntity(_) | Piece::FixPoint(..) | Piece::Eliminate { .. } => {}
             Piece::General {
-                name,
                 residual,
                 slots,
                 check,
             } => {
                 if !residual.is_affine() && self.nonlinear.is_none() {
-                    self.nonlinear = Some((owner, (*name).to_owned()));
-                }
-                let mut blocks = Vec::with_capacity(slots.len());
-                let mut contact_blocks = Vec::with_capacity(slots.len());
-                for slot in slots {
-                    let (block, contact) = match *slot {
-                        Slot::Point(e, j) => (self.point_block(e, j)?, None),
-                        Slot::Radius(e) => {
-                            let b = self
-                                .layout
-                                .get(&e)
-                                .and_then(|b| b.scalars.first().copied())
-                                .ok_or(Error::UnknownEntity { entity: e })?;
-                            (b, None)
-                        }
-                        Slot::Contact { u0, lo, hi } => {
-                            let b = self.problem.add_block(&[u0])?;
-                            let u = self.problem.unknown(b, 0)?;
-                            self.problem.set_bounds(Var::Unknown(u), lo, hi)?;
-                            self.contacts.push((owner, b));
-                            (b, Some(b))
-                        }
-                        Slot::Existing(b) => (b, None),
-                    };
-                    blocks.push(block);
-                    contact_blocks.push(contact);
-                }
-                self.problem.add_dyn_residual(
-                    Box::new(SharedResidual(residual.clone())),
-                    &blocks,
-                    owner,
-                )?;
-                if let Some(c) = check {
-                    self.checks.push((owner, c.resolved(&contact_blocks)));
-                }
-            }
-            Piece::Custom { residual, points } => {
-                if !residual.is_affine() && self.nonlinear.is_none() {
                     self.nonlinear = Some((owner, residual.name().to_owned()));
                 }
-                let mut blocks = Vec::with_capacity(points.len());
-                for (e, j) in points {
-                    blocks.push(self.point_block(*e, *j)?);
+                let mut blocks = Vec::with_capacity(slots.len());
+                let mut free = SmallVec::new();
+                for slot in slots {
+                    let (block, new) = self.slot_block(owner, *slot)?;
+                    blocks.push(block);
+                    if new {
+                        free.push(block);
+                    }
                 }
-                self.problem.add_dyn_residual(
-                    Box::new(SharedResidual(residual.clone())),
-                    &blocks,
-                    owner,
-                )?;
+                self.problem
+                    .add_dyn_residual(Box::new(residual.clone()), &blocks, owner)?;
+                if let Some(check) = check {
+                    self.checks.push(CheckEntry {
+                        owner,
+                        check: check.clone(),
+                        free,
+                    });
+                }
             }
             Piece::Combination {
                 name,
@@ -326,12 +295,17 @@ impl ComponentProblem {
     }
 }
 
-/// Builds the problem of `component`, with the rows pinning `pin` (if any) at its current
-/// position last, owned by [`DRAG_CONSTRAINT`].
-pub(crate) fn build<L: EntityLookup>(
-    lookup: &L,
+/// Whether a piece reads another constraint's free parameter (it is added last).
+fn reads_other_free(piece: &Piece) -> bool {
+    matches!(piece, Piece::General { slots, .. } if slots.iter().any(|s| matches!(s, Slot::FreeOf(..))))
+}
+
+/// Builds the problem of `component` from its constraints' pieces, with the rows pinning
+/// `pin` (if any) at its current position last, owned by [`DRAG_CONSTRAINT`].
+pub(crate) fn build(
+    lookup: &dyn EntityLookup,
     component: &Component,
-    constraints: &[(ConstraintId, &crate::Constraint)],
+    compiled: &[(ConstraintId, super::piece::Pieces)],
     pin: Option<PointRef>,
 ) -> Result<ComponentProblem> {
     let mut cp = ComponentProblem {
@@ -340,7 +314,7 @@ pub(crate) fn build<L: EntityLookup>(
         layout: HashMap::with_capacity(component.entities.len()),
         orientations: Vec::new(),
         nonlinear: None,
-        contacts: Vec::new(),
+        free: Vec::new(),
         checks: Vec::new(),
         merged: HashMap::new(),
         merged_redundant: Vec::new(),
@@ -367,14 +341,10 @@ pub(crate) fn build<L: EntityLookup>(
         }
         cp.layout.insert(*id, blocks);
     }
-    let mut compiled = Vec::with_capacity(constraints.len());
-    for (id, c) in constraints {
-        compiled.push((*id, compile(lookup, c)?));
-    }
 
     // Points held by `Fixed` (one block each).
     let mut fixed: HashSet<BlockId> = HashSet::new();
-    for (_, pieces) in &compiled {
+    for (_, pieces) in compiled {
         for piece in pieces {
             match piece {
                 Piece::FixPoint(e, j) => {
@@ -393,7 +363,7 @@ pub(crate) fn build<L: EntityLookup>(
     // Eliminations first.
     let (mut targets, mut bases): (HashSet<BlockId>, HashSet<BlockId>) = Default::default();
     let mut rows: Vec<(ConstraintId, Piece)> = Vec::new();
-    for (id, pieces) in &compiled {
+    for (id, pieces) in compiled {
         for piece in pieces {
             let Piece::Eliminate {
                 curve,
@@ -446,7 +416,7 @@ pub(crate) fn build<L: EntityLookup>(
     }
 
     // Fixed points: bindings, or rows for eliminated targets.
-    for (id, pieces) in &compiled {
+    for (id, pieces) in compiled {
         for piece in pieces {
             let list: Vec<(EntityId, usize)> = match piece {
                 Piece::FixPoint(e, j) => vec![(*e, *j)],
@@ -485,7 +455,7 @@ pub(crate) fn build<L: EntityLookup>(
     // Coincident points: one set of unknowns per class instead of two rows per pair.
     let lists: Vec<(ConstraintId, &[Piece])> =
         compiled.iter().map(|(id, p)| (*id, p.as_slice())).collect();
-    let merges = crate::merge::plan(
+    let merges = super::merge::plan(
         &lists,
         |e, j| cp.point_block(e, j),
         &fixed,
@@ -513,12 +483,21 @@ pub(crate) fn build<L: EntityLookup>(
     }
     cp.merged_redundant = merges.redundant;
 
+    let mut later: Vec<(ConstraintId, &Piece)> = Vec::new();
     for (ci, (id, pieces)) in compiled.iter().enumerate() {
         for (pi, piece) in pieces.iter().enumerate() {
-            if !merges.replaced.contains(&(ci, pi)) {
+            if merges.replaced.contains(&(ci, pi)) {
+                continue;
+            }
+            if reads_other_free(piece) {
+                later.push((*id, piece));
+            } else {
                 cp.add_piece(*id, piece)?;
             }
         }
+    }
+    for (id, piece) in later {
+        cp.add_piece(id, piece)?;
     }
     for (id, piece) in &rows {
         cp.add_piece(*id, piece)?;
@@ -544,9 +523,9 @@ pub(crate) fn build<L: EntityLookup>(
 
 impl ComponentProblem {
     /// The entities of the component with their points (and radii) read from the unknowns `x`.
-    pub(crate) fn entities_at<L: EntityLookup>(
+    pub(crate) fn entities_at(
         &self,
-        lookup: &L,
+        lookup: &dyn EntityLookup,
         x: &[f64],
     ) -> Result<Vec<(EntityId, Entity)>> {
         let mut out = Vec::with_capacity(self.component.entities.len());
@@ -569,30 +548,27 @@ impl ComponentProblem {
         Ok(out)
     }
 
-    /// The solved free contact parameters at `x`, with their constraints.
-    pub(crate) fn contacts_at(&self, x: &[f64]) -> Result<Vec<(ConstraintId, usize, f64)>> {
-        let mut out: Vec<(ConstraintId, usize, f64)> = Vec::with_capacity(self.contacts.len());
-        for (c, b) in &self.contacts {
-            // The k-th free parameter of its constraint (clearance rows add none).
+    /// The solved free parameters at `x`: (constraint, k, value) for the k-th free parameter
+    /// of each constraint.
+    pub(crate) fn free_at(&self, x: &[f64]) -> Result<Vec<(ConstraintId, usize, f64)>> {
+        let mut out: Vec<(ConstraintId, usize, f64)> = Vec::with_capacity(self.free.len());
+        for (c, b) in &self.free {
             let k = out.iter().filter(|(o, _, _)| o == c).count();
             out.push((*c, k, x[self.problem.unknown(*b, 0)?.index()]));
         }
         Ok(out)
     }
 
-    /// A check's parameter at the unknowns `x` (NaN for an unresolved slot).
-    pub(crate) fn check_param(&self, x: &[f64], p: CheckParam) -> Result<f64> {
-        Ok(match p {
-            CheckParam::Fixed(u) => u,
-            CheckParam::Block(b) => x[self.problem.unknown(b, 0)?.index()],
-            CheckParam::Slot(_) => f64::NAN,
-        })
+    /// The value of a block of one at the unknowns `x`.
+    pub(crate) fn block_value(&self, x: &[f64], b: BlockId) -> Result<f64> {
+        Ok(x[self.problem.unknown(b, 0)?.index()])
     }
 
-    /// Runs the contact, joint and angle checks on the entities solved at `x`, allowing a
-    /// penetration of `tolerance` (length units).
-    pub(crate) fn check_contacts(
+    /// Runs the checks of the solved state on the entities solved at `x`, allowing a
+    /// penetration of `tolerance` (length units); `before` holds the entities before the solve.
+    pub(crate) fn check_solved(
         &self,
+        before: &dyn EntityLookup,
         solved: &[(EntityId, Entity)],
         x: &[f64],
         tolerance: f64,
@@ -601,9 +577,19 @@ impl ComponentProblem {
             return Ok(());
         }
         let map: HashMap<EntityId, &Entity> = solved.iter().map(|(id, e)| (*id, e)).collect();
-        let param = |p: CheckParam| self.check_param(x, p);
-        for (owner, check) in &self.checks {
-            check.verify(*owner, &map, &param, tolerance)?;
+        let mut free: SmallVec<[f64; 2]> = SmallVec::new();
+        for entry in &self.checks {
+            free.clear();
+            for b in &entry.free {
+                free.push(self.block_value(x, *b)?);
+            }
+            entry.check.verify(&super::check::SolvedState {
+                owner: entry.owner,
+                solved: &map,
+                before,
+                free: &free,
+                penetration: tolerance,
+            })?;
         }
         Ok(())
     }

@@ -1,18 +1,20 @@
-//! The active-set bookkeeping of honest contact (the mathematics is in [`crate::clearance`]):
-//! which row answers a failed contact check, which contacts start reversed, the multipliers
-//! that say whether an active row binds, and adding a row to a component's problem.
+//! The active-set bookkeeping of honest contact (the mathematics is in
+//! [`crate::residuals::clearance`]): which row answers a failed contact check, which contacts
+//! start reversed, the multipliers that say whether an active row binds, and adding a row to a
+//! component's problem.
 
 use std::sync::Arc;
 
-use camber_solve::{ConstraintId, MinNormFactorization};
+use camber_solve::{BlockId, ConstraintId, MinNormFactorization};
 
-use crate::build::ComponentProblem;
-use crate::clearance::{Clearance, TangentSpeed, Target, SPEED_FLOOR};
-use crate::compile::{EntityLookup, Piece};
-use crate::constraint::{CircleSide, LineSide, Rotation};
-use crate::contact::Param;
+use super::check::{point_tangent, side_width, ContactSpec, ContactTarget};
+use super::piece::{curve_slots, Piece, Slot};
+use super::problem::ComponentProblem;
 use crate::errors::{Error, Result};
-use crate::general::{curve_basis, point_tangent, side_width, Check, CheckParam, Slot};
+use crate::lookup::EntityLookup;
+use crate::residuals::clearance::{Clearance, TangentSpeed, Target, SPEED_FLOOR};
+use crate::residuals::Param;
+use crate::vocabulary::{CircleSide, Contact, LineSide, Rotation};
 
 /// Components with at most this many reduced unknowns factorize J·W⁻¹·Jᵀ densely for the
 /// multipliers.
@@ -35,49 +37,50 @@ pub(crate) enum ActiveRow {
     },
 }
 
-impl Check {
-    /// The curve and contact parameter of a circle or line contact, with the target's blocks,
-    /// its kind and whether the intended side is the positive one.
-    fn contact(&self) -> Option<(crate::ids::EntityId, CheckParam, [Slot; 2], Target, bool)> {
-        match *self {
-            Check::Circle {
-                curve,
-                circle,
-                u,
-                side,
-                ..
-            } => Some((
-                curve,
-                u,
-                [Slot::Point(circle, 0), Slot::Radius(circle)],
-                Target::Circle,
-                side == CircleSide::Outside,
-            )),
-            Check::Line {
-                curve,
-                line,
-                u,
-                side,
-                ..
-            } => Some((
-                curve,
-                u,
-                [Slot::Point(line, 0), Slot::Point(line, 1)],
-                Target::Line,
-                side == LineSide::Left,
-            )),
-            Check::Join { .. } | Check::Angle { .. } | Check::Curves { .. } => None,
+impl ActiveRow {
+    /// The contact constraint the row belongs to.
+    pub(crate) fn owner(self) -> ConstraintId {
+        match self {
+            ActiveRow::Clearance { owner, .. } | ActiveRow::SpeedFloor { owner } => owner,
         }
     }
 }
 
+/// A circle or line contact of a built component: what it touches, and where its parameter
+/// lives (a fixed value, or the block of the free one).
+#[derive(Debug, Clone, Copy)]
+struct BuiltContact {
+    spec: ContactSpec,
+    u: ContactParam,
+}
+
+#[derive(Debug, Clone, Copy)]
+enum ContactParam {
+    Fixed(f64),
+    Block(BlockId),
+}
+
 impl ComponentProblem {
-    /// The circle or line contact check owned by `owner`.
-    fn contact_check(&self, owner: ConstraintId) -> Option<Check> {
-        self.checks
+    /// The circle or line contact owned by `owner`.
+    fn built_contact(&self, owner: ConstraintId) -> Option<BuiltContact> {
+        let entry = self
+            .checks
             .iter()
-            .find(|(c, check)| *c == owner && check.contact().is_some())
-            .map(|(_, k)| *k)
+            .find(|e| e.owner == owner && e.check.contact().is_some())?;
+        let spec = entry.check.contact()?;
+        let u = match spec.u {
+            Contact::At(v) => ContactParam::Fixed(v),
+            Contact::Free(_) => ContactParam::Block(*entry.free.first()?),
+        };
+        Some(BuiltContact { spec, u })
+    }
+
+    /// The contact parameter's value at the unknowns `x`.
+    fn contact_value(&self, x: &[f64], u: ContactParam) -> Result<f64> {
+        match u {
+            ContactParam::Fixed(v) => Ok(v),
+            ContactParam::Block(b) => self.block_value(x, b),
+        }
     }
 
     /// The active row that answers a failed check at the solved unknowns `x`: a crossing gets
@@ -89,15 +92,15 @@ impl ComponentProblem {
                 constraint,
                 parameter,
                 ..
-            } => match self.contact_check(constraint).and_then(|c| c.contact()) {
-                Some((_, u, ..)) => Some(ActiveRow::Clearance {
+            } => match self.built_contact(constraint) {
+                Some(c) => Some(ActiveRow::Clearance {
                     owner: constraint,
-                    after: parameter > self.check_param(x, u)?,
+                    after: parameter > self.contact_value(x, c.u)?,
                 }),
                 None => None,
             },
             Error::Cusp { constraint, .. } => self
-                .contact_check(constraint)
+                .built_contact(constraint)
                 .map(|_| ActiveRow::SpeedFloor { owner: constraint }),
             _ => None,
         })
@@ -110,59 +113,49 @@ impl ComponentProblem {
     /// it runs into the cusp, or stalls beside it. With the floor the tangent turns at a fixed
     /// length; [`ComponentProblem::active_multipliers`] drops the floor again when it is not
     /// binding at the solution.
-    pub(crate) fn reversed_contacts<L: EntityLookup>(&self, lookup: &L) -> Result<Vec<ActiveRow>> {
+    pub(crate) fn reversed_contacts(&self, lookup: &dyn EntityLookup) -> Result<Vec<ActiveRow>> {
         let x = self.problem.values().to_vec();
         let mut out = Vec::new();
         let mut entities = None;
-        for (owner, check) in &self.checks {
-            let reversed = match *check {
-                Check::Circle {
-                    curve,
-                    circle,
-                    u,
-                    rotation,
-                    ..
+        for entry in &self.checks {
+            let Some(c) = self.built_contact(entry.owner) else {
+                continue;
+            };
+            if out.contains(&ActiveRow::SpeedFloor { owner: entry.owner }) {
+                continue;
+            }
+            let solved = entities.get_or_insert(self.entities_at(lookup, &x)?);
+            let find = |id| solved.iter().find(|(e, _)| *e == id).map(|(_, e)| e);
+            let Some(curve) = find(c.spec.curve) else {
+                continue;
+            };
+            let (p, t) = point_tangent(curve, c.spec.curve, self.contact_value(&x, c.u)?)?;
+            let reversed = match c.spec.target {
+                ContactTarget::Circle {
+                    circle, rotation, ..
                 } => {
-                    let solved = entities.get_or_insert(self.entities_at(lookup, &x)?);
-                    let (Some((_, e)), Some((_, crate::Entity::Circle { center, .. }))) = (
-                        solved.iter().find(|(id, _)| *id == curve),
-                        solved.iter().find(|(id, _)| *id == circle),
-                    ) else {
+                    let Some(crate::Entity::Circle { center, .. }) = find(circle) else {
                         continue;
                     };
-                    let (p, t) = point_tangent(e, curve, self.check_param(&x, u)?)?;
                     let turn = (p[0] - center.x) * t[1] - (p[1] - center.y) * t[0];
                     match rotation {
                         Rotation::CounterClockwise => turn < 0.0,
                         Rotation::Clockwise => turn > 0.0,
                     }
                 }
-                Check::Line {
-                    curve,
-                    line,
-                    u,
-                    sense,
-                    ..
-                } => {
-                    let solved = entities.get_or_insert(self.entities_at(lookup, &x)?);
-                    let (Some((_, e)), Some((_, crate::Entity::Line([a, b])))) = (
-                        solved.iter().find(|(id, _)| *id == curve),
-                        solved.iter().find(|(id, _)| *id == line),
-                    ) else {
+                ContactTarget::Line { line, sense, .. } => {
+                    let Some(crate::Entity::Line([a, b])) = find(line) else {
                         continue;
                     };
-                    let (_, t) = point_tangent(e, curve, self.check_param(&x, u)?)?;
                     sense.sign() * (t[0] * (b.x - a.x) + t[1] * (b.y - a.y)) < 0.0
                 }
-                Check::Join { .. } | Check::Angle { .. } | Check::Curves { .. } => false,
             };
             if reversed {
-                out.push(ActiveRow::SpeedFloor { owner: *owner });
+                out.push(ActiveRow::SpeedFloor { owner: entry.owner });
             }
         }
         Ok(out)
     }
-
     /// The multipliers μ of the last `count` rows (the active rows, one row each) at the
     /// solved values z*, from the first-order conditions of min ½‖z − z₀‖²_W subject to the
     /// rows: W·(z* − z₀) = Jᵀμ, solved in the least-squares sense as
@@ -197,38 +190,45 @@ impl ComponentProblem {
     /// Adds an active row, built against the problem's starting values (owned by the contact
     /// constraint). Returns false when it does not apply (no such contact, or a vanishing
     /// starting tangent for a speed floor).
-    pub(crate) fn add_active_row<L: EntityLookup>(
+    pub(crate) fn add_active_row(
         &mut self,
-        lookup: &L,
+        lookup: &dyn EntityLookup,
         row: ActiveRow,
     ) -> Result<bool> {
-        let owner = match row {
-            ActiveRow::Clearance { owner, .. } | ActiveRow::SpeedFloor { owner } => owner,
-        };
-        let Some((curve, u, target_slots, target, positive)) =
-            self.contact_check(owner).and_then(|c| c.contact())
-        else {
+        let owner = row.owner();
+        let Some(contact) = self.built_contact(owner) else {
             return Ok(false);
         };
-        let (basis, mut slots) = curve_basis(lookup, curve)?;
+        let curve = contact.spec.curve;
+        let (target_slots, target, positive) = match contact.spec.target {
+            ContactTarget::Circle { circle, side, .. } => (
+                [Slot::Point(circle, 0), Slot::Radius(circle)],
+                Target::Circle,
+                side == CircleSide::Outside,
+            ),
+            ContactTarget::Line { line, side, .. } => (
+                [Slot::Point(line, 0), Slot::Point(line, 1)],
+                Target::Line,
+                side == LineSide::Left,
+            ),
+        };
+        let (basis, mut slots) = curve_slots(lookup, curve)?;
         let width = side_width(basis.domain());
-        let (name, residual): (&'static str, Arc<dyn camber_solve::DynResidual>) = match row {
+        let residual: Arc<dyn camber_solve::DynResidual> = match row {
             ActiveRow::Clearance { after, .. } => {
-                let param = match u {
-                    CheckParam::Fixed(v) => Param::Fixed(v),
-                    CheckParam::Block(b) => {
+                let param = match contact.u {
+                    ContactParam::Fixed(v) => Param::Fixed(v),
+                    ContactParam::Block(b) => {
                         slots.push(Slot::Existing(b));
                         Param::Block
                     }
-                    CheckParam::Slot(_) => return Ok(false),
                 };
                 slots.extend(target_slots);
-                let h = Clearance::new(basis, param, target, positive, after, width);
-                ("clearance", Arc::new(h))
+                Arc::new(Clearance::new(basis, param, target, positive, after, width))
             }
             ActiveRow::SpeedFloor { .. } => {
                 let x = self.problem.values().to_vec();
-                let at = self.check_param(&x, u)?;
+                let at = self.contact_value(&x, contact.u)?;
                 let entities = self.entities_at(lookup, &x)?;
                 let Some((_, e)) = entities.iter().find(|(id, _)| *id == curve) else {
                     return Ok(false);
@@ -238,24 +238,21 @@ impl ComponentProblem {
                 if !(speed.is_finite() && speed > 0.0) {
                     return Ok(false);
                 }
-                let (basis, param) = match u {
-                    CheckParam::Fixed(v) => {
+                let (basis, param) = match contact.u {
+                    ContactParam::Fixed(v) => {
                         let (fixed, points) = basis.at(v, 1);
                         slots = points.iter().map(|j| Slot::Point(curve, *j)).collect();
                         (fixed, Param::Fixed(v))
                     }
-                    CheckParam::Block(b) => {
+                    ContactParam::Block(b) => {
                         slots.push(Slot::Existing(b));
                         (basis, Param::Block)
                     }
-                    CheckParam::Slot(_) => return Ok(false),
                 };
-                let f = TangentSpeed::new(basis, param, speed, width);
-                ("tangent speed floor", Arc::new(f))
+                Arc::new(TangentSpeed::new(basis, param, speed, width))
             }
         };
         let piece = Piece::General {
-            name,
             residual,
             slots,
             check: None,
@@ -268,8 +265,9 @@ impl ComponentProblem {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::constraint::{Contact, FixTarget, Sense};
-    use crate::{Constraint, PointRef, Sketch};
+    use crate::constraints::{Fixed, TangentToLine};
+    use crate::vocabulary::{Contact, Sense};
+    use crate::{PointRef, Sketch};
     use camber_geom::BezierCurve2;
     use nalgebra::Point2;
 
@@ -291,12 +289,11 @@ mod tests {
         let line = s
             .add_line(Point2::new(0.0, 0.0), Point2::new(1.0, 0.0))
             .unwrap();
-        s.add_constraint(Constraint::Fixed(FixTarget::Entity(line)))
-            .unwrap();
-        s.add_constraint(Constraint::Fixed(FixTarget::Point(PointRef::Control(c, 3))))
+        s.add_constraint(Fixed::entity(line)).unwrap();
+        s.add_constraint(Fixed::point(PointRef::Control(c, 3)))
             .unwrap();
         let id = s
-            .add_constraint(Constraint::TangentToLine {
+            .add_constraint(TangentToLine {
                 curve: c,
                 line,
                 u: Contact::At(0.0),
@@ -314,7 +311,7 @@ mod tests {
         let mut cp = s.build_component(&comp, None).unwrap();
         assert!(cp.add_active_row(&s, row).unwrap());
         let z0 = cp.problem().reduced_map().unwrap().z0().to_vec();
-        cp.solve(s.options()).unwrap();
+        cp.solve_once(s.options()).unwrap();
         cp.active_multipliers(&z0, 1).unwrap()[0]
     }
 

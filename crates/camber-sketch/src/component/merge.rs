@@ -15,13 +15,13 @@
 //! found and named. A coincidence between points already in one class is redundant: its rows
 //! would be identically zero, and the analysis names its constraint.
 //!
-//! [`Constraint::Coincident`]: crate::Constraint::Coincident
+//! [`Constraint::Coincident`]: crate::constraints::Coincident
 
 use std::collections::{HashMap, HashSet};
 
 use camber_solve::{BlockId, ConstraintId};
 
-use crate::compile::Piece;
+use super::piece::Piece;
 use crate::errors::Result;
 
 /// The merges of one component: which pieces became bindings and which were redundant.

@@ -68,6 +68,9 @@ impl Residual for PointCombination {
     fn dim(&self) -> usize {
         2
     }
+    fn block_sizes(&self) -> Option<Vec<usize>> {
+        Some(vec![2; self.coeffs.len()])
+    }
     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
         let v = combination(&self.coeffs, x);
         out[0] = v[0] - cst::<T>(self.target[0]);
@@ -114,6 +117,9 @@ impl Residual for DirectionCross {
     }
     fn dim(&self) -> usize {
         1
+    }
+    fn block_sizes(&self) -> Option<Vec<usize>> {
+        Some(vec![2; self.coeffs.len()])
     }
     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
         let v = combination(&self.coeffs, x);
@@ -164,6 +170,9 @@ impl Residual for LineTangency {
     }
     fn dim(&self) -> usize {
         2
+    }
+    fn block_sizes(&self) -> Option<Vec<usize>> {
+        Some(vec![2; self.point.len()])
     }
     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
         let p = combination(&self.point, x);

@@ -83,8 +83,8 @@ use camber_solve::scalar::{cst, re};
 use camber_solve::{Residual, Scalar};
 use smallvec::SmallVec;
 
-use crate::contact::{curve_at, dot, Param};
 use crate::curve_eval::CurveBasis;
+use crate::residuals::curve::{curve_at, curve_block_sizes, dot, Param};
 
 /// The fraction κ of its starting speed below which the tangent at a contact may not shrink
 /// once a solve has collapsed it into a cusp: the speed floor is f = κ·|C′₀(u)|.
@@ -112,8 +112,8 @@ pub enum Target {
 /// it crosses. Blocks: the curve's control points, u when free, then the target's blocks.
 ///
 /// ```
-/// use camber_sketch::clearance::{Clearance, Target};
-/// use camber_sketch::contact::Param;
+/// use camber_sketch::residuals::clearance::{Clearance, Target};
+/// use camber_sketch::residuals::Param;
 /// use camber_sketch::{curve_eval::CurveBasis, Entity};
 /// use camber_solve::Residual;
 /// use nalgebra::Point2;
@@ -446,6 +446,14 @@ impl Residual for Clearance {
     fn dim(&self) -> usize {
         1
     }
+    fn block_sizes(&self) -> Option<Vec<usize>> {
+        let mut sizes = curve_block_sizes(&self.basis, self.u);
+        sizes.extend(match self.target {
+            Target::Circle => [2, 1],
+            Target::Line => [2, 2],
+        });
+        Some(sizes)
+    }
     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
         let n = self.basis.count();
         let (u, k) = match self.u {
@@ -516,8 +524,11 @@ impl Residual for TangentSpeed {
     fn dim(&self) -> usize {
         1
     }
+    fn block_sizes(&self) -> Option<Vec<usize>> {
+        Some(curve_block_sizes(&self.basis, self.u))
+    }
     fn depends_on(&self, x: &[&[f64]], blocks: &mut [bool]) {
-        crate::contact::curve_support(&self.basis, self.u, x, blocks);
+        crate::residuals::curve::curve_support(&self.basis, self.u, x, blocks);
     }
     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
         let (_, c1, _) = curve_at(&self.basis, self.u, x);

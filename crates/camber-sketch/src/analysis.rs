@@ -1,0 +1,40 @@
+//! The DOF analysis of a sketch, component by component: free unknowns, rank, DOF, and the
+//! constraints that are redundant or conflicting (camber_solve's analysis on each component's
+//! problem, with the coincidences merged into one unknown named redundant when they repeat).
+
+use camber_solve::DofAnalysis;
+
+use crate::component::Component;
+use crate::errors::Result;
+use crate::sketch::Sketch;
+
+/// The DOF analysis of one component at the current state.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ComponentAnalysis {
+    /// The component.
+    pub component: Component,
+    /// Free unknowns, rank, DOF, redundant and conflicting constraints.
+    pub analysis: DofAnalysis,
+}
+
+/// # Analysis
+impl Sketch {
+    /// The DOF analysis of every component (components without constraints included: their
+    /// DOF is their number of unknowns).
+    ///
+    /// # Errors
+    /// Errors of building the problems.
+    pub fn analyze(&self) -> Result<Vec<ComponentAnalysis>> {
+        let mut out = Vec::new();
+        for comp in self.components() {
+            let cp = self.build_component(&comp, None)?;
+            let mut analysis = cp.problem().analyze(self.options())?;
+            cp.name_merged_redundant(&mut analysis.redundant);
+            out.push(ComponentAnalysis {
+                component: comp,
+                analysis,
+            });
+        }
+        Ok(out)
+    }
+}

@@ -1,0 +1,30 @@
+//! One connected component of a sketch as a solver problem.
+//!
+//! The sketch compiles each constraint into [`piece`]s ([`crate::constraints`]); this module
+//! turns a component's pieces into a [`camber_solve::Problem`] ([`problem`], with coincident
+//! points merged by [`merge`]), checks a solved state ([`check`]), keeps contacts honest with an
+//! active set of extra rows ([`contact`]), and runs the one solve policy every caller uses
+//! ([`policy`]): the sketch's solve and its drag sessions.
+
+pub mod check;
+pub(crate) mod contact;
+pub(crate) mod merge;
+pub mod piece;
+pub mod policy;
+pub mod problem;
+
+pub use check::{ContactSpec, ContactTarget, SolvedCheck, SolvedState};
+pub use piece::Slot;
+pub use problem::{ComponentProblem, DRAG_CONSTRAINT};
+
+use crate::ids::{ConstraintId, EntityId};
+
+/// A connected component of the sketch graph: entities and the constraints between them,
+/// each sorted by id.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Component {
+    /// The entities.
+    pub entities: Vec<EntityId>,
+    /// The constraints.
+    pub constraints: Vec<ConstraintId>,
+}

@@ -1,0 +1,264 @@
+//! What a constraint kind compiles with: the entities it reads, checked for kind, the linear
+//! maps from entity points to curve points and tangents, the slots of general residuals, and
+//! the pieces it writes ([`crate::component::piece`]).
+//!
+//! Compiling is also validation: a constraint is accepted into a sketch exactly when it
+//! compiles against the sketch's entities (ids, indices, parameters inside domains, finite
+//! numbers, non-zero directions, entities of the right kind).
+
+use std::sync::Arc;
+
+use camber_solve::DynResidual;
+use nalgebra::{Point2, Vector2};
+
+use crate::component::check::SolvedCheck;
+use crate::component::piece::{curve_slots, ETerms, Piece, Pieces, Slot};
+use crate::curve_eval::CurveBasis;
+use crate::entity::{combine, Entity, Terms};
+use crate::errors::{Error, Result};
+use crate::ids::{EntityId, PointRef};
+use crate::lookup::EntityLookup;
+use crate::residuals::Param;
+use crate::vocabulary::Contact;
+
+/// The compilation of one constraint: the entities it may read, and the pieces it wrote.
+pub struct Compiler<'a> {
+    lookup: &'a dyn EntityLookup,
+    pieces: Pieces,
+}
+
+impl std::fmt::Debug for Compiler<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Compiler")
+            .field("pieces", &self.pieces.len())
+            .finish()
+    }
+}
+
+impl<'a> Compiler<'a> {
+    /// A compilation against the entities of `lookup`.
+    pub(crate) fn new(lookup: &'a dyn EntityLookup) -> Self {
+        Self {
+            lookup,
+            pieces: Pieces::new(),
+        }
+    }
+
+    /// The pieces written.
+    pub(crate) fn finish(self) -> Pieces {
+        self.pieces
+    }
+
+    /// Writes a piece.
+    pub(crate) fn push(&mut self, piece: Piece) {
+        self.pieces.push(piece);
+    }
+
+    /// Writes a general residual over slots, with the check of the solved state it needs.
+    pub(crate) fn residual(
+        &mut self,
+        residual: impl DynResidual + 'static,
+        slots: Vec<Slot>,
+        check: Option<Arc<dyn SolvedCheck>>,
+    ) {
+        self.pieces.push(Piece::General {
+            residual: Arc::new(residual),
+            slots,
+            check,
+        });
+    }
+
+    /// Writes Σ c·P − target = 0 (two affine rows).
+    pub(crate) fn combination(&mut self, name: &'static str, terms: ETerms, target: [f64; 2]) {
+        self.pieces.push(Piece::Combination {
+            name,
+            terms,
+            target,
+        });
+    }
+
+    /// An entity.
+    pub(crate) fn entity(&self, id: EntityId) -> Result<&'a Entity> {
+        self.lookup.lookup(id)
+    }
+
+    /// An entity that must pass `ok`, else [`Error::WrongEntityKind`] saying `expected`.
+    fn kind(
+        &self,
+        id: EntityId,
+        expected: &'static str,
+        ok: fn(&Entity) -> bool,
+    ) -> Result<&'a Entity> {
+        let e = self.entity(id)?;
+        if ok(e) {
+            Ok(e)
+        } else {
+            Err(Error::WrongEntityKind {
+                entity: id,
+                expected,
+                found: e.kind_name(),
+            })
+        }
+    }
+
+    /// A curve entity (line, Bézier, B-spline, NURBS).
+    pub(crate) fn curve(&self, id: EntityId) -> Result<&'a Entity> {
+        self.kind(id, "curve", Entity::is_curve)
+    }
+
+    /// A line entity's ends.
+    pub(crate) fn line(&self, id: EntityId) -> Result<[Point2<f64>; 2]> {
+        match self.kind(id, "line", |e| matches!(e, Entity::Line(_)))? {
+            Entity::Line(ends) => Ok(*ends),
+            _ => Err(Error::UnknownEntity { entity: id }),
+        }
+    }
+
+    /// A circle entity (its centre and radius).
+    pub(crate) fn circle(&self, id: EntityId) -> Result<(Point2<f64>, f64)> {
+        match self.kind(id, "circle", |e| matches!(e, Entity::Circle { .. }))? {
+            Entity::Circle { center, radius } => Ok((*center, *radius)),
+            _ => Err(Error::UnknownEntity { entity: id }),
+        }
+    }
+
+    /// The parametric domain of a curve.
+    pub(crate) fn domain(&self, curve: EntityId) -> Result<(f64, f64)> {
+        let e = self.entity(curve)?;
+        e.domain().ok_or(Error::WrongEntityKind {
+            entity: curve,
+            expected: "curve",
+            found: e.kind_name(),
+        })
+    }
+
+    /// Appends the terms of a point reference, times `sign`.
+    pub(crate) fn point_terms(&self, r: PointRef, sign: f64, out: &mut ETerms) -> Result<()> {
+        let t = self.entity(r.entity())?.resolve(r)?;
+        with_entity(r.entity(), &t, sign, out);
+        Ok(())
+    }
+
+    /// The terms of C⁽ᵏ⁾(u) of a curve, k = `order` ∈ {0, 1}.
+    pub(crate) fn curve_terms(&self, curve: EntityId, u: f64, order: usize) -> Result<ETerms> {
+        finite("parameter", u)?;
+        let t = self.entity(curve)?.coefficients(curve, u, order)?;
+        let mut out = ETerms::new();
+        with_entity(curve, &t, 1.0, &mut out);
+        Ok(out)
+    }
+
+    /// The current value of a combination.
+    pub(crate) fn current(&self, terms: &ETerms) -> Result<[f64; 2]> {
+        let mut s = [0.0; 2];
+        for (e, j, c) in terms {
+            let v = combine(self.entity(*e)?.points(), &[(*j, *c)]);
+            s[0] += v[0];
+            s[1] += v[1];
+        }
+        Ok(s)
+    }
+
+    /// The single point block a reference denotes (a point, a control point, a line end, a
+    /// circle centre, or the end of a curve clamped there).
+    pub(crate) fn single_block(&self, r: PointRef) -> Result<(EntityId, usize)> {
+        let e = self.entity(r.entity())?;
+        match e.resolve(r)?.as_slice() {
+            [(j, c)] if (c - 1.0).abs() <= 0.0 => Ok((r.entity(), *j)),
+            _ => Err(Error::WrongEntityKind {
+                entity: r.entity(),
+                expected: "a single point block (point, control point or clamped end)",
+                found: e.kind_name(),
+            }),
+        }
+    }
+
+    /// The basis of a curve and the slots of all its control points.
+    pub(crate) fn curve_basis(&self, id: EntityId) -> Result<(CurveBasis, Vec<Slot>)> {
+        self.curve(id)?;
+        curve_slots(self.lookup, id)
+    }
+
+    /// The basis, slots and parameter of a contact on `curve`: at a fixed parameter, the basis
+    /// restricted to it and the slots of the control points it reads; at a free one, the whole
+    /// curve and a new free slot for u bounded to the domain (the last slot).
+    pub(crate) fn curve_contact(
+        &self,
+        curve: EntityId,
+        u: Contact,
+    ) -> Result<(CurveBasis, Vec<Slot>, Param)> {
+        let (basis, mut slots) = self.curve_basis(curve)?;
+        let v = u.value();
+        let (lo, hi) = basis.domain();
+        finite("parameter", v)?;
+        if v < lo || v > hi {
+            return Err(Error::ParameterOutsideDomain {
+                entity: curve,
+                value: v,
+                min: lo,
+                max: hi,
+            });
+        }
+        Ok(match u {
+            Contact::At(_) => {
+                let (basis, points) = basis.at(v, 1);
+                let slots = points.iter().map(|j| Slot::Point(curve, *j)).collect();
+                (basis, slots, Param::Fixed(v))
+            }
+            Contact::Free(_) => {
+                slots.push(Slot::Free { start: v, lo, hi });
+                (basis, slots, Param::Block)
+            }
+        })
+    }
+}
+
+fn with_entity(id: EntityId, terms: &Terms, sign: f64, out: &mut ETerms) {
+    for (j, c) in terms {
+        out.push((id, *j, sign * c));
+    }
+}
+
+/// A finite number, else [`Error::NonFinite`] naming it.
+pub(crate) fn finite(what: &'static str, value: f64) -> Result<f64> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(Error::NonFinite {
+            what,
+            index: 0,
+            value,
+        })
+    }
+}
+
+/// A finite, non-zero direction as an array.
+pub(crate) fn check_direction(what: &'static str, v: &Vector2<f64>) -> Result<[f64; 2]> {
+    crate::entity::check_finite2(what, 0, [v.x, v.y])?;
+    if v.x.abs() <= 0.0 && v.y.abs() <= 0.0 {
+        return Err(Error::ZeroDirection {
+            what,
+            x: v.x,
+            y: v.y,
+        });
+    }
+    Ok([v.x, v.y])
+}
+
+/// A positive finite number, else [`Error::NotPositive`].
+pub(crate) fn positive(what: &'static str, value: f64) -> Result<f64> {
+    if value.is_finite() && value > 0.0 {
+        Ok(value)
+    } else {
+        Err(Error::NotPositive { what, value })
+    }
+}
+
+/// Two different entities, else [`Error::SameEntity`].
+pub(crate) fn distinct(a: EntityId, b: EntityId) -> Result<()> {
+    if a == b {
+        Err(Error::SameEntity { entity: a })
+    } else {
+        Ok(())
+    }
+}

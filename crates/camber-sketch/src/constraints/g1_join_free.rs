@@ -1,0 +1,162 @@
+//! `g1_join_free`: the end of one curve is the start of the next and the tangents there are
+//! parallel and point the same way, the direction itself being free:
+//! P_end(first) − P_start(second) = 0 (two affine rows, or a merged unknown) and
+//! cross(C₁′(b₁), C₂′(a₂))/(|C₁′||C₂′|) = 0 (one nonlinear row), with C₁′·C₂′ > 0 checked after
+//! every solve. [`G2Join`](super::G2Join) adds equal curvature. File form:
+//! `{"kind": "g1_join_free", "first": 0, "second": 1}`.
+
+use std::sync::Arc;
+
+use camber_solve::scalar::cst;
+use camber_solve::{Residual, Scalar};
+use serde::{Deserialize, Serialize};
+
+use super::compiler::distinct;
+use super::glyph::{self, Glyph};
+use super::{Compiler, ConstraintKind, Entities};
+use crate::component::check::{point_tangent, SolvedCheck, SolvedState};
+use crate::component::piece::{ETerms, Slot};
+use crate::curve_eval::CurveBasis;
+use crate::errors::Result;
+use crate::ids::{EntityId, PointRef};
+use crate::lookup::EntityLookup;
+use crate::residuals::curve::{cross, dot};
+
+/// The end of `first` coincides with the start of `second` and their tangents there are
+/// parallel and point the same way, the direction being free (three rows).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct G1JoinFree {
+    /// The curve that ends at the joint.
+    pub first: EntityId,
+    /// The curve that starts at the joint.
+    pub second: EntityId,
+}
+
+/// cross(C₁′(u₁), C₂′(u₂))/(|C₁′||C₂′|) = 0: the tangents of two curves at fixed parameters
+/// are parallel (blocks: the first curve's control points, then the second's).
+#[derive(Debug, Clone, PartialEq)]
+pub struct TangentsParallel {
+    first: (CurveBasis, f64),
+    second: (CurveBasis, f64),
+}
+
+impl TangentsParallel {
+    /// Parallel tangents of `first` at u₁ and `second` at u₂.
+    pub fn new(first: (CurveBasis, f64), second: (CurveBasis, f64)) -> Self {
+        Self { first, second }
+    }
+}
+
+impl Residual for TangentsParallel {
+    fn name(&self) -> &str {
+        G1JoinFree::LABEL
+    }
+    fn dim(&self) -> usize {
+        1
+    }
+    fn block_sizes(&self) -> Option<Vec<usize>> {
+        Some(vec![2; self.first.0.count() + self.second.0.count()])
+    }
+    fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+        let n1 = self.first.0.count();
+        let t1 = self.first.0.tangent(x, cst(self.first.1));
+        let t2 = self.second.0.tangent(&x[n1..], cst(self.second.1));
+        out[0] = cross(t1, t2) / (dot(t1, t1) * dot(t2, t2)).sqrt();
+    }
+}
+
+/// The bases of both curves at the joint, restricted to the control points their derivatives
+/// up to `order` read, with those points' slots (the first curve's, then the second's).
+pub(crate) struct JointBases {
+    pub(crate) first: (CurveBasis, f64),
+    pub(crate) second: (CurveBasis, f64),
+    pub(crate) slots: Vec<Slot>,
+}
+
+/// Compiles the coincidence of a free-direction join's ends.
+pub(crate) fn joint_coincidence(
+    cx: &mut Compiler<'_>,
+    label: &'static str,
+    first: EntityId,
+    second: EntityId,
+) -> Result<()> {
+    distinct(first, second)?;
+    let mut terms = ETerms::new();
+    cx.point_terms(PointRef::End(first), 1.0, &mut terms)?;
+    cx.point_terms(PointRef::Start(second), -1.0, &mut terms)?;
+    cx.combination(label, terms, [0.0; 2]);
+    Ok(())
+}
+
+/// The bases of both curves at the joint up to the derivative `order`, restricted to the
+/// control points they read (the end spans'), with those points' slots.
+pub(crate) fn joint_bases(
+    cx: &Compiler<'_>,
+    first: EntityId,
+    second: EntityId,
+    order: usize,
+) -> Result<JointBases> {
+    let (full1, _) = cx.curve_basis(first)?;
+    let (full2, _) = cx.curve_basis(second)?;
+    let (u1, u2) = (full1.domain().1, full2.domain().0);
+    let ((b1, r1), (b2, r2)) = (full1.at(u1, order), full2.at(u2, order));
+    let slots = r1
+        .iter()
+        .map(|j| Slot::Point(first, *j))
+        .chain(r2.iter().map(|j| Slot::Point(second, *j)))
+        .collect();
+    Ok(JointBases {
+        first: (b1, u1),
+        second: (b2, u2),
+        slots,
+    })
+}
+
+/// The check of a free join: the tangents at the joint point the same way.
+pub(crate) fn verify_same_sense(
+    state: &SolvedState<'_>,
+    first: EntityId,
+    second: EntityId,
+) -> Result<()> {
+    let (e1, e2) = (state.entity(first)?, state.entity(second)?);
+    let (b1, a2) = (
+        e1.domain().unwrap_or((0.0, 1.0)).1,
+        e2.domain().unwrap_or((0.0, 1.0)).0,
+    );
+    let (_, t1) = point_tangent(e1, first, b1)?;
+    let (_, t2) = point_tangent(e2, second, a2)?;
+    state.sense(t1[0] * t2[0] + t1[1] * t2[1])
+}
+
+impl ConstraintKind for G1JoinFree {
+    const TAG: &'static str = "g1_join_free";
+    const LABEL: &'static str = "G1 join (free direction)";
+
+    fn entities(&self, out: &mut Entities) {
+        out.add(self.first);
+        out.add(self.second);
+    }
+
+    fn compile(&self, cx: &mut Compiler<'_>) -> Result<()> {
+        joint_coincidence(cx, Self::LABEL, self.first, self.second)?;
+        let j = joint_bases(cx, self.first, self.second, 1)?;
+        cx.residual(
+            TangentsParallel::new(j.first, j.second),
+            j.slots,
+            Some(Arc::new(*self)),
+        );
+        Ok(())
+    }
+
+    fn glyphs(&self, at: &dyn EntityLookup) -> Result<Vec<Glyph>> {
+        let b = glyph::domain_end(at, self.first, true)?;
+        Ok(vec![glyph::tangent_arrow(at, self.first, b)?])
+    }
+}
+
+impl SolvedCheck for G1JoinFree {
+    fn verify(&self, state: &SolvedState<'_>) -> Result<()> {
+        verify_same_sense(state, self.first, self.second)
+    }
+}
