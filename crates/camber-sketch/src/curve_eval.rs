@@ -59,6 +59,15 @@ struct FixedParameter {
 }
 
 impl CurveBasis {
+    /// For a basis made by [`CurveBasis::at`]: the coefficients of C, C′ and C″ at its
+    /// parameter, one `[c, c′, c″]` per control point it reads (in the order of the indices
+    /// `at` returned); `None` for a basis over the whole curve.
+    pub fn fixed_coefficients(&self) -> Option<&[[f64; 3]]> {
+        self.fixed.as_ref().map(|f| f.coefficients.as_slice())
+    }
+}
+
+impl CurveBasis {
     /// The basis of a curve entity (`None` for points and circles).
     pub fn of(entity: &Entity) -> Option<Self> {
         let count = entity.points().len();

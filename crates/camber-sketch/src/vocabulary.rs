@@ -175,3 +175,71 @@ pub mod xy_vector {
         Ok(Vector2::new(x, y))
     }
 }
+
+/// Two points, given as the ends of a line entity or as two point references: what horizontal,
+/// vertical, equal-length and axis-distance constraints relate. File form `{"line": 3}` or
+/// `{"a": {"point": 1}, "b": {"control": [2, 0]}}`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(try_from = "PairForm", into = "PairForm")]
+pub enum PointPair {
+    /// The two ends of a line entity, start then end.
+    Line(EntityId),
+    /// Two points.
+    Points(PointRef, PointRef),
+}
+
+impl PointPair {
+    /// The two points, in order.
+    pub fn points(self) -> [PointRef; 2] {
+        match self {
+            PointPair::Line(l) => [PointRef::Control(l, 0), PointRef::Control(l, 1)],
+            PointPair::Points(a, b) => [a, b],
+        }
+    }
+
+    /// The entities they belong to.
+    pub fn entities(self) -> [EntityId; 2] {
+        let [a, b] = self.points();
+        [a.entity(), b.entity()]
+    }
+}
+
+/// The file form of a [`PointPair`].
+#[derive(Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct PairForm {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    line: Option<EntityId>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    a: Option<PointRef>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    b: Option<PointRef>,
+}
+
+impl TryFrom<PairForm> for PointPair {
+    type Error = &'static str;
+    fn try_from(f: PairForm) -> Result<Self, Self::Error> {
+        match (f.line, f.a, f.b) {
+            (Some(l), None, None) => Ok(PointPair::Line(l)),
+            (None, Some(a), Some(b)) => Ok(PointPair::Points(a, b)),
+            _ => Err("expected either \"line\" or both \"a\" and \"b\""),
+        }
+    }
+}
+
+impl From<PointPair> for PairForm {
+    fn from(p: PointPair) -> Self {
+        match p {
+            PointPair::Line(l) => PairForm {
+                line: Some(l),
+                a: None,
+                b: None,
+            },
+            PointPair::Points(a, b) => PairForm {
+                line: None,
+                a: Some(a),
+                b: Some(b),
+            },
+        }
+    }
+}

@@ -549,3 +549,37 @@ fn unregistered_or_refused_custom_kinds_fail_plainly() {
         }
     );
 }
+
+/// Issue 12: the `CustomRegistry` example with a file listing one point where the residual
+/// reads two panicked inside the residual's `eval`; it is now refused when the file loads.
+#[test]
+fn issue_12_a_custom_constraint_with_too_few_points_is_refused_on_load() {
+    let one = GAP_FILE.replace(
+        "\"points\": [{\"point\": 0}, {\"point\": 1}]",
+        "\"points\": [{\"point\": 0}]",
+    );
+    let e = from_json_with(&one, &registry()).unwrap_err();
+    assert!(
+        matches!(
+            &e,
+            FileError::Constraint {
+                id: 3,
+                source: camber_sketch::Error::CustomArgs { .. },
+                ..
+            }
+        ),
+        "{e}"
+    );
+}
+
+/// Every kind in the list has a file form that round-trips (the tags are unique and each
+/// names its kind).
+#[test]
+fn every_kind_tag_is_unique() {
+    let mut tags = Constraint::TAGS.to_vec();
+    tags.sort_unstable();
+    let n = tags.len();
+    tags.dedup();
+    assert_eq!(tags.len(), n);
+    assert!(n >= 37, "{n} kinds");
+}

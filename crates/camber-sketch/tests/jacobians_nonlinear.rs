@@ -264,3 +264,76 @@ proptest! {
         prop_assert!(same_hessian(speed, &curve_blocks(&wave, &[vec![u]])));
     }
 }
+
+// The residuals of the classic kinds (issue 12), at random configurations.
+proptest! {
+    #[test]
+    fn equal_length(xs in prop::collection::vec(-3.0..3.0_f64, 8)) {
+        use camber_sketch::constraints::equal_length::LengthsEqual;
+        let blocks: Vec<Vec<f64>> = xs.chunks(2).map(<[f64]>::to_vec).collect();
+        // Away from a zero-length segment (the norm is not differentiable there).
+        prop_assume!((xs[2] - xs[0]).hypot(xs[3] - xs[1]) > 0.1);
+        prop_assume!((xs[6] - xs[4]).hypot(xs[7] - xs[5]) > 0.1);
+        prop_assert!(check(&LengthsEqual, &blocks) < 1e-6);
+    }
+
+    #[test]
+    fn line_offset(xs in prop::collection::vec(-3.0..3.0_f64, 6), offset in -2.0..2.0_f64) {
+        use camber_sketch::constraints::point_on_line::LineOffset;
+        let blocks: Vec<Vec<f64>> = xs.chunks(2).map(<[f64]>::to_vec).collect();
+        prop_assume!((xs[4] - xs[2]).hypot(xs[5] - xs[3]) > 0.1);
+        prop_assert!(check(&LineOffset::new("offset", offset), &blocks) < 1e-6);
+    }
+
+    #[test]
+    fn mirror(xs in prop::collection::vec(-3.0..3.0_f64, 8)) {
+        use camber_sketch::constraints::symmetric::Mirror;
+        let blocks: Vec<Vec<f64>> = xs.chunks(2).map(<[f64]>::to_vec).collect();
+        prop_assume!((xs[6] - xs[4]).hypot(xs[7] - xs[5]) > 0.1);
+        prop_assert!(check(&Mirror, &blocks) < 1e-6);
+    }
+
+    #[test]
+    fn arc_length(wave in prop::collection::vec(-1.0..1.0_f64, 5), length in 1.0..9.0_f64) {
+        use camber_sketch::constraints::arc_length::LengthOf;
+        let blocks = curve_blocks(&wave, &[]);
+        let refs: Vec<&[f64]> = blocks.iter().map(|b| &b[..]).collect();
+        let r = LengthOf::new(basis(), &[0.0, 0.5, 1.0], &refs, length);
+        prop_assert!(check(&r, &blocks) < 1e-6);
+    }
+
+    #[test]
+    fn curvature_value(wave in prop::collection::vec(-1.0..1.0_f64, 5), u in 0.05..0.95_f64, k in -2.0..2.0_f64) {
+        use camber_sketch::constraints::curvature_at::CurvatureValue;
+        let (fixed, points) = basis().at(u, 2);
+        let all = curve_blocks(&wave, &[]);
+        let blocks: Vec<Vec<f64>> = points.iter().map(|j| all[*j].clone()).collect();
+        prop_assert!(check(&CurvatureValue::new(fixed, u, k), &blocks) < 1e-5);
+    }
+}
+
+/// The arc-length rule against the closed form of a parabola's length: C(u) = (u, u²) on
+/// [0, 1] (the quadratic Bézier (0, 0), (½, 0), (1, 1)) is ∫√(1 + 4u²) du
+/// = √5/2 + asinh(2)/4.
+#[test]
+fn arc_length_of_a_parabola_matches_its_closed_form() {
+    use camber_sketch::constraints::arc_length::LengthOf;
+    let e = Entity::Bezier(
+        camber_geom::BezierCurve2::try_new(vec![
+            Point2::new(0.0, 0.0),
+            Point2::new(0.5, 0.0),
+            Point2::new(1.0, 1.0),
+        ])
+        .unwrap(),
+    );
+    let b = CurveBasis::of(&e).unwrap();
+    let pts = [[0.0, 0.0], [0.5, 0.0], [1.0, 1.0]];
+    let refs: Vec<&[f64]> = pts.iter().map(|p| &p[..]).collect();
+    let r = LengthOf::new(b, &[0.0, 1.0], &refs, 1.0);
+    let exact = 5f64.sqrt() / 2.0 + 2f64.asinh() / 4.0;
+    assert!(
+        (r.integral(&refs) - exact).abs() < 1e-14,
+        "{}",
+        r.integral(&refs) - exact
+    );
+}

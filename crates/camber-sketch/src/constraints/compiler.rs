@@ -148,6 +148,40 @@ impl<'a> Compiler<'a> {
         Ok(out)
     }
 
+    /// The terms of C⁽ᵏ⁾(u) of a curve for k = `order` ∈ {0, 1, 2} (the second derivative
+    /// from the basis' derivatives at u, rational quotient included).
+    pub(crate) fn curve_derivative_terms(
+        &self,
+        curve: EntityId,
+        u: f64,
+        order: usize,
+    ) -> Result<ETerms> {
+        if order <= 1 {
+            return self.curve_terms(curve, u, order);
+        }
+        finite("parameter", u)?;
+        let (lo, hi) = self.domain(curve)?;
+        if u < lo || u > hi {
+            return Err(Error::ParameterOutsideDomain {
+                entity: curve,
+                value: u,
+                min: lo,
+                max: hi,
+            });
+        }
+        let (full, _) = self.curve_basis(curve)?;
+        let (fixed, points) = full.at(u, 2);
+        let mut out = ETerms::new();
+        if let Some(c) = fixed.fixed_coefficients() {
+            for (j, k) in points.iter().zip(c) {
+                if k[2] != 0.0 {
+                    out.push((curve, *j, k[2]));
+                }
+            }
+        }
+        Ok(out)
+    }
+
     /// The current value of a combination.
     pub(crate) fn current(&self, terms: &ETerms) -> Result<[f64; 2]> {
         let mut s = [0.0; 2];

@@ -296,4 +296,34 @@ kinds! {
     CurveCurveTangent => curve_curve_tangent::CurveCurveTangent,
     /// Two curves joined G1 with a free direction.
     G1JoinFree => g1_join_free::G1JoinFree,
+    /// A line or two points level (one affine row).
+    Horizontal => horizontal::Horizontal,
+    /// A line or two points plumb (one affine row).
+    Vertical => vertical::Vertical,
+    /// Two segments equally long.
+    EqualLength => equal_length::EqualLength,
+    /// Two circles of equal radius (one affine row).
+    EqualRadius => equal_radius::EqualRadius,
+    /// Two circles with one centre (two affine rows).
+    Concentric => concentric::Concentric,
+    /// A point on the infinite line of a line entity.
+    PointOnLine => point_on_line::PointOnLine,
+    /// A point at a distance from the infinite line of a line entity.
+    PointLineDistance => point_line_distance::PointLineDistance,
+    /// A point at the middle of a line or two points (two affine rows).
+    Midpoint => midpoint::Midpoint,
+    /// Two points mirrored in a line.
+    Symmetric => symmetric::Symmetric,
+    /// A horizontal offset between two points (one affine row).
+    HorizontalDistance => horizontal_distance::HorizontalDistance,
+    /// A vertical offset between two points (one affine row).
+    VerticalDistance => vertical_distance::VerticalDistance,
+    /// A curve's arc length.
+    ArcLength => arc_length::ArcLength,
+    /// A curve's signed curvature at a parameter.
+    CurvatureAt => curvature_at::CurvatureAt,
+    /// Two curves joined with equal first derivatives (four affine rows).
+    C1Join => c1_join::C1Join,
+    /// Two curves joined with equal first and second derivatives (six affine rows).
+    C2Join => c2_join::C2Join,
 }

@@ -1,0 +1,190 @@
+//! `arc_length`: a curve's length equals L > 0:
+//!
+//! ∫ₐᵇ |C′(u)| du − L = 0 (one row in length units),
+//!
+//! the integral taken by composite Gauss–Legendre quadrature: every non-empty knot span split
+//! into S equal pieces, 8 nodes on each. On a polynomial piece the speed |C′| is smooth
+//! (analytic wherever C′ ≠ 0), so the rule converges fast; S is chosen when the component is
+//! built, doubling from 2 until two successive rules agree to [`RULE_TOLERANCE`] relative on
+//! the curve as it is (at most [`MAX_SUBINTERVALS`]). The rule then stays fixed for the solve,
+//! so the residual is smooth in the control points and its Jacobian exact. File form:
+//! `{"kind": "arc_length", "curve": 0, "length": 3.2}`.
+
+use camber_solve::scalar::cst;
+use camber_solve::{Residual, Scalar};
+use serde::{Deserialize, Serialize};
+
+use super::compiler::positive;
+use super::glyph::{self, Glyph};
+use super::{Compiler, ConstraintKind, Entities};
+use crate::curve_eval::CurveBasis;
+use crate::errors::Result;
+use crate::ids::EntityId;
+use crate::lookup::EntityLookup;
+use crate::residuals::curve::dot;
+
+/// Two successive rules agreeing to this relative difference end the choice of S.
+pub const RULE_TOLERANCE: f64 = 1e-14;
+
+/// The most sub-intervals per knot span.
+pub const MAX_SUBINTERVALS: usize = 256;
+
+/// Nodes on [−1, 1] and weights of the 8-point Gauss–Legendre rule (exact for degree 15).
+const GAUSS_8: [(f64, f64); 8] = [
+    (-0.960_289_856_497_536_2, 0.101_228_536_290_376_26),
+    (-0.796_666_477_413_626_7, 0.222_381_034_453_374_47),
+    (-0.525_532_409_916_329, 0.313_706_645_877_887_3),
+    (-0.183_434_642_495_649_8, 0.362_683_783_378_362),
+    (0.183_434_642_495_649_8, 0.362_683_783_378_362),
+    (0.525_532_409_916_329, 0.313_706_645_877_887_3),
+    (0.796_666_477_413_626_7, 0.222_381_034_453_374_47),
+    (0.960_289_856_497_536_2, 0.101_228_536_290_376_26),
+];
+
+/// The curve is `length` long (one row).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ArcLength {
+    /// The curve (a line, Bézier, B-spline or NURBS).
+    pub curve: EntityId,
+    /// The length L > 0.
+    pub length: f64,
+}
+
+/// ∫|C′| − L by the fixed composite rule of the module documentation (blocks: the curve's
+/// control points).
+#[derive(Debug, Clone, PartialEq)]
+pub struct LengthOf {
+    basis: CurveBasis,
+    /// (parameter, weight) of every node.
+    nodes: Vec<(f64, f64)>,
+    length: f64,
+}
+
+impl LengthOf {
+    /// The residual for a curve with `basis` and `breakpoints` (its distinct knots over the
+    /// domain, increasing, ends included), for the length L, with the rule chosen on the
+    /// control points `points` (see the module documentation).
+    pub fn new(basis: CurveBasis, breakpoints: &[f64], points: &[&[f64]], length: f64) -> Self {
+        let mut r = Self {
+            basis,
+            nodes: Self::rule(breakpoints, 2),
+            length,
+        };
+        let mut previous = r.integral(points);
+        let mut pieces = 4;
+        while pieces <= MAX_SUBINTERVALS {
+            let next = Self {
+                nodes: Self::rule(breakpoints, pieces),
+                ..r.clone()
+            };
+            let value = next.integral(points);
+            r = next;
+            let settled = (value - previous).abs() <= RULE_TOLERANCE * value.abs();
+            previous = value;
+            if settled {
+                break;
+            }
+            pieces *= 2;
+        }
+        r
+    }
+
+    /// The nodes (parameter, weight) of the composite rule with `pieces` sub-intervals per span.
+    fn rule(breakpoints: &[f64], pieces: usize) -> Vec<(f64, f64)> {
+        let mut nodes = Vec::with_capacity(breakpoints.len() * pieces * GAUSS_8.len());
+        for w in breakpoints.windows(2) {
+            let h = (w[1] - w[0]) / pieces as f64;
+            for s in 0..pieces {
+                let (a, b) = (w[0] + h * s as f64, w[0] + h * (s + 1) as f64);
+                for (x, wt) in GAUSS_8 {
+                    nodes.push((0.5 * (a + b) + 0.5 * (b - a) * x, 0.5 * (b - a) * wt));
+                }
+            }
+        }
+        nodes
+    }
+
+    /// The number of quadrature nodes chosen.
+    pub fn nodes(&self) -> usize {
+        self.nodes.len()
+    }
+
+    /// The quadrature of ∫|C′| at the control points `points` (f64), for reports and tests.
+    pub fn integral(&self, points: &[&[f64]]) -> f64 {
+        self.nodes
+            .iter()
+            .map(|(u, w)| {
+                let (_, c1) = self.basis.eval(points, *u);
+                w * c1[0].hypot(c1[1])
+            })
+            .sum()
+    }
+}
+
+impl Residual for LengthOf {
+    fn name(&self) -> &str {
+        ArcLength::LABEL
+    }
+    fn dim(&self) -> usize {
+        1
+    }
+    fn block_sizes(&self) -> Option<Vec<usize>> {
+        Some(vec![2; self.basis.count()])
+    }
+    fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+        let mut sum = T::zero();
+        for (u, w) in &self.nodes {
+            let (_, c1) = self.basis.eval(x, cst::<T>(*u));
+            sum += cst::<T>(*w) * dot(c1, c1).sqrt();
+        }
+        out[0] = sum - cst::<T>(self.length);
+    }
+}
+
+/// The distinct knots of a curve over its domain (its breakpoints), increasing.
+pub(crate) fn breakpoints(e: &crate::entity::Entity) -> Vec<f64> {
+    let (a, b) = e.domain().unwrap_or((0.0, 1.0));
+    let mut out = vec![a];
+    let knots: &[f64] = match e {
+        crate::entity::Entity::BSpline(c) => c.knots().as_slice(),
+        crate::entity::Entity::Nurbs(c) => c.knots().as_slice(),
+        _ => &[],
+    };
+    for k in knots {
+        if *k > a && *k < b && out.last().is_some_and(|l| k > l) {
+            out.push(*k);
+        }
+    }
+    out.push(b);
+    out
+}
+
+impl ConstraintKind for ArcLength {
+    const TAG: &'static str = "arc_length";
+    const LABEL: &'static str = "arc length";
+
+    fn entities(&self, out: &mut Entities) {
+        out.add(self.curve);
+    }
+
+    fn compile(&self, cx: &mut Compiler<'_>) -> Result<()> {
+        let length = positive("length", self.length)?;
+        let (basis, slots) = cx.curve_basis(self.curve)?;
+        let e = cx.entity(self.curve)?;
+        let points: Vec<[f64; 2]> = e.points().iter().map(|p| [p.x, p.y]).collect();
+        let refs: Vec<&[f64]> = points.iter().map(|p| &p[..]).collect();
+        let rule = LengthOf::new(basis, &breakpoints(e), &refs, length);
+        cx.residual(rule, slots, None);
+        Ok(())
+    }
+
+    fn glyphs(&self, at: &dyn EntityLookup) -> Result<Vec<Glyph>> {
+        let (a, b) = (
+            glyph::domain_end(at, self.curve, false)?,
+            glyph::domain_end(at, self.curve, true)?,
+        );
+        let mid = glyph::curve_point(at, self.curve, 0.5 * (a + b))?;
+        Ok(vec![Glyph::Mark(mid, "L")])
+    }
+}
