@@ -36,7 +36,7 @@
 //!
 //! - [`sketch`]: the graph (entities and constraints as petgraph nodes, an edge from a
 //!   constraint to every entity it reads), components, the dirty set, editing; [`solve`],
-//!   [`analysis`], [`drag`] and [`displacement`] add its solving faces; [`file`] its JSON form.
+//!   [`analysis`], [`drag`] and [`displacement`] add its solving faces; [`mod@file`] its JSON form.
 //! - [`constraints`]: one module per constraint kind (its entities, validation, rows, checks,
 //!   file form and glyph), the [`Constraint`] enum generated from their list, and user kinds
 //!   through [`Custom`].

@@ -167,8 +167,8 @@ fn pin_chain_ends(s: &mut Sketch, segs: &[EntityId]) -> Result<()> {
 }
 
 /// W3: the sine chain of [`w3a_chain`] with the joint directions free: consecutive segments
-/// joined by [`Constraint::G1JoinFree`] (coincident, tangents parallel with the same sense),
-/// each segment's chord |P₃ − P₀| held at its initial length by [`Constraint::Distance`], the
+/// joined by [`G1JoinFree`] (coincident, tangents parallel with the same sense),
+/// each segment's chord |P₃ − P₀| held at its initial length by [`Distance`], the
 /// first point fixed and the last moved by (−0.3, 0.4) and fixed there. Nonlinear: 3(n − 1) +
 /// n rows over 8n unknowns less the pinned ends. Returns the sketch (dirty) and the segments.
 ///
@@ -562,7 +562,7 @@ pub fn w2_valid(s: &Sketch, w: &W2) -> bool {
 }
 
 /// W2 `2cubic` at its rough start: two cubic Béziers Q₀…Q₃ and Q₃…Q₆ (each with its own copy
-/// of Q₃), joined G1 at Q₃ with a free direction ([`Constraint::G1JoinFree`]); Q₃ on the TH
+/// of Q₃), joined G1 at Q₃ with a free direction ([`G1JoinFree`]); Q₃ on the TH
 /// circle and tangent there (the first curve at u = 1), Q₀ on LE and tangent, Q₆ on TE and
 /// tangent; all outside and clockwise, the circles fixed. Returns the sketch, the two curves
 /// and the circles.

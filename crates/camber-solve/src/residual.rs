@@ -21,7 +21,7 @@ use crate::scalar::Scalar;
 /// **Block shapes are declared, and checked once.** [`Residual::block_sizes`] says how many
 /// blocks the residual reads and how long each is. [`crate::Problem::add_residual`] compares
 /// that with the blocks it is given and refuses a mismatch with
-/// [`Error::BlockShape`](crate::Error::BlockShape) naming the residual; every later
+/// [`Error::BlockShape`] naming the residual; every later
 /// evaluation through the problem then hands `eval` exactly those shapes, so `eval` may index
 /// `x` and `out` freely. A residual that does not declare its blocks (`None`, the default)
 /// cannot be checked and must cope with whatever blocks it is given; camber-sketch refuses

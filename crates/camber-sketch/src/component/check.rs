@@ -2,7 +2,7 @@
 //! direction kept, no crossing near the contact), the sense of free joins and angles.
 //!
 //! A constraint kind that needs one implements [`SolvedCheck`] (in its own module) and hands
-//! itself to the builder with its residual ([`super::piece::Piece::General`]). After every
+//! itself to the builder with its residual (a general piece). After every
 //! solve, before anything is written back, each check runs on the solved entities with the
 //! solved values of its constraint's free parameters; the first failure is the solve's error.
 //! The helpers here are what several checks share: curve evaluation on solved entities, the
@@ -23,7 +23,7 @@ use crate::vocabulary::{CircleSide, Contact, LineSide, Rotation, Sense};
 const SIDE_SAMPLES: usize = 24;
 
 /// A circle or line a curve touches at a contact parameter: what the active set of honest
-/// contact ([`super::contact`]) and iterative displacement need to know of a contact.
+/// contact (the active set of the solve policy) and iterative displacement need to know of a contact.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ContactSpec {
     /// The curve.
@@ -108,8 +108,8 @@ impl SolvedState<'_> {
         }
     }
 
-    /// The tangent speed below which a contact on `curve` counts as a cusp (see
-    /// [`speed_floor`]), measured on the curve before the solve.
+    /// The tangent speed below which a contact on `curve` counts as a cusp (
+    /// the speed floor: a millionth of its mean speed), measured on the curve before the solve.
     ///
     /// # Errors
     /// [`Error::UnknownEntity`].

@@ -2,8 +2,8 @@
 //!
 //! The sketch compiles each constraint into [`piece`]s ([`crate::constraints`]); this module
 //! turns a component's pieces into a [`camber_solve::Problem`] ([`problem`], with coincident
-//! points merged by [`merge`]), checks a solved state ([`check`]), keeps contacts honest with an
-//! active set of extra rows ([`contact`]), and runs the one solve policy every caller uses
+//! points merged by `merge`), checks a solved state ([`check`]), keeps contacts honest with an
+//! active set of extra rows (`contact`), and runs the one solve policy every caller uses
 //! ([`policy`]): the sketch's solve and its drag sessions.
 
 pub mod check;

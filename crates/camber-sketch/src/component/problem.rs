@@ -6,7 +6,7 @@
 //! Order matters because bindings do not chain: eliminations are bound first (a target that is
 //! fixed, already eliminated, or the base of another elimination falls back to the row form),
 //! then fixed points (a fixed point that is an elimination target is held by rows instead),
-//! then coincident points are merged ([`super::merge`]), then every other row; a residual
+//! then coincident points are merged (module `merge`), then every other row; a residual
 //! reading another constraint's free parameter comes after the constraint that owns it.
 
 use std::collections::{HashMap, HashSet};

@@ -43,7 +43,7 @@ pub use compiler::Compiler;
 pub use glyph::Glyph;
 
 /// What every constraint kind provides (see the module documentation).
-pub(crate) trait ConstraintKind:
+pub trait ConstraintKind:
     std::fmt::Debug + Clone + PartialEq + serde::Serialize + serde::de::DeserializeOwned
 {
     /// The kind's word in sketch files and the CLI ("tangent_to_circle").
