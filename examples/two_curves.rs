@@ -11,7 +11,7 @@
 
 use camber::geom::BezierCurve2;
 use camber::sketch::constraints::{CurveCurveTangent, Fixed, TangentToCircle, TangentToLine};
-use camber::sketch::workloads::{two_curves_valid, TwoCurves, TWO_CURVES_CIRCLES};
+use camber_workloads::{two_curves_valid, TwoCurves, TWO_CURVES_CIRCLES};
 use camber::sketch::{CircleSide, Constraint, Contact, LineSide, Rotation, Sense, Sketch};
 use nalgebra::Point2;
 

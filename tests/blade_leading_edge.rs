@@ -10,12 +10,12 @@
 
 use approx::assert_abs_diff_eq;
 use camber::geom::{BezierCurve2, ParametricCurve};
-use camber::sketch::workloads::blade;
+use camber_workloads::blade;
 use camber::sketch::{EntityId, PointRef};
 use nalgebra::{DMatrix, DVector, Point2, Vector2};
 
 /// Free unknowns in this order: pressure P₁…P₅, leading P₀…P₅, suction P₀…P₄ (x, y each).
-fn slots(b: &camber::sketch::workloads::Blade) -> Vec<(EntityId, usize)> {
+fn slots(b: &camber_workloads::Blade) -> Vec<(EntityId, usize)> {
     let mut v: Vec<(EntityId, usize)> = (1..6).map(|k| (b.pressure, k)).collect();
     v.extend((0..6).map(|k| (b.leading, k)));
     v.extend((0..5).map(|k| (b.suction, k)));
@@ -28,7 +28,7 @@ fn col(slots: &[(EntityId, usize)], e: EntityId, k: usize) -> usize {
 
 /// Rows of the blade's constraints plus the pin: J (10 × 32) and g at the points `at`.
 fn system(
-    b: &camber::sketch::workloads::Blade,
+    b: &camber_workloads::Blade,
     at: &dyn Fn(EntityId, usize) -> Point2<f64>,
     dragged: usize,
     target: Point2<f64>,
@@ -80,7 +80,7 @@ fn system(
 /// control points given by `at` (joint gaps and |cross(C′, d)|/|C′|).
 fn max_residual(
     at: &dyn Fn(EntityId, usize) -> Point2<f64>,
-    b: &camber::sketch::workloads::Blade,
+    b: &camber_workloads::Blade,
 ) -> f64 {
     let curve = |e| BezierCurve2::try_new((0..6).map(|k| at(e, k)).collect()).unwrap();
     let (ps, le, ss) = (curve(b.pressure), curve(b.leading), curve(b.suction));

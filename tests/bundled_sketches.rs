@@ -8,7 +8,7 @@
 use std::path::PathBuf;
 
 use camber::sketch::file::{from_json, to_json};
-use camber::sketch::workloads::{
+use camber_workloads::{
     two_curves, two_curves_valid, w2_bspline7, w2_valid, w3a_chain, w3a_valid,
 };
 use camber::sketch::Sketch;

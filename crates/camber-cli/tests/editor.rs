@@ -10,7 +10,7 @@ use std::path::{Path, PathBuf};
 use camber_cli::editor::EditorState;
 use camber_geom::ParametricCurve;
 use camber_sketch::constraints::{Fixed, G1Join, TangentToCircle};
-use camber_sketch::workloads::{w2_valid, W2};
+use camber_workloads::{w2_valid, W2};
 use camber_sketch::{Constraint, Entity, EntityId, FixTarget, PointRef, Sketch};
 use nalgebra::{Point2, Vector2};
 use serde_json::{json, Value};
@@ -494,7 +494,7 @@ fn large_components_drag_without_the_dense_analysis() {
     // starts at once (the library goes straight to the sparse factorization) and keeps the
     // chain's joints.
     let n = camber_cli::commands::render::ANALYSIS_MAX_ENTITIES + 1;
-    let (sketch, segments) = camber_sketch::workloads::w3a_chain(n).unwrap();
+    let (sketch, segments) = camber_workloads::w3a_chain(n).unwrap();
     let mut ed = EditorState::new(sketch, "chain.json".into(), None).unwrap();
     let s = state(&mut ed);
     assert_eq!(s["components"][0]["analysis"], Value::Null);

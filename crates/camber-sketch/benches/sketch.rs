@@ -6,7 +6,7 @@
 //! directions and chord lengths, N = 1,000 and 10,000).
 #![allow(missing_docs)] // criterion's macros generate undocumented items
 
-use camber_sketch::workloads::{
+use camber_workloads::{
     blade, w1, w1_targets, w2_2cubic, w2_2cubic_perturbed, w2_2cubic_valid, w2_bspline7,
     w2_perturbed, w2_valid, w3_chain, w3a_chain, w4,
 };

@@ -56,7 +56,7 @@
 //! ([`residuals::clearance`], [`component::policy`]). An affine component takes the linear
 //! path; any other goes to [`camber_solve::solve()`], whose DOF analysis picks Newton minimum
 //! norm, SLSQP or least squares; the component report's `solver` and `reason` say which ran.
-//! [`workloads`] builds the standard benchmark sketches.
+//! The standard benchmark sketches live in the `camber-workloads` crate.
 
 pub mod analysis;
 pub mod component;
@@ -73,7 +73,6 @@ pub mod residuals;
 pub mod sketch;
 pub mod solve;
 pub mod vocabulary;
-pub mod workloads;
 
 pub use analysis::ComponentAnalysis;
 pub use component::{Component, ComponentProblem, DRAG_CONSTRAINT};

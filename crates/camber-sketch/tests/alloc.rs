@@ -7,7 +7,7 @@
 
 use std::alloc::System;
 
-use camber_sketch::workloads::{blade, w1, w1_targets};
+use camber_workloads::{blade, w1, w1_targets};
 use camber_sketch::{PointRef, TangentForm};
 use nalgebra::Vector2;
 use stats_alloc::{Region, StatsAlloc, INSTRUMENTED_SYSTEM};

@@ -8,7 +8,7 @@
 use camber_geom::queries::closest_point;
 use camber_geom::ParametricCurve;
 use camber_sketch::constraints::Coincident;
-use camber_sketch::workloads::{w2_bspline7, W2, W2_CIRCLES};
+use camber_workloads::{w2_bspline7, W2, W2_CIRCLES};
 use camber_sketch::{Entity, PointRef, Sketch};
 use nalgebra::Point2;
 
@@ -175,7 +175,7 @@ fn a_failed_solve_leaves_the_sketch_unchanged() {
 /// points Q₀…Q₆ (the joint Q₃ moved as one point); returns the valid count. Refused starts
 /// write nothing.
 fn two_cubics_perturbed(delta: f64, trials: usize, seed: u64) -> usize {
-    use camber_sketch::workloads::{w2_2cubic, w2_2cubic_valid};
+    use camber_workloads::{w2_2cubic, w2_2cubic_valid};
     let (mut s0, curves, _) = w2_2cubic().unwrap();
     s0.solve().unwrap();
     assert!(w2_2cubic_valid(&s0, curves));
@@ -231,7 +231,7 @@ fn two_cubics_large_perturbations_solve_valid() {
 /// per δ for each representation, every one solved by both.
 #[test]
 fn displacement_is_no_worse_than_slsqp() {
-    use camber_sketch::workloads::{w2_2cubic, w2_2cubic_perturbed, w2_perturbed};
+    use camber_workloads::{w2_2cubic, w2_2cubic_perturbed, w2_perturbed};
     let (s0, w) = base();
     let (mut c0, curves, _) = w2_2cubic().unwrap();
     c0.solve().unwrap();

@@ -11,7 +11,7 @@ use approx::assert_abs_diff_eq;
 use camber_geom::BezierCurve2;
 use camber_sketch::constraints::{Fixed, TangentToCircle};
 use camber_sketch::displacement::DisplacementOptions;
-use camber_sketch::workloads::{w2_bspline7, w2_perturbed, w2_valid};
+use camber_workloads::{w2_bspline7, w2_perturbed, w2_valid};
 use camber_sketch::{CircleSide, Constraint, Contact, EntityId, Error, PointRef, Rotation, Sketch};
 use nalgebra::Point2;
 

@@ -7,7 +7,7 @@
 
 use approx::assert_abs_diff_eq;
 use camber_sketch::constraints::{Fixed, TangentToCircle};
-use camber_sketch::workloads::{w1, w1_targets};
+use camber_workloads::{w1, w1_targets};
 use camber_sketch::{Constraint, Error, PointRef, Sense, TangentForm};
 use nalgebra::{Point2, Vector2};
 
@@ -119,7 +119,7 @@ fn fixed_points_cannot_be_dragged() {
 /// factorization; the drag must start, follow the mouse and keep every joint.
 #[test]
 fn a_large_affine_component_drags_on_the_sparse_path() {
-    let (mut s, segs) = camber_sketch::workloads::w3a_chain(1000).unwrap();
+    let (mut s, segs) = camber_workloads::w3a_chain(1000).unwrap();
     s.solve().unwrap();
     let dragged = PointRef::Control(segs[500], 1);
     let start = s.point(dragged).unwrap();
@@ -150,7 +150,7 @@ fn a_large_affine_component_drags_on_the_sparse_path() {
 /// solved ones in their constraints, as a solve does.
 #[test]
 fn finish_stores_the_solved_free_contact_parameters() {
-    use camber_sketch::workloads::{w2_bspline7, W2_CIRCLES};
+    use camber_workloads::{w2_bspline7, W2_CIRCLES};
     use camber_sketch::Contact;
     let (mut s, w) = w2_bspline7().unwrap();
     s.solve().unwrap();

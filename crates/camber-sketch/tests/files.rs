@@ -102,7 +102,7 @@ fn bundled_files_match_their_builders() {
     bundled("blade_section.json", &blade_section());
     bundled(
         "w3a_chain_1000.json",
-        &camber_sketch::workloads::w3a_chain(1000).unwrap().0,
+        &camber_workloads::w3a_chain(1000).unwrap().0,
     );
 }
 

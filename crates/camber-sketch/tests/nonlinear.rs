@@ -11,7 +11,7 @@ use camber_sketch::constraints::{
     Angle, CurveCurveTangent, Distance, Fixed, G1JoinFree, G2Join, Parallel, Perpendicular,
     PointOnCircle, Radius, TangentToCircle, TangentToLine,
 };
-use camber_sketch::workloads::w2_bspline7;
+use camber_workloads::w2_bspline7;
 use camber_sketch::{
     CircleSide, Constraint, Contact, Entity, Error, LineSide, PointRef, Rotation, Sense, Sketch,
 };

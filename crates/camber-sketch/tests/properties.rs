@@ -131,7 +131,7 @@ struct Outcome {
 /// W1's cubic with C(½) moved by `offset`, in both forms; each is checked here.
 fn forms(offset: Vector2<f64>) -> (Outcome, Outcome) {
     let solve = |form| {
-        let (mut s, c, d) = camber_sketch::workloads::w1(form).unwrap();
+        let (mut s, c, d) = camber_workloads::w1(form).unwrap();
         let target = s.curve_point(c, 0.5).unwrap() + offset;
         let x0 = flat(&s, c);
         s.add_constraint(PointAtParameter {
@@ -175,7 +175,7 @@ fn the_forms_differ_in_how_p1_moves() {
     let p1_move = |o: &Outcome, x0: &DVector<f64>| {
         ((o.x[2] - x0[2]).powi(2) + (o.x[3] - x0[3]).powi(2)).sqrt()
     };
-    let (s, c, _) = camber_sketch::workloads::w1(TangentForm::Row).unwrap();
+    let (s, c, _) = camber_workloads::w1(TangentForm::Row).unwrap();
     let x0 = flat(&s, c);
     assert!(p1_move(&elim, &x0) > p1_move(&row, &x0));
     // P₃ is fixed in both.

@@ -1,7 +1,7 @@
 //! W3, the nonlinear G1 chain with chord lengths: a solved chain passes the workload's own
 //! validity check, and the unsolved one does not.
 
-use camber_sketch::workloads::{w3_chain, w3_valid};
+use camber_workloads::{w3_chain, w3_valid};
 
 #[test]
 fn w3_chain_solves_to_a_valid_chain() -> Result<(), camber_sketch::Error> {

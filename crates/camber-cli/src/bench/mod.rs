@@ -2,7 +2,7 @@
 //! `camber bench`: what to run ([`Plan`]), one result row per case ([`Row`]), the statistics
 //! (median and p95 by nearest rank) and the plain-text table.
 //!
-//! The sketches come from [`camber_sketch::workloads`], and so do the validity checks: every
+//! The sketches come from [`camber_workloads`], and so do the validity checks: every
 //! result is judged by reading the solved geometry, never by the solver's status, so a solve
 //! that reports success on a wrong answer counts as invalid, and a failed solve (which leaves
 //! the sketch as it was) counts as invalid unless its start was already valid.

@@ -5,7 +5,7 @@ use std::collections::BTreeMap;
 use std::time::{Duration, Instant};
 
 use anyhow::{anyhow, Context, Result};
-use camber_sketch::workloads as wl;
+use camber_workloads as wl;
 use camber_sketch::{PointRef, Sketch, SketchReport, TangentForm};
 use camber_solve::SolverKind;
 use indicatif::ProgressBar;

@@ -6,12 +6,12 @@
 use camber_geom::BezierCurve2;
 use nalgebra::{Point2, Vector2};
 
-use crate::constraints::{Distance, Fixed, G1Join, G1JoinFree, StartTangent, TangentToCircle};
-use crate::entity::Entity;
-use crate::errors::Result;
-use crate::ids::{EntityId, PointRef};
-use crate::sketch::Sketch;
-use crate::vocabulary::{CircleSide, Contact, Rotation, Sense, TangentForm};
+use camber_sketch::constraints::{Distance, Fixed, G1Join, G1JoinFree, StartTangent, TangentToCircle};
+use camber_sketch::Entity;
+use camber_sketch::Result;
+use camber_sketch::{EntityId, PointRef};
+use camber_sketch::Sketch;
+use camber_sketch::vocabulary::{CircleSide, Contact, Rotation, Sense, TangentForm};
 
 mod two_curves;
 pub use two_curves::{two_curves, two_curves_valid, TwoCurves, TWO_CURVES_CIRCLES};
@@ -21,7 +21,7 @@ pub use two_curves::{two_curves, two_curves_valid, TwoCurves, TWO_CURVES_CIRCLES
 /// sketch, the curve and D.
 ///
 /// ```
-/// let (s, c, d) = camber_sketch::workloads::w1(camber_sketch::TangentForm::Row)?;
+/// let (s, c, d) = camber_workloads::w1(camber_sketch::TangentForm::Row)?;
 /// assert!((s.point(camber_sketch::PointRef::Control(c, 1))?.x - 1.2 * d.x).abs() < 1e-15);
 /// # Ok::<(), camber_sketch::Error>(())
 /// ```
@@ -173,9 +173,9 @@ fn pin_chain_ends(s: &mut Sketch, segs: &[EntityId]) -> Result<()> {
 /// n rows over 8n unknowns less the pinned ends. Returns the sketch (dirty) and the segments.
 ///
 /// ```
-/// let (s, segs) = camber_sketch::workloads::w3_chain(3)?;
+/// let (s, segs) = camber_workloads::w3_chain(3)?;
 /// assert_eq!(segs.len(), 3);
-/// assert!(!camber_sketch::workloads::w3_valid(&s, &segs, 1e-6)); // the end was moved
+/// assert!(!camber_workloads::w3_valid(&s, &segs, 1e-6)); // the end was moved
 /// # Ok::<(), camber_sketch::Error>(())
 /// ```
 ///
@@ -295,10 +295,10 @@ fn w4_direction(i: usize) -> Vector2<f64> {
 /// [`w4`]'s direction for it (|sin| ≤ `tol`) with the same sense.
 ///
 /// ```
-/// let (mut s, curves) = camber_sketch::workloads::w4(3)?;
-/// assert!(!camber_sketch::workloads::w4_valid(&s, &curves, 1e-9));
+/// let (mut s, curves) = camber_workloads::w4(3)?;
+/// assert!(!camber_workloads::w4_valid(&s, &curves, 1e-9));
 /// s.solve()?;
-/// assert!(camber_sketch::workloads::w4_valid(&s, &curves, 1e-9));
+/// assert!(camber_workloads::w4_valid(&s, &curves, 1e-9));
 /// # Ok::<(), camber_sketch::Error>(())
 /// ```
 pub fn w4_valid(s: &Sketch, curves: &[EntityId], tol: f64) -> bool {
@@ -356,7 +356,8 @@ pub fn w1_min_norm_displacement(
 /// the first point at J₀ and the last at J_N + (−0.3, 0.4).
 ///
 /// ```
-/// use camber_sketch::{workloads, PointRef};
+/// use camber_sketch::PointRef;
+/// use camber_workloads as workloads;
 /// let (mut s, segs) = workloads::w3a_chain(4)?;
 /// // Moving the last point breaks no joint: the start is already valid. Bend a joint.
 /// assert!(workloads::w3a_valid(&s, &segs, 1e-9));
@@ -364,7 +365,7 @@ pub fn w1_min_norm_displacement(
 /// s.set_point(PointRef::Control(segs[1], 1), p + nalgebra::Vector2::new(0.0, 0.1))?;
 /// assert!(!workloads::w3a_valid(&s, &segs, 1e-9));
 /// s.solve()?;
-/// assert!(camber_sketch::workloads::w3a_valid(&s, &segs, 1e-9));
+/// assert!(camber_workloads::w3a_valid(&s, &segs, 1e-9));
 /// # Ok::<(), camber_sketch::Error>(())
 /// ```
 pub fn w3a_valid(s: &Sketch, segs: &[EntityId], tol: f64) -> bool {
@@ -424,7 +425,7 @@ pub struct W2 {
 /// leading edge over the top of TH to the trailing edge). The circles are fixed.
 ///
 /// ```
-/// let (mut s, w) = camber_sketch::workloads::w2_bspline7()?;
+/// let (mut s, w) = camber_workloads::w2_bspline7()?;
 /// let report = s.solve()?;
 /// assert_eq!(report.components.len(), 1);
 /// # let _ = w;
@@ -568,9 +569,9 @@ pub fn w2_valid(s: &Sketch, w: &W2) -> bool {
 /// and the circles.
 ///
 /// ```
-/// let (mut s, curves, _) = camber_sketch::workloads::w2_2cubic()?;
+/// let (mut s, curves, _) = camber_workloads::w2_2cubic()?;
 /// s.solve()?;
-/// assert!(camber_sketch::workloads::w2_2cubic_valid(&s, curves));
+/// assert!(camber_workloads::w2_2cubic_valid(&s, curves));
 /// # Ok::<(), camber_sketch::Error>(())
 /// ```
 ///

@@ -5,12 +5,12 @@ use camber_geom::BezierCurve2;
 use nalgebra::{Point2, Vector2};
 
 use super::cross;
-use crate::constraints::{CurveCurveTangent, Fixed, TangentToCircle, TangentToLine};
-use crate::entity::Entity;
-use crate::errors::Result;
-use crate::ids::EntityId;
-use crate::sketch::Sketch;
-use crate::vocabulary::{CircleSide, Contact, LineSide, Rotation, Sense};
+use camber_sketch::constraints::{CurveCurveTangent, Fixed, TangentToCircle, TangentToLine};
+use camber_sketch::Entity;
+use camber_sketch::Result;
+use camber_sketch::EntityId;
+use camber_sketch::Sketch;
+use camber_sketch::vocabulary::{CircleSide, Contact, LineSide, Rotation, Sense};
 
 /// The entities of the two-curve sketch ([`two_curves`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -44,10 +44,10 @@ pub const TWO_CURVES_CIRCLES: [([f64; 2], f64); 2] =
 /// and 2 contact parameters against 11 rows, 7 DOF.
 ///
 /// ```
-/// let (mut s, t) = camber_sketch::workloads::two_curves()?;
-/// assert!(!camber_sketch::workloads::two_curves_valid(&s, &t, 1e-6));
+/// let (mut s, t) = camber_workloads::two_curves()?;
+/// assert!(!camber_workloads::two_curves_valid(&s, &t, 1e-6));
 /// s.solve()?;
-/// assert!(camber_sketch::workloads::two_curves_valid(&s, &t, 1e-6));
+/// assert!(camber_workloads::two_curves_valid(&s, &t, 1e-6));
 /// # Ok::<(), camber_sketch::Error>(())
 /// ```
 ///
