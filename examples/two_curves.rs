@@ -11,8 +11,8 @@
 
 use camber::geom::BezierCurve2;
 use camber::sketch::constraints::{CurveCurveTangent, Fixed, TangentToCircle, TangentToLine};
-use camber_workloads::{two_curves_valid, TwoCurves, TWO_CURVES_CIRCLES};
 use camber::sketch::{CircleSide, Constraint, Contact, LineSide, Rotation, Sense, Sketch};
+use camber_workloads::{two_curves_valid, TwoCurves, TWO_CURVES_CIRCLES};
 use nalgebra::Point2;
 
 fn run() -> Result<(), Box<dyn std::error::Error>> {

@@ -10,8 +10,8 @@
 
 use approx::assert_abs_diff_eq;
 use camber::geom::{BezierCurve2, ParametricCurve};
-use camber_workloads::blade;
 use camber::sketch::{EntityId, PointRef};
+use camber_workloads::blade;
 use nalgebra::{DMatrix, DVector, Point2, Vector2};
 
 /// Free unknowns in this order: pressure P₁…P₅, leading P₀…P₅, suction P₀…P₄ (x, y each).
@@ -78,10 +78,7 @@ fn system(
 
 /// The largest violation of the blade's constraints, evaluated by the kernel's curves from the
 /// control points given by `at` (joint gaps and |cross(C′, d)|/|C′|).
-fn max_residual(
-    at: &dyn Fn(EntityId, usize) -> Point2<f64>,
-    b: &camber_workloads::Blade,
-) -> f64 {
+fn max_residual(at: &dyn Fn(EntityId, usize) -> Point2<f64>, b: &camber_workloads::Blade) -> f64 {
     let curve = |e| BezierCurve2::try_new((0..6).map(|k| at(e, k)).collect()).unwrap();
     let (ps, le, ss) = (curve(b.pressure), curve(b.leading), curve(b.suction));
     let cross = |v: Vector2<f64>, d: Vector2<f64>| (v.x * d.y - v.y * d.x).abs() / v.norm();

@@ -8,10 +8,8 @@
 use std::path::PathBuf;
 
 use camber::sketch::file::{from_json, to_json};
-use camber_workloads::{
-    two_curves, two_curves_valid, w2_bspline7, w2_valid, w3a_chain, w3a_valid,
-};
 use camber::sketch::Sketch;
+use camber_workloads::{two_curves, two_curves_valid, w2_bspline7, w2_valid, w3a_chain, w3a_valid};
 
 fn path(name: &str) -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))

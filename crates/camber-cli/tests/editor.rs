@@ -10,8 +10,8 @@ use std::path::{Path, PathBuf};
 use camber_cli::editor::EditorState;
 use camber_geom::ParametricCurve;
 use camber_sketch::constraints::{Fixed, G1Join, TangentToCircle};
-use camber_workloads::{w2_valid, W2};
 use camber_sketch::{Constraint, Entity, EntityId, FixTarget, PointRef, Sketch};
+use camber_workloads::{w2_valid, W2};
 use nalgebra::{Point2, Vector2};
 use serde_json::{json, Value};
 

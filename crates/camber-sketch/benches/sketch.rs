@@ -6,11 +6,11 @@
 //! directions and chord lengths, N = 1,000 and 10,000).
 #![allow(missing_docs)] // criterion's macros generate undocumented items
 
+use camber_sketch::{PointRef, Sketch, TangentForm};
 use camber_workloads::{
     blade, w1, w1_targets, w2_2cubic, w2_2cubic_perturbed, w2_2cubic_valid, w2_bspline7,
     w2_perturbed, w2_valid, w3_chain, w3a_chain, w4,
 };
-use camber_sketch::{PointRef, Sketch, TangentForm};
 use criterion::{criterion_group, criterion_main, BatchSize, BenchmarkId, Criterion};
 use nalgebra::{Point2, Vector2};
 use std::hint::black_box;

@@ -19,7 +19,7 @@
 //!
 //! **Nonlinear components.** J changes with the unknowns, so the problem is built once and only
 //! its values change. The dragged point (a single free block) is fixed in the problem and set
-//! to the target at each update; the component's solve policy ([`crate::component::policy`])
+//! to the target at each update; the component's solve policy (`component::policy`)
 //! then runs warm: Newton minimum norm starts from the previous step's solution and pulls
 //! toward it, so each step moves the rest of the sketch as little as it can, with the full
 //! selection as fallback, the orientation and contact checks of a solve, and the active set of

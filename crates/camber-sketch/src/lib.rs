@@ -53,7 +53,7 @@
 //! Tangencies record their [`Sense`] and contacts their side and travel direction, checked after
 //! every solve; a contact that crosses its target gets a clearance row (the curve must touch it
 //! at a free second point instead) and the solve runs again
-//! ([`residuals::clearance`], [`component::policy`]). An affine component takes the linear
+//! ([`residuals::clearance`], `component::policy`). An affine component takes the linear
 //! path; any other goes to [`camber_solve::solve()`], whose DOF analysis picks Newton minimum
 //! norm, SLSQP or least squares; the component report's `solver` and `reason` say which ran.
 //! The standard benchmark sketches live in the `camber-workloads` crate.

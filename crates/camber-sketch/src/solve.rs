@@ -1,5 +1,5 @@
 //! Solving a sketch component by component, atomically: every component to solve is built and
-//! solved on its own problem by the one policy of [`crate::component::policy`], and only when
+//! solved on its own problem by the one policy of `component::policy`, and only when
 //! all of them succeed are the results written back. On any error the sketch is exactly as
 //! before.
 

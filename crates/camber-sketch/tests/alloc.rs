@@ -7,8 +7,8 @@
 
 use std::alloc::System;
 
-use camber_workloads::{blade, w1, w1_targets};
 use camber_sketch::{PointRef, TangentForm};
+use camber_workloads::{blade, w1, w1_targets};
 use nalgebra::Vector2;
 use stats_alloc::{Region, StatsAlloc, INSTRUMENTED_SYSTEM};
 

@@ -8,8 +8,8 @@
 use camber_geom::queries::closest_point;
 use camber_geom::ParametricCurve;
 use camber_sketch::constraints::Coincident;
-use camber_workloads::{w2_bspline7, W2, W2_CIRCLES};
 use camber_sketch::{Entity, PointRef, Sketch};
+use camber_workloads::{w2_bspline7, W2, W2_CIRCLES};
 use nalgebra::Point2;
 
 /// The W2 validity check (tolerance 1e-6): ends on their circles, tangent ⟂ radius at both

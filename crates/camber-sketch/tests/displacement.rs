@@ -11,8 +11,8 @@ use approx::assert_abs_diff_eq;
 use camber_geom::BezierCurve2;
 use camber_sketch::constraints::{Fixed, TangentToCircle};
 use camber_sketch::displacement::DisplacementOptions;
-use camber_workloads::{w2_bspline7, w2_perturbed, w2_valid};
 use camber_sketch::{CircleSide, Constraint, Contact, EntityId, Error, PointRef, Rotation, Sketch};
+use camber_workloads::{w2_bspline7, w2_perturbed, w2_valid};
 use nalgebra::Point2;
 
 /// A symmetric cubic arc over the unit circle with its top at height `top` (ends fixed), and

@@ -7,8 +7,8 @@
 
 use approx::assert_abs_diff_eq;
 use camber_sketch::constraints::{Fixed, TangentToCircle};
-use camber_workloads::{w1, w1_targets};
 use camber_sketch::{Constraint, Error, PointRef, Sense, TangentForm};
+use camber_workloads::{w1, w1_targets};
 use nalgebra::{Point2, Vector2};
 
 fn cross(a: Vector2<f64>, b: Vector2<f64>) -> f64 {
@@ -150,8 +150,8 @@ fn a_large_affine_component_drags_on_the_sparse_path() {
 /// solved ones in their constraints, as a solve does.
 #[test]
 fn finish_stores_the_solved_free_contact_parameters() {
-    use camber_workloads::{w2_bspline7, W2_CIRCLES};
     use camber_sketch::Contact;
+    use camber_workloads::{w2_bspline7, W2_CIRCLES};
     let (mut s, w) = w2_bspline7().unwrap();
     s.solve().unwrap();
     let th = s

@@ -11,11 +11,11 @@ use camber_sketch::constraints::{
     Angle, CurveCurveTangent, Distance, Fixed, G1JoinFree, G2Join, Parallel, Perpendicular,
     PointOnCircle, Radius, TangentToCircle, TangentToLine,
 };
-use camber_workloads::w2_bspline7;
 use camber_sketch::{
     CircleSide, Constraint, Contact, Entity, Error, LineSide, PointRef, Rotation, Sense, Sketch,
 };
 use camber_solve::{SolverChoice, SolverKind};
+use camber_workloads::w2_bspline7;
 use nalgebra::{Point2, Vector2};
 
 fn bezier(s: &Sketch, id: camber_sketch::EntityId) -> BezierCurve2<f64> {

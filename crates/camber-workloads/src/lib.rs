@@ -6,12 +6,14 @@
 use camber_geom::BezierCurve2;
 use nalgebra::{Point2, Vector2};
 
-use camber_sketch::constraints::{Distance, Fixed, G1Join, G1JoinFree, StartTangent, TangentToCircle};
+use camber_sketch::constraints::{
+    Distance, Fixed, G1Join, G1JoinFree, StartTangent, TangentToCircle,
+};
+use camber_sketch::vocabulary::{CircleSide, Contact, Rotation, Sense, TangentForm};
 use camber_sketch::Entity;
 use camber_sketch::Result;
-use camber_sketch::{EntityId, PointRef};
 use camber_sketch::Sketch;
-use camber_sketch::vocabulary::{CircleSide, Contact, Rotation, Sense, TangentForm};
+use camber_sketch::{EntityId, PointRef};
 
 mod two_curves;
 pub use two_curves::{two_curves, two_curves_valid, TwoCurves, TWO_CURVES_CIRCLES};

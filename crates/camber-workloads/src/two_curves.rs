@@ -6,11 +6,11 @@ use nalgebra::{Point2, Vector2};
 
 use super::cross;
 use camber_sketch::constraints::{CurveCurveTangent, Fixed, TangentToCircle, TangentToLine};
-use camber_sketch::Entity;
-use camber_sketch::Result;
-use camber_sketch::EntityId;
-use camber_sketch::Sketch;
 use camber_sketch::vocabulary::{CircleSide, Contact, LineSide, Rotation, Sense};
+use camber_sketch::Entity;
+use camber_sketch::EntityId;
+use camber_sketch::Result;
+use camber_sketch::Sketch;
 
 /// The entities of the two-curve sketch ([`two_curves`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

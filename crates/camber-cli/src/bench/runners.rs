@@ -5,9 +5,9 @@ use std::collections::BTreeMap;
 use std::time::{Duration, Instant};
 
 use anyhow::{anyhow, Context, Result};
-use camber_workloads as wl;
 use camber_sketch::{PointRef, Sketch, SketchReport, TangentForm};
 use camber_solve::SolverKind;
+use camber_workloads as wl;
 use indicatif::ProgressBar;
 use nalgebra::Point2;
 

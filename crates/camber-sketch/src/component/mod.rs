@@ -1,20 +1,19 @@
 //! One connected component of a sketch as a solver problem.
 //!
-//! The sketch compiles each constraint into [`piece`]s ([`crate::constraints`]); this module
+//! The sketch compiles each constraint into pieces (`piece`) ([`crate::constraints`]); this module
 //! turns a component's pieces into a [`camber_solve::Problem`] ([`problem`], with coincident
 //! points merged by `merge`), checks a solved state ([`check`]), keeps contacts honest with an
 //! active set of extra rows (`contact`), and runs the one solve policy every caller uses
-//! ([`policy`]): the sketch's solve and its drag sessions.
+//! (`policy`): the sketch's solve and its drag sessions.
 
 pub mod check;
 pub(crate) mod contact;
 pub(crate) mod merge;
-pub mod piece;
-pub mod policy;
+pub(crate) mod piece;
+pub(crate) mod policy;
 pub mod problem;
 
 pub use check::{ContactSpec, ContactTarget, SolvedCheck, SolvedState};
-pub use piece::Slot;
 pub use problem::{ComponentProblem, DRAG_CONSTRAINT};
 
 use crate::ids::{ConstraintId, EntityId};

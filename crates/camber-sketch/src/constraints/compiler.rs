@@ -1,6 +1,6 @@
 //! What a constraint kind compiles with: the entities it reads, checked for kind, the linear
 //! maps from entity points to curve points and tangents, the slots of general residuals, and
-//! the pieces it writes ([`crate::component::piece`]).
+//! the pieces it writes (`component::piece`).
 //!
 //! Compiling is also validation: a constraint is accepted into a sketch exactly when it
 //! compiles against the sketch's entities (ids, indices, parameters inside domains, finite
