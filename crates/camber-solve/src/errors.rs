@@ -189,7 +189,7 @@ pub enum Error {
     },
     /// A problem lies outside what a solver supports, so it was not handed to it (SLSQP
     /// needs at most as many equality rows as unknowns and a dense workspace of a bounded
-    /// size; see [`crate::SLSQP_MAX_UNKNOWNS`]).
+    /// size; see [`crate::nonlinear::SLSQP_MAX_UNKNOWNS`]).
     #[error("{solver} cannot take {rows} equality rows over {unknowns} unknowns: {why}")]
     OutsideSolverLimits {
         /// The solver ("SLSQP").
