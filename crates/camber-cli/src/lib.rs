@@ -90,7 +90,7 @@ pub enum Command {
     Edit(edit::EditArgs),
     /// Solve the bundled blade section, write blade_section.svg, print the report.
     Demo(demo::DemoArgs),
-    /// Run the standard workloads W1–W4: median, p95 and valid counts per case.
+    /// Run the standard workloads W1–W5b: median, p95 and valid counts per case.
     Bench(bench_cmd::BenchArgs),
 }
 

@@ -1,5 +1,6 @@
 //! The standard workloads of `shared/benchmarks/WORKLOADS.md` (W1, W2 in both representations,
-//! W3 and its affine variant W3a, W4), the blade section of the paper and the two-curve sketch,
+//! W3 and its affine variant W3a, W4, the rectangles W5 and the ladder W5b), the blade section
+//! of the paper and the two-curve sketch,
 //! built as sketches so that benchmarks, tests and tools share one definition, each with a
 //! validity check that reads the geometry and never the solver's status.
 
@@ -7,7 +8,7 @@ use camber_geom::BezierCurve2;
 use nalgebra::{Point2, Vector2};
 
 use camber_sketch::constraints::{
-    Distance, Fixed, G1Join, G1JoinFree, StartTangent, TangentToCircle,
+    C2Join, Distance, Fixed, G1Join, G1JoinFree, StartTangent, TangentToCircle,
 };
 use camber_sketch::vocabulary::{CircleSide, Contact, Rotation, Sense, TangentForm};
 use camber_sketch::Entity;
@@ -15,7 +16,9 @@ use camber_sketch::Result;
 use camber_sketch::Sketch;
 use camber_sketch::{EntityId, PointRef};
 
+mod rectangles;
 mod two_curves;
+pub use rectangles::{w5, w5_valid, w5b, Rectangles};
 pub use two_curves::{two_curves, two_curves_valid, TwoCurves, TWO_CURVES_CIRCLES};
 
 /// W1: the cubic P₀ = (0, 0), P₁ = 1.2·D, P₂ = (2.2, 0.9), P₃ = (3, 0) with D = (cos 30°,
@@ -236,20 +239,21 @@ pub fn w3_valid(s: &Sketch, segs: &[EntityId], tol: f64) -> bool {
     ends_ok && chords_ok && joints_ok
 }
 
-/// W3a: `n` cubic segments along y = 0.5·sin(2πx/12), each with its own four control points,
-/// consecutive segments joined G1 with the joint tangent fixed, the first point fixed and the
-/// last point moved by (−0.3, 0.4) and fixed there. Returns the sketch (dirty, not solved) and
-/// the segments.
+/// W3a (WORKLOADS.md, as redefined): `n` cubic segments along y = 0.5·sin(2πx/12), each with
+/// its own four control points, consecutive segments joined C2 by affine rows ([`C2Join`]: at
+/// each joint P3ᵢ = P0ᵢ₊₁, and equal first and second derivatives), the first point fixed and
+/// the last point moved by (−0.3, 0.4) and fixed there. The start (the sine chain) is neither
+/// C1 nor C2, so the one minimum-norm solve moves every segment: 8n unknowns, 6(n − 1) rows.
+/// Returns the sketch (dirty, not solved) and the segments.
 ///
 /// # Errors
 /// None in practice.
 pub fn w3a_chain(n: usize) -> Result<(Sketch, Vec<EntityId>)> {
     let (mut s, segs) = sine_chain(n)?;
     for i in 1..n {
-        s.add_constraint(G1Join {
+        s.add_constraint(C2Join {
             first: segs[i - 1],
             second: segs[i],
-            direction: sine_tangent(i),
         })?;
     }
     pin_chain_ends(&mut s, &segs)?;
@@ -353,21 +357,19 @@ pub fn w1_min_norm_displacement(
     cross(target - before[0], d).abs() / d.norm()
 }
 
-/// The W3a validity check, independent of the solver: every joint coincident to `tol`, both
-/// tangents there parallel (|sin| ≤ `tol`) to the joint's fixed W3 direction Tₖ and along it,
-/// the first point at J₀ and the last at J_N + (−0.3, 0.4).
+/// The W3a validity check, independent of the solver, with WORKLOADS.md's rows written out at
+/// every joint between segments i and i + 1: P3ᵢ − P0ᵢ₊₁ (C0), (P3ᵢ − P2ᵢ) − (P1ᵢ₊₁ − P0ᵢ₊₁)
+/// (C1) and (P1ᵢ − 2P2ᵢ + P3ᵢ) − (P0ᵢ₊₁ − 2P1ᵢ₊₁ + P2ᵢ₊₁) (C2), each within `tol`, and the pins:
+/// the first point at J₀ and the last at J_N + (−0.3, 0.4) (to 1e-12).
 ///
 /// ```
 /// use camber_sketch::PointRef;
 /// use camber_workloads as workloads;
 /// let (mut s, segs) = workloads::w3a_chain(4)?;
-/// // Moving the last point breaks no joint: the start is already valid. Bend a joint.
-/// assert!(workloads::w3a_valid(&s, &segs, 1e-9));
-/// let p = s.point(PointRef::Control(segs[1], 1))?;
-/// s.set_point(PointRef::Control(segs[1], 1), p + nalgebra::Vector2::new(0.0, 0.1))?;
+/// // The sine chain is G1 but not C2: nothing holds until the solve.
 /// assert!(!workloads::w3a_valid(&s, &segs, 1e-9));
 /// s.solve()?;
-/// assert!(camber_workloads::w3a_valid(&s, &segs, 1e-9));
+/// assert!(workloads::w3a_valid(&s, &segs, 1e-9));
 /// # Ok::<(), camber_sketch::Error>(())
 /// ```
 pub fn w3a_valid(s: &Sketch, segs: &[EntityId], tol: f64) -> bool {
@@ -376,25 +378,23 @@ pub fn w3a_valid(s: &Sketch, segs: &[EntityId], tol: f64) -> bool {
     let (Some(&first), Some(&last)) = (segs.first(), segs.last()) else {
         return true;
     };
-    let along = |v: Vector2<f64>, t: Vector2<f64>| {
-        v.dot(&t) > 0.0 && cross(v, t).abs() <= tol * v.norm() * t.norm()
-    };
-    let ends_ok = cp(first, 0).is_some_and(|p| (p - sine_joint(0)).norm() <= tol)
+    let pins_ok = cp(first, 0).is_some_and(|p| (p - sine_joint(0)).norm() <= 1e-12)
         && cp(last, 3)
-            .is_some_and(|p| (p - (sine_joint(n) + Vector2::new(-0.3, 0.4))).norm() <= tol);
-    let joints_ok = segs.windows(2).enumerate().all(|(i, pair)| {
-        let t = sine_tangent(i + 1);
-        let (Some(a2), Some(a3), Some(b0), Some(b1)) = (
-            cp(pair[0], 2),
-            cp(pair[0], 3),
-            cp(pair[1], 0),
-            cp(pair[1], 1),
+            .is_some_and(|p| (p - (sine_joint(n) + Vector2::new(-0.3, 0.4))).norm() <= 1e-12);
+    let joints_ok = segs.windows(2).all(|pair| {
+        let (Some(a), Some(b)) = (
+            (0..4).map(|k| cp(pair[0], k)).collect::<Option<Vec<_>>>(),
+            (0..4).map(|k| cp(pair[1], k)).collect::<Option<Vec<_>>>(),
         ) else {
             return false;
         };
-        (a3 - b0).norm() <= tol && along(a3 - a2, t) && along(b1 - b0, t)
+        let c0 = a[3] - b[0];
+        let c1 = (a[3] - a[2]) - (b[1] - b[0]);
+        let c2 = (a[1].coords - 2.0 * a[2].coords + a[3].coords)
+            - (b[0].coords - 2.0 * b[1].coords + b[2].coords);
+        c0.norm() <= tol && c1.norm() <= tol && c2.norm() <= tol
     });
-    ends_ok && joints_ok
+    pins_ok && joints_ok
 }
 
 /// The three circles of W2 as (centre, radius): leading edge, thickness, trailing edge.

@@ -24,10 +24,22 @@ use std::time::Duration;
 
 use anyhow::Result;
 use indicatif::ProgressBar;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// A standard workload.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, clap::ValueEnum, Serialize)]
+#[derive(
+    Debug,
+    Clone,
+    Copy,
+    PartialEq,
+    Eq,
+    PartialOrd,
+    Ord,
+    Hash,
+    clap::ValueEnum,
+    Serialize,
+    Deserialize,
+)]
 #[value(rename_all = "verbatim")]
 pub enum Workload {
     /// W1: drag the second control point of a cubic with a directional start tangent.
@@ -45,19 +57,27 @@ pub enum Workload {
     /// W4: many independent small components in one sketch.
     #[value(alias = "w4")]
     W4,
+    /// W5: many independent rectangles (lines, coincidences, horizontals, verticals, lengths).
+    #[value(alias = "w5")]
+    W5,
+    /// W5b: one ladder of cells (the rectangles' constraints in one component).
+    #[value(alias = "w5b", alias = "W5B")]
+    W5b,
 }
 
 impl Workload {
     /// Every workload, in table order.
-    pub const ALL: [Workload; 5] = [
+    pub const ALL: [Workload; 7] = [
         Workload::W1,
         Workload::W2,
         Workload::W3,
         Workload::W3a,
         Workload::W4,
+        Workload::W5,
+        Workload::W5b,
     ];
 
-    /// "W1", "W2", "W3", "W3a", "W4".
+    /// "W1", "W2", "W3", "W3a", "W4", "W5", "W5b".
     pub fn name(self) -> &'static str {
         match self {
             Workload::W1 => "W1",
@@ -65,7 +85,14 @@ impl Workload {
             Workload::W3 => "W3",
             Workload::W3a => "W3a",
             Workload::W4 => "W4",
+            Workload::W5 => "W5",
+            Workload::W5b => "W5b",
         }
+    }
+
+    /// The workload of a name as [`Workload::name`] writes it.
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|w| w.name() == name)
     }
 }
 
@@ -82,7 +109,7 @@ pub struct Plan {
     pub w1_runs: usize,
     /// W2: perturbed starts per representation and δ.
     pub w2_trials: usize,
-    /// W3 and W3a: chain lengths N.
+    /// W3, W3a, W5 and W5b: chain lengths, rectangle and cell counts N.
     pub chain_sizes: Vec<usize>,
     /// W4: independent components in the sketch.
     pub w4_components: usize,
@@ -92,7 +119,7 @@ pub struct Plan {
 
 impl Plan {
     /// WORKLOADS.md as written: W1 200 targets × 5 runs, W2 100 trials per representation and
-    /// δ, W3 and W3a for N = 10, 100, 1,000, 10,000, W4 with 10,000 components.
+    /// δ, W3, W3a, W5 and W5b for N = 10, 100, 1,000, 10,000, W4 with 10,000 components.
     pub fn standard() -> Self {
         Plan {
             mode: "standard",
@@ -105,8 +132,8 @@ impl Plan {
         }
     }
 
-    /// A small run: W1 200 targets × 1 run, W2 10 trials, chains N = 10 and 100, W4 with 100
-    /// components.
+    /// A small run: W1 200 targets × 1 run, W2 10 trials, chains and rectangles N = 10 and 100,
+    /// W4 with 100 components.
     pub fn quick() -> Self {
         Plan {
             mode: "quick",
@@ -130,7 +157,7 @@ impl Plan {
         self
     }
 
-    /// Replaces the W3/W3a chain lengths.
+    /// Replaces the sizes N of W3, W3a, W5 and W5b.
     pub fn with_chain_sizes(mut self, sizes: &[usize]) -> Self {
         if !sizes.is_empty() {
             self.chain_sizes = sizes.to_vec();
@@ -138,8 +165,8 @@ impl Plan {
         self
     }
 
-    /// Solves timed for a chain of `n` segments: 20 up to N = 100, 5 up to 1,000, 3 above
-    /// (2 in the quick mode).
+    /// Solves timed for a chain of `n` segments (or `n` rectangles, cells): 20 up to N = 100,
+    /// 5 up to 1,000, 3 above (2 in the quick mode).
     pub fn chain_repeats(&self, n: usize) -> usize {
         if self.mode == "quick" {
             2
@@ -159,7 +186,7 @@ impl Plan {
             n += match w {
                 Workload::W1 => 2 * self.w1_runs * 200,
                 Workload::W2 => 4 * self.w2_trials,
-                Workload::W3 | Workload::W3a => self
+                Workload::W3 | Workload::W3a | Workload::W5 | Workload::W5b => self
                     .chain_sizes
                     .iter()
                     .map(|&s| self.chain_repeats(s))
@@ -173,7 +200,7 @@ impl Plan {
 
 /// "moved / min-norm" over W1's updates: the displacement of the free points divided by the
 /// least displacement that meets the constraints (1.00 is minimum-norm behaviour).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Ratio {
     /// The median over the updates.
     pub median: f64,
@@ -182,7 +209,7 @@ pub struct Ratio {
 }
 
 /// One measured case: a workload at one representation, perturbation or size.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Row {
     /// The workload.
     pub workload: Workload,
@@ -202,7 +229,7 @@ pub struct Row {
     pub failed: usize,
     /// Which solver finished each component, counted over the samples.
     pub solvers: BTreeMap<String, usize>,
-    /// W3/W3a: the growth exponent log(t₂/t₁)/log(N₂/N₁) of the median from the previous size.
+    /// W3/W3a/W5/W5b: the growth exponent log(t₂/t₁)/log(N₂/N₁) of the median from the previous size.
     pub growth: Option<f64>,
     /// W1: moved / min-norm.
     pub moved_over_min_norm: Option<Ratio>,
@@ -262,6 +289,8 @@ pub fn run(plan: &Plan, bar: &ProgressBar) -> Result<Vec<Row>> {
             Workload::W3 => rows.extend(runners::chains(plan, false, bar)?),
             Workload::W3a => rows.extend(runners::chains(plan, true, bar)?),
             Workload::W4 => rows.push(runners::w4(plan, bar)?),
+            Workload::W5 => rows.extend(runners::rectangles(plan, false, bar)?),
+            Workload::W5b => rows.extend(runners::rectangles(plan, true, bar)?),
         }
     }
     Ok(rows)
@@ -344,4 +373,82 @@ pub struct Report<'a> {
     pub plan: &'a Plan,
     /// One per case.
     pub rows: &'a [Row],
+}
+
+/// The rows of a saved `camber bench --json` report (its plan is not needed to compare).
+#[derive(Debug, Deserialize)]
+pub struct Baseline {
+    /// One per case.
+    pub rows: Vec<Row>,
+}
+
+/// The table of a run beside a baseline: per case the median now, the baseline's, their ratio
+/// (now / baseline: below 1 is faster) and both valid counts. Cases missing from the baseline
+/// show "-"; a ratio above `flag` (e.g. 1.2) is marked "slower", and a valid count that fell is
+/// marked "fewer valid".
+///
+/// ```
+/// use camber_cli::bench::{compare, run, Baseline, Plan, Workload};
+/// let plan = Plan::quick().with_only(&[Workload::W4]);
+/// let rows = run(&plan, &indicatif::ProgressBar::hidden())?;
+/// let baseline = Baseline { rows: rows.clone() };
+/// let text = compare(&plan, &rows, &baseline, 1.2);
+/// assert!(text.contains("1.00"));
+/// # Ok::<(), anyhow::Error>(())
+/// ```
+pub fn compare(plan: &Plan, rows: &[Row], baseline: &Baseline, flag: f64) -> String {
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "camber bench ({} plan) against a baseline: ratio = median now / median then",
+        plan.mode
+    );
+    let _ = writeln!(
+        out,
+        "{:<5} {:<22} {:>11} {:>11} {:>7} {:>11} {:>11}  notes",
+        "load", "case", "now", "then", "ratio", "valid now", "valid then"
+    );
+    for r in rows {
+        let then = baseline
+            .rows
+            .iter()
+            .find(|b| b.workload == r.workload && b.case == r.case);
+        let (then_median, ratio, then_valid, notes) = match then {
+            Some(b) => {
+                let ratio = r.median_s / b.median_s;
+                let mut notes = Vec::new();
+                if ratio > flag {
+                    notes.push("slower");
+                }
+                if r.valid * b.samples < b.valid * r.samples {
+                    notes.push("fewer valid");
+                }
+                (
+                    human(b.median_s),
+                    format!("{ratio:.2}"),
+                    format!("{}/{}", b.valid, b.samples),
+                    notes.join(", "),
+                )
+            }
+            None => (
+                "-".into(),
+                "-".into(),
+                "-".into(),
+                "not in the baseline".into(),
+            ),
+        };
+        let _ = writeln!(
+            out,
+            "{:<5} {:<22} {:>11} {:>11} {:>7} {:>11} {:>11}  {}",
+            r.workload.name(),
+            r.case,
+            human(r.median_s),
+            then_median,
+            ratio,
+            format!("{}/{}", r.valid, r.samples),
+            then_valid,
+            notes
+        );
+    }
+    out.trim_end().to_owned()
 }

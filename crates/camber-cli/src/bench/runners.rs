@@ -170,7 +170,8 @@ pub(super) fn chains(plan: &Plan, affine: bool, bar: &ProgressBar) -> Result<Vec
                 Err(_) => failed += 1,
             }
             let ok = if affine {
-                wl::w3a_valid(&s, &segs, TOL)
+                // WORKLOADS.md: every joint row within 1e-9, the pins exact.
+                wl::w3a_valid(&s, &segs, 1e-9)
             } else {
                 wl::w3_valid(&s, &segs, TOL)
             };
@@ -215,4 +216,40 @@ pub(super) fn w4(plan: &Plan, bar: &ProgressBar) -> Result<Row> {
     r.failed = failed;
     r.solvers = solvers;
     Ok(r)
+}
+
+/// W5 (`ladder` false) or W5b (true) for every size: one full solve timed per repeat, each
+/// from the perturbed start, with the growth exponent of the median between sizes.
+pub(super) fn rectangles(plan: &Plan, ladder: bool, bar: &ProgressBar) -> Result<Vec<Row>> {
+    let workload = if ladder { Workload::W5b } else { Workload::W5 };
+    let mut rows: Vec<Row> = Vec::new();
+    for &n in &plan.chain_sizes {
+        bar.set_message(format!("{} N={n}", workload.name()));
+        let (sketch, layout) = if ladder { wl::w5b(n)? } else { wl::w5(n)? };
+        let (mut times, mut valid, mut failed) = (Vec::<Duration>::new(), 0, 0);
+        let mut solvers = BTreeMap::new();
+        for _ in 0..plan.chain_repeats(n) {
+            let mut s = sketch.clone();
+            let t0 = Instant::now();
+            let outcome = s.solve();
+            times.push(t0.elapsed());
+            bar.inc(1);
+            match outcome {
+                Ok(report) => count_solvers(&mut solvers, &report),
+                Err(_) => failed += 1,
+            }
+            valid += usize::from(wl::w5_valid(&s, &layout, TOL));
+        }
+        let mut r = row(workload, format!("N={n}"), &times, valid);
+        r.size = Some(n);
+        r.failed = failed;
+        r.solvers = solvers;
+        if let Some(prev) = rows.last() {
+            if let Some(m) = prev.size {
+                r.growth = Some((r.median_s / prev.median_s).ln() / (n as f64 / m as f64).ln());
+            }
+        }
+        rows.push(r);
+    }
+    Ok(rows)
 }

@@ -1,5 +1,6 @@
-//! `camber bench`: run the standard workloads W1–W4 and print medians, p95 and valid counts
-//! as a table, or as JSON with `--json`. See [`crate::bench`] for what is measured.
+//! `camber bench`: run the standard workloads W1–W5b and print medians, p95 and valid counts
+//! as a table, as JSON with `--json`, or beside a saved report with `--compare FILE`. See
+//! [`crate::bench`] for what is measured.
 
 use std::io::IsTerminal as _;
 use std::time::Duration;
@@ -19,12 +20,18 @@ pub struct BenchArgs {
     /// A small run (fewer trials and sizes; labelled "quick"), for smoke tests.
     #[arg(long)]
     pub quick: bool,
-    /// Chain lengths for W3 and W3a instead of 10,100,1000,10000.
+    /// Sizes N for W3, W3a (segments), W5 (rectangles) and W5b (cells) instead of
+    /// 10,100,1000,10000.
     #[arg(long, value_delimiter = ',', value_name = "N")]
     pub sizes: Vec<usize>,
     /// Print JSON (the plan and one object per case) instead of the table.
     #[arg(long)]
     pub json: bool,
+    /// Compare with a saved `--json` report (benches/baseline.json, say): print each case's
+    /// median now and then and their ratio, marking cases more than 20 % slower or with fewer
+    /// valid results.
+    #[arg(long, value_name = "FILE", conflicts_with = "json")]
+    pub compare: Option<std::path::PathBuf>,
 }
 
 /// Runs the chosen workloads and prints the table or the JSON. The progress bar goes to
@@ -52,10 +59,23 @@ pub fn run(args: &BenchArgs) -> Result<()> {
         bar.enable_steady_tick(Duration::from_millis(200));
         bar
     };
+    let baseline = match &args.compare {
+        Some(path) => {
+            let text = std::fs::read_to_string(path)
+                .with_context(|| format!("cannot read the baseline {}", path.display()))?;
+            let b: bench::Baseline = serde_json::from_str(&text).with_context(|| {
+                format!("{} is not a camber bench --json report", path.display())
+            })?;
+            Some(b)
+        }
+        None => None,
+    };
     let rows = bench::run(&plan, &bar);
     bar.finish_and_clear();
     let rows = rows?;
-    let text = if args.json {
+    let text = if let Some(b) = &baseline {
+        bench::compare(&plan, &rows, b, 1.2)
+    } else if args.json {
         serde_json::to_string_pretty(&Report {
             plan: &plan,
             rows: &rows,
