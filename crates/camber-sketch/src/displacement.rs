@@ -24,19 +24,18 @@
 //! way the sketch changes only on success.
 
 use camber_solve::ConstraintId;
-use nalgebra::{Point2, Vector2};
 
 use crate::component::check::ContactTarget;
+use crate::component::starts::{cross, least, Shape};
 use crate::constraints::{
     Constraint, DirectionalTangentAt, EndTangent, PointAtParameter, StartTangent,
 };
-use crate::entity::Entity;
 use crate::errors::{Error, Result};
 use crate::ids::{EntityId, PointRef};
 use crate::sketch::Sketch;
 use crate::solve::SketchReport;
 use crate::vocabulary::{
-    CircleSide, Contact, FixTarget, LineSide, Rotation, Sense, TangentForm, Target,
+    Contact, FixTarget, Sense, TangentForm, Target,
 };
 
 /// Halvings of a round's move tried when its linear solve fails.
@@ -90,122 +89,6 @@ struct Contact2 {
     target: Shape,
     /// The given parameter, or `None` for a free one.
     at: Option<f64>,
-}
-
-/// The fixed target of a contact and the side and orientation asked for.
-#[derive(Debug, Clone, Copy)]
-enum Shape {
-    Circle {
-        center: Point2<f64>,
-        radius: f64,
-        outside: bool,
-        counter_clockwise: bool,
-    },
-    Line {
-        a: Point2<f64>,
-        direction: Vector2<f64>,
-        left: bool,
-        along: bool,
-    },
-}
-
-impl Shape {
-    /// The signed gap of q (positive on the intended side, length units).
-    fn gap(&self, q: Point2<f64>) -> f64 {
-        match *self {
-            Shape::Circle {
-                center,
-                radius,
-                outside,
-                ..
-            } => {
-                let d = (q - center).norm() - radius;
-                if outside {
-                    d
-                } else {
-                    -d
-                }
-            }
-            Shape::Line {
-                a, direction, left, ..
-            } => {
-                let d = cross(direction, q - a);
-                if left {
-                    d
-                } else {
-                    -d
-                }
-            }
-        }
-    }
-
-    /// The nearest target point to q and the target's oriented unit tangent there.
-    fn foot(&self, q: Point2<f64>) -> (Point2<f64>, Vector2<f64>) {
-        match *self {
-            Shape::Circle {
-                center,
-                radius,
-                counter_clockwise,
-                ..
-            } => {
-                let v = q - center;
-                let n = if v.norm() > 0.0 {
-                    v / v.norm()
-                } else {
-                    Vector2::x()
-                };
-                let t = if counter_clockwise {
-                    Vector2::new(-n.y, n.x)
-                } else {
-                    Vector2::new(n.y, -n.x)
-                };
-                (center + radius * n, t)
-            }
-            Shape::Line {
-                a,
-                direction,
-                along,
-                ..
-            } => {
-                let foot = a + direction * direction.dot(&(q - a));
-                (foot, if along { direction } else { -direction })
-            }
-        }
-    }
-}
-
-fn cross(a: Vector2<f64>, b: Vector2<f64>) -> f64 {
-    a.x * b.y - a.y * b.x
-}
-
-/// The parameter in [lo, hi] where `f` is least: the best of `samples` + 1 samples, refined by
-/// golden section between its neighbours.
-fn least(f: impl Fn(f64) -> f64, lo: f64, hi: f64, samples: usize) -> f64 {
-    let step = (hi - lo) / samples as f64;
-    let mut best = (f64::INFINITY, lo);
-    for i in 0..=samples {
-        let s = lo + step * i as f64;
-        let v = f(s);
-        if v < best.0 {
-            best = (v, s);
-        }
-    }
-    let (mut l, mut r) = ((best.1 - step).max(lo), (best.1 + step).min(hi));
-    let phi = 0.5 * (5f64.sqrt() - 1.0);
-    for _ in 0..60 {
-        let (x1, x2) = (r - phi * (r - l), l + phi * (r - l));
-        if f(x1) <= f(x2) {
-            r = x2;
-        } else {
-            l = x1;
-        }
-    }
-    let s = 0.5 * (l + r);
-    if f(s) <= best.0 {
-        s
-    } else {
-        best.1
-    }
 }
 
 impl Sketch {
@@ -361,41 +244,14 @@ impl Sketch {
             let Some(spec) = c.contact() else {
                 continue;
             };
-            let target = match spec.target {
-                ContactTarget::Circle {
-                    circle,
-                    side,
-                    rotation,
-                } => {
-                    let Entity::Circle { center, radius } = self.entity(circle)? else {
-                        return Err(Error::UnknownEntity { entity: circle });
-                    };
-                    if !fixed(circle) {
-                        return Err(not_fixed(id, circle));
-                    }
-                    Shape::Circle {
-                        center: *center,
-                        radius: *radius,
-                        outside: matches!(side, CircleSide::Outside),
-                        counter_clockwise: matches!(rotation, Rotation::CounterClockwise),
-                    }
-                }
-                ContactTarget::Line { line, side, sense } => {
-                    let Entity::Line([a, b]) = self.entity(line)? else {
-                        return Err(Error::UnknownEntity { entity: line });
-                    };
-                    if !fixed(line) {
-                        return Err(not_fixed(id, line));
-                    }
-                    let d = b - a;
-                    Shape::Line {
-                        a: *a,
-                        direction: d / d.norm(),
-                        left: matches!(side, LineSide::Left),
-                        along: matches!(sense, Sense::Agree),
-                    }
-                }
+            let target_entity = match spec.target {
+                ContactTarget::Circle { circle, .. } => circle,
+                ContactTarget::Line { line, .. } => line,
             };
+            if !fixed(target_entity) {
+                return Err(not_fixed(id, target_entity));
+            }
+            let target = Shape::of(&spec, self)?;
             out.push(Contact2 {
                 id,
                 curve: spec.curve,

@@ -6,6 +6,7 @@
 use camber_solve::SolveReport;
 
 use crate::component::policy::{self, Start};
+use crate::component::starts;
 use crate::component::Component;
 use crate::errors::Result;
 use crate::sketch::Sketch;
@@ -57,6 +58,40 @@ impl Sketch {
         self.solve_components(comps)
     }
 
+    /// Solves a built component by the policy from the constraints' own contact guesses; when
+    /// that fails and the component has free contact parameters, from the other starts of
+    /// `component::starts` (the first that solves wins, its report saying which start it took).
+    /// The first error stands when none solves.
+    fn solve_with_starts(
+        &self,
+        cp: &mut crate::component::ComponentProblem,
+    ) -> Result<(SolveReport, Vec<(crate::ids::EntityId, crate::entity::Entity)>)> {
+        let first = match policy::solve(cp, self, self.options(), Start::Cold) {
+            Ok(solved) => return Ok(solved),
+            Err(e) => e,
+        };
+        let initial = cp.problem.state();
+        let others = starts::contact_starts(cp, self)?;
+        let count = others.len();
+        for (k, start) in others.into_iter().enumerate() {
+            cp.problem.restore(&initial);
+            for (block, u) in &start {
+                cp.problem.set_block_values(*block, &[*u])?;
+            }
+            if let Ok((mut r, solved)) = policy::solve(cp, self, self.options(), Start::Cold) {
+                r.reason = format!(
+                    "{}; from contact start {} of {} after the given guesses failed",
+                    r.reason,
+                    k + 1,
+                    count
+                );
+                return Ok((r, solved));
+            }
+        }
+        cp.problem.restore(&initial);
+        Err(first)
+    }
+
     fn solve_components(&mut self, comps: Vec<Component>) -> Result<SketchReport> {
         let mut updates = Vec::new();
         let mut clean = Vec::new();
@@ -68,7 +103,7 @@ impl Sketch {
                 continue;
             }
             let mut cp = self.build_component(&comp, None)?;
-            let (r, solved) = policy::solve(&mut cp, self, self.options(), Start::Cold)?;
+            let (r, solved) = self.solve_with_starts(&mut cp)?;
             free.extend(cp.free_at(cp.problem().values())?);
             updates.extend(solved);
             report.components.push(ComponentReport {

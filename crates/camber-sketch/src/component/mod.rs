@@ -12,6 +12,7 @@ pub(crate) mod merge;
 pub(crate) mod piece;
 pub(crate) mod policy;
 pub mod problem;
+pub(crate) mod starts;
 
 pub use check::{ContactSpec, ContactTarget, SolvedCheck, SolvedState};
 pub use problem::{ComponentProblem, DRAG_CONSTRAINT};
