@@ -355,19 +355,39 @@ fn a_move_that_would_flip_a_tangent_is_refused() {
     );
 }
 
+/// Issue 13: a point held on a circle (the diffuser's first point, tangent to the
+/// leading-edge circle at u = 0) follows the mouse along the circle instead of refusing a
+/// target off it: it goes to the target's projection along its freedom, and stays tangent.
 #[test]
-fn a_move_off_a_tangent_circle_is_refused_on_the_nonlinear_path() {
-    // The curve's first point is tangent to the leading-edge circle at u = 0: it cannot go to
-    // the circle's centre.
-    refused_move_keeps_the_last_valid_geometry(
-        "diffuser.json",
-        &["/api/solve"],
-        0,
-        0,
-        Vector2::new(0.0, 0.0),
-        Point2::new(0.03, 0.0),
-        "constraint 7 (tangent to circle)",
+fn a_point_on_a_tangent_circle_slides_along_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut ed = editor("diffuser.json", &dir.path().join("out.json"));
+    assert_eq!(post(&mut ed, "/api/solve", json!({})).0, 200);
+    let r = PointRef::Control(EntityId(0), 0);
+    let p = ed.sketch().point(r).unwrap();
+    assert_eq!(
+        post(&mut ed, "/api/drag/start", json!({"entity": 0, "index": 0})).0,
+        200
     );
+    // Off the circle, a little along its tangent at p.
+    let (c, radius) = (Point2::new(0.03, 0.0), 0.03);
+    let n = (p - c) / (p - c).norm();
+    let target = p + Vector2::new(-n.y, n.x) * 0.004 + n * 0.01;
+    let (status, moved) = post(
+        &mut ed,
+        "/api/drag/move",
+        json!({"to": [target.x, target.y]}),
+    );
+    assert_eq!(status, 200, "{moved}");
+    let (status, ended) = post(&mut ed, "/api/drag/end", json!({}));
+    assert_eq!(status, 200, "{ended}");
+    let q = ed.sketch().point(r).unwrap();
+    assert!(
+        ((q - c).norm() - radius).abs() < 1e-9,
+        "off the circle: {q}"
+    );
+    assert!((q - p).norm() > 1e-3, "it did not slide: {q} {p}");
+    assert!(w2_valid(ed.sketch(), &DIFFUSER));
 }
 
 #[test]

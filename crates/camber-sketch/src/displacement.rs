@@ -34,9 +34,7 @@ use crate::errors::{Error, Result};
 use crate::ids::{EntityId, PointRef};
 use crate::sketch::Sketch;
 use crate::solve::SketchReport;
-use crate::vocabulary::{
-    Contact, FixTarget, Sense, TangentForm, Target,
-};
+use crate::vocabulary::{Contact, FixTarget, Sense, TangentForm, Target};
 
 /// Halvings of a round's move tried when its linear solve fails.
 const MAX_HALVINGS: i32 = 4;

@@ -30,7 +30,8 @@ use std::collections::BTreeMap;
 
 use camber_solve::analysis::analyze;
 use camber_solve::{MinNormFactorization, ReducedMap};
-use nalgebra::Point2;
+use nalgebra::{Point2, Vector2};
+use smallvec::SmallVec;
 
 use crate::component::policy::{self, Start};
 use crate::component::{Component, ComponentProblem, DRAG_CONSTRAINT};
@@ -111,11 +112,18 @@ struct Common {
 pub struct AffineDrag {
     common: Common,
     map: ReducedMap,
-    factorization: MinNormFactorization,
-    /// Rows of J kept (independent), and the two pin rows' positions in g.
+    /// The factorization of the kept constraint rows and the pin rows (absent when the point
+    /// cannot move at all).
+    factorization: Option<MinNormFactorization>,
+    /// Constraint rows of J kept (independent), and the two pin rows' positions in g.
     rows: Vec<usize>,
     row_owner: Vec<camber_solve::ConstraintId>,
     pin: [usize; 2],
+    /// The directions the point can move in (unit, orthonormal; none, one or both axes): each
+    /// is one pin row m·(P − target) = 0.
+    mix: SmallVec<[[f64; 2]; 2]>,
+    /// The freedom those directions give.
+    freedom: Freedom,
     anchor: [f64; 2],
     tolerance: f64,
     // Current state (pin rows of g relative to the anchor) and scratch.
@@ -128,9 +136,11 @@ pub struct AffineDrag {
     dz: Vec<f64>,
 }
 
-/// The state of a drag on a nonlinear component: the dragged block is fixed in the problem and
-/// moved to the target at each update; the component's solve policy runs from the previous
-/// step's solution, pulling toward it.
+/// The state of a drag on a nonlinear component: the component's solve policy runs from the
+/// previous step's solution, pulling toward it. A point free in both directions is fixed in the
+/// problem and moved to the target; a point that can only slide (on a curve, a circle, a ray)
+/// is pinned by one row along its current direction of freedom instead, so it follows the
+/// target's projection.
 #[derive(Debug)]
 pub struct NonlinearDrag {
     common: Common,
@@ -138,6 +148,101 @@ pub struct NonlinearDrag {
     /// The reduced unknowns of the current state.
     z: Vec<f64>,
     options: camber_solve::Options,
+    /// What the point can do at the current state.
+    freedom: Freedom,
+    /// The residual rows of the problem without the pin row.
+    base_rows: usize,
+}
+
+/// How a dragged point can move under its constraints, at the state a session is in.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Freedom {
+    /// In every direction: it goes to the target.
+    Free,
+    /// Along one direction only (unit): it goes to the target's projection on that line (a
+    /// point on a ray, a curve, a circle, where it is now).
+    Along(Vector2<f64>),
+    /// Not at all: the constraints determine it; updates change nothing.
+    Determined,
+}
+
+impl Freedom {
+    /// The freedom of a point whose achievable moves δP span the range of the symmetric 2 × 2
+    /// matrix `g` (see [`point_mobility`]), relative to the unconstrained mobility `scale`.
+    fn of(g: [[f64; 2]; 2], scale: f64) -> (Self, SmallVec<[[f64; 2]; 2]>) {
+        let (a, b, c) = (g[0][0], g[0][1], g[1][1]);
+        let mean = 0.5 * (a + c);
+        let radius = (0.25 * (a - c) * (a - c) + b * b).sqrt();
+        let (l1, l2) = (mean + radius, mean - radius);
+        let small = 1e-9 * scale.max(f64::MIN_POSITIVE);
+        // The eigenvector of the larger eigenvalue.
+        let u = if b.abs() > 1e-300 {
+            let v = Vector2::new(l1 - c, b);
+            v / v.norm()
+        } else if a >= c {
+            Vector2::x()
+        } else {
+            Vector2::y()
+        };
+        if l2 > small {
+            (Freedom::Free, smallvec::smallvec![[1.0, 0.0], [0.0, 1.0]])
+        } else if l1 > small {
+            (Freedom::Along(u), smallvec::smallvec![[u.x, u.y]])
+        } else {
+            (Freedom::Determined, SmallVec::new())
+        }
+    }
+}
+
+/// The mobility of the point whose coordinates have the Jacobian rows `e` (2 × n) under the
+/// independent constraint rows factorized in `f`: G = E·P_W·W⁻¹·Eᵀ, P_W the W-orthogonal
+/// projector onto the null space of the constraints. Its range is the set of moves δP the
+/// constraints allow (to first order); also returns the unconstrained scale E·W⁻¹·Eᵀ's trace.
+fn point_mobility(
+    e: [&[f64]; 2],
+    f: Option<&mut MinNormFactorization>,
+    weights: &[f64],
+) -> Result<([[f64; 2]; 2], f64)> {
+    let n = weights.len();
+    let mut g = [[0.0; 2]; 2];
+    let scale: f64 = e
+        .iter()
+        .map(|row| row.iter().zip(weights).map(|(v, w)| v * v / w).sum::<f64>())
+        .sum();
+    match f {
+        Some(f) => {
+            let (mut out, mut y) = (vec![0.0; n], vec![0.0; f.rows()]);
+            for k in 0..2 {
+                f.project(e[k], &mut out, &mut y)?;
+                for (i, row) in e.iter().enumerate() {
+                    g[i][k] = row.iter().zip(&out).map(|(a, b)| a * b).sum();
+                }
+            }
+        }
+        None => {
+            for i in 0..2 {
+                for k in 0..2 {
+                    g[i][k] = e[i]
+                        .iter()
+                        .zip(e[k])
+                        .zip(weights)
+                        .map(|((a, b), w)| a * b / w)
+                        .sum();
+                }
+            }
+        }
+    }
+    Ok((g, scale))
+}
+
+/// Row `i` of a sparse matrix as a dense vector of `n` entries.
+fn dense_row(j: &camber_solve::SparseMatrix, i: usize, n: usize) -> Vec<f64> {
+    let mut out = vec![0.0; n];
+    let (cols, vals) = j.row(i);
+    for (c, v) in cols.iter().zip(vals) {
+        out[*c] = *v;
+    }
+    out
 }
 
 /// # Dragging
@@ -162,9 +267,11 @@ impl Sketch {
         let lin = cp.problem().linearize()?;
         let (m, n) = (lin.g.len(), lin.map.len());
         let pin = [m - 2, m - 1];
-        // As in a solve: small components are analysed up front (dependent rows dropped, the
-        // pin must stay independent); large ones go straight to the sparse factorization of
-        // every row and are analysed only when it meets dependent rows.
+        let weights = lin.map.weights().to_vec();
+        // As in a solve: small components are analysed up front (dependent constraint rows
+        // dropped; the pin rows come last, so they never hide a constraint row); large ones go
+        // straight to the sparse factorization of every row and are analysed only when it meets
+        // dependent rows.
         let analysed_rows = |max_entries: usize| -> Result<Vec<usize>> {
             if m.saturating_mul(n) > max_entries {
                 return Err(Error::Solve(camber_solve::Error::RankDeficient { rows: m }));
@@ -175,38 +282,72 @@ impl Sketch {
                     constraints: a.conflicting,
                 });
             }
-            let rows = a.rows.independent;
-            if !(rows.contains(&pin[0]) && rows.contains(&pin[1])) {
-                return Err(Error::NotDraggable { point });
-            }
-            Ok(rows)
+            Ok(a.rows
+                .independent
+                .into_iter()
+                .filter(|r| *r < m - 2)
+                .collect())
         };
-        let factorize = |rows: &[usize]| {
-            let j = lin.jacobian.select_rows(rows);
-            MinNormFactorization::try_auto(&j, lin.map.weights(), options.dense_max_unknowns)
+        let factorize = |j: &camber_solve::SparseMatrix| {
+            MinNormFactorization::try_auto(j, &weights, options.dense_max_unknowns)
         };
-        let (rows, factorization) = if m.saturating_mul(n) <= options.dense_analysis_max_entries {
+        let (rows, constraints) = if m.saturating_mul(n) <= options.dense_analysis_max_entries {
             let rows = analysed_rows(options.dense_analysis_max_entries)?;
-            let f = factorize(&rows)?;
+            let f = if rows.is_empty() {
+                None
+            } else {
+                Some(factorize(&lin.jacobian.select_rows(&rows))?)
+            };
             (rows, f)
         } else {
-            let all: Vec<usize> = (0..m).collect();
-            match factorize(&all) {
-                Ok(f) => (all, f),
+            let all: Vec<usize> = (0..m - 2).collect();
+            match factorize(&lin.jacobian.select_rows(&all)) {
+                Ok(f) => (all, Some(f)),
                 Err(camber_solve::Error::RankDeficient { .. }) => {
                     let rows = analysed_rows(crate::solve::NAMING_ANALYSIS_MAX_ENTRIES)?;
-                    let f = factorize(&rows)?;
-                    (rows, f)
+                    let f = factorize(&lin.jacobian.select_rows(&rows))?;
+                    (rows, Some(f))
                 }
                 Err(e) => return Err(e.into()),
             }
+        };
+        // Where the point can go: the constraints' null space seen through the pin rows.
+        let (ex, ey) = (
+            dense_row(&lin.jacobian, pin[0], n),
+            dense_row(&lin.jacobian, pin[1], n),
+        );
+        let mut constraints = constraints;
+        let (g, scale) = point_mobility([&ex, &ey], constraints.as_mut(), &weights)?;
+        let (freedom, mix) = Freedom::of(g, scale);
+        let mut triplets = Vec::new();
+        for (k, r) in rows.iter().enumerate() {
+            let (cols, vals) = lin.jacobian.row(*r);
+            triplets.extend(cols.iter().zip(vals).map(|(c, v)| (k, *c, *v)));
+        }
+        for (k, u) in mix.iter().enumerate() {
+            for (c, (a, b)) in ex.iter().zip(&ey).enumerate() {
+                let v = u[0] * a + u[1] * b;
+                if v != 0.0 {
+                    triplets.push((rows.len() + k, c, v));
+                }
+            }
+        }
+        let factorization = if mix.is_empty() {
+            None
+        } else {
+            let j = camber_solve::SparseMatrix::try_from_triplets(
+                rows.len() + mix.len(),
+                n,
+                &triplets,
+            )?;
+            Some(factorize(&j)?)
         };
         let anchor = {
             let p = self.point(point)?;
             [p.x, p.y]
         };
-        let n = lin.map.len();
         let nx = lin.x.len();
+        let selected = rows.len() + mix.len();
         Ok(DragSession::Affine(AffineDrag {
             common: Common {
                 point,
@@ -222,12 +363,14 @@ impl Sketch {
             map: lin.map,
             factorization,
             pin,
+            mix,
+            freedom,
             anchor,
             tolerance: options.tolerance,
             z_new: vec![0.0; n],
             x_new: vec![0.0; nx],
             g_new: vec![0.0; m],
-            g_sel: vec![0.0; rows.len()],
+            g_sel: vec![0.0; selected],
             dz: vec![0.0; n],
             rows,
         }))
@@ -254,7 +397,11 @@ impl Sketch {
                 return Err(Error::NotDraggable { point });
             }
         }
-        cp.problem.fix_block(block)?;
+        let freedom = nonlinear_freedom(&cp, block, self.options())?;
+        let base_rows = cp.problem.num_residuals();
+        if freedom == Freedom::Free {
+            cp.problem.fix_block(block)?;
+        }
         let z = cp.problem.reduced_map()?.z0().to_vec();
         let x = cp.problem.values().to_vec();
         Ok(DragSession::Nonlinear(NonlinearDrag {
@@ -269,24 +416,108 @@ impl Sketch {
             block,
             z,
             options: self.options().clone(),
+            freedom,
+            base_rows,
         }))
     }
 }
 
-impl AffineDrag {
-    /// One affine update (see the module documentation).
-    fn update(&mut self, target: Point2<f64>) -> Result<()> {
-        let shift = [target.x - self.anchor[0], target.y - self.anchor[1]];
-        for (k, r) in self.rows.iter().enumerate() {
-            let mut v = self.g[*r];
-            if *r == self.pin[0] {
-                v -= shift[0];
-            } else if *r == self.pin[1] {
-                v -= shift[1];
-            }
-            self.g_sel[k] = v;
+/// The freedom of a free point block of a nonlinear component at its current state: the
+/// mobility of its two unknowns under the linearized constraints (independent rows).
+fn nonlinear_freedom(
+    cp: &ComponentProblem,
+    block: camber_solve::BlockId,
+    options: &camber_solve::Options,
+) -> Result<Freedom> {
+    let lin = cp.problem.linearize()?;
+    let (m, n) = (lin.g.len(), lin.map.len());
+    let mut e = [vec![0.0; n], vec![0.0; n]];
+    for (k, row) in e.iter_mut().enumerate() {
+        let u = cp.problem.unknown(block, k)?;
+        match lin
+            .map
+            .vars()
+            .iter()
+            .position(|v| *v == camber_solve::Var::Unknown(u))
+        {
+            Some(i) => row[i] = 1.0,
+            None => return Ok(Freedom::Determined),
         }
-        self.factorization.solve_refined(
+    }
+    let rows: Vec<usize> = if m.saturating_mul(n) <= options.dense_analysis_max_entries {
+        analyze(&lin, options.rank_tolerance, options.tolerance)?
+            .rows
+            .independent
+    } else {
+        (0..m).collect()
+    };
+    let weights = lin.map.weights();
+    let mut f = if rows.is_empty() {
+        None
+    } else {
+        match MinNormFactorization::try_auto(
+            &lin.jacobian.select_rows(&rows),
+            weights,
+            options.dense_max_unknowns,
+        ) {
+            Ok(f) => Some(f),
+            // Dependent rows in a large component: no cheap answer; let the point try to move.
+            Err(camber_solve::Error::RankDeficient { .. }) => return Ok(Freedom::Free),
+            Err(e) => return Err(e.into()),
+        }
+    };
+    let (g, scale) = point_mobility([&e[0], &e[1]], f.as_mut(), weights)?;
+    Ok(Freedom::of(g, scale).0)
+}
+
+/// u·(P − target) = 0 over the dragged point's block: the pin of a point that can only slide,
+/// along its direction of freedom u (affine, one row).
+#[derive(Debug, Clone, PartialEq)]
+struct PinAlong {
+    u: [f64; 2],
+    target: [f64; 2],
+}
+
+impl camber_solve::Residual for PinAlong {
+    fn name(&self) -> &str {
+        "drag"
+    }
+    fn dim(&self) -> usize {
+        1
+    }
+    fn block_sizes(&self) -> Option<Vec<usize>> {
+        Some(vec![2])
+    }
+    fn eval<T: camber_solve::Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+        use camber_solve::scalar::cst;
+        out[0] = cst::<T>(self.u[0]) * (x[0][0] - cst(self.target[0]))
+            + cst::<T>(self.u[1]) * (x[0][1] - cst(self.target[1]));
+    }
+    fn is_affine(&self) -> bool {
+        true
+    }
+}
+
+impl AffineDrag {
+    /// One affine update (see the module documentation): the pin rows along the point's
+    /// directions of freedom move by the target's shift; a determined point does not move.
+    fn update(&mut self, target: Point2<f64>) -> Result<()> {
+        let Some(factorization) = self.factorization.as_mut() else {
+            return Ok(());
+        };
+        let shift = [target.x - self.anchor[0], target.y - self.anchor[1]];
+        let k0 = self.rows.len();
+        for (k, r) in self.rows.iter().enumerate() {
+            self.g_sel[k] = self.g[*r];
+        }
+        let pin_now = [
+            self.g[self.pin[0]] - shift[0],
+            self.g[self.pin[1]] - shift[1],
+        ];
+        for (k, u) in self.mix.iter().enumerate() {
+            self.g_sel[k0 + k] = u[0] * pin_now[0] + u[1] * pin_now[1];
+        }
+        factorization.solve_refined(
             &self.g_sel,
             &mut self.dz,
             REFINEMENT_STEPS,
@@ -302,15 +533,24 @@ impl AffineDrag {
             .evaluate_at(&self.x_new, &mut self.g_new)?;
         let mut worst = (0usize, 0.0_f64);
         for (i, v) in self.g_new.iter().enumerate() {
-            let v = if i == self.pin[0] {
-                v - shift[0]
-            } else if i == self.pin[1] {
-                v - shift[1]
-            } else {
-                *v
-            };
+            if i == self.pin[0] || i == self.pin[1] {
+                continue;
+            }
             if v.is_nan() || v.abs() > worst.1 {
                 worst = (i, if v.is_nan() { f64::INFINITY } else { v.abs() });
+            }
+        }
+        let pin_new = [
+            self.g_new[self.pin[0]] - shift[0],
+            self.g_new[self.pin[1]] - shift[1],
+        ];
+        for u in &self.mix {
+            let v = u[0] * pin_new[0] + u[1] * pin_new[1];
+            if v.is_nan() || v.abs() > worst.1 {
+                worst = (
+                    self.pin[0],
+                    if v.is_nan() { f64::INFINITY } else { v.abs() },
+                );
             }
         }
         if worst.1 > self.tolerance {
@@ -336,25 +576,54 @@ impl NonlinearDrag {
     /// One nonlinear update: the solve policy, warm started from the previous step; the state
     /// is kept only when every constraint, orientation and contact check holds.
     fn update(&mut self, target: Point2<f64>) -> Result<()> {
+        let u = match self.freedom {
+            Freedom::Determined => return Ok(()),
+            Freedom::Free => None,
+            Freedom::Along(u) => Some(u),
+        };
+        let options = self.options.clone();
         let cp = &mut self.common.cp;
         let before = cp.problem.block_values(self.block)?.to_vec();
-        cp.problem
-            .set_block_values(self.block, &[target.x, target.y])?;
+        match u {
+            None => cp
+                .problem
+                .set_block_values(self.block, &[target.x, target.y])?,
+            Some(u) => {
+                cp.problem.truncate_residuals(self.base_rows);
+                cp.problem.add_residual(
+                    PinAlong {
+                        u: [u.x, u.y],
+                        target: [target.x, target.y],
+                    },
+                    &[self.block],
+                    DRAG_CONSTRAINT,
+                )?;
+            }
+        }
         let start = Start::Warm {
             from: self.z.clone(),
             toward: self.z.clone(),
         };
-        match policy::solve(cp, &self.common.shapes, &self.options, start) {
+        match policy::solve(cp, &self.common.shapes, &options, start) {
             Ok(_) => {
                 self.z = cp.problem.reduced_map()?.z0().to_vec();
                 self.common.x.clear();
                 self.common.x.extend_from_slice(cp.problem.values());
                 self.common.moved = true;
+                if u.is_some() {
+                    // The direction of freedom turns as the point slides (on a circle, say).
+                    cp.problem.truncate_residuals(self.base_rows);
+                    self.freedom = nonlinear_freedom(cp, self.block, &options)?;
+                }
                 Ok(())
             }
             Err(e) => {
                 // The policy left the problem at its start: move the dragged block back too.
-                cp.problem.set_block_values(self.block, &before)?;
+                if u.is_some() {
+                    cp.problem.truncate_residuals(self.base_rows);
+                } else {
+                    cp.problem.set_block_values(self.block, &before)?;
+                }
                 Err(e)
             }
         }
@@ -387,6 +656,34 @@ impl DragSession {
     /// The dragged point.
     pub fn dragged(&self) -> PointRef {
         self.common().point
+    }
+
+    /// How the dragged point can move: freely, along one direction (it follows the target's
+    /// projection there), or not at all (updates are calm no-ops).
+    pub fn freedom(&self) -> Freedom {
+        match self {
+            DragSession::Affine(d) => d.freedom,
+            DragSession::Nonlinear(d) => d.freedom,
+        }
+    }
+
+    /// Every entity of the dragged component as it is now (points and radii).
+    ///
+    /// # Errors
+    /// None in practice (the session's own entities).
+    pub fn entities(&self) -> Result<Vec<(EntityId, Entity)>> {
+        let c = self.common();
+        c.cp.entities_at(&c.shapes, &c.x)
+    }
+
+    /// The free parameters of the component's constraints as they are now: (constraint, k,
+    /// value) for the k-th free parameter of each (contact parameters, custom parameters).
+    ///
+    /// # Errors
+    /// None in practice.
+    pub fn free_parameters(&self) -> Result<Vec<(camber_solve::ConstraintId, usize, f64)>> {
+        let c = self.common();
+        c.cp.free_at(&c.x)
     }
 
     /// The current location of a point of the dragged component.

@@ -65,7 +65,10 @@ impl Sketch {
     fn solve_with_starts(
         &self,
         cp: &mut crate::component::ComponentProblem,
-    ) -> Result<(SolveReport, Vec<(crate::ids::EntityId, crate::entity::Entity)>)> {
+    ) -> Result<(
+        SolveReport,
+        Vec<(crate::ids::EntityId, crate::entity::Entity)>,
+    )> {
         let first = match policy::solve(cp, self, self.options(), Start::Cold) {
             Ok(solved) => return Ok(solved),
             Err(e) => e,

@@ -7,6 +7,7 @@
 
 use approx::assert_abs_diff_eq;
 use camber_sketch::constraints::{Fixed, TangentToCircle};
+use camber_sketch::drag::Freedom;
 use camber_sketch::{Constraint, Error, PointRef, Sense, TangentForm};
 use camber_workloads::{w1, w1_targets};
 use nalgebra::{Point2, Vector2};
@@ -97,20 +98,21 @@ fn a_flipping_update_is_refused_and_the_session_keeps_its_state() {
     assert_abs_diff_eq!(drag.point(p1).unwrap(), good, epsilon = 1e-12);
 }
 
+/// Issue 13: dragging a fixed or fully determined point is a calm no-op that says so.
 #[test]
-fn fixed_points_cannot_be_dragged() {
+fn fixed_points_do_not_move_and_the_session_says_why() {
     let (mut s, c, _) = w1(TangentForm::Row).unwrap();
-    assert_eq!(
-        s.drag(PointRef::Control(c, 3)).unwrap_err(),
-        Error::NotDraggable {
-            point: PointRef::Control(c, 3)
-        }
-    );
+    let p3 = PointRef::Control(c, 3);
+    let at = s.point(p3).unwrap();
+    let mut d = s.drag(p3).unwrap();
+    assert_eq!(d.freedom(), Freedom::Determined);
+    d.update(at + Vector2::new(1.0, 1.0)).unwrap();
+    assert_eq!(d.point(p3).unwrap(), at);
     s.add_constraint(Fixed::entity(c)).unwrap();
-    assert!(matches!(
-        s.drag(PointRef::Control(c, 1)),
-        Err(Error::NotDraggable { .. })
-    ));
+    assert_eq!(
+        s.drag(PointRef::Control(c, 1)).unwrap().freedom(),
+        Freedom::Determined
+    );
     let _ = Sense::Agree;
 }
 

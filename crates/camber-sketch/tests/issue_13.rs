@@ -6,8 +6,7 @@
 use camber_geom::BezierCurve2;
 use camber_sketch::constraints::{Fixed, TangentToCircle, TangentToLine};
 use camber_sketch::{
-    CircleSide, Constraint, Contact, Entity, EntityId, LineSide, PointRef, Rotation, Sense,
-    Sketch,
+    CircleSide, Constraint, Contact, Entity, EntityId, LineSide, PointRef, Rotation, Sense, Sketch,
 };
 use nalgebra::Point2;
 
@@ -99,5 +98,157 @@ fn issue_13_case_4_solves_from_a_start_the_user_could_not_guess() {
         let r = camber_geom::ParametricCurve::point(curve, f64::from(i) / 2000.0).unwrap();
         assert!(r.y >= -0.8 + 0.05 * (r.x + 3.0) - 1e-7);
         assert!((r - Point2::new(0.3, 2.2)).norm() >= 1.0 - 1e-7);
+    }
+}
+
+/// Case 6a: with P₀ fixed and the start tangent along D, P₁ can still slide along the ray
+/// P₀ + t·D; dragged off the ray, it goes to the target's projection onto it.
+#[test]
+fn issue_13_case_6_a_partly_determined_point_slides_along_its_freedom() {
+    use camber_sketch::constraints::StartTangent;
+    use camber_sketch::drag::Freedom;
+    use camber_sketch::TangentForm;
+    for form in [TangentForm::Row, TangentForm::Elimination] {
+        let mut s = Sketch::new();
+        let c = s
+            .add_bezier(
+                BezierCurve2::try_new(vec![
+                    Point2::new(0.0, 0.0),
+                    Point2::new(1.0, 1.0),
+                    Point2::new(2.0, 1.0),
+                    Point2::new(3.0, 0.0),
+                ])
+                .unwrap(),
+            )
+            .unwrap();
+        s.add_constraint(Fixed::point(PointRef::Control(c, 0)))
+            .unwrap();
+        let d = nalgebra::Vector2::new(1.0, 1.0) / 2f64.sqrt();
+        s.add_constraint(StartTangent {
+            curve: c,
+            direction: d,
+            sense: Sense::Agree,
+            form,
+        })
+        .unwrap();
+        s.solve().unwrap();
+        let mut drag = s.drag(PointRef::Control(c, 1)).unwrap();
+        match drag.freedom() {
+            Freedom::Along(u) => assert!((u.x * d.y - u.y * d.x).abs() < 1e-9, "{u}"),
+            other => panic!("{form:?}: {other:?}"),
+        }
+        let target = Point2::new(2.0, 0.5);
+        drag.update(target).unwrap();
+        // The projection of (2, 0.5) onto the ray y = x: (1.25, 1.25).
+        let p1 = drag.point(PointRef::Control(c, 1)).unwrap();
+        assert!(
+            (p1 - Point2::new(1.25, 1.25)).norm() < 1e-9,
+            "{form:?}: {p1}"
+        );
+        assert_eq!(
+            drag.point(PointRef::Control(c, 0)).unwrap(),
+            Point2::origin()
+        );
+    }
+}
+
+/// Case 6b: a fully constrained square (0 DOF) is dragged: a calm no-op that says so, not
+/// "conflicting constraints".
+#[test]
+fn issue_13_case_6_dragging_a_determined_point_is_a_calm_no_op() {
+    use camber_sketch::constraints::{Coincident, Distance, Horizontal, Vertical};
+    use camber_sketch::drag::Freedom;
+    let mut s = Sketch::new();
+    let corners = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)];
+    let lines: Vec<EntityId> = (0..4)
+        .map(|k| {
+            let (a, b) = (corners[k], corners[(k + 1) % 4]);
+            s.add_line(Point2::new(a.0, a.1), Point2::new(b.0, b.1))
+                .unwrap()
+        })
+        .collect();
+    for k in 0..4 {
+        s.add_constraint(Coincident {
+            a: PointRef::End(lines[k]),
+            b: PointRef::Start(lines[(k + 1) % 4]),
+        })
+        .unwrap();
+    }
+    s.add_constraint(Horizontal::line(lines[0])).unwrap();
+    s.add_constraint(Horizontal::line(lines[2])).unwrap();
+    s.add_constraint(Vertical::line(lines[1])).unwrap();
+    s.add_constraint(Vertical::line(lines[3])).unwrap();
+    for l in [lines[0], lines[3]] {
+        s.add_constraint(Distance {
+            a: PointRef::Start(l),
+            b: PointRef::End(l),
+            distance: 1.0,
+        })
+        .unwrap();
+    }
+    s.add_constraint(Fixed::point(PointRef::Start(lines[0])))
+        .unwrap();
+    s.solve().unwrap();
+    let corner = PointRef::Start(lines[2]);
+    let at = s.point(corner).unwrap();
+    let mut drag = s.drag(corner).unwrap();
+    assert_eq!(drag.freedom(), Freedom::Determined);
+    drag.update(at + nalgebra::Vector2::new(0.5, 0.5)).unwrap();
+    assert_eq!(drag.point(corner).unwrap(), at);
+    drag.finish(&mut s).unwrap();
+    assert_eq!(s.point(corner).unwrap(), at);
+}
+
+/// Case 6c: a drag session reports every unknown: circle radii and free contact parameters,
+/// not only points.
+#[test]
+fn issue_13_case_6_a_drag_reports_radii_and_contact_parameters() {
+    let (s, c, ids) = case_4(0.3, 0.8);
+    let mut s = s;
+    s.solve().unwrap();
+    let mut drag = s.drag(PointRef::Control(c, 1)).unwrap();
+    let p = s.point(PointRef::Control(c, 1)).unwrap();
+    drag.update(p + nalgebra::Vector2::new(0.02, 0.0)).unwrap();
+    let entities = drag.entities().unwrap();
+    assert!(entities
+        .iter()
+        .any(|(_, e)| matches!(e, Entity::Circle { radius, .. } if (*radius - 1.0).abs() < 1e-12)));
+    let free = drag.free_parameters().unwrap();
+    for id in ids {
+        assert!(
+            free.iter()
+                .any(|(c, k, u)| *c == id && *k == 0 && u.is_finite()),
+            "{free:?}"
+        );
+    }
+}
+
+/// Case 6d: a nonlinear drag keeps the touch-never-cross active set: on the diffuser, moving
+/// the control points next to the thickness contact down toward the circle never leaves a
+/// crossing curve, and every accepted step is valid.
+#[test]
+fn issue_13_case_6_nonlinear_drags_keep_contacts_honest() {
+    let (mut s, w) = camber_workloads::w2_bspline7().unwrap();
+    s.solve().unwrap();
+    for k in [2, 3, 4] {
+        let r = PointRef::Control(w.curve, k);
+        let p = s.point(r).unwrap();
+        let mut drag = s.drag(r).unwrap();
+        let mut accepted = 0;
+        for step in 1..=10 {
+            let target = p + nalgebra::Vector2::new(0.0, -0.004 * f64::from(step));
+            if drag.update(target).is_ok() {
+                accepted += 1;
+                let mut t = s.clone();
+                for (id, e) in drag.entities().unwrap() {
+                    t.set_entity(id, e).unwrap();
+                }
+                assert!(
+                    camber_workloads::w2_valid(&t, &w),
+                    "control point {k} step {step}"
+                );
+            }
+        }
+        assert!(accepted > 0, "control point {k}: every step refused");
     }
 }

@@ -316,6 +316,15 @@ impl EditorState {
             .sketch
             .drag(point)
             .map_err(|e| Failure::new(422, describe_error(&self.sketch, &e)))?;
+        if session.freedom() == camber_sketch::drag::Freedom::Determined {
+            return Err(Failure::new(
+                422,
+                format!(
+                    "point {} of entity {} cannot be dragged: it is fixed or determined by the constraints",
+                    req.index, req.entity
+                ),
+            ));
+        }
         let mut current = BTreeMap::new();
         for c in &comp.entities {
             if let Ok(e) = self.sketch.entity(*c) {

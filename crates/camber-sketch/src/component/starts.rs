@@ -143,7 +143,6 @@ pub(crate) fn least(f: impl Fn(f64) -> f64, lo: f64, hi: f64, samples: usize) ->
     }
 }
 
-
 impl Shape {
     /// The shape of a contact's target in the entities of `lookup`.
     ///
@@ -195,7 +194,10 @@ pub(crate) fn least_gap(spec: &ContactSpec, lookup: &dyn EntityLookup) -> Result
         expected: "curve",
         found: e.kind_name(),
     })?;
-    let gap = |s: f64| e.point_tangent(s).map_or(f64::INFINITY, |(q, _)| shape.gap(q));
+    let gap = |s: f64| {
+        e.point_tangent(s)
+            .map_or(f64::INFINITY, |(q, _)| shape.gap(q))
+    };
     Ok(least(gap, lo, hi, SAMPLES))
 }
 
