@@ -73,6 +73,7 @@ pub mod residuals;
 pub mod sketch;
 pub mod solve;
 pub mod vocabulary;
+pub mod warnings;
 
 pub use analysis::ComponentAnalysis;
 pub use component::{Component, ComponentProblem, DRAG_CONSTRAINT};
@@ -88,3 +89,4 @@ pub use solve::{ComponentReport, SketchReport};
 pub use vocabulary::{
     CircleSide, Contact, FixTarget, LineSide, Rotation, Sense, TangentForm, Target,
 };
+pub use warnings::Warning;

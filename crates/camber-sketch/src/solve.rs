@@ -29,6 +29,8 @@ pub struct ComponentReport {
 pub struct SketchReport {
     /// Components that were solved (components without constraints are skipped).
     pub components: Vec<ComponentReport>,
+    /// Near-degenerate input found in the sketch before the solve ([`Sketch::warnings`]).
+    pub warnings: Vec<crate::warnings::Warning>,
 }
 
 /// # Solving
@@ -98,7 +100,10 @@ impl Sketch {
     fn solve_components(&mut self, comps: Vec<Component>) -> Result<SketchReport> {
         let mut updates = Vec::new();
         let mut clean = Vec::new();
-        let mut report = SketchReport::default();
+        let mut report = SketchReport {
+            warnings: self.warnings(),
+            ..SketchReport::default()
+        };
         let mut free = Vec::new();
         for comp in comps {
             clean.extend(comp.entities.iter().copied());
