@@ -137,7 +137,8 @@ proptest! {
     /// The target passes near C(u) with the curve's tangent (up to `off`), the regime the row
     /// is used in. The value carries a rounding noise of about 1e-11 (the remainder quotient
     /// loses ε·|G(u)|/(s − u)² to cancellation, and the minimiser is searched afresh at every
-    /// point), so the differences take a step of 1e-5.
+    /// point), so the differences take a step of 1e-5, and draws where differences at nearby
+    /// steps disagree with each other are skipped (see the comment inside).
     #[test]
     fn clearances(wave in prop::collection::vec(-1.0..1.0_f64, 5), u in param(),
                   off in prop::array::uniform3(-0.05..0.05_f64), r in 0.1..2.0_f64,
@@ -157,9 +158,18 @@ proptest! {
             let free = Clearance::new(basis(), Param::Block, target, positive, after, 0.2);
             let mut all = vec![vec![u]];
             all.extend(blocks.iter().cloned());
-            prop_assert!(check_step(&free, &curve_blocks(&wave, &all), 1e-5) < 1e-5);
             let fixed = Clearance::new(basis(), Param::Fixed(u), target, positive, after, 0.2);
-            prop_assert!(check_step(&fixed, &curve_blocks(&wave, &blocks), 1e-5) < 1e-5);
+            for (r, b) in [(&free, curve_blocks(&wave, &all)), (&fixed, curve_blocks(&wave, &blocks))] {
+                // The differences are only a reference where they agree with themselves: near
+                // a minimiser that changes branch (the contact end against an interior
+                // minimum) the search's rounding reaches 1e-9 and central differences at
+                // nearby steps scatter more than the tolerance. Such draws are skipped.
+                let errors = [1e-5, 2e-5, 4e-5].map(|h| check_step(r, &b, h));
+                let spread = errors.iter().fold(0.0_f64, |m, e| m.max(*e))
+                    - errors.iter().fold(f64::INFINITY, |m, e| m.min(*e));
+                prop_assume!(spread < 1e-5);
+                prop_assert!(errors[0] < 1e-5, "{errors:?}");
+            }
         }
     }
 
