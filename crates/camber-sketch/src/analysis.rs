@@ -9,7 +9,7 @@ use crate::errors::Result;
 use crate::sketch::Sketch;
 
 /// The DOF analysis of one component at the current state.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct ComponentAnalysis {
     /// The component.
     pub component: Component,

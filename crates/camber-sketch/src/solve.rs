@@ -16,7 +16,7 @@ pub use crate::component::policy::{
 };
 
 /// The outcome of one component's solve.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct ComponentReport {
     /// The component.
     pub component: Component,
@@ -24,8 +24,25 @@ pub struct ComponentReport {
     pub report: SolveReport,
 }
 
-/// The outcome of [`Sketch::solve`]: one report per component solved.
-#[derive(Debug, Clone, PartialEq, Default)]
+/// The outcome of [`Sketch::solve`]: one report per component solved, and the warnings about
+/// near-degenerate input. Serializes to JSON as `{"components": [{"component": {"entities",
+/// "constraints"}, "report": {…}}], "warnings": [{"kind", …, "message"}]}`.
+///
+/// ```
+/// use camber_sketch::constraints::Fixed;
+/// use camber_sketch::{PointRef, Sketch};
+/// use camber_geom::BezierCurve2;
+/// use nalgebra::Point2;
+/// let mut s = Sketch::new();
+/// let c = s.add_bezier(BezierCurve2::try_new(vec![Point2::new(0.0, 0.0), Point2::new(2.0, 0.0)])?)?;
+/// s.add_constraint(Fixed::point(PointRef::Start(c)))?;
+/// let report = s.solve()?;
+/// let json = serde_json::to_value(&report).map_err(|e| e.to_string()).unwrap();
+/// assert_eq!(json["components"][0]["component"]["entities"][0], 0);
+/// assert_eq!(json["components"][0]["report"]["status"], "already_satisfied");
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize)]
 pub struct SketchReport {
     /// Components that were solved (components without constraints are skipped).
     pub components: Vec<ComponentReport>,

@@ -26,7 +26,8 @@ pub const SHORT: f64 = 1e-6;
 /// Radians within which an angle counts as parallel.
 pub const ANGLE: f64 = 1e-6;
 
-/// A near-degenerate piece of input (see the module documentation).
+/// A near-degenerate piece of input (see the module documentation). Serializes as
+/// `{"kind": "short_line", "entity": 3, "length": 1e-9, "message": "…"}`.
 #[derive(Debug, Clone, PartialEq)]
 #[non_exhaustive]
 pub enum Warning {
@@ -199,5 +200,77 @@ impl Sketch {
             }
         }
         out
+    }
+}
+
+/// The fields of a warning with its kind and message, for its JSON form.
+#[derive(serde::Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+enum WarningForm<'a> {
+    ShortLine {
+        entity: EntityId,
+        length: f64,
+        message: &'a str,
+    },
+    CoincidentControlPoints {
+        entity: EntityId,
+        index: usize,
+        distance: f64,
+        message: &'a str,
+    },
+    TinyRadius {
+        entity: EntityId,
+        radius: f64,
+        message: &'a str,
+    },
+    ParallelAngle {
+        constraint: ConstraintId,
+        angle: f64,
+        message: &'a str,
+    },
+    TinyDistance {
+        constraint: ConstraintId,
+        value: f64,
+        message: &'a str,
+    },
+}
+
+impl serde::Serialize for Warning {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        let message = self.to_string();
+        let message = message.as_str();
+        match *self {
+            Warning::ShortLine { entity, length } => WarningForm::ShortLine {
+                entity,
+                length,
+                message,
+            },
+            Warning::CoincidentControlPoints {
+                entity,
+                index,
+                distance,
+            } => WarningForm::CoincidentControlPoints {
+                entity,
+                index,
+                distance,
+                message,
+            },
+            Warning::TinyRadius { entity, radius } => WarningForm::TinyRadius {
+                entity,
+                radius,
+                message,
+            },
+            Warning::ParallelAngle { constraint, angle } => WarningForm::ParallelAngle {
+                constraint,
+                angle,
+                message,
+            },
+            Warning::TinyDistance { constraint, value } => WarningForm::TinyDistance {
+                constraint,
+                value,
+                message,
+            },
+        }
+        .serialize(s)
     }
 }

@@ -20,7 +20,7 @@ use crate::reduced::Linearization;
 use crate::sparse::check_len;
 
 /// A row found to depend on the rows before it.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct DependentRow {
     /// The row of J.
     pub row: usize,
@@ -31,7 +31,7 @@ pub struct DependentRow {
 }
 
 /// The outcome of [`analyze_rows`].
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct RowAnalysis {
     /// Numerical rank of J by SVD.
     pub rank: usize,
@@ -116,7 +116,7 @@ pub fn analyze_rows(
 }
 
 /// The DOF analysis of a problem, by constraint.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct DofAnalysis {
     /// Reduced (free) unknowns n.
     pub free_unknowns: usize,

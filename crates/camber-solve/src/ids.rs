@@ -58,7 +58,8 @@ impl ResidualId {
 /// let id = ConstraintId(7);
 /// assert_eq!(id.0, 7);
 /// ```
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize)]
+#[serde(transparent)]
 pub struct ConstraintId(pub u64);
 
 impl std::fmt::Display for ConstraintId {

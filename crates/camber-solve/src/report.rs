@@ -3,10 +3,13 @@
 use std::collections::HashMap;
 use std::time::Duration;
 
+use serde::Serialize;
+
 use crate::ids::ConstraintId;
 
 /// How a successful solve ended (failures are [`crate::Error`]s and change nothing).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
 pub enum Status {
     /// The values were moved and every residual is now within tolerance.
     Solved,
@@ -19,7 +22,8 @@ pub enum Status {
 }
 
 /// Which solver produced the result.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
 pub enum SolverKind {
     /// No solver ran (nothing to do).
     None,
@@ -37,7 +41,7 @@ pub enum SolverKind {
 }
 
 /// The largest absolute residual of one constraint (over all rows it owns).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct ConstraintResidual {
     /// The constraint.
     pub constraint: ConstraintId,
@@ -45,8 +49,28 @@ pub struct ConstraintResidual {
     pub max_abs: f64,
 }
 
-/// The report of a successful solve.
-#[derive(Debug, Clone, PartialEq)]
+/// The report of a successful solve. Serializes with `elapsed` in seconds.
+///
+/// ```
+/// use camber_solve::{solve_linear, ConstraintId, Options, Problem, Residual, Scalar};
+/// #[derive(Debug)]
+/// struct XIs3;
+/// impl Residual for XIs3 {
+///     fn name(&self) -> &str { "x = 3" }
+///     fn dim(&self) -> usize { 1 }
+///     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) { out[0] = x[0][0] - camber_solve::scalar::cst(3.0); }
+///     fn is_affine(&self) -> bool { true }
+/// }
+/// let mut p = Problem::new();
+/// let b = p.add_block(&[0.0])?;
+/// p.add_residual(XIs3, &[b], ConstraintId(5))?;
+/// let report = solve_linear(&mut p, &Options::default())?;
+/// let json = serde_json::to_value(&report).map_err(|e| e.to_string()).unwrap();
+/// assert_eq!(json["status"], "solved");
+/// assert_eq!(json["residuals"][0]["constraint"], 5);
+/// # Ok::<(), camber_solve::Error>(())
+/// ```
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct SolveReport {
     /// How the solve ended.
     pub status: Status,
@@ -71,7 +95,13 @@ pub struct SolveReport {
     /// fails on them; kept for the soft solvers to come).
     pub conflicting: Vec<ConstraintId>,
     /// Wall-clock time of the solve.
+    #[serde(serialize_with = "seconds")]
     pub elapsed: Duration,
+}
+
+/// A duration as seconds (f64).
+fn seconds<S: serde::Serializer>(d: &Duration, s: S) -> Result<S::Ok, S::Error> {
+    s.serialize_f64(d.as_secs_f64())
 }
 
 /// max |g| per owning constraint, in order of first appearance.

@@ -21,7 +21,7 @@ use crate::ids::{ConstraintId, EntityId};
 
 /// A connected component of the sketch graph: entities and the constraints between them,
 /// each sorted by id.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq, Eq, serde::Serialize)]
 pub struct Component {
     /// The entities.
     pub entities: Vec<EntityId>,
