@@ -14,12 +14,15 @@ use crate::errors::{Error, Result};
 pub struct Options {
     /// A constraint is satisfied when every row has |g| ≤ tolerance (absolute).
     pub tolerance: f64,
-    /// Relative tolerance of the rank decisions (times σ_max of J).
+    /// Relative tolerance of the rank decisions (times σ_max of J in the dense analysis, its
+    /// largest row norm in the sparse one).
     pub rank_tolerance: f64,
     /// Up to this many reduced unknowns the dense backend is used, above it the sparse one.
     pub dense_max_unknowns: usize,
-    /// The dense rank analysis runs when rows × reduced unknowns is at most this; above it full
-    /// row rank is inferred from a successful sparse Cholesky and dependent rows are not named.
+    /// The rank analysis runs before the linear step when rows × reduced unknowns is at most
+    /// this (dense up to [`crate::analysis::DENSE_ANALYSIS_MAX_ENTRIES`] entries, sparse above);
+    /// above it full row rank is inferred from a successful sparse Cholesky, and the caller
+    /// runs the analysis only when that fails.
     pub dense_analysis_max_entries: usize,
     /// Whether consistent dependent rows may be dropped (otherwise [`Error::Redundant`]).
     pub drop_redundant: bool,
