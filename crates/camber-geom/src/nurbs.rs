@@ -489,6 +489,7 @@ impl<T: Scalar, const D: usize> ParametricCurve<T, D> for NurbsCurve<T, D> {
 
 /// The JSON form: `{"degree", "knots", "control_points": [[x, y], …], "weights": […]}`.
 #[derive(Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 struct RawNurbs {
     degree: usize,
     knots: Vec<f64>,
@@ -509,12 +510,16 @@ impl<const D: usize> Serialize for NurbsCurve<f64, D> {
 }
 
 impl<'de, const D: usize> Deserialize<'de> for NurbsCurve<f64, D> {
-    /// Reads the JSON form and validates it with [`NurbsCurve::try_new`].
+    /// Reads the JSON form and validates it with [`NurbsCurve::try_new`]; unknown fields and
+    /// degree 0 (a file describes a continuous curve) are refused.
     fn deserialize<De: Deserializer<'de>>(
         deserializer: De,
     ) -> std::result::Result<Self, De::Error> {
         let raw = RawNurbs::deserialize(deserializer)?;
         let build = || -> Result<Self> {
+            if raw.degree == 0 {
+                return Err(Error::DegreeZero);
+            }
             let knots = KnotVector::try_new(raw.knots)?;
             let points = points_from_raw(&raw.control_points)?;
             Self::try_new(raw.degree, knots, points, raw.weights)

@@ -96,6 +96,29 @@ pub enum Error {
         /// "start" or "end".
         end: &'static str,
     },
+    /// An entity whose points all lie on one place (a zero-length line, a curve whose control
+    /// points are all equal), or a curve of degree 0: it has no direction, so every tangent,
+    /// length and angle of it is undefined.
+    ///
+    /// ```
+    /// use camber_sketch::{EntityId, Error, Sketch};
+    /// use nalgebra::Point2;
+    /// let mut s = Sketch::new();
+    /// let p = Point2::new(1.0, 1.0);
+    /// assert_eq!(
+    ///     s.add_line(p, p).unwrap_err(),
+    ///     Error::DegenerateEntity { entity: EntityId(0), kind: "line", reason: "has zero length" }
+    /// );
+    /// ```
+    #[error("{entity} ({kind}) {reason}")]
+    DegenerateEntity {
+        /// The entity.
+        entity: EntityId,
+        /// Its kind ("line", "bezier", …).
+        kind: &'static str,
+        /// What is degenerate, in words.
+        reason: &'static str,
+    },
     /// An entity cannot be removed while constraints read it.
     #[error("{entity} is read by {constraint}")]
     EntityInUse {

@@ -71,8 +71,9 @@ pub enum FileError {
         /// The version found (as written).
         found: String,
     },
-    /// The sketch refused an entity (bad knots, weights, radius, a duplicate id, …).
-    #[error("entity {id} ({kind}): {source}")]
+    /// The sketch refused an entity (bad knots, weights, radius, a duplicate id, a zero-length
+    /// line, …).
+    #[error("entity {id} ({kind}): {}", entity_reason(source))]
     Entity {
         /// The entity's id in the file.
         id: u64,
@@ -117,6 +118,14 @@ pub enum FileError {
         /// Its residual's name.
         name: String,
     },
+}
+
+/// The sketch's reason for refusing an entity, without naming the entity again.
+fn entity_reason(e: &Error) -> String {
+    match e {
+        Error::DegenerateEntity { reason, .. } => (*reason).to_owned(),
+        other => other.to_string(),
+    }
 }
 
 /// Decodes the parameters of one custom kind into a constraint over the given arguments.
@@ -219,7 +228,8 @@ pub fn from_json(text: &str) -> std::result::Result<Sketch, FileError> {
 }
 
 /// Reads a sketch file; custom constraints are decoded through `registry`. Entities are added
-/// first, then constraints, each in file order under its own id.
+/// first, then constraints, each in file order under its own id. A leading UTF-8 byte order
+/// mark is skipped.
 ///
 /// # Errors
 /// [`FileError::Syntax`], [`FileError::Version`], [`FileError::Shape`] (with the JSON path),
@@ -229,6 +239,8 @@ pub fn from_json_with(
     text: &str,
     registry: &CustomRegistry,
 ) -> std::result::Result<Sketch, FileError> {
+    // A UTF-8 byte order mark (some editors write one) is not part of the JSON.
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let value: Value = serde_json::from_str(text).map_err(|e| FileError::Syntax {
         message: if e.to_string().starts_with("number out of range") {
             format!(
