@@ -117,7 +117,15 @@ impl Curve {
     }
 
     /// The curve file text: the tagged object, pretty-printed, with a final newline.
+    ///
+    /// # Errors
+    /// A number that is not finite (an operation's result that overflowed f64): JSON would
+    /// write it as `null`, so the curve is refused instead.
     pub fn to_json(&self) -> Result<String> {
+        let value = serde_json::to_value(self).context("cannot encode the curve")?;
+        if let Some(path) = first_null(&value, String::new()) {
+            bail!("the result has a number outside the f64 range at {path}");
+        }
         let mut s = serde_json::to_string_pretty(self).context("cannot encode the curve")?;
         s.push('\n');
         Ok(s)
@@ -164,6 +172,27 @@ pub fn json_syntax_error(e: serde_json::Error) -> anyhow::Error {
         )
     } else {
         anyhow!("malformed JSON: {e}")
+    }
+}
+
+/// The path (`weights[2]`) of the first `null` in `v`: where serde_json wrote a non-finite
+/// number.
+fn first_null(v: &Value, path: String) -> Option<String> {
+    match v {
+        Value::Null => Some(path),
+        Value::Array(items) => items
+            .iter()
+            .enumerate()
+            .find_map(|(i, x)| first_null(x, format!("{path}[{i}]"))),
+        Value::Object(map) => map.iter().find_map(|(k, x)| {
+            let sub = if path.is_empty() {
+                k.clone()
+            } else {
+                format!("{path}.{k}")
+            };
+            first_null(x, sub)
+        }),
+        _ => None,
     }
 }
 

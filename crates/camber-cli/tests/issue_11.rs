@@ -218,3 +218,118 @@ fn issue_11_finding_7_input_size_is_bounded() {
     let err = failure(camber().args(["check", "/dev/zero"]));
     assert!(err.contains("larger than 64 MiB"), "{err}");
 }
+
+// ------------------------------------------------------------ finding 4: unrepresentable numbers
+
+#[test]
+fn issue_11_finding_4_unrepresentable_numbers_are_refused_or_computed() {
+    let dir = tempfile::tempdir().unwrap();
+    let spline = write(
+        dir.path(),
+        "s.json",
+        r#"{"type": "bspline", "degree": 2, "knots": [0, 0, 0, 0.5, 1, 1, 1],
+            "control_points": [[0, 0], [1, 1], [3, 0], [4, 2]]}"#,
+    );
+    let out = dir.path().join("r.json");
+    for to in ["-1e308,1e308", "0,1e-320", "1e17,1.0000000000000002e17"] {
+        let err = failure(
+            camber()
+                .arg("op")
+                .arg(&spline)
+                .args(["reparam", &format!("--to={to}")])
+                .arg("-o")
+                .arg(&out),
+        );
+        assert!(err.contains("cannot carry the knots"), "{to}: {err}");
+        assert!(!out.exists(), "{to}");
+    }
+    let wide = write(
+        dir.path(),
+        "wide.json",
+        r#"{"type": "bspline", "degree": 1, "knots": [-1e308, -1e308, 1e308, 1e308], "control_points": [[0, 0], [1, 1]]}"#,
+    );
+    let err = failure(camber().arg("eval").arg(&wide).args(["--at", "0"]));
+    assert!(err.contains("wider than f64 can subtract"), "{err}");
+    let uneven = write(
+        dir.path(),
+        "uneven.json",
+        r#"{"type": "nurbs", "degree": 2, "knots": [0, 0, 0, 1, 1, 1],
+            "control_points": [[1, 0], [1, 1], [0, 1]], "weights": [1e-300, 1e300, 1e-300]}"#,
+    );
+    for cmd in [
+        vec!["eval", "--at", "0.5"],
+        vec!["render-curve", "--combs", "-o", "x.svg"],
+    ] {
+        let err = failure(
+            camber()
+                .current_dir(dir.path())
+                .arg(cmd[0])
+                .arg(&uneven)
+                .args(&cmd[1..]),
+        );
+        assert!(
+            err.contains("the weights range from 1e-300 to 1e300"),
+            "{err}"
+        );
+    }
+    // Weights all 1e308: the same quarter circle as weights (1, √½, 1), evaluated and drawn.
+    let huge = write(
+        dir.path(),
+        "huge.json",
+        r#"{"type": "nurbs", "degree": 2, "knots": [0, 0, 0, 1, 1, 1],
+            "control_points": [[1, 0], [1, 1], [0, 1]], "weights": [1e308, 7.071067811865476e307, 1e308]}"#,
+    );
+    let text = success(
+        camber()
+            .arg("eval")
+            .arg(&huge)
+            .args(["--at", "0,0.5,1", "--derivs", "3"]),
+    );
+    assert!(!text.contains("null") && !text.contains("NaN"), "{text}");
+    let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    for e in v.as_array().unwrap() {
+        let (x, y) = (
+            e["point"][0].as_f64().unwrap(),
+            e["point"][1].as_f64().unwrap(),
+        );
+        assert!((x.hypot(y) - 1.0).abs() < 1e-12, "on the unit circle: {e}");
+        assert!((e["curvature"].as_f64().unwrap() - 1.0).abs() < 1e-9, "{e}");
+    }
+    let svg = dir.path().join("huge.svg");
+    success(
+        camber()
+            .arg("render-curve")
+            .arg(&huge)
+            .arg("--combs")
+            .arg("-o")
+            .arg(&svg),
+    );
+    let picture = std::fs::read_to_string(&svg).unwrap();
+    assert!(
+        !picture.contains("NaN") && !picture.contains("inf"),
+        "{picture}"
+    );
+}
+
+#[test]
+fn issue_11_finding_4_no_null_is_written_as_a_result() {
+    // A Bézier curve near the top of f64: its elevation is representable, its derivatives are
+    // not; eval refuses instead of printing null, and render refuses instead of drawing NaN.
+    let dir = tempfile::tempdir().unwrap();
+    let big = write(
+        dir.path(),
+        "big.json",
+        r#"{"type": "bezier", "control_points": [[-1.7e308, 0], [1.7e308, 0]]}"#,
+    );
+    let err = failure(camber().arg("eval").arg(&big).args(["--at", "0.5"]));
+    assert!(err.contains("derivative 1 is not finite"), "{err}");
+    let err = failure(
+        camber()
+            .arg("render-curve")
+            .arg(&big)
+            .arg("--combs")
+            .arg("-o")
+            .arg(dir.path().join("b.svg")),
+    );
+    assert!(err.contains("not finite"), "{err}");
+}

@@ -217,6 +217,31 @@ pub enum Error {
         /// The last knot.
         last: f64,
     },
+    /// NURBS weights whose largest and smallest differ by more than
+    /// [`MAX_WEIGHT_RATIO`](crate::nurbs::MAX_WEIGHT_RATIO): the small ones would vanish
+    /// next to the large ones in f64.
+    ///
+    /// ```
+    /// use camber_geom::{Error, KnotVector, NurbsCurve2};
+    /// use nalgebra::Point2;
+    /// let knots = KnotVector::clamped_uniform(2, 3)?;
+    /// let points = vec![Point2::new(1.0, 0.0), Point2::new(1.0, 1.0), Point2::new(0.0, 1.0)];
+    /// let err = NurbsCurve2::try_new(2, knots, points, vec![1e-300, 1e300, 1e-300]).unwrap_err();
+    /// assert_eq!(err, Error::WeightRatio { smallest: 1e-300, largest: 1e300, max: 1e15 });
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error(
+        "the weights range from {smallest:e} to {largest:e}, a ratio above {max:e} that f64 \
+         cannot carry (scale them closer together)"
+    )]
+    WeightRatio {
+        /// The smallest weight.
+        smallest: f64,
+        /// The largest weight.
+        largest: f64,
+        /// The largest ratio allowed.
+        max: f64,
+    },
     /// A reparameterization onto an interval where the knots cannot be represented: their
     /// span would overflow, or distinct knots would round onto one value (the shape would
     /// change).

@@ -316,3 +316,40 @@ proptest! {
         }
     }
 }
+
+/// Issue 11 finding 4: NURBS weights all scaled to 1e308 describe the same curve as unit
+/// weights and evaluate like them; weights 1e600 apart are refused.
+#[test]
+fn issue_11_nurbs_weights_at_the_edge_of_f64() {
+    let knots = KnotVector::clamped_uniform(2, 3).unwrap();
+    let points = vec![
+        Point2::new(1.0, 0.0),
+        Point2::new(1.0, 1.0),
+        Point2::new(0.0, 1.0),
+    ];
+    let w = std::f64::consts::FRAC_1_SQRT_2;
+    let unit = NurbsCurve2::try_new(2, knots.clone(), points.clone(), vec![1.0, w, 1.0]).unwrap();
+    let huge = NurbsCurve2::try_new(
+        2,
+        knots.clone(),
+        points.clone(),
+        vec![1e308, w * 1e308, 1e308],
+    )
+    .unwrap();
+    for u in [0.0, 0.3, 0.5, 1.0] {
+        let (a, b) = (
+            unit.derivatives(u, 3).unwrap(),
+            huge.derivatives(u, 3).unwrap(),
+        );
+        for k in 0..=3 {
+            assert!(
+                (a[k] - b[k]).norm() < 1e-12 * (1.0 + a[k].norm()),
+                "u = {u}, k = {k}"
+            );
+        }
+    }
+    assert!(matches!(
+        NurbsCurve2::try_new(2, knots, points, vec![1e-300, 1e300, 1e-300]),
+        Err(Error::WeightRatio { .. })
+    ));
+}
