@@ -260,6 +260,11 @@ pub fn write_text(path: &Path, text: &str) -> Result<()> {
         .map_err(|e| anyhow!("{}: cannot write: {}", path.display(), IoReason(&e)))
 }
 
+/// An I/O error's plain reason: lower case, without the "(os error N)" suffix.
+pub fn io_reason(e: &std::io::Error) -> String {
+    IoReason(e).to_string()
+}
+
 /// An I/O error's plain reason without the "(os error N)" suffix.
 struct IoReason<'a>(&'a std::io::Error);
 

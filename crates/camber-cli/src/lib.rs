@@ -39,6 +39,7 @@ pub mod commands;
 pub mod curve_file;
 pub mod draw;
 pub mod editor;
+pub mod output;
 pub mod scene;
 pub mod sketch_file;
 pub mod svg;

@@ -333,3 +333,121 @@ fn issue_11_finding_4_no_null_is_written_as_a_result() {
     );
     assert!(err.contains("not finite"), "{err}");
 }
+
+// ------------------------------------------------------------ finding 6: outputs
+
+#[test]
+fn issue_11_finding_6_outputs_never_overwrite_inputs_or_each_other() {
+    let dir = tempfile::tempdir().unwrap();
+    let blade = std::fs::read_to_string(sketch("blade_section.json")).unwrap();
+    let input = write(dir.path(), "in.json", &blade);
+    let d = |n: &str| dir.path().join(n);
+    // solve IN -o O --svg IN: the input is kept.
+    let err = failure(
+        camber()
+            .arg("solve")
+            .arg(&input)
+            .arg("-o")
+            .arg(d("o.json"))
+            .arg("--svg")
+            .arg(&input),
+    );
+    assert!(err.contains("refusing to overwrite the input"), "{err}");
+    assert_eq!(std::fs::read_to_string(&input).unwrap(), blade);
+    assert!(!d("o.json").exists());
+    // -o X --svg X: refused, nothing written.
+    let err = failure(
+        camber()
+            .arg("solve")
+            .arg(&input)
+            .arg("-o")
+            .arg(d("x.json"))
+            .arg("--svg")
+            .arg(d("x.json")),
+    );
+    assert!(
+        err.contains("the same file is given for two outputs"),
+        "{err}"
+    );
+    assert!(!d("x.json").exists());
+    // -o ok.json --svg <unwritable>: ok.json is not left behind.
+    let err = failure(
+        camber()
+            .arg("solve")
+            .arg(&input)
+            .arg("-o")
+            .arg(d("ok.json"))
+            .arg("--svg")
+            .arg(d("no/such/dir/p.svg")),
+    );
+    assert!(err.contains("p.svg"), "{err}");
+    assert!(!d("ok.json").exists());
+    // op split -o A --second A, and -o onto the input curve.
+    let curve = write(dir.path(), "c.json", CUBIC);
+    let err = failure(
+        camber()
+            .arg("op")
+            .arg(&curve)
+            .args(["split", "--at", "0.5"])
+            .arg("-o")
+            .arg(d("a.json"))
+            .arg("--second")
+            .arg(d("a.json")),
+    );
+    assert!(
+        err.contains("the same file is given for two outputs"),
+        "{err}"
+    );
+    assert!(!d("a.json").exists());
+    let err = failure(
+        camber()
+            .arg("op")
+            .arg(&curve)
+            .args(["split", "--at", "0.5"])
+            .arg("-o")
+            .arg(&curve)
+            .arg("--second")
+            .arg(d("b.json")),
+    );
+    assert!(err.contains("refusing to overwrite the input"), "{err}");
+    assert_eq!(std::fs::read_to_string(&curve).unwrap(), CUBIC);
+    assert!(!d("b.json").exists());
+    // render onto its own input.
+    let err = failure(camber().arg("render").arg(&input).arg("-o").arg(&input));
+    assert!(err.contains("refusing to overwrite the input"), "{err}");
+    // No temporary file is left anywhere.
+    for e in std::fs::read_dir(dir.path()).unwrap() {
+        let name = e.unwrap().file_name().to_string_lossy().into_owned();
+        assert!(!name.contains("camber-tmp"), "{name}");
+    }
+}
+
+#[cfg(unix)]
+#[test]
+fn issue_11_finding_6_editor_save_keeps_the_link_and_the_mode() {
+    use std::os::unix::fs::PermissionsExt as _;
+    let dir = tempfile::tempdir().unwrap();
+    let real = write(
+        dir.path(),
+        "real.json",
+        &std::fs::read_to_string(sketch("blade_section.json")).unwrap(),
+    );
+    std::fs::set_permissions(&real, std::fs::Permissions::from_mode(0o600)).unwrap();
+    let link = dir.path().join("link.json");
+    std::os::unix::fs::symlink(&real, &link).unwrap();
+    let mut ed = camber_cli::editor::EditorState::load(&link, None).unwrap();
+    let answer = ed.handle("POST", "/api/save", b"{}");
+    assert_eq!(
+        answer.status,
+        200,
+        "{}",
+        String::from_utf8_lossy(&answer.body)
+    );
+    assert!(std::fs::symlink_metadata(&link)
+        .unwrap()
+        .file_type()
+        .is_symlink());
+    let mode = std::fs::metadata(&real).unwrap().permissions().mode() & 0o777;
+    assert_eq!(mode, 0o600);
+    camber_sketch::file::from_json(&std::fs::read_to_string(&real).unwrap()).unwrap();
+}

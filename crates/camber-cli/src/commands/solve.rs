@@ -7,7 +7,6 @@ use camber_sketch::{Sketch, SketchReport};
 use clap::Args;
 
 use crate::commands::render;
-use crate::curve_file::write_text;
 use crate::sketch_file::{self, describe_entities, describe_error};
 
 /// Arguments of `camber solve`.
@@ -28,7 +27,8 @@ pub struct SolveArgs {
 }
 
 /// Loads, solves every component, writes the result (and the picture), prints the report. A
-/// failed solve writes nothing and names the constraints at fault.
+/// failed solve writes nothing and names the constraints at fault; the files are written all
+/// or nothing, never over the input ([`crate::output`]).
 pub fn run(args: &SolveArgs) -> Result<()> {
     let mut sketch = sketch_file::load(&args.input)?;
     let report = if args.displacement {
@@ -49,12 +49,16 @@ pub fn run(args: &SolveArgs) -> Result<()> {
     } else {
         solve(&mut sketch).with_context(|| args.input.display().to_string())?
     };
-    sketch_file::save(&args.output, &sketch)?;
+    let text = camber_sketch::file::to_json(&sketch)
+        .map_err(|e| anyhow!("{e}"))
+        .with_context(|| args.output.display().to_string())?;
+    let mut outputs = vec![(args.output.clone(), text)];
     if let Some(pic) = &args.svg {
         let svg =
             render::picture(&sketch, false).with_context(|| args.input.display().to_string())?;
-        write_text(pic, &svg)?;
+        outputs.push((pic.clone(), svg));
     }
+    crate::output::write_all(&[&args.input], &outputs)?;
     crate::print_stdout(&format_report(&report))?;
     crate::print_stdout(&format!("wrote {}", args.output.display()))?;
     Ok(())

@@ -502,7 +502,8 @@ impl EditorState {
         self.no_drag("save")?;
         let text = camber_sketch::file::to_json(&self.sketch)
             .map_err(|e| Failure::new(422, format!("cannot save: {e}")))?;
-        write_atomically(&self.output, &text).map_err(|e| Failure::new(500, format!("{e:#}")))?;
+        crate::output::write_all(&[], &[(self.output.clone(), text.clone())])
+            .map_err(|e| Failure::new(500, format!("{e:#}")))?;
         self.saved_version = self.version;
         Ok(Response::json(
             200,
@@ -618,23 +619,6 @@ pub fn analyse(sketch: &Sketch) -> Result<(Vec<ComponentJson>, BTreeSet<Constrai
     Ok((out, conflicting))
 }
 
-/// Writes `text` to a temporary file beside `path`, then renames it over `path`, so a failed
-/// write never leaves half a sketch file.
-fn write_atomically(path: &Path, text: &str) -> Result<()> {
-    let name = path
-        .file_name()
-        .ok_or_else(|| anyhow!("{}: not a file name", path.display()))?;
-    let mut tmp_name = std::ffi::OsString::from(".");
-    tmp_name.push(name);
-    tmp_name.push(".camber-edit.tmp");
-    let tmp = path.with_file_name(tmp_name);
-    crate::curve_file::write_text(&tmp, text)?;
-    std::fs::rename(&tmp, path).map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        anyhow!("{}: cannot write: {e}", path.display())
-    })
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -644,7 +628,7 @@ mod tests {
         let dir = tempfile::tempdir().unwrap();
         let path = dir.path().join("s.json");
         std::fs::write(&path, "old").unwrap();
-        write_atomically(&path, "new text").unwrap();
+        crate::output::write_all(&[], &[(path.clone(), "new text".into())]).unwrap();
         assert_eq!(std::fs::read_to_string(&path).unwrap(), "new text");
         let names: Vec<_> = std::fs::read_dir(dir.path())
             .unwrap()
@@ -653,7 +637,9 @@ mod tests {
         assert_eq!(names, ["s.json"]);
         // A missing folder fails plainly, naming the file, and creates nothing.
         let missing = dir.path().join("no/such/s.json");
-        let e = write_atomically(&missing, "x").unwrap_err().to_string();
+        let e = crate::output::write_all(&[], &[(missing, "x".into())])
+            .unwrap_err()
+            .to_string();
         assert!(
             e.contains("cannot write") && e.contains("no such file or directory"),
             "{e}"
