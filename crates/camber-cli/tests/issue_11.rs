@@ -451,3 +451,73 @@ fn issue_11_finding_6_editor_save_keeps_the_link_and_the_mode() {
     assert_eq!(mode, 0o600);
     camber_sketch::file::from_json(&std::fs::read_to_string(&real).unwrap()).unwrap();
 }
+
+// ------------------------------------------------------------ issue 16: solve/check --json
+
+#[test]
+fn issue_16_solve_and_check_print_json_and_warnings() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = success(
+        camber()
+            .arg("check")
+            .arg(sketch("blade_section.json"))
+            .arg("--json"),
+    );
+    let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    let c = &v["components"][0];
+    assert_eq!(c["component"]["entities"].as_array().unwrap().len(), 4);
+    let a = &c["analysis"];
+    assert_eq!(
+        a["dof"].as_u64().unwrap() + a["rank"].as_u64().unwrap(),
+        a["free_unknowns"].as_u64().unwrap()
+    );
+    assert!(v["warnings"].as_array().unwrap().is_empty());
+    let out = dir.path().join("o.json");
+    let text = success(
+        camber()
+            .arg("solve")
+            .arg(sketch("blade_section.json"))
+            .arg("-o")
+            .arg(&out)
+            .arg("--json"),
+    );
+    let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    let r = &v["components"][0]["report"];
+    assert_eq!(r["status"], "solved");
+    assert!(r["residuals"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .all(|g| g["max_abs"].as_f64().unwrap() < 1e-9));
+    assert!(out.exists());
+    // A sketch with a line a billionth of its size: check and solve name it, in text and JSON.
+    let short = write(
+        dir.path(),
+        "short.json",
+        r#"{"version": 1, "entities": [
+            {"id": 0, "kind": "line", "from": [0, 0], "to": [10, 0]},
+            {"id": 1, "kind": "line", "from": [0, 0], "to": [1e-8, 0]}],
+          "constraints": [{"id": 2, "kind": "horizontal", "of": {"line": 0}}]}"#,
+    );
+    let text = success(camber().arg("check").arg(&short));
+    let warning = text
+        .lines()
+        .find(|l| l.starts_with("warning: "))
+        .expect(&text);
+    assert!(warning.contains("entity 1"), "{warning}");
+    let v: serde_json::Value =
+        serde_json::from_str(&success(camber().arg("check").arg(&short).arg("--json"))).unwrap();
+    assert_eq!(v["warnings"].as_array().unwrap().len(), 1, "{v}");
+    let text = success(
+        camber()
+            .arg("solve")
+            .arg(&short)
+            .arg("-o")
+            .arg(dir.path().join("s.json")),
+    );
+    assert!(
+        text.lines()
+            .any(|l| l.starts_with("warning: ") && l.contains("entity 1")),
+        "{text}"
+    );
+}
