@@ -131,3 +131,51 @@ pub fn print_stdout(text: &str) -> Result<()> {
         _ => Ok(()),
     }
 }
+
+/// A number for messages, with a bounded number of digits: up to 6 significant digits in
+/// plain notation between 1e-4 and 1e6, otherwise scientific with up to 5 (`1e308`,
+/// `1.2346e-320`), and the words for non-finite values.
+///
+/// ```
+/// use camber_cli::short_number;
+/// assert_eq!(short_number(0.5), "0.5");
+/// assert_eq!(short_number(1e308), "1e308");
+/// assert_eq!(short_number(-1.23456789e-320), "-1.2346e-320");
+/// assert_eq!(short_number(1234.56789), "1234.57");
+/// assert_eq!(short_number(f64::NAN), "NaN (not a number)");
+/// ```
+pub fn short_number(v: f64) -> String {
+    if v.is_nan() {
+        return "NaN (not a number)".to_owned();
+    }
+    if v.is_infinite() {
+        return if v > 0.0 { "infinity" } else { "-infinity" }.to_owned();
+    }
+    if v.classify() == std::num::FpCategory::Zero {
+        return "0".to_owned();
+    }
+    let a = v.abs();
+    if (1e-4..1e6).contains(&a) {
+        // Six significant digits: decimals = 5 − floor(log10 |v|).
+        let decimals = (5 - a.log10().floor() as i32).max(0) as usize;
+        let s = format!("{v:.decimals$}");
+        let s = if s.contains('.') {
+            s.trim_end_matches('0').trim_end_matches('.').to_owned()
+        } else {
+            s
+        };
+        return s;
+    }
+    let s = format!("{v:.4e}");
+    match s.split_once('e') {
+        Some((mantissa, exp)) => {
+            let m = if mantissa.contains('.') {
+                mantissa.trim_end_matches('0').trim_end_matches('.')
+            } else {
+                mantissa
+            };
+            format!("{m}e{exp}")
+        }
+        None => s,
+    }
+}

@@ -521,3 +521,95 @@ fn issue_16_solve_and_check_print_json_and_warnings() {
         "{text}"
     );
 }
+
+// ------------------------------------------------------------ findings 2 and 9: the editor
+
+fn editor_call(
+    ed: &mut camber_cli::editor::EditorState,
+    path: &str,
+    body: &str,
+) -> (u16, serde_json::Value) {
+    let r = ed.handle("POST", path, body.as_bytes());
+    (r.status, serde_json::from_slice(&r.body).unwrap())
+}
+
+#[test]
+fn issue_11_finding_2_absurd_drag_targets_are_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out.json");
+    let mut ed =
+        camber_cli::editor::EditorState::load(&sketch("blade_section.json"), Some(out.clone()))
+            .unwrap();
+    let before = camber_sketch::file::to_json(ed.sketch()).unwrap();
+    let (status, _) = editor_call(&mut ed, "/api/drag/start", r#"{"entity": 1, "index": 2}"#);
+    assert_eq!(status, 200);
+    for to in ["[1e308, 1e308]", "[1e200, 0]", "[0, -1e10]"] {
+        let (status, answer) =
+            editor_call(&mut ed, "/api/drag/move", &format!(r#"{{"to": {to}}}"#));
+        assert_eq!(status, 422, "{to}: {answer}");
+        let reason = answer["error"].as_str().unwrap();
+        assert!(reason.contains("too far from the sketch"), "{reason}");
+        assert!(reason.len() < 200, "a short message: {reason}");
+    }
+    // A reasonable move still works, and the sketch stays finite and saved as such.
+    let (status, answer) = editor_call(&mut ed, "/api/drag/move", r#"{"to": [0.3, 0.2]}"#);
+    assert_eq!(status, 200, "{answer}");
+    assert!(!answer.to_string().contains("null"), "{answer}");
+    assert_eq!(editor_call(&mut ed, "/api/drag/cancel", "{}").0, 200);
+    assert_eq!(camber_sketch::file::to_json(ed.sketch()).unwrap(), before);
+}
+
+#[test]
+fn issue_11_finding_2_samples_are_sent_in_f64() {
+    // Coordinates beyond f32 (3.4e38): samples sent as f32 were infinite, written as null.
+    let dir = tempfile::tempdir().unwrap();
+    let path = write(
+        dir.path(),
+        "big.json",
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "bezier", "control_points": [[0, 0], [1e39, 1e39], [2e39, 0]]}]}"#,
+    );
+    let mut ed = camber_cli::editor::EditorState::load(&path, None).unwrap();
+    let r = ed.handle("GET", "/api/state", b"");
+    assert_eq!(r.status, 200);
+    let v: serde_json::Value = serde_json::from_slice(&r.body).unwrap();
+    let samples = v["scene"]["entities"][0]["samples"].as_array().unwrap();
+    assert!(samples.iter().all(|p| p[0].is_f64() && p[1].is_f64()), "{samples:?}");
+    assert!((samples[samples.len() / 2][0].as_f64().unwrap() - 1e39).abs() < 1e24);
+}
+
+#[test]
+fn issue_11_finding_9_ids_the_page_cannot_address_are_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = write(
+        dir.path(),
+        "ids.json",
+        r#"{"version": 1, "entities": [{"id": 9007199254740993, "kind": "point", "at": [0, 0]}]}"#,
+    );
+    let err = camber_cli::editor::EditorState::load(&path, None)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("entity id 9007199254740993 is above 9007199254740991"),
+        "{err}"
+    );
+    let err = failure(camber().arg("edit").arg(&path));
+    assert!(err.contains("renumber"), "{err}");
+    // 2^53 − 1 itself is fine.
+    let ok = write(
+        dir.path(),
+        "ok.json",
+        r#"{"version": 1, "entities": [{"id": 9007199254740991, "kind": "point", "at": [0, 0]}]}"#,
+    );
+    camber_cli::editor::EditorState::load(&ok, None).unwrap();
+}
+
+#[test]
+fn issue_11_finding_9_a_remote_bind_needs_an_explicit_flag() {
+    let err = failure(
+        camber()
+            .arg("edit")
+            .arg(sketch("blade_section.json"))
+            .args(["--bind", "0.0.0.0"]),
+    );
+    assert!(err.contains("--allow-remote"), "{err}");
+}

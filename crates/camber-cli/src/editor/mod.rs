@@ -140,6 +140,41 @@ struct Drag {
     updates: usize,
     refused: usize,
     update_time: Duration,
+    /// The centre of the sketch's box and its scale when the drag began: targets farther than
+    /// [`MAX_DRAG_REACH`] scales from the centre are refused.
+    centre: Point2<f64>,
+    scale: f64,
+}
+
+/// The largest entity or constraint id the editor accepts: 2^53 − 1, the largest integer a
+/// JavaScript number holds exactly (a larger id would be rounded by the page and name another
+/// entity or none).
+pub const MAX_EDITOR_ID: u64 = (1 << 53) - 1;
+
+/// How far a drag target may lie from the centre of the sketch, in multiples of the sketch's
+/// scale (the diagonal of its box, at least 1): a thousand sketches away is surely a slip of
+/// the hand or a hostile request, and would wreck the drawing's numbers.
+pub const MAX_DRAG_REACH: f64 = 1000.0;
+
+/// The centre of the box of every entity point (circles with their radius); the origin for an
+/// empty sketch.
+fn sketch_centre(sketch: &Sketch) -> Point2<f64> {
+    let mut bbox = crate::svg::BBox::empty();
+    for (_, e) in sketch.entities() {
+        let r = match e {
+            Entity::Circle { radius, .. } => *radius,
+            _ => 0.0,
+        };
+        for p in e.points() {
+            bbox.include(Point2::new(p.x - r, p.y - r));
+            bbox.include(Point2::new(p.x + r, p.y + r));
+        }
+    }
+    if bbox.is_empty() {
+        Point2::origin()
+    } else {
+        Point2::from((bbox.min.coords + bbox.max.coords) / 2.0)
+    }
 }
 
 /// The editor: the sketch, the drag in progress, the undo history and the last report.
@@ -172,8 +207,22 @@ impl EditorState {
     /// An editor on a sketch that came from `file`.
     ///
     /// # Errors
-    /// The analysis of the sketch fails (it names the constraints).
+    /// An id above [`MAX_EDITOR_ID`] (the page could not address it); the analysis of the
+    /// sketch fails (it names the constraints).
     pub fn new(sketch: Sketch, file: PathBuf, output: Option<PathBuf>) -> Result<Self> {
+        let ids = sketch
+            .entities()
+            .map(|(id, _)| ("entity", id.0))
+            .chain(sketch.constraints().map(|(id, _)| ("constraint", id.0)));
+        for (what, id) in ids {
+            if id > MAX_EDITOR_ID {
+                anyhow::bail!(
+                    "{}: {what} id {id} is above {MAX_EDITOR_ID} (2^53 - 1), the largest id the \
+                     editor's page can address exactly; renumber the sketch to edit it",
+                    file.display()
+                );
+            }
+        }
         let mut state = Self {
             sketch,
             output: output.unwrap_or_else(|| file.clone()),
@@ -349,6 +398,8 @@ impl EditorState {
             updates: 0,
             refused: 0,
             update_time: Duration::ZERO,
+            centre: sketch_centre(&self.sketch),
+            scale: self.sketch.scale(),
         });
         Ok(Response::json(200, &dragged))
     }
@@ -359,8 +410,24 @@ impl EditorState {
         let Some(drag) = self.drag.as_mut() else {
             return Err(Failure::new(409, "no drag in progress: start one first"));
         };
+        let to = Point2::new(req.to[0], req.to[1]);
+        let reach = MAX_DRAG_REACH * drag.scale;
+        if !(to - drag.centre).norm().is_finite() || (to - drag.centre).norm() > reach {
+            drag.refused += 1;
+            return Err(Failure::new(
+                422,
+                format!(
+                    "move refused: the target ({}, {}) is too far from the sketch (more than {} \
+                     from its centre, {} times its size)",
+                    crate::short_number(to.x),
+                    crate::short_number(to.y),
+                    crate::short_number(reach),
+                    MAX_DRAG_REACH
+                ),
+            ));
+        }
         let t = Instant::now();
-        let result = drag.session.update(Point2::new(req.to[0], req.to[1]));
+        let result = drag.session.update(to);
         let update_time = t.elapsed();
         drag.update_time += update_time;
         if let Err(e) = result {
