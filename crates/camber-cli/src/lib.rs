@@ -132,15 +132,67 @@ pub fn print_stdout(text: &str) -> Result<()> {
     }
 }
 
+/// `text` with every long number (more than 24 digits, such as the 300 digits Rust prints for
+/// 1e-300 in plain notation) rewritten by [`short_number`], so messages stay readable
+/// whatever values they quote.
+///
+/// ```
+/// use camber_cli::tidy_numbers;
+/// let long = format!("radius {} is not positive", -1e-300);
+/// assert_eq!(tidy_numbers(&long), "radius -1e-300 is not positive");
+/// assert_eq!(tidy_numbers("entity 12 at u = 0.25"), "entity 12 at u = 0.25");
+/// ```
+pub fn tidy_numbers(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    let bytes = text.as_bytes();
+    let mut i = 0;
+    while i < bytes.len() {
+        let starts_number = bytes[i].is_ascii_digit()
+            && (i == 0 || !(bytes[i - 1].is_ascii_alphanumeric() || bytes[i - 1] == b'_'));
+        if !starts_number {
+            let c = text[i..].chars().next().unwrap_or(' ');
+            out.push(c);
+            i += c.len_utf8();
+            continue;
+        }
+        let mut j = i;
+        while j < bytes.len() && (bytes[j].is_ascii_digit() || bytes[j] == b'.') {
+            j += 1;
+        }
+        if j < bytes.len() && (bytes[j] == b'e' || bytes[j] == b'E') {
+            let mut k = j + 1;
+            if k < bytes.len() && (bytes[k] == b'-' || bytes[k] == b'+') {
+                k += 1;
+            }
+            if k < bytes.len() && bytes[k].is_ascii_digit() {
+                while k < bytes.len() && bytes[k].is_ascii_digit() {
+                    k += 1;
+                }
+                j = k;
+            }
+        }
+        let token = &text[i..j];
+        let digits = token.bytes().filter(u8::is_ascii_digit).count();
+        match token.parse::<f64>() {
+            // f64's shortest form has at most 17 significant digits, so only a plain-notation
+            // number of extreme size is this long (an id of u64 has at most 20 digits).
+            Ok(v) if digits > 24 => out.push_str(&short_number(v)),
+            _ => out.push_str(token),
+        }
+        i = j;
+    }
+    out
+}
+
 /// A number for messages, with a bounded number of digits: up to 6 significant digits in
 /// plain notation between 1e-4 and 1e6, otherwise scientific with up to 5 (`1e308`,
-/// `1.2346e-320`), and the words for non-finite values.
+/// `-9.9999e-321` for a subnormal -1e-320), and the words for non-finite values.
 ///
 /// ```
 /// use camber_cli::short_number;
 /// assert_eq!(short_number(0.5), "0.5");
 /// assert_eq!(short_number(1e308), "1e308");
-/// assert_eq!(short_number(-1.23456789e-320), "-1.2346e-320");
+/// assert_eq!(short_number(-1.25e-7), "-1.25e-7");
 /// assert_eq!(short_number(1234.56789), "1234.57");
 /// assert_eq!(short_number(f64::NAN), "NaN (not a number)");
 /// ```

@@ -573,7 +573,10 @@ fn issue_11_finding_2_samples_are_sent_in_f64() {
     assert_eq!(r.status, 200);
     let v: serde_json::Value = serde_json::from_slice(&r.body).unwrap();
     let samples = v["scene"]["entities"][0]["samples"].as_array().unwrap();
-    assert!(samples.iter().all(|p| p[0].is_f64() && p[1].is_f64()), "{samples:?}");
+    assert!(
+        samples.iter().all(|p| p[0].is_f64() && p[1].is_f64()),
+        "{samples:?}"
+    );
     assert!((samples[samples.len() / 2][0].as_f64().unwrap() - 1e39).abs() < 1e24);
 }
 
@@ -612,4 +615,38 @@ fn issue_11_finding_9_a_remote_bind_needs_an_explicit_flag() {
             .args(["--bind", "0.0.0.0"]),
     );
     assert!(err.contains("--allow-remote"), "{err}");
+}
+
+// ------------------------------------------------------------ finding 8: messages
+
+#[test]
+fn issue_11_finding_8_numbers_in_messages_have_bounded_digits() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = write(
+        dir.path(),
+        "tiny.json",
+        r#"{"version": 1, "entities": [{"id": 3, "kind": "circle", "center": [0, 0], "radius": -1e-320}]}"#,
+    );
+    let err = failure(camber().arg("check").arg(&path));
+    assert!(
+        err.contains("entity 3 (circle)") && err.contains("-9.9999e-321"),
+        "{err}"
+    );
+    assert!(err.len() < 120, "{err}");
+    let curve = write(dir.path(), "c.json", CUBIC);
+    let err = failure(camber().arg("eval").arg(&curve).args(["--at", "1e300"]));
+    assert!(
+        err.contains("parameter 1e300 is outside the domain [0, 1]"),
+        "{err}"
+    );
+    let path = write(
+        dir.path(),
+        "field.json",
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "bezier", "control_points": [[0, 0], [1, 2, 3]]}]}"#,
+    );
+    let err = failure(camber().arg("check").arg(&path));
+    assert!(
+        err.contains("at entities[0].control_points[1]: invalid length 3"),
+        "{err}"
+    );
 }

@@ -116,13 +116,13 @@ struct Failure(u16, String);
 
 impl Failure {
     fn new(status: u16, message: impl Into<String>) -> Self {
-        Self(status, message.into())
+        Self(status, crate::tidy_numbers(&message.into()))
     }
 }
 
 impl From<anyhow::Error> for Failure {
     fn from(e: anyhow::Error) -> Self {
-        Self(500, format!("{e:#}"))
+        Self(500, crate::tidy_numbers(&format!("{e:#}")))
     }
 }
 
