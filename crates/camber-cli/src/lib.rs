@@ -39,6 +39,7 @@ pub mod commands;
 pub mod curve_file;
 pub mod draw;
 pub mod editor;
+pub mod output;
 pub mod scene;
 pub mod sketch_file;
 pub mod svg;
@@ -128,5 +129,105 @@ pub fn print_stdout(text: &str) -> Result<()> {
             Err(anyhow::anyhow!("cannot write to stdout: {e}"))
         }
         _ => Ok(()),
+    }
+}
+
+/// `text` with every long number (more than 24 digits, such as the 300 digits Rust prints for
+/// 1e-300 in plain notation) rewritten by [`short_number`], so messages stay readable
+/// whatever values they quote.
+///
+/// ```
+/// use camber_cli::tidy_numbers;
+/// let long = format!("radius {} is not positive", -1e-300);
+/// assert_eq!(tidy_numbers(&long), "radius -1e-300 is not positive");
+/// assert_eq!(tidy_numbers("entity 12 at u = 0.25"), "entity 12 at u = 0.25");
+/// ```
+pub fn tidy_numbers(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    let bytes = text.as_bytes();
+    let mut i = 0;
+    while i < bytes.len() {
+        let starts_number = bytes[i].is_ascii_digit()
+            && (i == 0 || !(bytes[i - 1].is_ascii_alphanumeric() || bytes[i - 1] == b'_'));
+        if !starts_number {
+            let c = text[i..].chars().next().unwrap_or(' ');
+            out.push(c);
+            i += c.len_utf8();
+            continue;
+        }
+        let mut j = i;
+        while j < bytes.len() && (bytes[j].is_ascii_digit() || bytes[j] == b'.') {
+            j += 1;
+        }
+        if j < bytes.len() && (bytes[j] == b'e' || bytes[j] == b'E') {
+            let mut k = j + 1;
+            if k < bytes.len() && (bytes[k] == b'-' || bytes[k] == b'+') {
+                k += 1;
+            }
+            if k < bytes.len() && bytes[k].is_ascii_digit() {
+                while k < bytes.len() && bytes[k].is_ascii_digit() {
+                    k += 1;
+                }
+                j = k;
+            }
+        }
+        let token = &text[i..j];
+        let digits = token.bytes().filter(u8::is_ascii_digit).count();
+        match token.parse::<f64>() {
+            // f64's shortest form has at most 17 significant digits, so only a plain-notation
+            // number of extreme size is this long (an id of u64 has at most 20 digits).
+            Ok(v) if digits > 24 => out.push_str(&short_number(v)),
+            _ => out.push_str(token),
+        }
+        i = j;
+    }
+    out
+}
+
+/// A number for messages, with a bounded number of digits: up to 6 significant digits in
+/// plain notation between 1e-4 and 1e6, otherwise scientific with up to 5 (`1e308`,
+/// `-9.9999e-321` for a subnormal -1e-320), and the words for non-finite values.
+///
+/// ```
+/// use camber_cli::short_number;
+/// assert_eq!(short_number(0.5), "0.5");
+/// assert_eq!(short_number(1e308), "1e308");
+/// assert_eq!(short_number(-1.25e-7), "-1.25e-7");
+/// assert_eq!(short_number(1234.56789), "1234.57");
+/// assert_eq!(short_number(f64::NAN), "NaN (not a number)");
+/// ```
+pub fn short_number(v: f64) -> String {
+    if v.is_nan() {
+        return "NaN (not a number)".to_owned();
+    }
+    if v.is_infinite() {
+        return if v > 0.0 { "infinity" } else { "-infinity" }.to_owned();
+    }
+    if v.classify() == std::num::FpCategory::Zero {
+        return "0".to_owned();
+    }
+    let a = v.abs();
+    if (1e-4..1e6).contains(&a) {
+        // Six significant digits: decimals = 5 − floor(log10 |v|).
+        let decimals = (5 - a.log10().floor() as i32).max(0) as usize;
+        let s = format!("{v:.decimals$}");
+        let s = if s.contains('.') {
+            s.trim_end_matches('0').trim_end_matches('.').to_owned()
+        } else {
+            s
+        };
+        return s;
+    }
+    let s = format!("{v:.4e}");
+    match s.split_once('e') {
+        Some((mantissa, exp)) => {
+            let m = if mantissa.contains('.') {
+                mantissa.trim_end_matches('0').trim_end_matches('.')
+            } else {
+                mantissa
+            };
+            format!("{m}e{exp}")
+        }
+        None => s,
     }
 }

@@ -30,9 +30,12 @@ pub fn save(path: &Path, sketch: &Sketch) -> Result<()> {
     write_text(path, &text)
 }
 
-/// "constraint 4 (G1 join)", or "constraint 4" when the id is not in the sketch (such as the
-/// drag pin).
+/// "constraint 4 (G1 join)", "the drag target" for the drag's own pin, or "constraint 4" when
+/// the id is not in the sketch.
 pub fn describe_constraint(sketch: &Sketch, id: ConstraintId) -> String {
+    if id == camber_sketch::DRAG_CONSTRAINT {
+        return "the drag target".to_owned();
+    }
     match sketch.constraint(id) {
         Ok(c) => format!("{id} ({})", c.kind_name()),
         Err(_) => id.to_string(),

@@ -169,6 +169,102 @@ pub enum Error {
         /// The degree given.
         found: usize,
     },
+    /// A B-spline or NURBS curve of degree 0 in a file: piecewise constant, with jumps at its
+    /// knots, so not a curve that can be constrained or drawn. The library types accept
+    /// degree 0 ([`BSplineCurve::try_new`](crate::BSplineCurve::try_new)); their file forms
+    /// (serde) and sketches do not.
+    ///
+    /// ```
+    /// use camber_geom::BSplineCurve2;
+    /// let text = r#"{"degree": 0, "knots": [0, 1, 2], "control_points": [[0, 0], [1, 0]]}"#;
+    /// let err = serde_json::from_str::<BSplineCurve2<f64>>(text).unwrap_err();
+    /// assert!(err.to_string().starts_with("degree 0 is not supported"));
+    /// ```
+    #[error("degree 0 is not supported (a B-spline needs degree 1 or more)")]
+    DegreeZero,
+    /// A knot repeated more than degree + 1 times: the basis functions around it vanish.
+    ///
+    /// ```
+    /// use camber_geom::{Error, KnotVector};
+    /// let k = KnotVector::try_new(vec![0.0, 0.0, 0.5, 0.5, 0.5, 1.0, 1.0])?;
+    /// assert_eq!(
+    ///     k.check_for(1, 5).unwrap_err(),
+    ///     Error::KnotMultiplicityTooHigh { value: 0.5, multiplicity: 3, max: 2 }
+    /// );
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("knot {value} is repeated {multiplicity} times, more than degree + 1 = {max}")]
+    KnotMultiplicityTooHigh {
+        /// The knot value.
+        value: f64,
+        /// How many times it occurs.
+        multiplicity: usize,
+        /// The most allowed: degree + 1.
+        max: usize,
+    },
+    /// Knots spread so wide that their differences overflow f64 (`[-1e308, …, 1e308]`): the
+    /// basis functions divide by those differences and would come out wrong.
+    ///
+    /// ```
+    /// use camber_geom::{Error, KnotVector};
+    /// let err = KnotVector::try_new(vec![-1e308, -1e308, 1e308, 1e308]).unwrap_err();
+    /// assert_eq!(err, Error::KnotRangeTooWide { first: -1e308, last: 1e308 });
+    /// ```
+    #[error("the knots span [{first:e}, {last:e}], wider than f64 can subtract")]
+    KnotRangeTooWide {
+        /// The first knot.
+        first: f64,
+        /// The last knot.
+        last: f64,
+    },
+    /// NURBS weights whose largest and smallest differ by more than
+    /// [`MAX_WEIGHT_RATIO`](crate::nurbs::MAX_WEIGHT_RATIO): the small ones would vanish
+    /// next to the large ones in f64.
+    ///
+    /// ```
+    /// use camber_geom::{Error, KnotVector, NurbsCurve2};
+    /// use nalgebra::Point2;
+    /// let knots = KnotVector::clamped_uniform(2, 3)?;
+    /// let points = vec![Point2::new(1.0, 0.0), Point2::new(1.0, 1.0), Point2::new(0.0, 1.0)];
+    /// let err = NurbsCurve2::try_new(2, knots, points, vec![1e-300, 1e300, 1e-300]).unwrap_err();
+    /// assert_eq!(err, Error::WeightRatio { smallest: 1e-300, largest: 1e300, max: 1e15 });
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error(
+        "the weights range from {smallest:e} to {largest:e}, a ratio above {max:e} that f64 \
+         cannot carry (scale them closer together)"
+    )]
+    WeightRatio {
+        /// The smallest weight.
+        smallest: f64,
+        /// The largest weight.
+        largest: f64,
+        /// The largest ratio allowed.
+        max: f64,
+    },
+    /// A reparameterization onto an interval where the knots cannot be represented: their
+    /// span would overflow, or distinct knots would round onto one value (the shape would
+    /// change).
+    ///
+    /// ```
+    /// use camber_geom::{Error, KnotVector};
+    /// let k = KnotVector::<f64>::clamped_uniform(1, 3)?;
+    /// assert_eq!(
+    ///     k.reparameterized(1, -1e308, 1e308).unwrap_err(),
+    ///     Error::ReparamNotRepresentable { start: -1e308, end: 1e308 }
+    /// );
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error(
+        "the interval [{start:e}, {end:e}] cannot carry the knots in f64 (their span would \
+         overflow or distinct knots would merge)"
+    )]
+    ReparamNotRepresentable {
+        /// Start of the interval asked for.
+        start: f64,
+        /// End of the interval asked for.
+        end: f64,
+    },
     /// A spline degree (given, or reached by degree elevation) above
     /// [`MAX_DEGREE`](crate::knots::MAX_DEGREE): the basis tables grow like the square of the
     /// degree, so an absurd degree from a file would exhaust memory instead of failing.

@@ -315,10 +315,41 @@ impl Entity {
         }
     }
 
-    /// Checks an entity on entry to a sketch (finite points, positive radius).
-    pub(crate) fn validate(&self) -> Result<()> {
+    /// Checks an entity on entry to a sketch as `id`: finite points, a positive radius, a
+    /// line or curve whose points do not all coincide (its squared extent is a positive f64),
+    /// a spline degree of at least 1.
+    pub(crate) fn validate(&self, id: EntityId) -> Result<()> {
         for (i, p) in self.points().iter().enumerate() {
             check_point("point", i, p)?;
+        }
+        let degenerate = |reason| Error::DegenerateEntity {
+            entity: id,
+            kind: self.kind_name(),
+            reason,
+        };
+        if let Entity::BSpline(c) = self {
+            if c.degree() == 0 {
+                return Err(degenerate("has degree 0 (a spline needs degree 1 or more)"));
+            }
+        }
+        if let Entity::Nurbs(c) = self {
+            if c.degree() == 0 {
+                return Err(degenerate("has degree 0 (a spline needs degree 1 or more)"));
+            }
+        }
+        if !matches!(self, Entity::Point(_) | Entity::Circle { .. }) {
+            let points = self.points();
+            let spread = points
+                .iter()
+                .map(|p| (p - points[0]).norm_squared())
+                .fold(0.0_f64, f64::max);
+            if spread <= 0.0 || spread.is_nan() {
+                return Err(degenerate(if matches!(self, Entity::Line(_)) {
+                    "has zero length"
+                } else {
+                    "has all its control points at one place"
+                }));
+            }
         }
         if let Entity::Circle { radius, .. } = self {
             if !(radius.is_finite() && *radius > 0.0) {

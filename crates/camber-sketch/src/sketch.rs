@@ -133,7 +133,7 @@ impl Sketch {
     /// validation errors of [`Sketch::add_entity`]. Nothing is added then.
     pub fn add_entity_with_id(&mut self, id: EntityId, entity: Entity) -> Result<EntityId> {
         self.check_free_id(id.0)?;
-        entity.validate()?;
+        entity.validate(id)?;
         self.next_id = self.next_id.max(id.0.saturating_add(1));
         let node = self.graph.add_node(Node::Entity(id));
         self.entities.insert(id, (entity, node));
@@ -379,7 +379,7 @@ impl Sketch {
                 found: entity.kind_name(),
             });
         }
-        entity.validate()?;
+        entity.validate(id)?;
         let previous = match self.entities.get_mut(&id) {
             Some(slot) => std::mem::replace(&mut slot.0, entity),
             None => return Err(Error::UnknownEntity { entity: id }),

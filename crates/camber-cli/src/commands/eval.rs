@@ -24,9 +24,25 @@ pub struct EvalArgs {
         value_name = "U[,U...]"
     )]
     pub at: Vec<f64>,
-    /// How many derivatives to report (C′ … C⁽ᴷ⁾).
-    #[arg(long, default_value_t = 1, value_name = "K")]
+    /// How many derivatives to report (C′ … C⁽ᴷ⁾), at most 64; those above a polynomial
+    /// curve's degree are zero.
+    #[arg(long, default_value_t = 1, value_name = "K", value_parser = derivative_count)]
     pub derivs: usize,
+}
+
+/// The most derivatives `eval` reports. Beyond a polynomial curve's degree they are zero, and a
+/// rational curve's high derivatives soon leave the f64 range; the bound keeps the output and
+/// its memory small whatever is typed.
+pub const MAX_DERIVATIVES: usize = 64;
+
+/// Parses `--derivs`: a whole number from 0 to [`MAX_DERIVATIVES`].
+fn derivative_count(s: &str) -> std::result::Result<usize, String> {
+    match s.trim().parse::<usize>() {
+        Ok(k) if k <= MAX_DERIVATIVES => Ok(k),
+        _ => Err(format!(
+            "`{s}` is not a whole number from 0 to {MAX_DERIVATIVES}"
+        )),
+    }
 }
 
 /// Prints a JSON array with one object per parameter:
@@ -53,16 +69,39 @@ pub struct Evaluation {
 }
 
 /// The evaluations of [`run`] for each parameter in `us`.
+///
+/// # Errors
+/// A parameter outside the domain; more than [`MAX_DERIVATIVES`] derivatives; a value that
+/// is not finite in f64 (a curve whose numbers overflow), so no NaN is ever returned.
 pub fn evaluate(
     curve: &dyn camber_geom::ParametricCurve<f64, 2>,
     us: &[f64],
     derivs: usize,
 ) -> Result<Vec<Evaluation>> {
+    if derivs > MAX_DERIVATIVES {
+        anyhow::bail!("at most {MAX_DERIVATIVES} derivatives can be asked for, not {derivs}");
+    }
     us.iter()
         .map(|&u| {
             let d = curve
                 .derivatives(u, derivs.max(2))
                 .with_context(|| format!("cannot evaluate at u = {u}"))?;
+            if let Some((k, _)) = d
+                .iter()
+                .enumerate()
+                .take(derivs + 1)
+                .find(|(_, v)| !(v.x.is_finite() && v.y.is_finite()))
+            {
+                let what = if k == 0 {
+                    "the point".to_owned()
+                } else {
+                    format!("derivative {k}")
+                };
+                anyhow::bail!(
+                    "at u = {u}: {what} is not finite in f64 (the curve's numbers are too large \
+                     or too unevenly weighted to evaluate)"
+                );
+            }
             let pair = |v: &nalgebra::Vector2<f64>| [v.x, v.y];
             let curvature = match (d.get(1), d.get(2)) {
                 (Some(d1), Some(d2)) => signed_curvature_from_derivatives(d1, d2),

@@ -185,8 +185,15 @@ pub fn run(args: &OpArgs) -> Result<()> {
         .op
         .apply(&curve)
         .with_context(|| args.curve.display().to_string())?;
+    let mut files = Vec::new();
     for (result, path) in results.iter().zip(args.op.outputs()) {
-        curve_file::save(path, result)?;
+        let text = result
+            .to_json()
+            .with_context(|| path.display().to_string())?;
+        files.push((path.to_path_buf(), text));
+    }
+    crate::output::write_all(&[&args.curve], &files)?;
+    for (result, path) in results.iter().zip(args.op.outputs()) {
         println!("wrote {}: {}", path.display(), curve_file::describe(result));
     }
     Ok(())

@@ -10,7 +10,6 @@ use camber_sketch::{ConstraintId, Entity, Sketch};
 use clap::Args;
 use nalgebra::Vector2;
 
-use crate::curve_file::write_text;
 use crate::draw::{self, Comb, SAMPLES_PER_PIECE, TEETH_PER_PIECE};
 use crate::scene::{glyphs, Glyph, View};
 use crate::sketch_file::{self, describe_error};
@@ -46,7 +45,7 @@ pub struct RenderArgs {
 pub fn run(args: &RenderArgs) -> Result<()> {
     let sketch = sketch_file::load(&args.input)?;
     let svg = picture(&sketch, args.combs).with_context(|| args.input.display().to_string())?;
-    write_text(&args.output, &svg)?;
+    crate::output::write_all(&[&args.input], &[(args.output.clone(), svg)])?;
     crate::print_stdout(&format!("wrote {}", args.output.display()))
 }
 

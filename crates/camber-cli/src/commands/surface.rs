@@ -11,7 +11,7 @@ use camber_surface::{deform_to_g1, DeformOptions, DeformationReport};
 use clap::Args;
 use nalgebra::Point2;
 
-use crate::curve_file::{read_text, write_text};
+use crate::curve_file::read_text;
 use crate::svg::{Anchor, BBox, Style, Svg};
 
 /// Arguments of `camber surface`.
@@ -37,7 +37,11 @@ pub fn run(args: &SurfaceArgs) -> Result<()> {
         .map_err(|e| anyhow!("{name}: deformation failed: {e}"))?;
     let mut json = serde_json::to_string_pretty(&face).context("cannot encode the face")?;
     json.push('\n');
-    write_text(&args.output, &json)?;
+    let mut outputs = vec![(args.output.clone(), json)];
+    if let Some(plot_path) = &args.plot {
+        outputs.push((plot_path.clone(), plot(&report)));
+    }
+    crate::output::write_all(&[&args.case], &outputs)?;
     print!("{}", report_text(&report));
     println!(
         "deformed face ({} × {} control points) written to {}",
@@ -46,7 +50,6 @@ pub fn run(args: &SurfaceArgs) -> Result<()> {
         args.output.display()
     );
     if let Some(plot_path) = &args.plot {
-        write_text(plot_path, &plot(&report))?;
         println!("plot written to {}", plot_path.display());
     }
     Ok(())
