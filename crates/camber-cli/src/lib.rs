@@ -39,6 +39,9 @@ pub mod commands;
 pub mod curve_file;
 pub mod draw;
 pub mod editor;
+// The fuzz targets' entry points (fuzz/), shared with their corpus replay test; not an API.
+#[doc(hidden)]
+pub mod fuzz_support;
 pub mod output;
 pub mod scene;
 pub mod sketch_file;
