@@ -32,6 +32,7 @@
 //! - Evaluation writes into caller slices and keeps its scratch on the stack
 //!   (see [`basis::INLINE_DEGREE`]), so hot loops do not allocate.
 
+pub mod arc_length;
 pub mod basis;
 pub mod bernstein;
 pub mod bezier;
@@ -39,6 +40,7 @@ pub mod bspline;
 pub mod composite;
 pub mod curve;
 pub mod errors;
+pub mod extend;
 pub mod hermite;
 pub mod knot_ops;
 pub mod knots;
