@@ -41,6 +41,7 @@ pub mod composite;
 pub mod curve;
 pub mod errors;
 pub mod extend;
+pub mod fit;
 pub mod hermite;
 pub mod knot_ops;
 pub mod knots;
