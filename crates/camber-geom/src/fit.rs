@@ -328,8 +328,8 @@ fn spread_knots<T: Scalar>(
     KnotVector::new_unchecked(knots)
 }
 
-/// Least squares on given knots (SVD, so a span without data does not break it: the minimum-
-/// norm solution is taken).
+/// Least squares on given knots through the normal equations (SVD when a span without data
+/// makes them singular: the minimum-norm solution is taken).
 fn least_squares<T: Scalar, const D: usize>(
     points: &[Point<T, D>],
     parameters: &[T],
@@ -358,11 +358,15 @@ fn least_squares<T: Scalar, const D: usize>(
     }
     if !unknowns.is_empty() && !rows.is_empty() {
         let offset = unknowns[0];
-        let mut a = DMatrix::<T>::zeros(rows.len(), unknowns.len());
-        let mut b = DMatrix::<T>::zeros(rows.len(), D);
-        for (r, &k) in rows.iter().enumerate() {
+        let size = unknowns.len();
+        // Normal equations NᵀN x = Nᵀr, assembled row by row from the p + 1 non-zero basis
+        // values (NᵀN is banded with half-width p).
+        let mut normal = DMatrix::<T>::zeros(size, size);
+        let mut rhs_all = DMatrix::<T>::zeros(size, D);
+        for &k in &rows {
             let (start, values) = basis_row(&knots, p, parameters[k]);
             let mut rhs = points[k].coords;
+            let mut active: Vec<(usize, T)> = Vec::with_capacity(p + 1);
             for (j, v) in values.into_iter().enumerate() {
                 let i = start + j;
                 if fixed_ends && i == 0 {
@@ -370,19 +374,29 @@ fn least_squares<T: Scalar, const D: usize>(
                 } else if fixed_ends && i == n {
                     rhs -= last * v;
                 } else {
-                    a[(r, i - offset)] = v;
+                    active.push((i - offset, v));
                 }
             }
-            for c in 0..D {
-                b[(r, c)] = rhs[c];
+            for &(i, vi) in &active {
+                for &(j, vj) in &active {
+                    normal[(i, j)] += vi * vj;
+                }
+                for c in 0..D {
+                    rhs_all[(i, c)] += vi * rhs[c];
+                }
             }
         }
-        let solution =
-            a.svd(true, true)
-                .solve(&b, cst::<T>(1e-13))
+        // LU first; a span without data makes NᵀN singular, and then the SVD's minimum-norm
+        // solution is taken.
+        let solution = match normal.clone().lu().solve(&rhs_all) {
+            Some(x) if x.iter().all(|v| re(*v).is_finite()) => x,
+            _ => normal
+                .svd(true, true)
+                .solve(&rhs_all, cst::<T>(1e-13))
                 .map_err(|_| Error::SingularSystem {
                     what: "least-squares",
-                })?;
+                })?,
+        };
         let solved = to_points::<T, D>(&solution, "least-squares")?;
         for (&i, q) in unknowns.iter().zip(solved) {
             control[i] = q;
@@ -435,6 +449,19 @@ pub fn fit_to_tolerance<T: Scalar, const D: usize>(
     }
     check_data(points, degree)?;
     let parameters = data_parameters(points, method)?;
+    fit_to_tolerance_at(points, &parameters, degree, tolerance)
+}
+
+/// [`fit_to_tolerance`] with given parameters ū₀ = 0 < … < ū_m = 1 (checked as a knot-like
+/// sequence: finite, increasing, from 0 to 1) and a tolerance already checked.
+pub(crate) fn fit_to_tolerance_at<T: Scalar, const D: usize>(
+    points: &[Point<T, D>],
+    parameters: &[T],
+    degree: usize,
+    tolerance: f64,
+) -> Result<Fit<T, D>> {
+    check_data(points, degree)?;
+    let parameters = parameters.to_vec();
     let p = degree;
     let mut interior: Vec<T> = Vec::new();
     loop {

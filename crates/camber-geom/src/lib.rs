@@ -48,6 +48,7 @@ pub mod knot_ops;
 pub mod knot_removal;
 pub mod knots;
 pub mod nurbs;
+pub mod offset;
 pub mod primitives;
 pub mod queries;
 pub mod scalar;
