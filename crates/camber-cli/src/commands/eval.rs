@@ -19,7 +19,7 @@ pub struct EvalArgs {
     #[arg(
         long,
         value_delimiter = ',',
-        required = true,
+        required_unless_present = "arc_length",
         allow_negative_numbers = true,
         value_name = "U[,U...]"
     )]
@@ -27,6 +27,17 @@ pub struct EvalArgs {
     /// How many derivatives to report (C′ … C⁽ᴷ⁾).
     #[arg(long, default_value_t = 1, value_name = "K")]
     pub derivs: usize,
+    /// Print the arc length instead (and, with --at, the length from the start to each U).
+    #[arg(long)]
+    pub arc_length: bool,
+    /// The absolute tolerance of the arc length (length units).
+    #[arg(
+        long,
+        default_value_t = 1e-10,
+        value_name = "TOL",
+        requires = "arc_length"
+    )]
+    pub tolerance: f64,
 }
 
 /// Prints a JSON array with one object per parameter:
@@ -34,6 +45,11 @@ pub struct EvalArgs {
 /// signed curvature (positive when the curve turns left; `null` where the speed is zero).
 pub fn run(args: &EvalArgs) -> Result<()> {
     let curve = curve_file::load(&args.curve)?;
+    if args.arc_length {
+        let report = super::arc_length::measure(curve.as_parametric(), &args.at, args.tolerance)
+            .with_context(|| args.curve.display().to_string())?;
+        return crate::print_stdout(&serde_json::to_string_pretty(&report)?);
+    }
     let values = evaluate(curve.as_parametric(), &args.at, args.derivs)
         .with_context(|| args.curve.display().to_string())?;
     crate::print_stdout(&serde_json::to_string_pretty(&values)?)
