@@ -9,7 +9,7 @@
 //! - **Interpolation** solves Σ_i N_{i,p}(ū_k) P_i = Q_k for all k (plus, with end
 //!   derivatives, C′(0) = D₀ and C′(1) = D₁ as two more rows and two more unknowns), knots by
 //!   averaging the parameters so that every span holds one (the system is then banded and
-//!   non-singular by the Schoenberg–Whitney theorem). Dense LU solves it.
+//!   non-singular by the Schoenberg–Whitney theorem). Banded elimination solves it.
 //! - **Least squares** with n + 1 < m + 1 control points places knots so that every span holds
 //!   data (u_{p+j} interpolates between ū_{i−1} and ū_i with i = ⌊j·d⌋, d = (m + 1)/(n − p + 1)),
 //!   and minimises Σ |C(ū_k) − Q_k|² through the normal equations, optionally with the end
@@ -34,6 +34,7 @@
 
 use nalgebra::{DMatrix, Point, SVector};
 
+use crate::banded::solve_banded;
 use crate::bspline::BSplineCurve;
 use crate::curve::{check_points, ParametricCurve};
 use crate::errors::{Error, Result};
@@ -243,7 +244,7 @@ pub(crate) fn interpolate_at<T: Scalar, const D: usize>(
         }
         put(&mut a, basis_row(&knots, p, u), &q.coords);
     }
-    let solution = a.lu().solve(&b).ok_or(Error::SingularSystem {
+    let solution = solve_banded(a, b).ok_or(Error::SingularSystem {
         what: "interpolation",
     })?;
     let control = to_points(&solution, "interpolation")?;
@@ -386,9 +387,9 @@ fn least_squares<T: Scalar, const D: usize>(
                 }
             }
         }
-        // LU first; a span without data makes NᵀN singular, and then the SVD's minimum-norm
+        // Banded elimination first; a span without data makes NᵀN singular, and then the SVD's minimum-norm
         // solution is taken.
-        let solution = match normal.clone().lu().solve(&rhs_all) {
+        let solution = match solve_banded(normal.clone(), rhs_all.clone()) {
             Some(x) if x.iter().all(|v| re(*v).is_finite()) => x,
             _ => normal
                 .svd(true, true)

@@ -33,6 +33,7 @@
 //!   (see [`basis::INLINE_DEGREE`]), so hot loops do not allocate.
 
 pub mod arc_length;
+pub mod banded;
 pub mod basis;
 pub mod bernstein;
 pub mod bezier;

@@ -205,3 +205,32 @@ proptest! {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// The banded solver against nalgebra's dense LU on random diagonally weighted band
+    /// matrices (lower width 2, upper width 1).
+    #[test]
+    fn banded_elimination_agrees_with_dense_lu(
+        n in 3usize..12, values in proptest::collection::vec(-1.0..1.0_f64, 48),
+    ) {
+        use nalgebra::DMatrix;
+        let mut a = DMatrix::<f64>::zeros(n, n);
+        let mut k = 0;
+        for r in 0..n {
+            for c in r.saturating_sub(2)..=(r + 1).min(n - 1) {
+                a[(r, c)] = values[k % values.len()] + if r == c { 0.5 } else { 0.0 };
+                k += 1;
+            }
+        }
+        let b = DMatrix::from_fn(n, 2, |r, c| values[(r + 7 * c) % values.len()]);
+        let dense = a.clone().lu().solve(&b);
+        let banded = camber_geom::banded::solve_banded(a.clone(), b.clone());
+        if let (Some(x), Some(y)) = (&dense, &banded) {
+            let residual = (&a * y - &b).norm();
+            prop_assume!((&a * x - &b).norm() < 1e-8);
+            prop_assert!(residual < 1e-8 * (1.0 + x.norm()), "{residual}");
+        }
+    }
+}
