@@ -71,7 +71,11 @@ fn two_circles_by_hand() {
     let touch = intersect_curves(&c2, &c3, &opts()).unwrap();
     assert_eq!(touch.len(), 1, "{touch:?}");
     assert!(touch[0].tangential);
-    assert!((touch[0].point_a - Point2::new(2.0, 0.0)).norm() < 1e-6);
+    // Equal radii curve opposite ways: the curvatures differ, so the touch is sharp.
+    assert!(
+        (touch[0].point_a - Point2::new(2.0, 0.0)).norm() < 1e-9,
+        "{touch:?}"
+    );
     // Concentric: distance is the difference of the radii.
     let c4 = Circle::try_new(Point2::new(1.0, 0.0), 2.5).unwrap();
     let d = curve_distance(&c2, &c4, &opts()).unwrap();
@@ -188,8 +192,10 @@ fn a_tangent_segment_touches_once() {
     let hits = intersect_curves(&parabola, &tangent, &opts()).unwrap();
     assert_eq!(hits.len(), 1, "{hits:?}");
     assert!(hits[0].tangential);
-    assert!((hits[0].point_a - Point2::new(0.5, 0.25)).norm() < 1e-4);
-    assert!((hits[0].parameter_a - 0.75).abs() < 1e-4);
+    assert!((hits[0].point_a - Point2::new(0.5, 0.25)).norm() < 1e-9);
+    assert!((hits[0].parameter_a - 0.75).abs() < 1e-9);
+    // The segment's parameter of (0.5, 0.25) is 1/2.
+    assert!((hits[0].parameter_b - 0.5).abs() < 1e-9);
 }
 
 fn cubic() -> impl Strategy<Value = BezierCurve2<f64>> {
@@ -261,5 +267,27 @@ proptest! {
         prop_assert!(d.distance >= brute - 0.05, "{} < {brute}", d.distance);
         let check = (a.point(d.parameter_a).unwrap() - moved.point(d.parameter_b).unwrap()).norm();
         prop_assert!((check - d.distance).abs() < 1e-12);
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(32))]
+
+    /// A segment laid along the tangent of a cubic at s₀ touches it there: the contact is
+    /// found, flagged tangential and located sharply (the curvatures differ: 0 against κ).
+    #[test]
+    fn tangent_segments_touch_where_they_were_laid(a in cubic(), s0 in 0.1..0.9_f64) {
+        let (p, d) = a.point_and_derivative(s0).unwrap();
+        let k = camber_geom::queries::curvature(&a, s0).unwrap();
+        prop_assume!(d.norm() > 0.5 && k > 0.05 && k < 20.0);
+        let half = d.normalize() * 0.2;
+        let seg = Segment::try_new(p - half, p + half).unwrap();
+        let hits = intersect_curves(&a, &seg, &opts()).unwrap();
+        let touch = hits.iter().find(|h| (h.parameter_a - s0).abs() < 1e-3);
+        prop_assert!(touch.is_some(), "{hits:?}");
+        let touch = touch.unwrap();
+        prop_assert!(touch.tangential);
+        prop_assert!((touch.parameter_a - s0).abs() < 1e-8, "{}", touch.parameter_a - s0);
+        prop_assert!((touch.parameter_b - 0.5).abs() < 1e-7);
     }
 }

@@ -15,9 +15,10 @@
 //! F·B″ vanish with F and the iteration still converges to the contact (linearly). A result is
 //! an intersection when |F| ≤ the tolerance; results closer than 10⁻⁶ of the extent merge.
 //! A contact is *tangential* when the sine of the angle between A′ and B′ is below 10⁻⁶. Near
-//! a touch the gap grows only quadratically, |F| ≈ ½Δκ·δ², so a touch is located to about
-//! √(2·tolerance/Δκ) along the curves (Δκ the difference of the curvatures), while a crossing
-//! is located to the tolerance itself.
+//! a touch the gap grows only quadratically, |F| ≈ ½Δκ·δ², so the minimisation locates a touch
+//! to about √(2·tolerance/Δκ) along the curves (Δκ the difference of the curvatures); in the
+//! plane a second Newton iteration on "parallel tangents and foot point" then pins it down to
+//! rounding whenever the curvatures differ.
 //!
 //! **Distance.** Branch and bound over the same piece pairs: the distance between two boxes
 //! bounds the pieces' distance from below, piece end points (on the curves) from above; pairs
@@ -142,6 +143,17 @@ fn diagonal<const D: usize>((lo, hi): &(SVector<f64, D>, SVector<f64, D>)) -> f6
     (hi - lo).norm()
 }
 
+/// The sine of the angle between two tangents (0 when either vanishes).
+fn sine_between<const D: usize>(da: &SVector<f64, D>, db: &SVector<f64, D>) -> f64 {
+    let (na, nb) = (da.norm(), db.norm());
+    if na > 0.0 && nb > 0.0 {
+        let cos = da.dot(db) / (na * nb);
+        (1.0 - cos * cos).max(0.0).sqrt()
+    } else {
+        0.0
+    }
+}
+
 /// Evaluates both curves and the pair's data at (s, t).
 fn pair_point<const D: usize, A, B>(a: &A, b: &B, s: f64, t: f64) -> Result<CurvePairPoint<D>>
 where
@@ -150,13 +162,7 @@ where
 {
     let (pa, da) = a.point_and_derivative(s)?;
     let (pb, db) = b.point_and_derivative(t)?;
-    let (na, nb) = (da.norm(), db.norm());
-    let tangential = if na > 0.0 && nb > 0.0 {
-        let cos = da.dot(&db) / (na * nb);
-        (1.0 - cos * cos).max(0.0).sqrt() < 1e-6
-    } else {
-        true
-    };
+    let tangential = sine_between(&da, &db) < 1e-6;
     Ok(CurvePairPoint {
         parameter_a: s,
         parameter_b: t,
@@ -216,6 +222,55 @@ where
     Ok((s, t))
 }
 
+/// In the plane, a tangential contact solves G = (A′ × B′, (A − B)·B′) = 0 — parallel tangents
+/// and B's foot point — whose Jacobian [[A″ × B′, A′ × B″], [A′·B′, (A − B)·B″ − |B′|²]] is
+/// regular when the curvatures differ (its determinant is −λ²|B′|⁵(κ_B − κ_A) at the contact,
+/// λ = |A′|/|B′|). Newton on G from a converged (s, t) locates the touch to rounding instead of
+/// to √tolerance. Returns `None` when it does not converge inside both domains.
+fn refine_touch<const D: usize, A, B>(
+    a: &A,
+    b: &B,
+    mut s: f64,
+    mut t: f64,
+) -> Result<Option<(f64, f64)>>
+where
+    A: ParametricCurve<f64, D> + ?Sized,
+    B: ParametricCurve<f64, D> + ?Sized,
+{
+    if D != 2 {
+        return Ok(None);
+    }
+    let ((a0, a1), (b0, b1)) = (a.domain(), b.domain());
+    let cross = |x: &SVector<f64, D>, y: &SVector<f64, D>| x[0] * y[1] - x[1] * y[0];
+    for _ in 0..30 {
+        let [pa, da, dda] = a.second_order(s)?;
+        let [pb, db, ddb] = b.second_order(t)?;
+        let f = pa - pb;
+        let g = [cross(&da, &db), f.dot(&db)];
+        let j = [
+            [cross(&dda, &db), cross(&da, &ddb)],
+            [da.dot(&db), f.dot(&ddb) - db.norm_squared()],
+        ];
+        let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
+        if det == 0.0 || !det.is_finite() {
+            return Ok(None);
+        }
+        let ds = -(j[1][1] * g[0] - j[0][1] * g[1]) / det;
+        let dt = -(j[0][0] * g[1] - j[1][0] * g[0]) / det;
+        let (ns, nt) = (s + ds, t + dt);
+        if ns < a0 || ns > a1 || nt < b0 || nt > b1 || !ns.is_finite() || !nt.is_finite() {
+            return Ok(None);
+        }
+        let moved = (ns - s).abs() / (a1 - a0) + (nt - t).abs() / (b1 - b0);
+        s = ns;
+        t = nt;
+        if moved < 1e-15 {
+            return Ok(Some((s, t)));
+        }
+    }
+    Ok(Some((s, t)))
+}
+
 /// Every point where `a` and `b` meet (within the tolerance), in order of the first curve's
 /// parameter, each with both parameters and whether the contact is tangential.
 ///
@@ -230,8 +285,7 @@ where
 /// let circle = Circle::try_new(Point2::origin(), 1.0)?;
 /// let hits = intersect_curves(&parabola, &circle, &CurveCurveOptions::default())?;
 /// assert_eq!(hits.len(), 3);
-/// // A touch is located to about √(tolerance / curvature).
-/// assert!((hits[1].point_a - Point2::new(0.0, -1.0)).norm() < 1e-4);
+/// assert!((hits[1].point_a - Point2::new(0.0, -1.0)).norm() < 1e-9);
 /// assert!(hits[1].tangential);
 /// # Ok::<(), camber_geom::Error>(())
 /// ```
@@ -290,9 +344,23 @@ where
     let merge = 1e-6 * size;
     for (s, t) in seeds {
         let (s, t) = refine(a, b, s, t)?;
-        let hit = pair_point(a, b, s, t)?;
+        let mut hit = pair_point(a, b, s, t)?;
         if hit.distance > opts.tolerance {
             continue;
+        }
+        // The minimisation leaves a touch imprecise, so its tangents may still differ by the
+        // curvature times √tolerance: try the sharp touch iteration on anything near-parallel.
+        let near_parallel = sine_between(&a.derivative(s)?, &b.derivative(t)?) < 1e-3;
+        if near_parallel {
+            if let Some((s2, t2)) = refine_touch(a, b, s, t)? {
+                let touch = pair_point(a, b, s2, t2)?;
+                // Keep the sharper location only if it is still a contact.
+                if touch.distance <= opts.tolerance
+                    && touch.distance <= hit.distance.max(1e-300) * 10.0
+                {
+                    hit = touch;
+                }
+            }
         }
         match found
             .iter_mut()
