@@ -284,3 +284,41 @@ fn issue_13_case_2_a_constraint_is_never_both_redundant_and_conflicting() {
         "redundant {redundant:?}, conflicting {conflicting:?}"
     );
 }
+
+/// A chain of `n` points, the first fixed, each at distance 1 from the next (nonlinear rows):
+/// 2n unknowns, 2 fixed, n − 1 rows, so n − 1 degrees of freedom and nothing dependent.
+pub fn point_chain(n: usize) -> Sketch {
+    let mut s = Sketch::new();
+    let points: Vec<EntityId> = (0..n)
+        .map(|i| {
+            let t = i as f64;
+            s.add_point(Point2::new(t, 0.1 * (t * 0.7).sin())).unwrap()
+        })
+        .collect();
+    s.add_constraint(Fixed::entity(points[0])).unwrap();
+    for pair in points.windows(2) {
+        let d = (s.point(PointRef::Point(pair[1])).unwrap()
+            - s.point(PointRef::Point(pair[0])).unwrap())
+        .norm();
+        s.add_constraint(camber_sketch::constraints::Distance {
+            a: PointRef::Point(pair[0]),
+            b: PointRef::Point(pair[1]),
+            distance: d,
+        })
+        .unwrap();
+    }
+    s
+}
+
+/// Case 5: the analysis of a large component is sparse: a 100,000-point chain is analysed
+/// (it aborted out of memory building a dense 10⁵ × 2·10⁵ matrix), with the right DOF.
+#[test]
+fn issue_13_case_5_a_huge_chain_is_analysed_without_a_dense_matrix() {
+    let n = 100_000;
+    let s = point_chain(n);
+    let analyses = s.analyze().unwrap();
+    assert_eq!(analyses.len(), 1);
+    let a = &analyses[0].analysis;
+    assert_eq!((a.free_unknowns, a.rank, a.dof), (2 * n - 2, n - 1, n - 1));
+    assert!(a.redundant.is_empty() && a.conflicting.is_empty());
+}

@@ -24,10 +24,6 @@ pub const CURVE: &str = "#2471a3";
 /// Colour of point entities.
 pub const POINT: &str = "#34495e";
 
-/// Sketches with more entities are drawn without the DOF analysis (the dense rank analysis
-/// grows with the cube of the size), so conflicts are not marked in them.
-pub const ANALYSIS_MAX_ENTITIES: usize = 200;
-
 /// Arguments of `camber render`.
 #[derive(Debug, Args)]
 pub struct RenderArgs {
@@ -83,23 +79,18 @@ fn draw_glyph(svg: &mut Svg, g: &Glyph, size: f64, colour: &str) {
     }
 }
 
-/// The SVG document of [`run`]. Conflicting constraints are those the DOF analysis names (for
-/// sketches of at most [`ANALYSIS_MAX_ENTITIES`] entities).
+/// The SVG document of [`run`]. Conflicting constraints are those the DOF analysis names (sparse
+/// for large components, so every sketch is analysed).
 ///
 /// # Errors
 /// Evaluation failures and analysis failures (which name the constraints).
 pub fn picture(sketch: &Sketch, combs: bool) -> Result<String> {
-    let conflicting: BTreeSet<ConstraintId> = if sketch.entities().count() <= ANALYSIS_MAX_ENTITIES
-    {
-        sketch
-            .analyze()
-            .map_err(|e| anyhow!("analysis failed: {}", describe_error(sketch, &e)))?
-            .into_iter()
-            .flat_map(|a| a.analysis.conflicting)
-            .collect()
-    } else {
-        BTreeSet::new()
-    };
+    let conflicting: BTreeSet<ConstraintId> = sketch
+        .analyze()
+        .map_err(|e| anyhow!("analysis failed: {}", describe_error(sketch, &e)))?
+        .into_iter()
+        .flat_map(|a| a.analysis.conflicting)
+        .collect();
     // Sample first, so the box holds everything.
     let mut bbox = BBox::empty();
     let mut curves = Vec::new();

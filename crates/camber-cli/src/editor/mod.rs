@@ -43,7 +43,6 @@ use nalgebra::Point2;
 use serde::de::DeserializeOwned;
 use serde::Serialize;
 
-use crate::commands::render::ANALYSIS_MAX_ENTITIES;
 use crate::scene::View;
 use crate::sketch_file::{self, describe_error};
 use wire::{
@@ -624,9 +623,8 @@ fn parse<T: DeserializeOwned>(body: &[u8]) -> std::result::Result<T, Failure> {
     serde_json::from_slice(body).map_err(|e| Failure::new(400, format!("bad request body: {e}")))
 }
 
-/// The components of a sketch with their analysis (for sketches of at most
-/// [`ANALYSIS_MAX_ENTITIES`] entities) and their largest residual now, and every constraint the
-/// analysis names conflicting.
+/// The components of a sketch with their analysis (sparse for large components) and their
+/// largest residual now, and every constraint the analysis names conflicting.
 ///
 /// # Errors
 /// Building a component's problem fails (the message names the constraint).
@@ -635,22 +633,20 @@ pub fn analyse(sketch: &Sketch) -> Result<(Vec<ComponentJson>, BTreeSet<Constrai
         |e: camber_sketch::Error| anyhow!("analysis failed: {}", describe_error(sketch, &e));
     let mut analyses: BTreeMap<EntityId, AnalysisJson> = BTreeMap::new();
     let mut conflicting = BTreeSet::new();
-    if sketch.entities().count() <= ANALYSIS_MAX_ENTITIES {
-        for a in sketch.analyze().map_err(failed)? {
-            let d = &a.analysis;
-            conflicting.extend(d.conflicting.iter().copied());
-            if let Some(first) = a.component.entities.first() {
-                analyses.insert(
-                    *first,
-                    AnalysisJson {
-                        free_unknowns: d.free_unknowns,
-                        rank: d.rank,
-                        dof: d.dof,
-                        redundant: ConstraintRef::list(sketch, &d.redundant),
-                        conflicting: ConstraintRef::list(sketch, &d.conflicting),
-                    },
-                );
-            }
+    for a in sketch.analyze().map_err(failed)? {
+        let d = &a.analysis;
+        conflicting.extend(d.conflicting.iter().copied());
+        if let Some(first) = a.component.entities.first() {
+            analyses.insert(
+                *first,
+                AnalysisJson {
+                    free_unknowns: d.free_unknowns,
+                    rank: d.rank,
+                    dof: d.dof,
+                    redundant: ConstraintRef::list(sketch, &d.redundant),
+                    conflicting: ConstraintRef::list(sketch, &d.conflicting),
+                },
+            );
         }
     }
     let mut out = Vec::new();

@@ -176,8 +176,7 @@ impl ConstraintRef {
     }
 }
 
-/// The DOF analysis of one component (absent when the component is too large to analyse
-/// densely, see [`crate::commands::render::ANALYSIS_MAX_ENTITIES`]).
+/// The DOF analysis of one component.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct AnalysisJson {
     /// Free unknowns.
