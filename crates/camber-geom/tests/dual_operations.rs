@@ -10,7 +10,7 @@ use camber_geom::extend::CurveEnd;
 use camber_geom::fit::{interpolate, ParameterMethod};
 use camber_geom::{BSplineCurve2, KnotVector, ParametricCurve, Scalar};
 use nalgebra::Point2;
-use num_dual::{Derivative, Dual64};
+use num_dual::Dual64;
 
 const POINTS: [[f64; 2]; 5] = [[0.0, 0.0], [1.0, 2.0], [2.5, 1.5], [3.0, -0.5], [4.5, 0.5]];
 
