@@ -31,6 +31,14 @@
 //!   offending index and value. Nothing panics on user input.
 //! - Evaluation writes into caller slices and keeps its scratch on the stack
 //!   (see [`basis::INLINE_DEGREE`]), so hot loops do not allocate.
+//!
+//! # Operations
+//! - [`arc_length`]: length with an error estimate, parameter at a length, arc-length map;
+//! - [`extend`]: natural extrapolation beyond either end, extension by a length (G1, G2);
+//! - [`fit`]: interpolation, least squares, fitting to a tolerance;
+//! - [`knot_removal`] and [`degree_reduction`]: exact when the curve allows, with a bound;
+//! - [`queries::intersect_curves`] and [`queries::curve_distance`]: any two curve kinds;
+//! - [`offset`]: offsets of planar curves as B-splines, error measured.
 
 pub mod arc_length;
 pub mod banded;
