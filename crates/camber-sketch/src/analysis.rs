@@ -29,7 +29,7 @@ impl Sketch {
         let mut out = Vec::new();
         for comp in self.components() {
             let cp = self.build_component(&comp, None)?;
-            let mut analysis = cp.problem().analyze(self.options())?;
+            let mut analysis = cp.problem().analyze(&self.solve_options())?;
             cp.name_merged_redundant(&mut analysis.redundant);
             let conflicting = &analysis.conflicting;
             analysis.redundant.retain(|c| !conflicting.contains(c));
