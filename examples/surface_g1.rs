@@ -49,9 +49,10 @@ fn run() -> Result<(), Box<dyn Error>> {
         report.knots_inserted,
         deformed.counts()
     );
-    let out = std::env::args()
-        .nth(1)
-        .map_or_else(|| std::env::temp_dir().join("surface_g1.svg"), PathBuf::from);
+    let out = std::env::args().nth(1).map_or_else(
+        || std::env::temp_dir().join("surface_g1.svg"),
+        PathBuf::from,
+    );
     if let Some(edge) = report.edges.first() {
         // Wherever the build puts its target folder (CARGO_TARGET_DIR), the plot's folder
         // exists: the temporary folder, or the one given, created if needed.
