@@ -81,6 +81,35 @@ pub fn describe_error(sketch: &Sketch, e: &Error) -> String {
     }
 }
 
+/// The solver of a report in the words the reports print (the JSON names): `dense_min_norm`,
+/// `sparse_min_norm`, `newton`, `slsqp`, `levenberg_marquardt`, and `none (nothing to solve)`
+/// when no solver had to run.
+pub fn solver_name(kind: camber_solve::SolverKind) -> &'static str {
+    use camber_solve::SolverKind as K;
+    match kind {
+        K::None => "none (nothing to solve)",
+        K::DenseMinNorm => "dense_min_norm",
+        K::SparseMinNorm => "sparse_min_norm",
+        K::Newton => "newton",
+        K::Slsqp => "slsqp",
+        K::LevenbergMarquardt => "levenberg_marquardt",
+    }
+}
+
+/// "constraints 4, 5" (or "constraint 4", "no constraints", "1000 constraints: 4, 5, 6, …")
+/// for a component header.
+pub fn describe_constraint_ids(ids: &[ConstraintId]) -> String {
+    let list: Vec<String> = ids.iter().map(|c| c.0.to_string()).collect();
+    match list.as_slice() {
+        [] => "no constraints".to_owned(),
+        [one] => format!("constraint {one}"),
+        [a, b, c, .., last] if list.len() > 8 => {
+            format!("{} constraints: {a}, {b}, {c}, …, {last}", list.len())
+        }
+        _ => format!("constraints {}", list.join(", ")),
+    }
+}
+
 /// "entities 0, 1, 2" for a component header; long lists are cut to "1000 entities: 0, 1, 2, …, 999".
 pub fn describe_entities(ids: &[camber_sketch::EntityId]) -> String {
     let list: Vec<String> = ids.iter().map(|e| e.0.to_string()).collect();

@@ -761,3 +761,53 @@ fn issue_11_finding_5_glyphs_are_in_the_picture_and_thinned() {
         "{glyph_elements} glyph elements"
     );
 }
+
+// ------------------------------------------------------------ finding 11: help and reports
+
+#[test]
+fn issue_11_finding_11_help_and_reports_read_plainly() {
+    let help = success(camber().args(["surface", "--help"]));
+    assert!(
+        help.contains("\"face_edge\"") && help.contains("\"neighbour_edge\""),
+        "{help}"
+    );
+    assert!(!help.contains("\"edge\""), "{help}");
+    let mut seen = std::collections::BTreeSet::new();
+    for op in ["split", "insert-knot", "elevate", "reverse", "reparam"] {
+        let help = success(camber().args(["op", "x.json", op, "--help"]));
+        let line = help
+            .lines()
+            .find(|l| l.trim_start().starts_with("-o, --output"))
+            .unwrap()
+            .to_owned();
+        assert_eq!(line.contains("first piece"), op == "split", "{op}: {line}");
+        assert!(
+            seen.insert(line.clone()),
+            "{op} repeats another -o help: {line}"
+        );
+    }
+    // check's header lists entities and constraints apart; solve names its solver in words.
+    let text = success(camber().arg("check").arg(sketch("blade_section.json")));
+    assert!(
+        text.starts_with("component 1 (entities 0, 1, 2, 3; constraints 4, 5, 6, 7, 8, 9): "),
+        "{text}"
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let done = write(
+        dir.path(),
+        "done.json",
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "point", "at": [0, 0]}],
+            "constraints": [{"id": 1, "kind": "fixed", "target": {"point": {"point": 0}}}]}"#,
+    );
+    let text = success(
+        camber()
+            .arg("solve")
+            .arg(&done)
+            .arg("-o")
+            .arg(dir.path().join("o.json")),
+    );
+    assert!(
+        !text.contains("solver None") && !text.contains("DenseMinNorm"),
+        "{text}"
+    );
+}
