@@ -7,11 +7,19 @@
 //!
 //! ```text
 //! camber eval CURVE.json --at 0,0.5,1 [--derivs K]      points, derivatives, curvature as JSON
+//! camber eval CURVE.json --arc-length [--at U,…]       length (and length to each U) as JSON
 //! camber op CURVE.json split --at U -o A.json --second B.json
 //! camber op CURVE.json insert-knot --at U [--times R] -o OUT.json
 //! camber op CURVE.json elevate [--times T] -o OUT.json
 //! camber op CURVE.json reverse -o OUT.json
 //! camber op CURVE.json reparam --to A,B -o OUT.json
+//! camber op CURVE.json extend [--end start|end] (--to U | --length L [--continuity g1|g2]) -o OUT.json
+//! camber op POINTS.json fit [--degree P] (--tolerance TOL | --control-points N [--fixed-ends]) -o OUT.json
+//! camber op POINTS.json interpolate [--degree P] [--params uniform|chord|centripetal] -o OUT.json
+//! camber op CURVE.json remove-knot (--at U [--times R] | --all) [--tolerance TOL] -o OUT.json
+//! camber op CURVE.json reduce-degree [--tolerance TOL] -o OUT.json
+//! camber op CURVE.json offset --distance D [--tolerance TOL] -o OUT.json
+//! camber intersect A.json B.json [--tolerance TOL]     intersections and closest pair as JSON
 //! camber render-curve CURVE.json -o PIC.svg [--combs]
 //! camber surface CASE.json -o FACE.json [--plot PIC.svg]
 //! camber solve SKETCH.json -o OUT.json [--svg PIC.svg] [--json]   solve, write, report
@@ -39,6 +47,9 @@ pub mod commands;
 pub mod curve_file;
 pub mod draw;
 pub mod editor;
+// The fuzz targets' entry points (fuzz/), shared with their corpus replay test; not an API.
+#[doc(hidden)]
+pub mod fuzz_support;
 pub mod output;
 pub mod scene;
 pub mod sketch_file;
@@ -48,7 +59,8 @@ use anyhow::Result;
 use clap::{Parser, Subcommand};
 
 use commands::{
-    bench as bench_cmd, check, demo, edit, eval, op, render, render_curve, solve, surface,
+    bench as bench_cmd, check, demo, edit, eval, intersect, op, render, render_curve, solve,
+    surface,
 };
 
 /// The camber command line: curve files, surface deformation and SVG pictures.
@@ -75,9 +87,12 @@ nothing, never over an input. Full reference: docs/cli.md.";
 pub enum Command {
     /// Evaluate a curve file: point, derivatives and signed curvature per parameter, as JSON.
     Eval(eval::EvalArgs),
-    /// Edit a curve file: split, insert-knot, elevate, reverse, reparam.
+    /// Edit a curve file: split, insert-knot, elevate, reverse, reparam, extend, remove-knot,
+    /// reduce-degree, offset; fit and interpolate a points file.
     #[command(after_help = OP_HELP)]
     Op(op::OpArgs),
+    /// Where two curve files meet (both parameters, tangential or not) and their closest pair.
+    Intersect(intersect::IntersectArgs),
     /// Draw a curve file as SVG: the curve, its control polygon, optionally curvature combs.
     RenderCurve(render_curve::RenderCurveArgs),
     /// Deform a face to G1 continuity with its neighbours; write the face, print the report.
@@ -101,7 +116,9 @@ pub enum Command {
 const OP_HELP: &str = "\
 Supported:  split (all types; Hermite pieces are reparameterized to [0, 1]),
             insert-knot (bspline, nurbs), elevate (bezier, bspline, nurbs),
-            reverse (all), reparam (bspline, nurbs).
+            reverse (all), reparam (bspline, nurbs), extend (all), remove-knot (bspline,
+            nurbs), reduce-degree (bezier, bspline, nurbs), offset (all);
+            fit and interpolate read a points file ([[x, y], ...]) instead of a curve.
 split writes the piece before U to -o and the piece after U to --second.
 Example:    camber op blade.json split --at 0.5 -o front.json --second back.json";
 
@@ -110,6 +127,7 @@ pub fn run(cli: &Cli) -> Result<()> {
     match &cli.command {
         Command::Eval(a) => eval::run(a),
         Command::Op(a) => op::run(a),
+        Command::Intersect(a) => intersect::run(a),
         Command::RenderCurve(a) => render_curve::run(a),
         Command::Surface(a) => surface::run(a),
         Command::Solve(a) => solve::run(a),

@@ -282,6 +282,98 @@ pub enum Error {
         /// The largest degree supported.
         max: usize,
     },
+    /// A tolerance (arc length, fitting, knot removal, offset, intersection) that must be
+    /// positive is zero or negative.
+    ///
+    /// ```
+    /// use camber_geom::arc_length::arc_length;
+    /// use camber_geom::{BezierCurve2, Error};
+    /// use nalgebra::Point2;
+    /// let c = BezierCurve2::try_new(vec![Point2::new(0.0, 0.0), Point2::new(1.0, 0.0)])?;
+    /// assert_eq!(arc_length(&c, 0.0).unwrap_err(), Error::NonPositiveTolerance { value: 0.0 });
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("tolerance {value} is not positive")]
+    NonPositiveTolerance {
+        /// The tolerance given.
+        value: f64,
+    },
+    /// An arc length outside [0, length of the curve].
+    ///
+    /// ```
+    /// use camber_geom::arc_length::parameter_at_length;
+    /// use camber_geom::{BezierCurve2, Error};
+    /// use nalgebra::Point2;
+    /// let c = BezierCurve2::try_new(vec![Point2::new(0.0, 0.0), Point2::new(2.0, 0.0)])?;
+    /// assert!(matches!(parameter_at_length(&c, 3.0, 1e-12), Err(Error::LengthOutsideCurve { .. })));
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("arc length {value} is outside the curve's length [0, {length}]")]
+    LengthOutsideCurve {
+        /// The arc length asked for.
+        value: f64,
+        /// The curve's length.
+        length: f64,
+    },
+    /// An extension target that does not lie beyond the end it extends (a new start must be
+    /// below the domain start, a new end above the domain end; a length must be positive).
+    ///
+    /// ```
+    /// use camber_geom::extend::CurveEnd;
+    /// use camber_geom::{BezierCurve2, Error};
+    /// use nalgebra::Point2;
+    /// let c = BezierCurve2::try_new(vec![Point2::new(0.0, 0.0), Point2::new(1.0, 0.0)])?;
+    /// assert!(matches!(c.extrapolated(CurveEnd::End, 0.5), Err(Error::ExtensionInsideDomain { .. })));
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("extension target {value} does not lie beyond the domain [{min}, {max}]")]
+    ExtensionInsideDomain {
+        /// The target parameter (or length).
+        value: f64,
+        /// Start of the domain.
+        min: f64,
+        /// End of the domain.
+        max: f64,
+    },
+    /// Fewer data points than an interpolation or fit of this degree needs.
+    #[error("{found} data points are too few for degree {degree} (at least {needed})")]
+    TooFewDataPoints {
+        /// Degree of the curve asked for.
+        degree: usize,
+        /// Points needed.
+        needed: usize,
+        /// Points given.
+        found: usize,
+    },
+    /// Two consecutive data points coincide, so chord-length or centripetal parameters are not
+    /// defined (point `index` equals point `index` − 1).
+    #[error("data point {index} coincides with the point before it")]
+    CoincidentDataPoints {
+        /// Index of the repeated point.
+        index: usize,
+    },
+    /// A linear system of an interpolation or fit is singular (the data and knots do not
+    /// determine the control points).
+    #[error("the {what} system is singular")]
+    SingularSystem {
+        /// Which system ("interpolation", "least-squares").
+        what: &'static str,
+    },
+    /// A knot value that is not an interior knot of the curve.
+    #[error("{value} is not an interior knot of the curve")]
+    KnotNotFound {
+        /// The value asked for.
+        value: f64,
+    },
+    /// A search (curve–curve intersection) produced more candidates than its limit, as for
+    /// curves that overlap along a stretch.
+    #[error("more than {limit} candidate {what}: the curves may overlap")]
+    TooManyCandidates {
+        /// What was counted.
+        what: &'static str,
+        /// The limit.
+        limit: usize,
+    },
 }
 
 /// Result with camber-geom's [`Error`].

@@ -89,6 +89,20 @@ impl<T: Scalar> KnotVector<T> {
         Ok(())
     }
 
+    /// The knots of a Bézier curve of `degree` p on [0, 1]: p + 1 zeros then p + 1 ones, so that
+    /// the B-spline basis on them is the Bernstein basis and a Bézier curve (or a line, p = 1)
+    /// evaluates through the same basis code as a B-spline.
+    ///
+    /// ```
+    /// use camber_geom::KnotVector;
+    /// assert_eq!(KnotVector::<f64>::bezier(2).as_slice(), &[0.0, 0.0, 0.0, 1.0, 1.0, 1.0]);
+    /// ```
+    pub fn bezier(degree: usize) -> Self {
+        let mut knots = vec![T::zero(); degree + 1];
+        knots.extend(std::iter::repeat_n(T::one(), degree + 1));
+        Self { knots }
+    }
+
     /// The clamped uniform knot vector on [0, 1] for `control_points` control points of
     /// `degree`: p + 1 zeros, n − p equally spaced interior knots, p + 1 ones.
     pub fn clamped_uniform(degree: usize, control_points: usize) -> Result<Self> {

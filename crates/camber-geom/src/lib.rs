@@ -32,17 +32,24 @@
 //! - Evaluation writes into caller slices and keeps its scratch on the stack
 //!   (see [`basis::INLINE_DEGREE`]), so hot loops do not allocate.
 
+pub mod arc_length;
+pub mod banded;
 pub mod basis;
 pub mod bernstein;
 pub mod bezier;
 pub mod bspline;
 pub mod composite;
 pub mod curve;
+pub mod degree_reduction;
 pub mod errors;
+pub mod extend;
+pub mod fit;
 pub mod hermite;
 pub mod knot_ops;
+pub mod knot_removal;
 pub mod knots;
 pub mod nurbs;
+pub mod offset;
 pub mod primitives;
 pub mod queries;
 pub mod scalar;

@@ -304,7 +304,7 @@ impl Sketch {
             match factorize(&lin.jacobian.select_rows(&all)) {
                 Ok(f) => (all, Some(f)),
                 Err(camber_solve::Error::RankDeficient { .. }) => {
-                    let rows = analysed_rows(crate::solve::NAMING_ANALYSIS_MAX_ENTRIES)?;
+                    let rows = analysed_rows(usize::MAX)?;
                     let f = factorize(&lin.jacobian.select_rows(&rows))?;
                     (rows, Some(f))
                 }

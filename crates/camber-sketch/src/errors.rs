@@ -207,8 +207,12 @@ pub enum Error {
         /// The entity named twice.
         entity: EntityId,
     },
-    /// After the solve, the curve's tangent vanishes at a contact (a cusp). Nothing was moved.
-    #[error("{constraint} would leave a cusp at its contact (|C′| = {speed})")]
+    /// After the solve, the curve's tangent vanishes at a contact, or an oriented tangent
+    /// (a joint's, a recorded tangent direction's) collapses to zero length (a cusp). Nothing
+    /// was moved.
+    #[error(
+        "{constraint} would leave a cusp where it holds: the tangent vanishes (|C′| = {speed})"
+    )]
     Cusp {
         /// The contact constraint.
         constraint: ConstraintId,

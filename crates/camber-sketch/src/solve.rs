@@ -11,9 +11,7 @@ use crate::component::Component;
 use crate::errors::Result;
 use crate::sketch::Sketch;
 
-pub use crate::component::policy::{
-    default_options, penetration_tolerance, MAX_ACTIVE_ROWS, NAMING_ANALYSIS_MAX_ENTRIES,
-};
+pub use crate::component::policy::{default_options, penetration_tolerance, MAX_ACTIVE_ROWS};
 
 /// The outcome of one component's solve.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]

@@ -252,3 +252,35 @@ fn issue_13_case_6_nonlinear_drags_keep_contacts_honest() {
         assert!(accepted > 0, "control point {k}: every step refused");
     }
 }
+
+/// Case 2: a coincidence between two fixed points (0, 0) and (1, 0). Its y row is consistent
+/// and its x row is not: the constraint is conflicting, and only conflicting (deleting it would
+/// change what the sketch asks for).
+#[test]
+fn issue_13_case_2_a_constraint_is_never_both_redundant_and_conflicting() {
+    let mut s = Sketch::new();
+    let a = s.add_point(Point2::new(0.0, 0.0)).unwrap();
+    let b = s.add_point(Point2::new(1.0, 0.0)).unwrap();
+    s.add_constraint(Fixed::entity(a)).unwrap();
+    s.add_constraint(Fixed::entity(b)).unwrap();
+    let coincidence = s
+        .add_constraint(camber_sketch::constraints::Coincident {
+            a: PointRef::Point(a),
+            b: PointRef::Point(b),
+        })
+        .unwrap();
+    let analyses = s.analyze().unwrap();
+    let conflicting: Vec<_> = analyses
+        .iter()
+        .flat_map(|c| c.analysis.conflicting.clone())
+        .collect();
+    let redundant: Vec<_> = analyses
+        .iter()
+        .flat_map(|c| c.analysis.redundant.clone())
+        .collect();
+    assert!(conflicting.contains(&coincidence), "{analyses:?}");
+    assert!(
+        conflicting.iter().all(|c| !redundant.contains(c)),
+        "redundant {redundant:?}, conflicting {conflicting:?}"
+    );
+}

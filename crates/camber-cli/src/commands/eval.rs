@@ -19,7 +19,7 @@ pub struct EvalArgs {
     #[arg(
         long,
         value_delimiter = ',',
-        required = true,
+        required_unless_present = "arc_length",
         allow_negative_numbers = true,
         value_name = "U[,U...]"
     )]
@@ -28,6 +28,17 @@ pub struct EvalArgs {
     /// curve's degree are zero.
     #[arg(long, default_value_t = 1, value_name = "K", value_parser = derivative_count)]
     pub derivs: usize,
+    /// Print the arc length instead (and, with --at, the length from the start to each U).
+    #[arg(long)]
+    pub arc_length: bool,
+    /// The absolute tolerance of the arc length (length units).
+    #[arg(
+        long,
+        default_value_t = 1e-10,
+        value_name = "TOL",
+        requires = "arc_length"
+    )]
+    pub tolerance: f64,
 }
 
 /// The most derivatives `eval` reports. Beyond a polynomial curve's degree they are zero, and a
@@ -50,6 +61,11 @@ fn derivative_count(s: &str) -> std::result::Result<usize, String> {
 /// signed curvature (positive when the curve turns left; `null` where the speed is zero).
 pub fn run(args: &EvalArgs) -> Result<()> {
     let curve = curve_file::load(&args.curve)?;
+    if args.arc_length {
+        let report = super::arc_length::measure(curve.as_parametric(), &args.at, args.tolerance)
+            .with_context(|| args.curve.display().to_string())?;
+        return crate::print_stdout(&serde_json::to_string_pretty(&report)?);
+    }
     let values = evaluate(curve.as_parametric(), &args.at, args.derivs)
         .with_context(|| args.curve.display().to_string())?;
     crate::print_stdout(&serde_json::to_string_pretty(&values)?)

@@ -14,6 +14,7 @@ use anyhow::{bail, Context, Result};
 use camber_geom::curve::check_interior_parameter;
 use clap::{Args, Subcommand};
 
+use super::geometry_op::{self, GeometryOp};
 use crate::curve_file::{self, Curve};
 
 /// Arguments of `camber op`.
@@ -91,6 +92,10 @@ pub enum Op {
         #[command(flatten)]
         out: Output,
     },
+    /// Extension, fitting, interpolation, knot removal, degree reduction and offsets
+    /// (see [`geometry_op`]).
+    #[command(flatten)]
+    Geometry(GeometryOp),
 }
 
 /// Parses `A,B` into two numbers.
@@ -116,6 +121,7 @@ impl Op {
             Op::Elevate { .. } => "elevate",
             Op::Reverse { .. } => "reverse",
             Op::Reparam { .. } => "reparam",
+            Op::Geometry(g) => g.name(),
         }
     }
 
@@ -130,6 +136,7 @@ impl Op {
             )
         };
         let out = match (self, curve) {
+            (Op::Geometry(g), c) => vec![g.apply(c)?.0],
             (Op::Split { at, .. }, c) => {
                 check_interior_parameter(*at, c.as_parametric().domain())
                     .with_context(|| format!("cannot split at {at}"))?;
@@ -174,6 +181,7 @@ impl Op {
             | Op::Elevate { out, .. }
             | Op::Reverse { out }
             | Op::Reparam { out, .. } => vec![&out.output],
+            Op::Geometry(g) => vec![g.output()],
         }
     }
 }
@@ -185,6 +193,9 @@ fn pair<C>((a, b): (C, C), wrap: fn(C) -> Curve) -> Vec<Curve> {
 /// Loads the curve, applies the operation, writes the result file(s) and prints one line per
 /// file written.
 pub fn run(args: &OpArgs) -> Result<()> {
+    if let Op::Geometry(g) = &args.op {
+        return geometry_op::run(&args.curve, g);
+    }
     let curve = curve_file::load(&args.curve)?;
     let results = args
         .op

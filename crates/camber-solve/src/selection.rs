@@ -23,12 +23,13 @@ use crate::analysis::{self, DofAnalysis};
 use crate::errors::{Error, Result};
 use crate::evaluator::{norm2, Evaluator};
 use crate::ids::ConstraintId;
+use crate::linear::solve_linear;
 use crate::newton::{self, NewtonWorkspace};
 use crate::nonlinear::SolverChoice;
+use crate::options::Options;
 use crate::problem::Problem;
 use crate::report::{ConstraintResidual, SolveReport, SolverKind, Status};
 use crate::soft;
-use crate::solve::{solve_linear, Options};
 
 /// What the analysis at the start says, carried into every report.
 #[derive(Debug, Clone)]
