@@ -9,7 +9,7 @@ use std::path::Path;
 use anyhow::{anyhow, Context, Result};
 use camber_sketch::{ConstraintId, Error, Sketch};
 
-use crate::curve_file::{read_text, write_text};
+use crate::curve_file::read_text;
 
 /// Reads and validates a sketch file; errors start with the file name.
 pub fn load(path: &Path) -> Result<Sketch> {
@@ -27,7 +27,7 @@ pub fn save(path: &Path, sketch: &Sketch) -> Result<()> {
     let text = camber_sketch::file::to_json(sketch)
         .map_err(|e| anyhow!("{e}"))
         .with_context(|| path.display().to_string())?;
-    write_text(path, &text)
+    crate::output::write_all(&[], &[(path.to_path_buf(), text)])
 }
 
 /// "constraint 4 (G1 join)", "the drag target" for the drag's own pin, or "constraint 4" when
