@@ -1,6 +1,7 @@
 //! The `camber` command line as a library: the argument definitions, one module per
 //! subcommand, the curve file format, the SVG writer (which the sketch commands reuse), the
-//! scene that `render` and the editor both draw, and the editor's request handling.
+//! scene that `render` and the editor both draw, the editor's request handling, and
+//! [`output`], through which every command writes its files all or nothing.
 //!
 //! The binary (`src/main.rs`) only parses the arguments, calls [`run`] and turns an error into
 //! one line on stderr with exit code 2. The commands:
