@@ -81,6 +81,8 @@ function fit() {
     e.points.forEach((p) => grow(p, e.radius ?? 0));
     (e.samples ?? []).forEach((p) => grow(p));
   }
+  // Glyphs too: a target ring away from its curve (a conflicting target) must be in view.
+  for (const list of glyphs.values()) list.forEach((g) => grow(g.at));
   if (!(lo[0] <= hi[0])) {
     lo = [-1, -1];
     hi = [1, 1];

@@ -214,9 +214,13 @@ pub fn load(path: &Path) -> Result<Curve> {
     Curve::from_json(&text).with_context(|| path.display().to_string())
 }
 
-/// Writes a curve file; errors name the file.
+/// Writes a curve file whole (a temporary file renamed into place, see [`crate::output`]);
+/// errors name the file.
 pub fn save(path: &Path, curve: &Curve) -> Result<()> {
-    write_text(path, &curve.to_json()?)
+    let text = curve
+        .to_json()
+        .with_context(|| path.display().to_string())?;
+    crate::output::write_all(&[], &[(path.to_path_buf(), text)])
 }
 
 /// The largest input file the commands read: 64 MiB, far above any sketch or curve (the

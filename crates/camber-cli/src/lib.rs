@@ -1,6 +1,7 @@
 //! The `camber` command line as a library: the argument definitions, one module per
 //! subcommand, the curve file format, the SVG writer (which the sketch commands reuse), the
-//! scene that `render` and the editor both draw, and the editor's request handling.
+//! scene that `render` and the editor both draw, the editor's request handling, and
+//! [`output`], through which every command writes its files all or nothing.
 //!
 //! The binary (`src/main.rs`) only parses the arguments, calls [`run`] and turns an error into
 //! one line on stderr with exit code 2. The commands:
@@ -22,10 +23,10 @@
 //! camber intersect A.json B.json [--tolerance TOL]     intersections and closest pair as JSON
 //! camber render-curve CURVE.json -o PIC.svg [--combs]
 //! camber surface CASE.json -o FACE.json [--plot PIC.svg]
-//! camber solve SKETCH.json -o OUT.json [--svg PIC.svg]   solve, write, report per component
-//! camber check SKETCH.json                              DOF, redundant and conflicting constraints
+//! camber solve SKETCH.json -o OUT.json [--svg PIC.svg] [--json]   solve, write, report
+//! camber check SKETCH.json [--json]                     DOF, redundant and conflicting constraints
 //! camber render SKETCH.json -o PIC.svg [--combs]        draw a sketch with constraint glyphs
-//! camber edit SKETCH.json [--port N] [--bind ADDR] [-o OUT.json] [--open]   the web editor
+//! camber edit SKETCH.json [--port N] [--bind ADDR --allow-remote] [-o OUT.json] [--open]
 //! camber demo [-o DIR]                                  solve the bundled blade section
 //! camber bench [--only W2,W3] [--quick] [--sizes N,…] [--json]   the standard workloads
 //! ```
@@ -79,7 +80,8 @@ Curve files are JSON objects tagged by \"type\" (2D points as [x, y]):
   {\"type\": \"bspline\", \"degree\": 2, \"knots\": [0, 0, 0, 1, 1, 1], \"control_points\": [...]}
   {\"type\": \"nurbs\",   \"degree\": 2, \"knots\": [...], \"control_points\": [...], \"weights\": [...]}
   {\"type\": \"hermite\", \"p0\": [0, 0], \"p1\": [1, 0], \"t0\": [1, 1], \"t1\": [1, -1]}
-Errors print one line `error: ...` and exit with code 2.";
+Errors print one line `error: ...` and exit with code 2. Output files are written all or
+nothing, never over an input. Full reference: docs/cli.md.";
 
 /// The subcommands.
 #[derive(Debug, Subcommand)]
@@ -98,7 +100,8 @@ pub enum Command {
     Surface(surface::SurfaceArgs),
     /// Solve a sketch file: write the result, print solver, DOF, residual and time per component.
     Solve(solve::SolveArgs),
-    /// The DOF analysis of a sketch file: free DOF, redundant and conflicting constraints.
+    /// The DOF analysis of a sketch file: free DOF, redundant and conflicting constraints,
+    /// warnings; exit 0 when the analysis runs (conflicts included), 2 otherwise.
     Check(check::CheckArgs),
     /// Draw a sketch file as SVG with constraint glyphs; conflicting constraints in red.
     Render(render::RenderArgs),

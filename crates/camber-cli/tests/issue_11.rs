@@ -650,3 +650,164 @@ fn issue_11_finding_8_numbers_in_messages_have_bounded_digits() {
         "{err}"
     );
 }
+
+// ------------------------------------------------------------ finding 5: pictures
+
+/// Renders `text` as a sketch and returns the SVG and its viewBox.
+fn render(dir: &Path, name: &str, text: &str) -> (String, [f64; 4]) {
+    let path = write(dir, name, text);
+    let svg = dir.join(format!("{name}.svg"));
+    success(camber().arg("render").arg(&path).arg("-o").arg(&svg));
+    let picture = std::fs::read_to_string(&svg).unwrap();
+    let doc = roxmltree::Document::parse(&picture).unwrap();
+    let v: Vec<f64> = doc
+        .root_element()
+        .attribute("viewBox")
+        .unwrap()
+        .split_whitespace()
+        .map(|x| x.parse().unwrap())
+        .collect();
+    assert!(
+        !picture.contains("NaN") && !picture.contains("inf"),
+        "{picture}"
+    );
+    (picture, [v[0], v[1], v[2], v[3]])
+}
+
+/// Whether SVG point (x, y) lies inside the viewBox.
+fn inside([x0, y0, w, h]: [f64; 4], x: f64, y: f64) -> bool {
+    x >= x0 && x <= x0 + w && y >= y0 && y <= y0 + h
+}
+
+#[test]
+fn issue_11_finding_5_view_boxes_are_robust() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases = [
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "point", "at": [5, 5]}]}"#,
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "point", "at": [3, -2]}, {"id": 1, "kind": "point", "at": [3, -2]}]}"#,
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "point", "at": [1e308, 1e308]}, {"id": 1, "kind": "point", "at": [-1e308, -1e308]}]}"#,
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "point", "at": [1e300, 0]}]}"#,
+    ];
+    for (i, text) in cases.iter().enumerate() {
+        let (picture, vb) = render(dir.path(), &format!("p{i}"), text);
+        assert!(
+            vb.iter().all(|v| v.is_finite() && v.abs() < 1e6),
+            "{i}: {vb:?}"
+        );
+        assert!(vb[2] > 0.0 && vb[3] > 0.0, "{vb:?}");
+        // Every point dot is inside the box.
+        let doc = roxmltree::Document::parse(&picture).unwrap();
+        for c in doc.descendants().filter(|n| n.has_tag_name("circle")) {
+            let (x, y): (f64, f64) = (
+                c.attribute("cx").unwrap().parse().unwrap(),
+                c.attribute("cy").unwrap().parse().unwrap(),
+            );
+            assert!(inside(vb, x, y), "{i}: ({x}, {y}) outside {vb:?}");
+        }
+    }
+}
+
+#[test]
+fn issue_11_finding_5_glyphs_are_in_the_picture_and_thinned() {
+    let dir = tempfile::tempdir().unwrap();
+    // A target ring far from its curve (the constraint is not yet solved) is inside the box.
+    let (picture, vb) = render(
+        dir.path(),
+        "ring",
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "bezier", "control_points": [[0, 0], [1, 1], [2, 0]]}],
+            "constraints": [{"id": 1, "kind": "point_at_parameter", "curve": 0, "u": 0.5, "target": {"at": [1, 50]}}]}"#,
+    );
+    let doc = roxmltree::Document::parse(&picture).unwrap();
+    let scale = 400.0 / 50.0; // the box's larger side is 50 model units → 400 SVG units
+    assert!(inside(vb, 1.0 * scale, -50.0 * scale), "{vb:?}");
+    let rings: Vec<_> = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("circle") && n.attribute("fill") == Some("none"))
+        .collect();
+    assert!(!rings.is_empty());
+    for c in rings {
+        let x: f64 = c.attribute("cx").unwrap().parse().unwrap();
+        let y: f64 = c.attribute("cy").unwrap().parse().unwrap();
+        assert!(inside(vb, x, y), "ring at ({x}, {y}) outside {vb:?}");
+    }
+    // A radius constraint has a glyph.
+    let (picture, _) = render(
+        dir.path(),
+        "radius",
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "circle", "center": [0, 0], "radius": 2}],
+            "constraints": [{"id": 1, "kind": "radius", "circle": 0, "radius": 2}]}"#,
+    );
+    assert!(picture.contains(">R</text>"), "{picture}");
+    // The 1,000-segment chain: at most a few hundred constraints carry glyphs in the picture.
+    let svg = dir.path().join("chain.svg");
+    success(
+        camber()
+            .arg("render")
+            .arg(sketch("w3a_chain_1000.json"))
+            .arg("-o")
+            .arg(&svg),
+    );
+    let picture = std::fs::read_to_string(&svg).unwrap();
+    let doc = roxmltree::Document::parse(&picture).unwrap();
+    let glyph_colour = camber_cli::commands::render::GLYPH;
+    let glyph_elements = doc
+        .descendants()
+        .filter(|n| {
+            n.attribute("stroke") == Some(glyph_colour) || n.attribute("fill") == Some(glyph_colour)
+        })
+        .count();
+    assert!(
+        glyph_elements <= 3 * 200 * 2,
+        "{glyph_elements} glyph elements"
+    );
+}
+
+// ------------------------------------------------------------ finding 11: help and reports
+
+#[test]
+fn issue_11_finding_11_help_and_reports_read_plainly() {
+    let help = success(camber().args(["surface", "--help"]));
+    assert!(
+        help.contains("\"face_edge\"") && help.contains("\"neighbour_edge\""),
+        "{help}"
+    );
+    assert!(!help.contains("\"edge\""), "{help}");
+    let mut seen = std::collections::BTreeSet::new();
+    for op in ["split", "insert-knot", "elevate", "reverse", "reparam"] {
+        let help = success(camber().args(["op", "x.json", op, "--help"]));
+        let line = help
+            .lines()
+            .find(|l| l.trim_start().starts_with("-o, --output"))
+            .unwrap()
+            .to_owned();
+        assert_eq!(line.contains("first piece"), op == "split", "{op}: {line}");
+        assert!(
+            seen.insert(line.clone()),
+            "{op} repeats another -o help: {line}"
+        );
+    }
+    // check's header lists entities and constraints apart; solve names its solver in words.
+    let text = success(camber().arg("check").arg(sketch("blade_section.json")));
+    assert!(
+        text.starts_with("component 1 (entities 0, 1, 2, 3; constraints 4, 5, 6, 7, 8, 9): "),
+        "{text}"
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let done = write(
+        dir.path(),
+        "done.json",
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "point", "at": [0, 0]}],
+            "constraints": [{"id": 1, "kind": "fixed", "target": {"point": {"point": 0}}}]}"#,
+    );
+    let text = success(
+        camber()
+            .arg("solve")
+            .arg(&done)
+            .arg("-o")
+            .arg(dir.path().join("o.json")),
+    );
+    assert!(
+        !text.contains("solver None") && !text.contains("DenseMinNorm"),
+        "{text}"
+    );
+}

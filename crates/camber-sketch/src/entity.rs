@@ -14,7 +14,9 @@
 //! Rⱼ = wⱼNⱼ/W,  R′ⱼ = wⱼ(N′ⱼ·W − Nⱼ·W′)/W².
 //!
 //! [`Entity::coefficients`] returns those cⱼ (only the p + 1 that can be non-zero), which makes
-//! every built-in constraint a constant-coefficient combination of control-point blocks.
+//! every constraint at a *given* parameter a constant-coefficient combination of control-point
+//! blocks (an affine constraint); those with a free parameter, distances, angles and lengths are
+//! nonlinear.
 
 use camber_geom::{BSplineCurve2, BezierCurve2, NurbsCurve2};
 use nalgebra::Point2;

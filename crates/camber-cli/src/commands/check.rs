@@ -88,10 +88,10 @@ pub fn check(sketch: &Sketch) -> Result<String> {
     for (k, a) in analyses.iter().enumerate() {
         let d = &a.analysis;
         lines.push(format!(
-            "component {} ({}, {} constraints): {} free unknowns, rank {}, DOF {}",
+            "component {} ({}; {}): {} free unknowns, rank {}, DOF {}",
             k + 1,
             describe_entities(&a.component.entities),
-            a.component.constraints.len(),
+            crate::sketch_file::describe_constraint_ids(&a.component.constraints),
             d.free_unknowns,
             d.rank,
             d.dof

@@ -414,7 +414,10 @@ pub fn run(input: &Path, op: &GeometryOp) -> Result<()> {
         op.apply(&curve).with_context(context)?
     };
     let path = op.output();
-    curve_file::save(path, &result)?;
+    let text = result
+        .to_json()
+        .with_context(|| path.display().to_string())?;
+    crate::output::write_all(&[input], &[(path.to_path_buf(), text)])?;
     println!(
         "wrote {}: {}; {note}",
         path.display(),

@@ -30,7 +30,7 @@ pub struct OpArgs {
 /// Where the result goes.
 #[derive(Debug, Args)]
 pub struct Output {
-    /// The result curve file (for split: the first piece).
+    /// The result curve file.
     #[arg(short, long, value_name = "OUT.json")]
     pub output: PathBuf,
 }
@@ -40,6 +40,7 @@ pub struct Output {
 #[derive(Debug, Subcommand)]
 pub enum Op {
     /// Split at U: the piece before U goes to -o, the piece after U to --second.
+    #[command(mut_arg("output", |a| a.help("The curve file for the first piece (the one before U)")))]
     Split {
         /// The parameter to split at, strictly inside the domain.
         #[arg(long, allow_negative_numbers = true, value_name = "U")]
@@ -52,6 +53,7 @@ pub enum Op {
         second: PathBuf,
     },
     /// Insert the knot U R times (B-spline and NURBS); the shape does not change.
+    #[command(mut_arg("output", |a| a.help("The curve file written: the curve with the knot inserted")))]
     InsertKnot {
         /// The knot value, inside the domain.
         #[arg(long, allow_negative_numbers = true, value_name = "U")]
@@ -64,6 +66,7 @@ pub enum Op {
         out: Output,
     },
     /// Raise the degree T times (Bézier, B-spline, NURBS); the shape does not change.
+    #[command(mut_arg("output", |a| a.help("The curve file written: the curve of raised degree")))]
     Elevate {
         /// How many degrees to add.
         #[arg(long, default_value_t = 1, value_name = "T")]
@@ -73,12 +76,14 @@ pub enum Op {
         out: Output,
     },
     /// Traverse the curve the other way: the new curve at a + b − u is the old one at u.
+    #[command(mut_arg("output", |a| a.help("The curve file written: the reversed curve")))]
     Reverse {
         /// The output file.
         #[command(flatten)]
         out: Output,
     },
     /// Map the domain linearly onto [A, B] (B-spline and NURBS); the shape does not change.
+    #[command(mut_arg("output", |a| a.help("The curve file written: the curve on its new domain")))]
     Reparam {
         /// The new domain, A < B.
         #[arg(long, value_parser = parse_interval, allow_hyphen_values = true, value_name = "A,B")]

@@ -45,6 +45,17 @@ pub fn run(args: &RenderArgs) -> Result<()> {
     crate::print_stdout(&format!("wrote {}", args.output.display()))
 }
 
+/// The most constraints whose glyphs a picture draws; above it every k-th is drawn (and every
+/// conflicting one), so a 1,000-segment chain shows its curve rather than a band of glyphs.
+pub const MAX_GLYPH_CONSTRAINTS: usize = 200;
+
+/// Where a glyph sits, for the picture's box.
+fn glyph_anchor(g: &Glyph) -> nalgebra::Point2<f64> {
+    match g {
+        Glyph::Arrow(p, _) | Glyph::Fixed(p) | Glyph::Ring(p) | Glyph::Mark(p, _) => *p,
+    }
+}
+
 fn draw_glyph(svg: &mut Svg, g: &Glyph, size: f64, colour: &str) {
     match g {
         Glyph::Arrow(a, d) => {
@@ -106,6 +117,29 @@ pub fn picture(sketch: &Sketch, combs: bool) -> Result<String> {
             curves.push((c, samples, e.points().to_vec()));
         }
     }
+    // Glyphs too: a target ring away from its curve (a conflicting target) must be in the
+    // picture. On large sketches only every k-th constraint's glyphs are drawn (all the
+    // conflicting ones), so the curves stay visible.
+    let view = View::new(sketch);
+    let mut marks = Vec::new();
+    for (id, c) in sketch.constraints() {
+        let list = glyphs(&view, c)?;
+        if !list.is_empty() {
+            marks.push((id, list));
+        }
+    }
+    let every = marks.len().div_ceil(MAX_GLYPH_CONSTRAINTS).max(1);
+    let marks: Vec<_> = marks
+        .into_iter()
+        .enumerate()
+        .filter(|(k, (id, _))| k % every == 0 || conflicting.contains(id))
+        .map(|(_, m)| m)
+        .collect();
+    for (_, list) in &marks {
+        for g in list {
+            bbox.include(glyph_anchor(g));
+        }
+    }
     let mut comb_list = Vec::new();
     if combs {
         let (w, h) = bbox.size();
@@ -116,7 +150,6 @@ pub fn picture(sketch: &Sketch, combs: bool) -> Result<String> {
         }
     }
     let mut svg = Svg::new(bbox, 0.08);
-    let view = View::new(sketch);
     let size = 6.0 * svg.unit();
     for comb in &comb_list {
         comb.draw(&mut svg);
@@ -135,14 +168,14 @@ pub fn picture(sketch: &Sketch, combs: bool) -> Result<String> {
             _ => {}
         }
     }
-    for (id, c) in sketch.constraints() {
-        let colour = if conflicting.contains(&id) {
+    for (id, list) in &marks {
+        let colour = if conflicting.contains(id) {
             CONFLICT
         } else {
             GLYPH
         };
-        for g in glyphs(&view, c)? {
-            draw_glyph(&mut svg, &g, size, colour);
+        for g in list {
+            draw_glyph(&mut svg, g, size, colour);
         }
     }
     Ok(svg.finish())

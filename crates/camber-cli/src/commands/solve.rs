@@ -91,7 +91,7 @@ pub fn solve(sketch: &mut Sketch) -> Result<SketchReport> {
 ///   "entities": [{"id": 0, "kind": "point", "at": [0, 0]}, {"id": 1, "kind": "point", "at": [1, 0]}],
 ///   "constraints": [{"id": 2, "kind": "coincident", "a": {"point": 0}, "b": {"point": 1}}]}"#)?;
 /// let report = solve::solve(&mut s)?;
-/// assert!(solve::format_report(&report).starts_with("component 1 (entities 0, 1): solver DenseMinNorm, DOF 2"));
+/// assert!(solve::format_report(&report).starts_with("component 1 (entities 0, 1): solver dense_min_norm, DOF 2"));
 /// # Ok::<(), anyhow::Error>(())
 /// ```
 pub fn format_report(report: &SketchReport) -> String {
@@ -100,10 +100,10 @@ pub fn format_report(report: &SketchReport) -> String {
         let r = &c.report;
         let residual = r.residuals.iter().fold(0.0_f64, |m, g| m.max(g.max_abs));
         lines.push(format!(
-            "component {} ({}): solver {:?}, DOF {}, residual {residual:.3e}, time {:.3} ms",
+            "component {} ({}): solver {}, DOF {}, residual {residual:.3e}, time {:.3} ms",
             k + 1,
             describe_entities(&c.component.entities),
-            r.solver,
+            sketch_file::solver_name(r.solver),
             r.dof,
             r.elapsed.as_secs_f64() * 1e3
         ));

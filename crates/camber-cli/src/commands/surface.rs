@@ -17,8 +17,11 @@ use crate::svg::{Anchor, BBox, Style, Svg};
 /// Arguments of `camber surface`.
 #[derive(Debug, Args)]
 pub struct SurfaceArgs {
-    /// The deformation case: `{"face": SURFACE, "neighbours": [{"surface": SURFACE, "edge":
-    /// "UMax", ...}]}`, as in examples/data/surface_crease10.json.
+    /// The deformation case: `{"face": SURFACE, "neighbours": [{"surface": SURFACE,
+    /// "face_edge": "VMax", "neighbour_edge": "VMin"}]}`, where SURFACE is `{"degree_u",
+    /// "degree_v", "knots_u", "knots_v", "control_points": [[x, y, z], …] (v fastest),
+    /// "weights"}` and edges are UMin, UMax, VMin or VMax; see docs/cli.md and
+    /// examples/data/surface_crease10.json.
     pub case: PathBuf,
     /// Where to write the deformed face (a NURBS surface in the same JSON form).
     #[arg(short, long, value_name = "OUT.json")]

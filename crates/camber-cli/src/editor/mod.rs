@@ -536,7 +536,7 @@ impl EditorState {
                 let r = &c.report;
                 ComponentReportJson {
                     entities: c.component.entities.iter().map(|e| e.0).collect(),
-                    solver: format!("{:?}", r.solver),
+                    solver: crate::sketch_file::solver_name(r.solver).to_owned(),
                     reason: r.reason.clone(),
                     dof: Some(r.dof),
                     residual: r.residuals.iter().fold(0.0_f64, |m, g| m.max(g.max_abs)),
