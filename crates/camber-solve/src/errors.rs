@@ -245,8 +245,10 @@ pub type Result<T> = std::result::Result<T, Error>;
 
 /// The constraints above 1e-9 in `residuals`, largest first, at most five, as text.
 fn worst_residuals(residuals: &[crate::report::ConstraintResidual]) -> String {
-    let mut worst: Vec<&crate::report::ConstraintResidual> =
-        residuals.iter().filter(|r| !(r.max_abs <= 1e-9)).collect();
+    let mut worst: Vec<&crate::report::ConstraintResidual> = residuals
+        .iter()
+        .filter(|r| r.max_abs > 1e-9 || r.max_abs.is_nan())
+        .collect();
     worst.sort_by(|a, b| b.max_abs.total_cmp(&a.max_abs));
     let shown: Vec<String> = worst
         .iter()
