@@ -267,7 +267,11 @@ fn a_contact_on_the_wrong_side_is_refused() {
     assert!(
         matches!(err, Error::ContactCrossed { constraint, .. } if constraint == id)
             || matches!(err, Error::Cusp { constraint, .. } if constraint == id)
-            || matches!(&err, Error::Conflicting { constraints } if constraints.contains(&id)),
+            || matches!(&err, Error::Conflicting { constraints } if constraints.contains(&id))
+            // Or no proof of a conflict (the least-squares search approaches the segment's
+            // collapse without reaching a stationary point), with the contact's residual named.
+            || matches!(&err, Error::Solve(camber_solve::Error::NotSolved { residuals, .. })
+                if residuals.iter().any(|r| r.constraint == id && r.max_abs > 1e-6)),
         "{err:?}"
     );
     assert_eq!(s.entity(c).unwrap(), &before);
