@@ -78,7 +78,7 @@ pub use normal::NormalCache;
 pub use options::Options;
 pub use problem::{Binding, Problem, ProblemState};
 pub use reduced::{Linearization, ReducedMap};
-pub use report::{ConstraintResidual, SolveReport, SolverKind, Status};
+pub use report::{ConstraintResidual, Selection, SolveReport, SolverKind, Status};
 pub use residual::{DynResidual, Residual};
 pub use scalar::Scalar;
 pub use sparse::SparseMatrix;

@@ -8,7 +8,7 @@ use crate::errors::{Error, Result};
 use crate::min_norm::MinNormFactorization;
 use crate::options::Options;
 use crate::problem::Problem;
-use crate::report::{per_constraint, SolveReport, SolverKind, Status};
+use crate::report::{per_constraint, Selection, SolveReport, SolverKind, Status};
 
 /// Rounds of iterative refinement after the minimum-norm step (see
 /// [`MinNormFactorization::solve_refined`]).
@@ -100,6 +100,7 @@ pub fn solve_linear(problem: &mut Problem, options: &Options) -> Result<SolveRep
         return Ok(SolveReport {
             status: Status::AlreadySatisfied,
             solver: SolverKind::None,
+            selection: Selection::AlreadySatisfied,
             reason: "every residual is already within tolerance".to_owned(),
             iterations: 0,
             residuals: per_constraint(&lin.row_owner, &lin.g),
@@ -153,6 +154,7 @@ pub fn solve_linear(problem: &mut Problem, options: &Options) -> Result<SolveRep
     Ok(SolveReport {
         status: Status::Solved,
         solver,
+        selection: Selection::Affine,
         reason: format!(
             "all residuals affine and full row rank{dropped}; {n} reduced unknowns → {backend} \
              (threshold {})",

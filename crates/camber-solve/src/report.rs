@@ -40,6 +40,33 @@ pub enum SolverKind {
     LevenbergMarquardt,
 }
 
+/// Why the solve took its path: the selection's decision, typed (the report's `reason` adds the
+/// details in words: ranks, iterations, what failed before).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+#[non_exhaustive]
+pub enum Selection {
+    /// Every residual was already within tolerance: nothing ran.
+    AlreadySatisfied,
+    /// Every residual is affine: one linear minimum-norm step.
+    Affine,
+    /// Nonlinear with J of full row rank at the start: Newton minimum norm.
+    FullRank,
+    /// Nonlinear with consistent dependent rows at the start: Newton without them.
+    DependentRowsLeftOut,
+    /// Nonlinear with J rank deficient at the start: SLSQP.
+    RankDeficient,
+    /// The first choice failed and a later path (SLSQP after Newton, Levenberg–Marquardt then
+    /// Newton) succeeded.
+    Fallback,
+    /// The soft compromise, asked for in the options.
+    Soft,
+    /// A solver forced in the options.
+    Forced,
+    /// A warm-started Newton step of a drag session.
+    WarmStart,
+}
+
 /// The largest absolute residual of one constraint (over all rows it owns).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct ConstraintResidual {
@@ -76,7 +103,9 @@ pub struct SolveReport {
     pub status: Status,
     /// The solver used.
     pub solver: SolverKind,
-    /// Why that solver (a short sentence).
+    /// Why that solver, typed.
+    pub selection: Selection,
+    /// Why that solver, in words (ranks, iterations, what failed before).
     pub reason: String,
     /// Iterations (1 for the linear solve, 0 when nothing ran).
     pub iterations: usize,

@@ -30,7 +30,7 @@ use crate::newton::{self, NewtonWorkspace};
 use crate::nonlinear::SolverChoice;
 use crate::options::Options;
 use crate::problem::Problem;
-use crate::report::{ConstraintResidual, SolveReport, SolverKind, Status};
+use crate::report::{ConstraintResidual, Selection, SolveReport, SolverKind, Status};
 use crate::soft;
 
 /// What the analysis at the start says, carried into every report.
@@ -113,6 +113,7 @@ impl Start {
     fn report(
         &self,
         solver: SolverKind,
+        selection: Selection,
         reason: String,
         iterations: usize,
         residuals: Vec<ConstraintResidual>,
@@ -122,6 +123,7 @@ impl Start {
         SolveReport {
             status: Status::Solved,
             solver,
+            selection,
             reason,
             iterations,
             residuals,
@@ -140,6 +142,7 @@ impl Start {
         problem.evaluate_at(problem.values(), &mut g)?;
         let mut r = self.report(
             SolverKind::None,
+            Selection::AlreadySatisfied,
             "every residual is already within tolerance".to_owned(),
             0,
             ev.per_constraint(&g),
@@ -271,6 +274,7 @@ fn soft_path(
     problem.apply_reduced(&ev.map, &z)?;
     let mut report = start.report(
         SolverKind::LevenbergMarquardt,
+        Selection::Soft,
         format!(
             "{why}; soft mode: least squares Σg² + ε‖z − z₀‖²_W (ε = {}), cost {:.3e}",
             options.nonlinear.soft_epsilon, run.cost
@@ -354,7 +358,19 @@ pub fn solve(problem: &mut Problem, options: &Options) -> Result<SolveReport> {
                     if rows.is_some() { " (consistent dependent rows left out)" } else { "" },
                     if stationary { "" } else { " (pull-back not fully converged)" }
                 );
-                return Ok(start.report(SolverKind::Newton, reason, iterations, residuals, &z));
+                let selection = if rows.is_some() {
+                    Selection::DependentRowsLeftOut
+                } else {
+                    Selection::FullRank
+                };
+                return Ok(start.report(
+                    SolverKind::Newton,
+                    selection,
+                    reason,
+                    iterations,
+                    residuals,
+                    &z,
+                ));
             }
             Err(e) => notes.push(format!("Newton failed ({e})")),
         }
@@ -378,7 +394,19 @@ pub fn solve(problem: &mut Problem, options: &Options) -> Result<SolveReport> {
                 run.state,
                 run.evaluations
             );
-            return Ok(start.report(SolverKind::Slsqp, reason, run.evaluations, residuals, &z));
+            let selection = if notes.iter().any(|n| n.starts_with("Newton failed")) {
+                Selection::Fallback
+            } else {
+                Selection::RankDeficient
+            };
+            return Ok(start.report(
+                SolverKind::Slsqp,
+                selection,
+                reason,
+                run.evaluations,
+                residuals,
+                &z,
+            ));
         }
         Err(e) => notes.push(format!("SLSQP failed ({e})")),
     }
@@ -404,6 +432,7 @@ pub fn solve(problem: &mut Problem, options: &Options) -> Result<SolveReport> {
             );
             return Ok(start.report(
                 SolverKind::Newton,
+                Selection::Fallback,
                 reason,
                 lm.iterations + iterations,
                 residuals,
@@ -422,6 +451,7 @@ pub fn solve(problem: &mut Problem, options: &Options) -> Result<SolveReport> {
                 );
                 return Ok(start.report(
                     SolverKind::LevenbergMarquardt,
+                    Selection::Fallback,
                     reason,
                     lm.iterations,
                     residuals,
@@ -489,6 +519,7 @@ fn forced(
     match choice {
         SolverChoice::Linear => {
             let mut report = solve_linear(problem, options)?;
+            report.selection = Selection::Forced;
             report.reason = format!("{why}; {}", report.reason);
             Ok(report)
         }
@@ -496,7 +527,14 @@ fn forced(
             let mut ws = NewtonWorkspace::new();
             let (iterations, _, residuals, z) =
                 newton_path(problem, options, &mut ws, &start.z0, &start.z0, None)?;
-            Ok(start.report(SolverKind::Newton, why, iterations, residuals, &z))
+            Ok(start.report(
+                SolverKind::Newton,
+                Selection::Forced,
+                why,
+                iterations,
+                residuals,
+                &z,
+            ))
         }
         SolverChoice::Slsqp => {
             let (run, residuals, z) = slsqp_path(
@@ -507,7 +545,14 @@ fn forced(
                 start.basis.as_deref(),
             )?;
             let reason = format!("{why} ({}, {} evaluations)", run.state, run.evaluations);
-            Ok(start.report(SolverKind::Slsqp, reason, run.evaluations, residuals, &z))
+            Ok(start.report(
+                SolverKind::Slsqp,
+                Selection::Forced,
+                reason,
+                run.evaluations,
+                residuals,
+                &z,
+            ))
         }
         SolverChoice::Soft => soft_path(problem, options, start, &why),
     }
@@ -573,6 +618,7 @@ pub fn solve_newton_from(
     Ok(SolveReport {
         status: Status::Solved,
         solver: SolverKind::Newton,
+        selection: Selection::WarmStart,
         reason: format!(
             "warm-started Newton minimum norm{}",
             if stationary {

@@ -5,7 +5,7 @@ use approx::assert_abs_diff_eq;
 use camber_solve::scalar::cst;
 use camber_solve::{
     solve, solve_newton_from, ConstraintId, Error, NewtonWorkspace, NonlinearOptions, Options,
-    Problem, Residual, Scalar, SolverChoice, SolverKind, Status, Var,
+    Problem, Residual, Scalar, Selection, SolverChoice, SolverKind, Status, Var,
 };
 
 /// |p − c|² − r² for a point block p (c, r fixed).
@@ -234,6 +234,7 @@ fn rank_deficient_start_goes_to_slsqp() {
     }
     let r = solve(&mut p, &Options::default()).unwrap();
     assert_eq!(r.solver, SolverKind::Slsqp, "{}", r.reason);
+    assert_eq!(r.selection, Selection::RankDeficient, "{}", r.reason);
     assert!(r.reason.contains("rank deficient"), "{}", r.reason);
     assert_abs_diff_eq!(p.values()[0], 0.0, epsilon = 1e-9);
     assert_abs_diff_eq!(p.values()[1].abs(), 1.0, epsilon = 1e-9);
@@ -536,5 +537,14 @@ fn a_solve_that_merely_failed_is_not_called_conflicting() {
     }
     assert_eq!(p.values(), &before[..]);
     let mut q = meeting();
-    assert!(solve(&mut q, &Options::default()).is_ok());
+    let solved = solve(&mut q, &Options::default()).unwrap();
+    assert_eq!(
+        (solved.solver, solved.selection),
+        (SolverKind::Newton, Selection::FullRank)
+    );
+    let mut again = meeting();
+    let forced = solve(&mut again, &forced(SolverChoice::Newton)).unwrap();
+    assert_eq!(forced.selection, Selection::Forced);
+    let json = serde_json::to_value(&solved).unwrap();
+    assert_eq!(json["selection"], "full_rank");
 }
