@@ -282,12 +282,26 @@ function renderPanel() {
       ? "updated when the drag ends"
       : `${sci(c.residual)}${c.worst && unsolved ? ` at ${c.worst.id} (${c.worst.kind})` : ""}`;
     comps.appendChild(block(`${k + 1}. entities ${ids(c.entities)}${c.nonlinear ? " (nonlinear)" : ""}`, [
-      ["DOF", a ? `${a.dof} (${a.free_unknowns} free unknowns, rank ${a.rank})` : "not analysed (too large)"],
+      ["DOF", a ? `${a.dof} (${a.free_unknowns} free unknowns, rank ${a.rank})` : "not analysed"],
+      ["free", a ? freeText(a.free) : "–"],
       ["residual", residual, unsolved],
       ["redundant", a ? named(a.redundant) || "none" : "–"],
       ["conflicting", a ? named(a.conflicting) || "none" : "–", a && a.conflicting.length > 0],
     ]));
   });
+}
+
+// What can still move: "3: points 1, 2; 5: radius", or "nothing (fully constrained)".
+function freeText(free) {
+  if (!free || free.length === 0) return "nothing (fully constrained)";
+  return free
+    .map((f) => {
+      const parts = [];
+      if (f.points.length) parts.push(`point${f.points.length > 1 ? "s" : ""} ${f.points.join(", ")}`);
+      if (f.scalars.length) parts.push("radius");
+      return `${f.entity}: ${parts.join(", ")}`;
+    })
+    .join("; ");
 }
 
 function takeState(s, keepView) {

@@ -519,6 +519,11 @@ fn large_components_are_analysed_and_drag() {
     let s = state(&mut ed);
     let analysis = &s["components"][0]["analysis"];
     assert!(analysis["dof"].as_u64().unwrap() > 0, "{analysis}");
+    // What is free is named per entity (the chain's inner control points, say).
+    assert!(
+        !analysis["free"].as_array().unwrap().is_empty(),
+        "{analysis}"
+    );
     assert_eq!(analysis["conflicting"], json!([]));
     let (status, v) = post(
         &mut ed,

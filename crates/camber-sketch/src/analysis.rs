@@ -5,6 +5,7 @@
 
 use camber_solve::DofAnalysis;
 
+pub use crate::component::problem::EntityFreedom;
 use crate::component::Component;
 use crate::errors::Result;
 use crate::sketch::Sketch;
@@ -16,6 +17,17 @@ pub struct ComponentAnalysis {
     pub component: Component,
     /// Free unknowns, rank, DOF, redundant and conflicting constraints.
     pub analysis: DofAnalysis,
+    /// The entities with something still free (points that can move, radii that can change),
+    /// in id order; an entity of the component not listed is fully determined.
+    pub freedom: Vec<EntityFreedom>,
+}
+
+impl ComponentAnalysis {
+    /// Whether every point and radius of `entity` is determined by the constraints.
+    pub fn is_determined(&self, entity: crate::ids::EntityId) -> bool {
+        self.component.entities.contains(&entity)
+            && !self.freedom.iter().any(|f| f.entity == entity)
+    }
 }
 
 /// # Analysis
@@ -33,9 +45,12 @@ impl Sketch {
             cp.name_merged_redundant(&mut analysis.redundant);
             let conflicting = &analysis.conflicting;
             analysis.redundant.retain(|c| !conflicting.contains(c));
+            let mut freedom = cp.freedom(&analysis.rows.free_columns)?;
+            freedom.sort_by_key(|f| f.entity);
             out.push(ComponentAnalysis {
                 component: comp,
                 analysis,
+                freedom,
             });
         }
         Ok(out)

@@ -75,7 +75,7 @@ pub mod solve;
 pub mod vocabulary;
 pub mod warnings;
 
-pub use analysis::ComponentAnalysis;
+pub use analysis::{ComponentAnalysis, EntityFreedom};
 pub use component::{Component, ComponentProblem, DRAG_CONSTRAINT};
 pub use constraints::custom::{Arg, ArgKind, Args, CustomResidual};
 pub use constraints::{Constraint, Custom, Glyph};

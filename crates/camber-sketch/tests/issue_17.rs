@@ -105,3 +105,43 @@ fn issue_17_rectangles_far_from_the_origin_solve_alike() {
         );
     }
 }
+
+/// Item 3: the analysis names what is still free, per entity. A line whose start is fixed and
+/// which is horizontal: its start is determined, its end can slide. A circle with a fixed
+/// centre and a free radius: only the radius. A point fixed outright: nothing (not listed).
+#[test]
+fn issue_17_free_unknowns_are_named_per_entity() {
+    use camber_sketch::constraints::Horizontal;
+    let mut s = Sketch::new();
+    let line = s
+        .add_line(Point2::new(0.0, 0.0), Point2::new(2.0, 0.3))
+        .unwrap();
+    s.add_constraint(Fixed::point(PointRef::Start(line)))
+        .unwrap();
+    s.add_constraint(Horizontal::line(line)).unwrap();
+    let circle = s.add_circle(Point2::new(5.0, 5.0), 1.0).unwrap();
+    s.add_constraint(Fixed::point(PointRef::Control(circle, 0)))
+        .unwrap();
+    let point = s.add_point(Point2::new(-3.0, 1.0)).unwrap();
+    s.add_constraint(Fixed::entity(point)).unwrap();
+    let analyses = s.analyze().unwrap();
+    let find = |e| {
+        analyses
+            .iter()
+            .find(|a| a.component.entities.contains(&e))
+            .unwrap()
+    };
+    let l = find(line);
+    assert_eq!(l.analysis.dof, 1);
+    assert_eq!(l.freedom.len(), 1);
+    assert_eq!(
+        (l.freedom[0].entity, l.freedom[0].points.clone()),
+        (line, vec![1])
+    );
+    let c = find(circle);
+    assert_eq!(c.freedom.len(), 1);
+    assert!(c.freedom[0].points.is_empty() && c.freedom[0].scalars == vec![0]);
+    let p = find(point);
+    assert!(p.freedom.is_empty() && p.is_determined(point));
+    assert!(!l.is_determined(line));
+}

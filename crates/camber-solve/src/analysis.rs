@@ -26,6 +26,7 @@ use nalgebra::{DMatrix, DVector};
 
 use crate::errors::Result;
 use crate::ids::ConstraintId;
+use crate::min_norm::MinNormFactorization;
 use crate::reduced::Linearization;
 use crate::sparse::{check_len, SparseMatrix};
 
@@ -54,6 +55,45 @@ pub struct RowAnalysis {
     pub independent: Vec<usize>,
     /// Rows dependent on earlier rows, in order.
     pub dependent: Vec<DependentRow>,
+    /// The columns (reduced unknowns) that can still move with every independent row held, to
+    /// first order: those with a non-zero entry in some null vector of J. The others are
+    /// determined by the constraints. In increasing order.
+    pub free_columns: Vec<usize>,
+}
+
+/// Two random vectors of the null space of J are drawn (from draws of magnitude 1 to 2); a
+/// column is free when either has an entry above this fraction of its largest one (a
+/// determined column is exactly zero in every null vector, up to rounding), and a vector whose
+/// largest entry is below it is rounding left of a trivial null space.
+const FREE_COLUMN_TOLERANCE: f64 = 1e-8;
+
+/// Uniform draws in ±[1, 2) from a fixed 64-bit LCG: the random combination of null vectors
+/// [`free_columns_of`] needs, reproducible from run to run.
+fn draws(seed: u64, n: usize) -> Vec<f64> {
+    let mut state = seed;
+    (0..n)
+        .map(|_| {
+            state = state
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            let u = (state >> 11) as f64 / (1u64 << 53) as f64;
+            let sign = if state & 1 == 0 { 1.0 } else { -1.0 };
+            sign * (1.0 + u)
+        })
+        .collect()
+}
+
+/// The columns where one of the null vectors `vectors` is not negligible (see
+/// [`FREE_COLUMN_TOLERANCE`]).
+fn free_columns_of(vectors: &[Vec<f64>], n: usize) -> Vec<usize> {
+    let mut free = vec![false; n];
+    for v in vectors {
+        let top = v.iter().fold(0.0_f64, |m, x| m.max(x.abs()));
+        for (f, x) in free.iter_mut().zip(v) {
+            *f |= top > FREE_COLUMN_TOLERANCE && x.abs() > FREE_COLUMN_TOLERANCE * top;
+        }
+    }
+    (0..n).filter(|j| free[*j]).collect()
 }
 
 /// Rank of `j` and its dependent rows, classified against the right-hand side `g`
@@ -120,11 +160,27 @@ pub fn analyze_rows(
             });
         }
     }
+    // Null vectors: random vectors with their components along the accepted rows removed
+    // (twice, for stability).
+    let vectors: Vec<Vec<f64>> = [1_u64, 2]
+        .iter()
+        .map(|seed| {
+            let mut v = DVector::from_vec(draws(*seed, n));
+            for _ in 0..2 {
+                for (q, _) in &basis {
+                    let c = q.dot(&v);
+                    v.axpy(-c, q, 1.0);
+                }
+            }
+            v.as_slice().to_vec()
+        })
+        .collect();
     Ok(RowAnalysis {
         rank,
         scale: sigma_max,
         independent,
         dependent,
+        free_columns: free_columns_of(&vectors, n),
     })
 }
 
@@ -177,11 +233,30 @@ pub fn analyze_rows_sparse(
             }),
         }
     }
+    // Null vectors: random vectors projected onto the null space of the independent rows by
+    // their minimum-norm factorization (sparse Cholesky of J·Jᵀ), which, unlike back
+    // substitution in R, does not amplify along chains.
+    let vectors: Vec<Vec<f64>> = if independent.is_empty() {
+        [1_u64, 2].iter().map(|seed| draws(*seed, n)).collect()
+    } else {
+        let kept = j.select_rows(&independent);
+        let mut projection = MinNormFactorization::try_sparse(&kept, &vec![1.0; n])?;
+        let mut multipliers = vec![0.0; independent.len()];
+        [1_u64, 2]
+            .iter()
+            .map(|seed| {
+                let mut v = vec![0.0; n];
+                projection.project(&draws(*seed, n), &mut v, &mut multipliers)?;
+                Ok(v)
+            })
+            .collect::<Result<_>>()?
+    };
     Ok(RowAnalysis {
         rank: independent.len(),
         scale,
         independent,
         dependent,
+        free_columns: free_columns_of(&vectors, n),
     })
 }
 
@@ -407,7 +482,25 @@ mod tests {
             prop_assert_eq!(&sparse.independent, &dense.independent);
             let verdicts = |a: &RowAnalysis| a.dependent.iter().map(|d| (d.row, d.consistent)).collect::<Vec<_>>();
             prop_assert_eq!(verdicts(&sparse), verdicts(&dense));
+            prop_assert_eq!(&sparse.free_columns, &dense.free_columns);
         }
+    }
+
+    #[test]
+    fn free_columns_are_those_the_rows_leave_movable() {
+        // x₀ = 1 determines x₀; x₁ + x₂ = 3 leaves x₁ and x₂ free (one DOF between them);
+        // x₃ − x₄ = 0 with x₄ = 2 determines both; x₅ appears nowhere.
+        let j = dmatrix![
+            1.0, 0.0, 0.0, 0.0, 0.0, 0.0;
+            0.0, 1.0, 1.0, 0.0, 0.0, 0.0;
+            0.0, 0.0, 0.0, 1.0, -1.0, 0.0;
+            0.0, 0.0, 0.0, 0.0, 1.0, 0.0
+        ];
+        let g = [0.0; 4];
+        let dense = analyze_rows(&j, &g, 1e-10, 1e-10).unwrap();
+        assert_eq!(dense.free_columns, vec![1, 2, 5]);
+        let sparse = analyze_rows_sparse(&SparseMatrix::from_dense(&j), &g, 1e-10, 1e-10).unwrap();
+        assert_eq!(sparse.free_columns, vec![1, 2, 5]);
     }
 
     #[test]
@@ -435,6 +528,8 @@ mod tests {
         let verdicts: Vec<(usize, bool)> =
             a.dependent.iter().map(|d| (d.row, d.consistent)).collect();
         assert_eq!(verdicts, vec![(n - 1, true), (n + 1, false)]);
+        // x₀ = 5 and the differences determine every unknown.
+        assert!(a.free_columns.is_empty());
     }
 
     #[test]

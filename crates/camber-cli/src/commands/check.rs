@@ -58,6 +58,7 @@ pub fn check_json(sketch: &Sketch) -> Result<String> {
             Ok(serde_json::json!({
                 "component": serde_json::to_value(&a.component)?,
                 "analysis": serde_json::to_value(&a.analysis)?,
+                "free": serde_json::to_value(&a.freedom)?,
             }))
         })
         .collect::<serde_json::Result<_>>()?;
@@ -66,6 +67,38 @@ pub fn check_json(sketch: &Sketch) -> Result<String> {
         "warnings": serde_json::to_value(sketch.warnings())?,
     });
     Ok(serde_json::to_string_pretty(&doc)?)
+}
+
+/// What can still move, entity by entity: `entity 3 (line): point 1; entity 5 (circle):
+/// radius`, or `nothing (fully constrained)`.
+fn describe_freedom(sketch: &Sketch, freedom: &[camber_sketch::EntityFreedom]) -> String {
+    if freedom.is_empty() {
+        return "nothing (fully constrained)".to_owned();
+    }
+    freedom
+        .iter()
+        .map(|f| {
+            let kind = sketch
+                .entity(f.entity)
+                .map(|e| e.kind_name())
+                .unwrap_or("entity");
+            let mut parts = Vec::new();
+            if !f.points.is_empty() {
+                let list: Vec<String> = f.points.iter().map(usize::to_string).collect();
+                let noun = if f.points.len() == 1 {
+                    "point"
+                } else {
+                    "points"
+                };
+                parts.push(format!("{noun} {}", list.join(", ")));
+            }
+            if !f.scalars.is_empty() {
+                parts.push("radius".to_owned());
+            }
+            format!("entity {} ({kind}): {}", f.entity.0, parts.join(", "))
+        })
+        .collect::<Vec<_>>()
+        .join("; ")
 }
 
 /// The report of [`run`].
@@ -78,6 +111,7 @@ pub fn check_json(sketch: &Sketch) -> Result<String> {
 ///                   {"id": 2, "kind": "fixed", "target": {"point": {"end": 0}}}]}"#)?;
 /// let text = check::check(&s)?;
 /// assert!(text.contains("DOF 4"), "{text}");
+/// assert!(text.contains("free: entity 0 (Bézier curve): points 1, 2"), "{text}");
 /// # Ok::<(), anyhow::Error>(())
 /// ```
 pub fn check(sketch: &Sketch) -> Result<String> {
@@ -104,6 +138,7 @@ pub fn check(sketch: &Sketch) -> Result<String> {
             "  conflicting: {}",
             describe_constraints(sketch, &d.conflicting)
         ));
+        lines.push(format!("  free: {}", describe_freedom(sketch, &a.freedom)));
     }
     if lines.is_empty() {
         lines.push("empty sketch".to_owned());

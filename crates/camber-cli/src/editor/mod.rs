@@ -645,6 +645,7 @@ pub fn analyse(sketch: &Sketch) -> Result<(Vec<ComponentJson>, BTreeSet<Constrai
                     dof: d.dof,
                     redundant: ConstraintRef::list(sketch, &d.redundant),
                     conflicting: ConstraintRef::list(sketch, &d.conflicting),
+                    free: a.freedom.clone(),
                 },
             );
         }

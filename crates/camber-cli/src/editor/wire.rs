@@ -189,6 +189,8 @@ pub struct AnalysisJson {
     pub redundant: Vec<ConstraintRef>,
     /// Constraints with inconsistent dependent rows.
     pub conflicting: Vec<ConstraintRef>,
+    /// What can still move, entity by entity (entities not listed are fully determined).
+    pub free: Vec<camber_sketch::EntityFreedom>,
 }
 
 /// One connected component: its ids, its DOF analysis, its largest residual now.

@@ -29,6 +29,17 @@ use crate::residuals::{DirectionCross, LineTangency, PointCombination};
 pub const DRAG_CONSTRAINT: ConstraintId = ConstraintId(u64::MAX);
 
 /// Blocks of one entity.
+/// What of an entity can still move with its component's constraints held (to first order).
+#[derive(Debug, Clone, PartialEq, Eq, serde::Serialize)]
+pub struct EntityFreedom {
+    /// The entity.
+    pub entity: EntityId,
+    /// Indices of its points (control points, line ends, a circle's centre) that can move.
+    pub points: Vec<usize>,
+    /// Indices of its scalars (a circle's radius) that can change.
+    pub scalars: Vec<usize>,
+}
+
 #[derive(Debug, Clone)]
 struct EntityBlocks {
     points: Vec<BlockId>,
@@ -567,6 +578,57 @@ impl ComponentProblem {
                 scalars.push(x[self.problem.unknown(*b, 0)?.index()]);
             }
             out.push((*id, e.with_points(&pts, &scalars)?));
+        }
+        Ok(out)
+    }
+
+    /// Which points and scalars of each entity can still move with the constraints held (to
+    /// first order), given the free columns of the DOF analysis (reduced unknowns, see
+    /// [`camber_solve::analysis::RowAnalysis::free_columns`]): an unknown is free when its
+    /// reduced form x = A·z + c reads a free column. Entities with nothing free are left out.
+    ///
+    /// # Errors
+    /// Building the reduced map fails (it does not once the problem was analysed).
+    pub(crate) fn freedom(&self, free_columns: &[usize]) -> Result<Vec<EntityFreedom>> {
+        let map = self.problem.reduced_map()?;
+        let mut free = vec![false; map.vars().len()];
+        for c in free_columns {
+            if let Some(f) = free.get_mut(*c) {
+                *f = true;
+            }
+        }
+        let moves = |b: BlockId, k: usize| -> Result<bool> {
+            let u = self.problem.unknown(b, k)?.index();
+            Ok(map
+                .row(u)
+                .0
+                .iter()
+                .any(|(c, a)| *a != 0.0 && free.get(*c).copied().unwrap_or(false)))
+        };
+        let mut out = Vec::new();
+        for id in &self.component.entities {
+            let Some(blocks) = self.layout.get(id) else {
+                continue;
+            };
+            let mut points = Vec::new();
+            for (i, b) in blocks.points.iter().enumerate() {
+                if moves(*b, 0)? || moves(*b, 1)? {
+                    points.push(i);
+                }
+            }
+            let mut scalars = Vec::new();
+            for (i, b) in blocks.scalars.iter().enumerate() {
+                if moves(*b, 0)? {
+                    scalars.push(i);
+                }
+            }
+            if !points.is_empty() || !scalars.is_empty() {
+                out.push(EntityFreedom {
+                    entity: *id,
+                    points,
+                    scalars,
+                });
+            }
         }
         Ok(out)
     }
