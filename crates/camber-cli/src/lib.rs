@@ -47,7 +47,7 @@ use anyhow::Result;
 use clap::{Parser, Subcommand};
 
 use commands::{
-    bench as bench_cmd, check, demo, edit, eval, op, render, render_curve, solve, surface,
+    batch, bench as bench_cmd, check, demo, edit, eval, op, render, render_curve, solve, surface,
 };
 
 /// The camber command line: curve files, surface deformation and SVG pictures.
@@ -92,6 +92,8 @@ pub enum Command {
     Demo(demo::DemoArgs),
     /// Run the standard workloads W1–W5b: median, p95 and valid counts per case.
     Bench(bench_cmd::BenchArgs),
+    /// Solve every sketch file of a directory in parallel: one JSON line per file.
+    Batch(batch::BatchArgs),
 }
 
 /// Which operation works on which curve type, shown under `camber op --help`.
@@ -115,6 +117,7 @@ pub fn run(cli: &Cli) -> Result<()> {
         Command::Edit(a) => edit::run(a),
         Command::Demo(a) => demo::run(a),
         Command::Bench(a) => bench_cmd::run(a),
+        Command::Batch(a) => batch::run(a),
     }
 }
 

@@ -1,5 +1,6 @@
 //! One module per subcommand; each has an `…Args` struct (clap derive) and a `run` function.
 
+pub mod batch;
 pub mod bench;
 pub mod check;
 pub mod demo;
