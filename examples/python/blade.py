@@ -29,29 +29,28 @@ def comb(curve, samples=120, scale=None):
     n = np.stack([-t[:, 1], t[:, 0]], axis=1) / np.linalg.norm(t, axis=1)[:, None]
     k = curve.signed_curvature(u)
     if scale is None:
-        scale = 0.05 / max(np.abs(k).max(), 1e-12)
+        scale = 0.03 / max(np.abs(k).max(), 1e-12)
     return p, p - scale * k[:, None] * n, scale
 
 
 def draw(sketch, out):
-    fig, ax = plt.subplots(figsize=(12, 4), dpi=120)
+    fig, ax = plt.subplots(figsize=(12, 3.5), dpi=120)
     curves = [sketch.curve(e) for e in sketch.entity_ids() if sketch.entity(e)["kind"] == "bezier"]
-    # One comb scale for the whole section, so the combs compare.
-    kmax = max(np.abs(c.signed_curvature(np.linspace(*c.domain, 200))).max() for c in curves)
-    scale = 0.04 / kmax
+    # One comb scale per curve (the leading and trailing edges curve far more than the
+    # sides): the longest spike of each comb is 0.03 chord.
     for i, c in enumerate(curves):
         a, b = c.domain
         pts = c.evaluate(np.linspace(a, b, 400))
         ax.plot(pts[:, 0], pts[:, 1], lw=2, color=f"C{i}", label=f"curve {i}")
         cp = c.control_points
         ax.plot(cp[:, 0], cp[:, 1], "--o", ms=3, lw=0.8, color=f"C{i}", alpha=0.6)
-        p, tip, _ = comb(c, scale=scale)
+        p, tip, _ = comb(c)
         for (x0, y0), (x1, y1) in zip(p, tip):
             ax.plot([x0, x1], [y0, y1], lw=0.5, color="0.5")
         ax.plot(tip[:, 0], tip[:, 1], lw=0.8, color="0.3")
     ax.set_aspect("equal")
     ax.set_title("blade section: curves, control polygons, curvature combs")
-    ax.legend(loc="upper right", fontsize=8)
+    ax.legend(loc="lower center", ncol=4, fontsize=8)
     fig.tight_layout()
     fig.savefig(out)
     plt.close(fig)

@@ -1,4 +1,4 @@
-"""Batch speed-up: copies of the bundled diffuser and blade sketches solved by
+"""Batch speed-up: copies of the bundled diffuser and two-curves sketches solved by
 ``camber.solve_many`` on 1 and on 2 threads (best of several runs each).
 
     python crates/camber-py/bench/batch.py [COPIES]
@@ -16,7 +16,7 @@ ROOT = Path(__file__).resolve().parents[3]
 def main(copies):
     texts = [
         (ROOT / "examples" / "sketches" / n).read_text()
-        for n in ("diffuser.json", "blade_section.json")
+        for n in ("diffuser.json", "two_curves.json")
     ]
     times = {}
     for threads in (1, 2):
@@ -33,4 +33,4 @@ def main(copies):
 
 
 if __name__ == "__main__":
-    main(int(sys.argv[1]) if len(sys.argv) > 1 else 100)
+    main(int(sys.argv[1]) if len(sys.argv) > 1 else 200)
