@@ -92,6 +92,7 @@ pub struct PyResidual {
     name: String,
     dim: usize,
     sizes: Vec<usize>,
+    affine: bool,
     cache: Mutex<Option<Expansion>>,
 }
 
@@ -162,6 +163,12 @@ impl PyResidual {
                         nd.getattr("hessian")?.call1((row, x.to_vec()))?.extract()?;
                     e.hessians.extend(h.into_iter().flatten());
                 }
+                if e.hessians.len() != self.dim * n * n {
+                    return Err(errors::SketchError::new_err(format!(
+                        "custom constraint {}: Hessian of the wrong shape",
+                        self.name
+                    )));
+                }
             }
             Ok(e)
         })
@@ -203,6 +210,9 @@ impl Residual for PyResidual {
     }
     fn block_sizes(&self) -> Option<Vec<usize>> {
         Some(self.sizes.clone())
+    }
+    fn is_affine(&self) -> bool {
+        self.affine
     }
     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
         let flat: Vec<T> = x.iter().flat_map(|b| b.iter().copied()).collect();
@@ -258,6 +268,7 @@ pub fn custom(
     args: &[Bound<'_, PyAny>],
     dim: usize,
     name: String,
+    affine: bool,
 ) -> PyResult<Custom> {
     let args: Vec<Arg> = args.iter().map(arg).collect::<PyResult<_>>()?;
     let sizes = args
@@ -276,6 +287,7 @@ pub fn custom(
             name,
             dim,
             sizes,
+            affine,
             cache: Mutex::new(None),
         },
         args,
@@ -311,6 +323,7 @@ pub fn custom_derivatives(
         name: "check".into(),
         dim,
         sizes: sizes.clone(),
+        affine: false,
         cache: Mutex::new(None),
     };
     let mut blocks: Vec<&[f64]> = Vec::with_capacity(sizes.len());

@@ -242,16 +242,19 @@ impl Sketch {
     /// (`{"point": ref}` / `{"control": [curve, i]}` wrapped as `{"point": {...}}`,
     /// `{"radius": circle}`, `{"free_of": [constraint, index]}`, `{"param": start}`); `x` is
     /// their values flattened (a point gives two). `residual` returns `dim` numbers and is
-    /// differentiated exactly with num-dual's dual numbers (see `camber.custom`).
-    #[pyo3(signature = (residual, args, dim, name = "python".to_owned()))]
+    /// differentiated exactly with num-dual's dual numbers (see `camber.custom`). Declare
+    /// `affine=True` only for a residual affine in its arguments: its component may then take
+    /// the one-step linear path.
+    #[pyo3(signature = (residual, args, dim, name = "python".to_owned(), affine = false))]
     fn add_custom(
         &mut self,
         residual: Py<PyAny>,
         args: Vec<Bound<'_, PyAny>>,
         dim: usize,
         name: String,
+        affine: bool,
     ) -> PyResult<u64> {
-        let c = crate::custom::custom(residual, &args, dim, name)?;
+        let c = crate::custom::custom(residual, &args, dim, name, affine)?;
         Ok(self.inner.add_constraint(c).map_err(errors::sketch)?.0)
     }
 

@@ -21,10 +21,12 @@ def test_affine_custom_constraint_is_solved():
     s = camber.Sketch()
     p, q = s.add_point([0, 0]), s.add_point([3, 0])
     s.add_constraint("fixed", target={"point": {"point": p}})
-    cid = s.add_custom(unit_apart, [p, q], dim=1, name="unit apart")
+    cid = s.add_custom(unit_apart, [p, q], dim=1, name="unit apart", affine=True)
     report = s.solve()
     assert s.point(q)[0] - s.point(p)[0] == pytest.approx(1.0, abs=1e-10)
     assert report.residuals[cid] < 1e-10
+    # Declared affine, the component takes the linear path and moves q the least: along x.
+    np.testing.assert_allclose(s.point(q), [1.0, 0.0], atol=1e-10)
 
 
 def on_unit_circle(x):
