@@ -1,7 +1,8 @@
 //! Removes a 10° crease between two bicubic patches by deforming one of them as little as
 //! possible, and plots the angle between their normals along the shared edge before and after.
 //!
-//! Run with `cargo run --example surface_g1 [-- PLOT.svg]` (default `target/surface_g1.svg`).
+//! Run with `cargo run --example surface_g1 [-- PLOT.svg]` (default `surface_g1.svg` in the
+//! system's temporary folder; a folder given in PLOT.svg is created).
 //! The case is read from `examples/data/surface_crease10.json`, which is written from
 //! `camber::surface::examples::crease_pair(10.0)` when it is missing.
 
@@ -48,10 +49,16 @@ fn run() -> Result<(), Box<dyn Error>> {
         report.knots_inserted,
         deformed.counts()
     );
-    let out = std::env::args()
-        .nth(1)
-        .map_or_else(|| root.join("target/surface_g1.svg"), PathBuf::from);
+    let out = std::env::args().nth(1).map_or_else(
+        || std::env::temp_dir().join("surface_g1.svg"),
+        PathBuf::from,
+    );
     if let Some(edge) = report.edges.first() {
+        // Wherever the build puts its target folder (CARGO_TARGET_DIR), the plot's folder
+        // exists: the temporary folder, or the one given, created if needed.
+        if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
+            std::fs::create_dir_all(dir)?;
+        }
         std::fs::write(&out, plot(edge))?;
         println!("plot written to {}", out.display());
     }

@@ -81,6 +81,8 @@ function fit() {
     e.points.forEach((p) => grow(p, e.radius ?? 0));
     (e.samples ?? []).forEach((p) => grow(p));
   }
+  // Glyphs too: a target ring away from its curve (a conflicting target) must be in view.
+  for (const list of glyphs.values()) list.forEach((g) => grow(g.at));
   if (!(lo[0] <= hi[0])) {
     lo = [-1, -1];
     hi = [1, 1];
@@ -272,10 +274,16 @@ function renderPanel() {
   comps.replaceChildren();
   state.components.forEach((c, k) => {
     const a = c.analysis;
-    const unsolved = c.residual > 1e-9;
+    // The residual was measured before the drag; while this component is dragged it would be
+    // stale, so the panel says so instead of showing the old number.
+    const dragged = drag && drag.started && c.entities.includes(drag.entity);
+    const unsolved = !dragged && c.residual > 1e-9;
+    const residual = dragged
+      ? "updated when the drag ends"
+      : `${sci(c.residual)}${c.worst && unsolved ? ` at ${c.worst.id} (${c.worst.kind})` : ""}`;
     comps.appendChild(block(`${k + 1}. entities ${ids(c.entities)}${c.nonlinear ? " (nonlinear)" : ""}`, [
       ["DOF", a ? `${a.dof} (${a.free_unknowns} free unknowns, rank ${a.rank})` : "not analysed (too large)"],
-      ["residual", `${sci(c.residual)}${c.worst && unsolved ? ` at ${c.worst.id} (${c.worst.kind})` : ""}`, unsolved],
+      ["residual", residual, unsolved],
       ["redundant", a ? named(a.redundant) || "none" : "–"],
       ["conflicting", a ? named(a.conflicting) || "none" : "–", a && a.conflicting.length > 0],
     ]));
@@ -310,6 +318,7 @@ async function startDrag(entity, index, pointerId, at) {
   }
   drag.started = true;
   drag.busy = false;
+  renderPanel();
   setStatus(`dragging point ${index} of entity ${entity} (${r.data.linear ? "linear path, cached factorization" : "nonlinear path, Newton"})`);
   pump();
 }

@@ -79,8 +79,9 @@ impl Curve {
         }
     }
 
-    /// Parses the JSON text of a curve file. The error says what is wrong and, when known,
-    /// where (`at knots[3]`); it does not name the file (see [`load`]).
+    /// Parses the JSON text of a curve file (a leading byte order mark is allowed). The error
+    /// says what is wrong and, when known, where (`at knots[3]`); it does not name the file
+    /// (see [`load`]). Unknown fields are refused.
     ///
     /// ```
     /// use camber_cli::curve_file::Curve;
@@ -92,6 +93,7 @@ impl Curve {
     /// # Ok::<(), anyhow::Error>(())
     /// ```
     pub fn from_json(text: &str) -> Result<Self> {
+        let text = text.strip_prefix('\u{feff}').unwrap_or(text);
         let mut value: Value = serde_json::from_str(text).map_err(json_syntax_error)?;
         let kind = kind_of(&value);
         let object = value
@@ -115,7 +117,15 @@ impl Curve {
     }
 
     /// The curve file text: the tagged object, pretty-printed, with a final newline.
+    ///
+    /// # Errors
+    /// A number that is not finite (an operation's result that overflowed f64): JSON would
+    /// write it as `null`, so the curve is refused instead.
     pub fn to_json(&self) -> Result<String> {
+        let value = serde_json::to_value(self).context("cannot encode the curve")?;
+        if let Some(path) = first_null(&value, String::new()) {
+            bail!("the result has a number outside the f64 range at {path}");
+        }
         let mut s = serde_json::to_string_pretty(self).context("cannot encode the curve")?;
         s.push('\n');
         Ok(s)
@@ -165,6 +175,27 @@ pub fn json_syntax_error(e: serde_json::Error) -> anyhow::Error {
     }
 }
 
+/// The path (`weights[2]`) of the first `null` in `v`: where serde_json wrote a non-finite
+/// number.
+fn first_null(v: &Value, path: String) -> Option<String> {
+    match v {
+        Value::Null => Some(path),
+        Value::Array(items) => items
+            .iter()
+            .enumerate()
+            .find_map(|(i, x)| first_null(x, format!("{path}[{i}]"))),
+        Value::Object(map) => map.iter().find_map(|(k, x)| {
+            let sub = if path.is_empty() {
+                k.clone()
+            } else {
+                format!("{path}.{k}")
+            };
+            first_null(x, sub)
+        }),
+        _ => None,
+    }
+}
+
 /// A short name of a JSON value's kind, for messages.
 fn kind_of(v: &Value) -> &'static str {
     match v {
@@ -183,21 +214,59 @@ pub fn load(path: &Path) -> Result<Curve> {
     Curve::from_json(&text).with_context(|| path.display().to_string())
 }
 
-/// Writes a curve file; errors name the file.
+/// Writes a curve file whole (a temporary file renamed into place, see [`crate::output`]);
+/// errors name the file.
 pub fn save(path: &Path, curve: &Curve) -> Result<()> {
-    write_text(path, &curve.to_json()?)
+    let text = curve
+        .to_json()
+        .with_context(|| path.display().to_string())?;
+    crate::output::write_all(&[], &[(path.to_path_buf(), text)])
 }
 
-/// Reads a whole text file; the error names the file and the system's reason.
+/// The largest input file the commands read: 64 MiB, far above any sketch or curve (the
+/// bundled 1,000-segment chain is under 1 MiB), so that a device such as `/dev/zero` or a
+/// runaway file ends in an error instead of exhausting memory.
+pub const MAX_INPUT_BYTES: u64 = 64 << 20;
+
+/// Reads a whole text file of at most [`MAX_INPUT_BYTES`]; a leading UTF-8 byte order mark is
+/// dropped. The error names the file and the system's reason.
 pub fn read_text(path: &Path) -> Result<String> {
-    std::fs::read_to_string(path)
-        .map_err(|e| anyhow!("{}: cannot read: {}", path.display(), IoReason(&e)))
+    use std::io::Read as _;
+    let cannot = |e: std::io::Error| anyhow!("{}: cannot read: {}", path.display(), IoReason(&e));
+    let file = std::fs::File::open(path).map_err(cannot)?;
+    let mut bytes = Vec::new();
+    file.take(MAX_INPUT_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(cannot)?;
+    if bytes.len() as u64 > MAX_INPUT_BYTES {
+        bail!(
+            "{}: larger than {} MiB, too large for an input file",
+            path.display(),
+            MAX_INPUT_BYTES >> 20
+        );
+    }
+    let text = String::from_utf8(bytes).map_err(|e| {
+        anyhow!(
+            "{}: not UTF-8 text (at byte {})",
+            path.display(),
+            e.utf8_error().valid_up_to()
+        )
+    })?;
+    Ok(match text.strip_prefix('\u{feff}') {
+        Some(rest) => rest.to_owned(),
+        None => text,
+    })
 }
 
 /// Writes a whole text file; the error names the file and the system's reason.
 pub fn write_text(path: &Path, text: &str) -> Result<()> {
     std::fs::write(path, text)
         .map_err(|e| anyhow!("{}: cannot write: {}", path.display(), IoReason(&e)))
+}
+
+/// An I/O error's plain reason: lower case, without the "(os error N)" suffix.
+pub fn io_reason(e: &std::io::Error) -> String {
+    IoReason(e).to_string()
 }
 
 /// An I/O error's plain reason without the "(os error N)" suffix.

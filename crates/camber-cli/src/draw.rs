@@ -21,10 +21,24 @@ pub fn sample_curve(
     curve: &dyn ParametricCurve<f64, 2>,
     per_piece: usize,
 ) -> Result<Vec<Point2<f64>>> {
-    Ok(sample_parameters(curve, per_piece)
+    sample_parameters(curve, per_piece)
         .into_iter()
-        .map(|u| curve.point(u))
-        .collect::<Result<_, _>>()?)
+        .map(|u| finite(u, "point", curve.point(u)?.coords))
+        .map(|p| p.map(Point2::from))
+        .collect()
+}
+
+/// `v` when both its coordinates are finite; otherwise an error naming `what` and `u`, so a
+/// curve whose numbers overflow f64 is refused instead of drawn with NaN coordinates.
+fn finite(u: f64, what: &str, v: Vector2<f64>) -> Result<Vector2<f64>> {
+    if v.x.is_finite() && v.y.is_finite() {
+        Ok(v)
+    } else {
+        anyhow::bail!(
+            "at u = {u}: the {what} is not finite in f64 (the curve's numbers are too large or \
+             too unevenly weighted to draw)"
+        )
+    }
 }
 
 /// The parameters used by [`sample_curve`], increasing, ends included.
@@ -63,6 +77,10 @@ impl Comb {
         let mut raw = Vec::new();
         for u in sample_parameters(curve, per_piece) {
             let [p, d1, d2] = curve.second_order(u)?;
+            let (d1, d2) = (
+                finite(u, "first derivative", d1)?,
+                finite(u, "second derivative", d2)?,
+            );
             if let Some(k) = signed_curvature_from_derivatives(&d1, &d2) {
                 let n = Vector2::new(-d1.y, d1.x) / d1.norm();
                 raw.push((Point2::from(p), n, k));

@@ -23,7 +23,10 @@ fn main() -> ExitCode {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             // `{:#}` joins the context chain on one line: "file: what: why".
-            eprintln!("error: {}", one_line(&format!("{e:#}")));
+            eprintln!(
+                "error: {}",
+                camber_cli::tidy_numbers(&one_line(&format!("{e:#}")))
+            );
             ExitCode::from(2)
         }
     }

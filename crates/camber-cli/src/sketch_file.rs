@@ -9,7 +9,7 @@ use std::path::Path;
 use anyhow::{anyhow, Context, Result};
 use camber_sketch::{ConstraintId, Error, Sketch};
 
-use crate::curve_file::{read_text, write_text};
+use crate::curve_file::read_text;
 
 /// Reads and validates a sketch file; errors start with the file name.
 pub fn load(path: &Path) -> Result<Sketch> {
@@ -27,12 +27,15 @@ pub fn save(path: &Path, sketch: &Sketch) -> Result<()> {
     let text = camber_sketch::file::to_json(sketch)
         .map_err(|e| anyhow!("{e}"))
         .with_context(|| path.display().to_string())?;
-    write_text(path, &text)
+    crate::output::write_all(&[], &[(path.to_path_buf(), text)])
 }
 
-/// "constraint 4 (G1 join)", or "constraint 4" when the id is not in the sketch (such as the
-/// drag pin).
+/// "constraint 4 (G1 join)", "the drag target" for the drag's own pin, or "constraint 4" when
+/// the id is not in the sketch.
 pub fn describe_constraint(sketch: &Sketch, id: ConstraintId) -> String {
+    if id == camber_sketch::DRAG_CONSTRAINT {
+        return "the drag target".to_owned();
+    }
     match sketch.constraint(id) {
         Ok(c) => format!("{id} ({})", c.kind_name()),
         Err(_) => id.to_string(),
@@ -75,6 +78,35 @@ pub fn describe_error(sketch: &Sketch, e: &Error) -> String {
             describe_constraint(sketch, *constraint)
         ),
         other => other.to_string(),
+    }
+}
+
+/// The solver of a report in the words the reports print (the JSON names): `dense_min_norm`,
+/// `sparse_min_norm`, `newton`, `slsqp`, `levenberg_marquardt`, and `none (nothing to solve)`
+/// when no solver had to run.
+pub fn solver_name(kind: camber_solve::SolverKind) -> &'static str {
+    use camber_solve::SolverKind as K;
+    match kind {
+        K::None => "none (nothing to solve)",
+        K::DenseMinNorm => "dense_min_norm",
+        K::SparseMinNorm => "sparse_min_norm",
+        K::Newton => "newton",
+        K::Slsqp => "slsqp",
+        K::LevenbergMarquardt => "levenberg_marquardt",
+    }
+}
+
+/// "constraints 4, 5" (or "constraint 4", "no constraints", "1000 constraints: 4, 5, 6, …")
+/// for a component header.
+pub fn describe_constraint_ids(ids: &[ConstraintId]) -> String {
+    let list: Vec<String> = ids.iter().map(|c| c.0.to_string()).collect();
+    match list.as_slice() {
+        [] => "no constraints".to_owned(),
+        [one] => format!("constraint {one}"),
+        [a, b, c, .., last] if list.len() > 8 => {
+            format!("{} constraints: {a}, {b}, {c}, …, {last}", list.len())
+        }
+        _ => format!("constraints {}", list.join(", ")),
     }
 }
 

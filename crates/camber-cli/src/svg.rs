@@ -130,26 +130,34 @@ pub struct Svg {
 
 impl Svg {
     /// A picture showing `bbox` with a margin of `margin` times its larger side on every side.
-    /// An empty box shows [−1, 1]²; a flat one gets a height (or width) of its larger side.
+    /// An empty box shows [−1, 1]²; a flat one gets a height (or width) of its larger side; a
+    /// box that is (nearly) a single point gets a side of its distance from the origin (at
+    /// least 1), so the point sits in the middle of an ordinary picture. Everything is computed
+    /// with half sizes, so boxes out to ±f64::MAX still give finite numbers.
     pub fn new(bbox: BBox, margin: f64) -> Self {
         let (min, max) = if bbox.is_empty() {
             (Point2::new(-1.0, -1.0), Point2::new(1.0, 1.0))
         } else {
             (bbox.min, bbox.max)
         };
-        let (w, h) = (max.x - min.x, max.y - min.y);
-        let side = w.max(h).max(f64::MIN_POSITIVE.sqrt());
+        // Half sizes and the centre: finite even when max − min would overflow.
+        let (hw, hh) = (max.x / 2.0 - min.x / 2.0, max.y / 2.0 - min.y / 2.0);
+        let (cx, cy) = (min.x / 2.0 + max.x / 2.0, min.y / 2.0 + max.y / 2.0);
+        let reach = cx.abs().max(cy.abs()).max(1.0);
+        let mut half = hw.max(hh);
+        if half <= 1e-9 * reach {
+            half = reach / 2.0;
+        }
         // A degenerate side is widened around its middle so the picture is not a line.
-        let (w, h) = (w.max(side * 1e-3), h.max(side * 1e-3));
-        let (cx, cy) = ((min.x + max.x) / 2.0, (min.y + max.y) / 2.0);
-        let pad = margin.max(0.0) * side;
-        let unit = side / 400.0;
-        let scale = 1.0 / unit;
+        let (hw, hh) = (hw.max(half * 1e-3), hh.max(half * 1e-3));
+        let pad = margin.clamp(0.0, 1.0) * half * 2.0;
+        let unit = half / 200.0;
+        let scale = 200.0 / half;
         let view = [
-            (cx - w / 2.0 - pad) * scale,
-            -(cy + h / 2.0 + pad) * scale,
-            (w + 2.0 * pad) * scale,
-            (h + 2.0 * pad) * scale,
+            cx * scale - (hw * scale + pad * scale),
+            -(cy * scale) - (hh * scale + pad * scale),
+            2.0 * (hw * scale + pad * scale),
+            2.0 * (hh * scale + pad * scale),
         ];
         Self {
             view,

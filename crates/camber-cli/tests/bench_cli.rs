@@ -161,5 +161,5 @@ fn bad_bench_arguments_exit_2() {
         .args(["bench", "--quick", "--only", "W3", "--sizes", "0"])
         .assert()
         .code(2)
-        .stderr(predicate::str::contains("at least one segment"));
+        .stderr(predicate::str::contains("outside 1..=100000"));
 }

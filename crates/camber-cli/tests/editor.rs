@@ -509,15 +509,17 @@ fn bad_requests_get_plain_4xx_answers_and_change_nothing() {
 }
 
 #[test]
-fn large_components_drag_without_the_dense_analysis() {
-    // A chain beyond the size the editor analyses: no DOF analysis in the state, but a drag
-    // starts at once (the library goes straight to the sparse factorization) and keeps the
-    // chain's joints.
-    let n = camber_cli::commands::render::ANALYSIS_MAX_ENTITIES + 1;
+fn large_components_are_analysed_and_drag() {
+    // A chain of 1,000 segments (beyond the 200 entities the editor once analysed densely):
+    // the state carries its (sparse) DOF analysis, a drag starts at once (the library goes
+    // straight to the sparse factorization) and keeps the chain's joints.
+    let n = 1_000;
     let (sketch, segments) = camber_workloads::w3a_chain(n).unwrap();
     let mut ed = EditorState::new(sketch, "chain.json".into(), None).unwrap();
     let s = state(&mut ed);
-    assert_eq!(s["components"][0]["analysis"], Value::Null);
+    let analysis = &s["components"][0]["analysis"];
+    assert!(analysis["dof"].as_u64().unwrap() > 0, "{analysis}");
+    assert_eq!(analysis["conflicting"], json!([]));
     let (status, v) = post(
         &mut ed,
         "/api/drag/start",

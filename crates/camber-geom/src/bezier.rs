@@ -59,11 +59,13 @@ pub type BezierCurve3<T> = BezierCurve<T, 3>;
 
 /// # Construction
 impl<T: Scalar, const D: usize> BezierCurve<T, D> {
-    /// A Bézier curve of degree `control_points.len() − 1`: at least one control point, all
+    /// A Bézier curve of degree `control_points.len() − 1`: at least one control point, a
+    /// degree of at most [`MAX_DEGREE`](crate::knots::MAX_DEGREE) (as for B-splines), all
     /// coordinates finite.
     ///
-    /// Fails with [`Error::TooFewControlPoints`] for an empty list and [`Error::NonFinite`]
-    /// (naming the point) for a NaN or infinite coordinate.
+    /// Fails with [`Error::TooFewControlPoints`] for an empty list,
+    /// [`Error::DegreeTooHigh`] for more than `MAX_DEGREE` + 1 points and
+    /// [`Error::NonFinite`] (naming the point) for a NaN or infinite coordinate.
     ///
     /// ```
     /// use camber_geom::{BezierCurve2, Error};
@@ -87,6 +89,7 @@ impl<T: Scalar, const D: usize> BezierCurve<T, D> {
                 found: 0,
             });
         }
+        crate::knots::check_degree(control_points.len() - 1)?;
         check_points(&control_points)?;
         Ok(Self { control_points })
     }
@@ -437,6 +440,7 @@ impl<T: Scalar, const D: usize> ParametricCurve<T, D> for BezierCurve<T, D> {
 
 /// The JSON form: `{"control_points": [[x, y], ...]}`.
 #[derive(Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 struct RawBezier {
     control_points: Vec<RawPoint>,
 }

@@ -453,6 +453,7 @@ impl<T: Scalar, const D: usize> ParametricCurve<T, D> for BSplineCurve<T, D> {
 
 /// The JSON form: `{"degree": 3, "knots": [...], "control_points": [[x, y], ...]}`.
 #[derive(Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 struct RawBSpline {
     degree: usize,
     knots: Vec<f64>,
@@ -471,11 +472,15 @@ impl<const D: usize> Serialize for BSplineCurve<f64, D> {
 }
 
 impl<'de, const D: usize> Deserialize<'de> for BSplineCurve<f64, D> {
-    /// Validates like [`BSplineCurve::try_new`]; the error message names the offending value.
+    /// Validates like [`BSplineCurve::try_new`], and refuses unknown fields and degree 0 (a
+    /// file describes a continuous curve); the error message names the offending value.
     fn deserialize<De: Deserializer<'de>>(
         deserializer: De,
     ) -> std::result::Result<Self, De::Error> {
         let raw = RawBSpline::deserialize(deserializer)?;
+        if raw.degree == 0 {
+            return Err(serde::de::Error::custom(Error::DegreeZero));
+        }
         let points = points_from_raw(&raw.control_points).map_err(serde::de::Error::custom)?;
         let knots = KnotVector::try_new(raw.knots).map_err(serde::de::Error::custom)?;
         Self::try_new(raw.degree, knots, points).map_err(serde::de::Error::custom)

@@ -169,6 +169,102 @@ pub enum Error {
         /// The degree given.
         found: usize,
     },
+    /// A B-spline or NURBS curve of degree 0 in a file: piecewise constant, with jumps at its
+    /// knots, so not a curve that can be constrained or drawn. The library types accept
+    /// degree 0 ([`BSplineCurve::try_new`](crate::BSplineCurve::try_new)); their file forms
+    /// (serde) and sketches do not.
+    ///
+    /// ```
+    /// use camber_geom::BSplineCurve2;
+    /// let text = r#"{"degree": 0, "knots": [0, 1, 2], "control_points": [[0, 0], [1, 0]]}"#;
+    /// let err = serde_json::from_str::<BSplineCurve2<f64>>(text).unwrap_err();
+    /// assert!(err.to_string().starts_with("degree 0 is not supported"));
+    /// ```
+    #[error("degree 0 is not supported (a B-spline needs degree 1 or more)")]
+    DegreeZero,
+    /// A knot repeated more than degree + 1 times: the basis functions around it vanish.
+    ///
+    /// ```
+    /// use camber_geom::{Error, KnotVector};
+    /// let k = KnotVector::try_new(vec![0.0, 0.0, 0.5, 0.5, 0.5, 1.0, 1.0])?;
+    /// assert_eq!(
+    ///     k.check_for(1, 5).unwrap_err(),
+    ///     Error::KnotMultiplicityTooHigh { value: 0.5, multiplicity: 3, max: 2 }
+    /// );
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("knot {value} is repeated {multiplicity} times, more than degree + 1 = {max}")]
+    KnotMultiplicityTooHigh {
+        /// The knot value.
+        value: f64,
+        /// How many times it occurs.
+        multiplicity: usize,
+        /// The most allowed: degree + 1.
+        max: usize,
+    },
+    /// Knots spread so wide that their differences overflow f64 (`[-1e308, …, 1e308]`): the
+    /// basis functions divide by those differences and would come out wrong.
+    ///
+    /// ```
+    /// use camber_geom::{Error, KnotVector};
+    /// let err = KnotVector::try_new(vec![-1e308, -1e308, 1e308, 1e308]).unwrap_err();
+    /// assert_eq!(err, Error::KnotRangeTooWide { first: -1e308, last: 1e308 });
+    /// ```
+    #[error("the knots span [{first:e}, {last:e}], wider than f64 can subtract")]
+    KnotRangeTooWide {
+        /// The first knot.
+        first: f64,
+        /// The last knot.
+        last: f64,
+    },
+    /// NURBS weights whose largest and smallest differ by more than
+    /// [`MAX_WEIGHT_RATIO`](crate::nurbs::MAX_WEIGHT_RATIO): the small ones would vanish
+    /// next to the large ones in f64.
+    ///
+    /// ```
+    /// use camber_geom::{Error, KnotVector, NurbsCurve2};
+    /// use nalgebra::Point2;
+    /// let knots = KnotVector::clamped_uniform(2, 3)?;
+    /// let points = vec![Point2::new(1.0, 0.0), Point2::new(1.0, 1.0), Point2::new(0.0, 1.0)];
+    /// let err = NurbsCurve2::try_new(2, knots, points, vec![1e-300, 1e300, 1e-300]).unwrap_err();
+    /// assert_eq!(err, Error::WeightRatio { smallest: 1e-300, largest: 1e300, max: 1e15 });
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error(
+        "the weights range from {smallest:e} to {largest:e}, a ratio above {max:e} that f64 \
+         cannot carry (scale them closer together)"
+    )]
+    WeightRatio {
+        /// The smallest weight.
+        smallest: f64,
+        /// The largest weight.
+        largest: f64,
+        /// The largest ratio allowed.
+        max: f64,
+    },
+    /// A reparameterization onto an interval where the knots cannot be represented: their
+    /// span would overflow, or distinct knots would round onto one value (the shape would
+    /// change).
+    ///
+    /// ```
+    /// use camber_geom::{Error, KnotVector};
+    /// let k = KnotVector::<f64>::clamped_uniform(1, 3)?;
+    /// assert_eq!(
+    ///     k.reparameterized(1, -1e308, 1e308).unwrap_err(),
+    ///     Error::ReparamNotRepresentable { start: -1e308, end: 1e308 }
+    /// );
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error(
+        "the interval [{start:e}, {end:e}] cannot carry the knots in f64 (their span would \
+         overflow or distinct knots would merge)"
+    )]
+    ReparamNotRepresentable {
+        /// Start of the interval asked for.
+        start: f64,
+        /// End of the interval asked for.
+        end: f64,
+    },
     /// A spline degree (given, or reached by degree elevation) above
     /// [`MAX_DEGREE`](crate::knots::MAX_DEGREE): the basis tables grow like the square of the
     /// degree, so an absurd degree from a file would exhaust memory instead of failing.
@@ -185,6 +281,98 @@ pub enum Error {
         degree: usize,
         /// The largest degree supported.
         max: usize,
+    },
+    /// A tolerance (arc length, fitting, knot removal, offset, intersection) that must be
+    /// positive is zero or negative.
+    ///
+    /// ```
+    /// use camber_geom::arc_length::arc_length;
+    /// use camber_geom::{BezierCurve2, Error};
+    /// use nalgebra::Point2;
+    /// let c = BezierCurve2::try_new(vec![Point2::new(0.0, 0.0), Point2::new(1.0, 0.0)])?;
+    /// assert_eq!(arc_length(&c, 0.0).unwrap_err(), Error::NonPositiveTolerance { value: 0.0 });
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("tolerance {value} is not positive")]
+    NonPositiveTolerance {
+        /// The tolerance given.
+        value: f64,
+    },
+    /// An arc length outside [0, length of the curve].
+    ///
+    /// ```
+    /// use camber_geom::arc_length::parameter_at_length;
+    /// use camber_geom::{BezierCurve2, Error};
+    /// use nalgebra::Point2;
+    /// let c = BezierCurve2::try_new(vec![Point2::new(0.0, 0.0), Point2::new(2.0, 0.0)])?;
+    /// assert!(matches!(parameter_at_length(&c, 3.0, 1e-12), Err(Error::LengthOutsideCurve { .. })));
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("arc length {value} is outside the curve's length [0, {length}]")]
+    LengthOutsideCurve {
+        /// The arc length asked for.
+        value: f64,
+        /// The curve's length.
+        length: f64,
+    },
+    /// An extension target that does not lie beyond the end it extends (a new start must be
+    /// below the domain start, a new end above the domain end; a length must be positive).
+    ///
+    /// ```
+    /// use camber_geom::extend::CurveEnd;
+    /// use camber_geom::{BezierCurve2, Error};
+    /// use nalgebra::Point2;
+    /// let c = BezierCurve2::try_new(vec![Point2::new(0.0, 0.0), Point2::new(1.0, 0.0)])?;
+    /// assert!(matches!(c.extrapolated(CurveEnd::End, 0.5), Err(Error::ExtensionInsideDomain { .. })));
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("extension target {value} does not lie beyond the domain [{min}, {max}]")]
+    ExtensionInsideDomain {
+        /// The target parameter (or length).
+        value: f64,
+        /// Start of the domain.
+        min: f64,
+        /// End of the domain.
+        max: f64,
+    },
+    /// Fewer data points than an interpolation or fit of this degree needs.
+    #[error("{found} data points are too few for degree {degree} (at least {needed})")]
+    TooFewDataPoints {
+        /// Degree of the curve asked for.
+        degree: usize,
+        /// Points needed.
+        needed: usize,
+        /// Points given.
+        found: usize,
+    },
+    /// Two consecutive data points coincide, so chord-length or centripetal parameters are not
+    /// defined (point `index` equals point `index` − 1).
+    #[error("data point {index} coincides with the point before it")]
+    CoincidentDataPoints {
+        /// Index of the repeated point.
+        index: usize,
+    },
+    /// A linear system of an interpolation or fit is singular (the data and knots do not
+    /// determine the control points).
+    #[error("the {what} system is singular")]
+    SingularSystem {
+        /// Which system ("interpolation", "least-squares").
+        what: &'static str,
+    },
+    /// A knot value that is not an interior knot of the curve.
+    #[error("{value} is not an interior knot of the curve")]
+    KnotNotFound {
+        /// The value asked for.
+        value: f64,
+    },
+    /// A search (curve–curve intersection) produced more candidates than its limit, as for
+    /// curves that overlap along a stretch.
+    #[error("more than {limit} candidate {what}: the curves may overlap")]
+    TooManyCandidates {
+        /// What was counted.
+        what: &'static str,
+        /// The limit.
+        limit: usize,
     },
 }
 

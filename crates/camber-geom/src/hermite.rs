@@ -497,6 +497,7 @@ impl<T: Scalar, const D: usize> ParametricCurve<T, D> for HermiteCurve<T, D> {
 
 /// The JSON form: `{"p0": [..], "p1": [..], "t0": [..], "t1": [..]}`, D coordinates each.
 #[derive(Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 struct RawHermite {
     p0: Vec<f64>,
     p1: Vec<f64>,

@@ -389,7 +389,8 @@ impl<T: Scalar> ControlNet<T> {
     /// u₀ + (u₁ − u₀)·s for s ∈ [0, 1], where [u₀, u₁] is the old domain, so derivatives scale
     /// by (u₁ − u₀) / (b − a) per order. The domain ends map exactly onto a and b.
     ///
-    /// Errors: [`Error::InvalidInterval`] unless a < b, [`Error::NonFinite`].
+    /// Errors: [`Error::InvalidInterval`] unless a < b, [`Error::NonFinite`],
+    /// [`Error::ReparamNotRepresentable`] when the knots cannot be carried onto [a, b] in f64.
     pub fn reparameterized(&self, a: T, b: T) -> Result<Self> {
         self.check()?;
         check_interval(a, b)?;
@@ -413,9 +414,11 @@ impl<T: Scalar> ControlNet<T> {
                 mapped.max(a).min(b)
             }
         });
+        let knots: Vec<T> = knots.collect();
+        crate::knots::check_faithful_map(self.knots.as_slice(), &knots, a, b)?;
         Ok(Self {
             degree: self.degree,
-            knots: KnotVector::new_unchecked(knots.collect()),
+            knots: KnotVector::new_unchecked(knots),
             dim: self.dim,
             coords: self.coords.clone(),
         })

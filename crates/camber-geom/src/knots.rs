@@ -78,7 +78,29 @@ impl<T: Scalar> KnotVector<T> {
                 });
             }
         }
+        if let (Some(&first), Some(&last)) = (knots.first(), knots.last()) {
+            if !(re(last) - re(first)).is_finite() {
+                return Err(Error::KnotRangeTooWide {
+                    first: re(first),
+                    last: re(last),
+                });
+            }
+        }
         Ok(())
+    }
+
+    /// The knots of a Bézier curve of `degree` p on [0, 1]: p + 1 zeros then p + 1 ones, so that
+    /// the B-spline basis on them is the Bernstein basis and a Bézier curve (or a line, p = 1)
+    /// evaluates through the same basis code as a B-spline.
+    ///
+    /// ```
+    /// use camber_geom::KnotVector;
+    /// assert_eq!(KnotVector::<f64>::bezier(2).as_slice(), &[0.0, 0.0, 0.0, 1.0, 1.0, 1.0]);
+    /// ```
+    pub fn bezier(degree: usize) -> Self {
+        let mut knots = vec![T::zero(); degree + 1];
+        knots.extend(std::iter::repeat_n(T::one(), degree + 1));
+        Self { knots }
     }
 
     /// The clamped uniform knot vector on [0, 1] for `control_points` control points of
@@ -183,6 +205,29 @@ impl<T: Scalar> KnotVector<T> {
                 max: re(b),
             });
         }
+        self.check_multiplicities(degree)
+    }
+
+    /// Fails with [`Error::KnotMultiplicityTooHigh`] when a knot value occurs more than
+    /// `degree` + 1 times.
+    fn check_multiplicities(&self, degree: usize) -> Result<()> {
+        let max = degree.saturating_add(1);
+        let mut run = 0;
+        for (i, &k) in self.knots.iter().enumerate() {
+            run = if i > 0 && k <= self.knots[i - 1] {
+                run + 1
+            } else {
+                1
+            };
+            if run > max {
+                let value = re(k);
+                return Err(Error::KnotMultiplicityTooHigh {
+                    value,
+                    multiplicity: self.multiplicity(k),
+                    max,
+                });
+            }
+        }
         Ok(())
     }
 
@@ -262,8 +307,32 @@ impl<T: Scalar> KnotVector<T> {
         check_interval(a, b)?;
         let (u0, u1) = self.domain(degree);
         let scale = (b - a) / (u1 - u0);
-        Ok(Self {
-            knots: self.knots.iter().map(|&k| a + (k - u0) * scale).collect(),
+        let knots: Vec<T> = self.knots.iter().map(|&k| a + (k - u0) * scale).collect();
+        check_faithful_map(&self.knots, &knots, a, b)?;
+        Ok(Self { knots })
+    }
+}
+
+/// Fails with [`Error::ReparamNotRepresentable`] unless `new` (the knots `old` mapped onto
+/// [a, b]) keeps every knot finite, the span a normal f64 (neither overflowing nor
+/// subnormal, where parameters lose their digits), the order, and distinct knots distinct:
+/// otherwise the curve they carry would change shape.
+pub(crate) fn check_faithful_map<T: Scalar>(old: &[T], new: &[T], a: T, b: T) -> Result<()> {
+    let finite = new.iter().all(|&k| re(k).is_finite())
+        && new
+            .first()
+            .zip(new.last())
+            .is_none_or(|(&f, &l)| (re(l) - re(f)).is_normal());
+    let same_order = old
+        .windows(2)
+        .zip(new.windows(2))
+        .all(|(o, n)| (o[0] < o[1]) == (n[0] < n[1]) && n[0] <= n[1]);
+    if finite && same_order {
+        Ok(())
+    } else {
+        Err(Error::ReparamNotRepresentable {
+            start: re(a),
+            end: re(b),
         })
     }
 }

@@ -31,18 +31,33 @@
 //!   offending index and value. Nothing panics on user input.
 //! - Evaluation writes into caller slices and keeps its scratch on the stack
 //!   (see [`basis::INLINE_DEGREE`]), so hot loops do not allocate.
+//!
+//! # Operations
+//! - [`arc_length`]: length with an error estimate, parameter at a length, arc-length map;
+//! - [`extend`]: natural extrapolation beyond either end, extension by a length (G1, G2);
+//! - [`fit`]: interpolation, least squares, fitting to a tolerance;
+//! - [`knot_removal`] and [`degree_reduction`]: exact when the curve allows, with a bound;
+//! - [`queries::intersect_curves`] and [`queries::curve_distance`]: any two curve kinds;
+//! - [`offset`]: offsets of planar curves as B-splines, error measured.
 
+pub mod arc_length;
+pub mod banded;
 pub mod basis;
 pub mod bernstein;
 pub mod bezier;
 pub mod bspline;
 pub mod composite;
 pub mod curve;
+pub mod degree_reduction;
 pub mod errors;
+pub mod extend;
+pub mod fit;
 pub mod hermite;
 pub mod knot_ops;
+pub mod knot_removal;
 pub mod knots;
 pub mod nurbs;
+pub mod offset;
 pub mod primitives;
 pub mod queries;
 pub mod scalar;

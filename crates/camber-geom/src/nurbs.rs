@@ -115,6 +115,18 @@ impl<T: Scalar, const D: usize> NurbsCurve<T, D> {
                 return Err(Error::NonPositiveWeight { index, value });
             }
         }
+        let (lo, hi) = weights
+            .iter()
+            .fold((f64::INFINITY, 0.0_f64), |(lo, hi), &w| {
+                (lo.min(re(w)), hi.max(re(w)))
+            });
+        if hi > lo * MAX_WEIGHT_RATIO {
+            return Err(Error::WeightRatio {
+                smallest: lo,
+                largest: hi,
+                max: MAX_WEIGHT_RATIO,
+            });
+        }
         Ok(Self {
             degree,
             knots,
@@ -453,6 +465,18 @@ impl<T: Scalar, const D: usize> ParametricCurve<T, D> for NurbsCurve<T, D> {
             .basis_function_derivatives(span, u, p, top, &mut ders);
         let points = &self.control_points[first..=span];
         let weights = &self.weights[first..=span];
+        // The curve does not change when every weight is scaled alike; dividing by the span's
+        // largest keeps Σ Nᵢwᵢ and its derivatives inside f64 for weights near its top
+        // (weights of 1e308 evaluate like weights of 1).
+        let w_top = weights
+            .iter()
+            .copied()
+            .fold(T::zero(), |m, w| if w > m { w } else { m });
+        let w_scale = if w_top > T::zero() {
+            T::one() / w_top
+        } else {
+            T::one()
+        };
         let mut wders: SmallVec<[T; INLINE_DEGREE + 1]> = smallvec![T::zero(); top + 1];
         for (k, slot) in out.iter_mut().enumerate() {
             let mut a = SVector::<T, D>::zeros();
@@ -460,7 +484,7 @@ impl<T: Scalar, const D: usize> ParametricCurve<T, D> for NurbsCurve<T, D> {
                 let row = &ders[k * width..(k + 1) * width];
                 let mut w = T::zero();
                 for ((&n, point), &weight) in row.iter().zip(points).zip(weights) {
-                    let nw = n * weight;
+                    let nw = n * (weight * w_scale);
                     a += point.coords * nw;
                     w += nw;
                 }
@@ -487,8 +511,14 @@ impl<T: Scalar, const D: usize> ParametricCurve<T, D> for NurbsCurve<T, D> {
     }
 }
 
+/// The largest ratio between a NURBS curve's largest and smallest weight: about 1/ε of
+/// f64. Beyond it a small weight's term vanishes entirely next to a large one in the sums
+/// Σ Nᵢwᵢ, so the curve evaluated would not be the curve described.
+pub const MAX_WEIGHT_RATIO: f64 = 1e15;
+
 /// The JSON form: `{"degree", "knots", "control_points": [[x, y], …], "weights": […]}`.
 #[derive(Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 struct RawNurbs {
     degree: usize,
     knots: Vec<f64>,
@@ -509,12 +539,16 @@ impl<const D: usize> Serialize for NurbsCurve<f64, D> {
 }
 
 impl<'de, const D: usize> Deserialize<'de> for NurbsCurve<f64, D> {
-    /// Reads the JSON form and validates it with [`NurbsCurve::try_new`].
+    /// Reads the JSON form and validates it with [`NurbsCurve::try_new`]; unknown fields and
+    /// degree 0 (a file describes a continuous curve) are refused.
     fn deserialize<De: Deserializer<'de>>(
         deserializer: De,
     ) -> std::result::Result<Self, De::Error> {
         let raw = RawNurbs::deserialize(deserializer)?;
         let build = || -> Result<Self> {
+            if raw.degree == 0 {
+                return Err(Error::DegreeZero);
+            }
             let knots = KnotVector::try_new(raw.knots)?;
             let points = points_from_raw(&raw.control_points)?;
             Self::try_new(raw.degree, knots, points, raw.weights)

@@ -3,13 +3,112 @@
 //! these tests fails them (proptest reports a panicking case as a failure).
 
 use camber_geom::{
-    BSplineCurve2, BSplineCurve3, Error, HermiteCurve2, KnotVector, NurbsCurve2, NurbsCurve3,
-    ParametricCurve,
+    BSplineCurve2, BSplineCurve3, BezierCurve2, Error, HermiteCurve2, KnotVector, NurbsCurve2,
+    NurbsCurve3, ParametricCurve,
 };
 use nalgebra::{Point2, Vector2};
 use proptest::prelude::*;
 
 const HUGE: usize = usize::MAX;
+
+/// Issue 11 finding 7: a Bézier curve is capped at the B-splines' degree (256), through the
+/// constructor and its file form.
+#[test]
+fn issue_11_bezier_degree_is_capped_like_bsplines() {
+    let points = |n: usize| {
+        (0..n)
+            .map(|i| Point2::new(i as f64, 0.0))
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(BezierCurve2::try_new(points(257)).unwrap().degree(), 256);
+    assert_eq!(
+        BezierCurve2::try_new(points(258)).unwrap_err(),
+        Error::DegreeTooHigh {
+            degree: 257,
+            max: 256
+        }
+    );
+    let many: Vec<[f64; 2]> = (0..5001).map(|i| [f64::from(i), 0.0]).collect();
+    let text = serde_json::json!({ "control_points": many }).to_string();
+    let err = serde_json::from_str::<BezierCurve2<f64>>(&text).unwrap_err();
+    assert!(
+        err.to_string().contains("largest supported degree"),
+        "{err}"
+    );
+}
+
+/// Issue 11 finding 7: a knot repeated more than degree + 1 times is refused (the basis around
+/// it vanishes), and files with degree 0 or unknown fields are refused.
+#[test]
+fn issue_11_knot_multiplicity_degree_zero_and_unknown_fields() {
+    let k = KnotVector::try_new(vec![0.0, 0.0, 0.5, 0.5, 0.5, 1.0, 1.0]).unwrap();
+    let points: Vec<Point2<f64>> = (0..5).map(|i| Point2::new(f64::from(i), 0.0)).collect();
+    assert_eq!(
+        BSplineCurve2::try_new(1, k.clone(), points.clone()).unwrap_err(),
+        Error::KnotMultiplicityTooHigh {
+            value: 0.5,
+            multiplicity: 3,
+            max: 2
+        }
+    );
+    // Multiplicity p + 1 inside is allowed (a break in the curve).
+    let k = KnotVector::try_new(vec![0.0, 0.0, 0.5, 0.5, 1.0, 1.0]).unwrap();
+    assert!(BSplineCurve2::try_new(1, k, points[..4].to_vec()).is_ok());
+    let ends = KnotVector::try_new(vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0]).unwrap();
+    assert_eq!(
+        BSplineCurve2::try_new(1, ends, points[..4].to_vec()).unwrap_err(),
+        Error::KnotMultiplicityTooHigh {
+            value: 0.0,
+            multiplicity: 3,
+            max: 2
+        }
+    );
+    let zero = r#"{"degree":0,"knots":[0,1,2],"control_points":[[0,0],[1,2]]}"#;
+    let err = serde_json::from_str::<BSplineCurve2<f64>>(zero).unwrap_err();
+    assert!(err.to_string().contains("degree 0"), "{err}");
+    let zero = r#"{"degree":0,"knots":[0,1,2],"control_points":[[0,0],[1,2]],"weights":[1,1]}"#;
+    assert!(serde_json::from_str::<NurbsCurve2<f64>>(zero).is_err());
+    let extra = r#"{"control_points":[[0,0],[1,2]],"colour":"red"}"#;
+    let err = serde_json::from_str::<BezierCurve2<f64>>(extra).unwrap_err();
+    assert!(err.to_string().contains("unknown field `colour`"), "{err}");
+    let extra = r#"{"p0":[0,0],"p1":[1,0],"t0":[1,0],"t1":[1,0],"tension":2}"#;
+    assert!(serde_json::from_str::<HermiteCurve2<f64>>(extra).is_err());
+}
+
+/// Issue 11 finding 4: knots whose span overflows f64 are refused (a B-spline on
+/// [−1e308, 1e308] evaluated to (0, 0)), and a reparameterization that cannot be carried
+/// faithfully is refused instead of changing the shape.
+#[test]
+fn issue_11_unrepresentable_knots_are_refused() {
+    assert_eq!(
+        KnotVector::try_new(vec![-1e308, -1e308, 1e308, 1e308]).unwrap_err(),
+        Error::KnotRangeTooWide {
+            first: -1e308,
+            last: 1e308
+        }
+    );
+    assert!(KnotVector::try_new(vec![-1e307, -1e307, 1e307, 1e307]).is_ok());
+    let points = vec![
+        Point2::new(0.0, 0.0),
+        Point2::new(1.0, 1.0),
+        Point2::new(3.0, 0.0),
+        Point2::new(4.0, 2.0),
+    ];
+    let k = KnotVector::try_new(vec![0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0]).unwrap();
+    let c = BSplineCurve2::try_new(2, k, points).unwrap();
+    // The interior knot 0.5 would land on 1e17 + 8, between two f64 neighbours 16 apart.
+    for (a, b) in [(-1e308, 1e308), (0.0, 1e-320), (1e17, 1e17 + 16.0)] {
+        assert_eq!(
+            c.reparameterized(a, b).unwrap_err(),
+            Error::ReparamNotRepresentable { start: a, end: b },
+            "[{a}, {b}]"
+        );
+    }
+    // A wide but representable interval keeps the shape.
+    let r = c.reparameterized(-1e300, 1e300).unwrap();
+    let (p, q) = (c.point(0.25).unwrap(), r.point(-5e299).unwrap());
+    assert!((p - q).norm() < 1e-12, "{p} vs {q}");
+}
 
 #[test]
 fn an_absurd_degree_in_a_file_is_an_error_not_an_overflow() {
@@ -216,4 +315,41 @@ proptest! {
             let _ = h.to_bezier();
         }
     }
+}
+
+/// Issue 11 finding 4: NURBS weights all scaled to 1e308 describe the same curve as unit
+/// weights and evaluate like them; weights 1e600 apart are refused.
+#[test]
+fn issue_11_nurbs_weights_at_the_edge_of_f64() {
+    let knots = KnotVector::clamped_uniform(2, 3).unwrap();
+    let points = vec![
+        Point2::new(1.0, 0.0),
+        Point2::new(1.0, 1.0),
+        Point2::new(0.0, 1.0),
+    ];
+    let w = std::f64::consts::FRAC_1_SQRT_2;
+    let unit = NurbsCurve2::try_new(2, knots.clone(), points.clone(), vec![1.0, w, 1.0]).unwrap();
+    let huge = NurbsCurve2::try_new(
+        2,
+        knots.clone(),
+        points.clone(),
+        vec![1e308, w * 1e308, 1e308],
+    )
+    .unwrap();
+    for u in [0.0, 0.3, 0.5, 1.0] {
+        let (a, b) = (
+            unit.derivatives(u, 3).unwrap(),
+            huge.derivatives(u, 3).unwrap(),
+        );
+        for k in 0..=3 {
+            assert!(
+                (a[k] - b[k]).norm() < 1e-12 * (1.0 + a[k].norm()),
+                "u = {u}, k = {k}"
+            );
+        }
+    }
+    assert!(matches!(
+        NurbsCurve2::try_new(2, knots, points, vec![1e-300, 1e300, 1e-300]),
+        Err(Error::WeightRatio { .. })
+    ));
 }

@@ -173,8 +173,48 @@ fn bench_w3(c: &mut Criterion) {
     group.finish();
 }
 
+/// The DOF analysis of large components (issue 13: `check` of W3 at N = 10,000 within 0.5 s,
+/// a 100,000-point distance chain within 5 s): the sparse analysis, no dense matrix.
+fn bench_analysis(c: &mut Criterion) {
+    let mut group = c.benchmark_group("analyze");
+    group.sample_size(10);
+    let (w3, _) = w3_chain(10_000).expect("valid chain");
+    group.bench_function("w3_chain_10000", |b| {
+        b.iter(|| black_box(w3.analyze().expect("analysis")))
+    });
+    let chain = point_chain(100_000);
+    group.bench_function("point_chain_100000", |b| {
+        b.iter(|| black_box(chain.analyze().expect("analysis")))
+    });
+    group.finish();
+}
+
+/// `n` points, the first fixed, each at its distance from the next: one component of 2n
+/// unknowns and n − 1 nonlinear rows.
+fn point_chain(n: usize) -> camber_sketch::Sketch {
+    use camber_sketch::constraints::{Distance, Fixed};
+    use camber_sketch::PointRef;
+    let mut s = camber_sketch::Sketch::new();
+    let points: Vec<_> = (0..n)
+        .map(|i| {
+            let t = i as f64;
+            s.add_point(nalgebra::Point2::new(t, 0.1 * (t * 0.7).sin()))
+                .expect("finite point")
+        })
+        .collect();
+    s.add_constraint(Fixed::entity(points[0])).expect("fixed");
+    for pair in points.windows(2) {
+        let (a, b) = (PointRef::Point(pair[0]), PointRef::Point(pair[1]));
+        let distance = (s.point(b).expect("point") - s.point(a).expect("point")).norm();
+        s.add_constraint(Distance { a, b, distance })
+            .expect("distance");
+    }
+    s
+}
+
 criterion_group!(
     benches,
+    bench_analysis,
     bench_w1,
     bench_blade,
     bench_w2,

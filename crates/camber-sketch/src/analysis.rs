@@ -1,6 +1,7 @@
 //! The DOF analysis of a sketch, component by component: free unknowns, rank, DOF, and the
 //! constraints that are redundant or conflicting (camber_solve's analysis on each component's
-//! problem, with the coincidences merged into one unknown named redundant when they repeat).
+//! problem, dense for small components and sparse for large ones, with the coincidences merged
+//! into one unknown named redundant when they repeat; a constraint is never both).
 
 use camber_solve::DofAnalysis;
 
@@ -28,8 +29,10 @@ impl Sketch {
         let mut out = Vec::new();
         for comp in self.components() {
             let cp = self.build_component(&comp, None)?;
-            let mut analysis = cp.problem().analyze(self.options())?;
+            let mut analysis = cp.problem().analyze(&self.solve_options())?;
             cp.name_merged_redundant(&mut analysis.redundant);
+            let conflicting = &analysis.conflicting;
+            analysis.redundant.retain(|c| !conflicting.contains(c));
             out.push(ComponentAnalysis {
                 component: comp,
                 analysis,

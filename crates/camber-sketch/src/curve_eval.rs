@@ -1,17 +1,18 @@
-//! Evaluating a sketch curve C(u) and its tangent C′(u) at a generic scalar, with the control
+//! Evaluating a sketch curve C(u) and its derivatives at a generic scalar, with the control
 //! points and the parameter u both read from the solver's blocks.
 //!
 //! The constraints with a free contact parameter are not affine: u moves, so the basis values
 //! Nⱼ(u) are themselves unknown. [`CurveBasis`] keeps degree, knots and weights (data, f64) and
-//! evaluates, for the knot span k with u_k ≤ u < u_{k+1} (found on the real part of u),
+//! evaluates
 //!
-//! C(u) = Σⱼ Nⱼ,ₚ(u)·Pⱼ,  C′(u) = Σⱼ N′ⱼ,ₚ(u)·Pⱼ,
-//! N′ⱼ,ₚ = p·Nⱼ,ₚ₋₁/(u_{j+p} − u_j) − p·Nⱼ₊₁,ₚ₋₁/(u_{j+p+1} − u_{j+1})  (0/0 read as 0),
+//! C⁽ᵏ⁾(u) = Σⱼ R⁽ᵏ⁾ⱼ(u)·Pⱼ
 //!
-//! with the Cox–de Boor triangle run in the scalar type, so dual numbers carry ∂/∂u and
-//! ∂/∂Pⱼ exactly. For NURBS with weights wⱼ, W = Σ wⱼNⱼ and W′ = Σ wⱼN′ⱼ:
-//! C = Σ wⱼNⱼPⱼ / W and C′ = (Σ wⱼN′ⱼPⱼ − W′·C) / W. Lines and Bézier curves are B-splines on
-//! clamped knots over [0, 1].
+//! over the p + 1 control points of u's knot span, where Rⱼ = Nⱼ for B-splines (Bézier curves and
+//! lines being B-splines on the knots of [`KnotVector::bezier`]) and Rⱼ = wⱼNⱼ/W, W = Σ wⱼNⱼ,
+//! for NURBS. The basis functions, their derivatives and the rational quotient come from the
+//! geometry kernel ([`camber_geom::basis`]): one evaluator, run in the scalar type so that dual
+//! numbers carry ∂/∂u and ∂/∂Pⱼ exactly. This module only adapts it to blocks and adds the
+//! fixed-parameter shortcut below.
 //!
 //! When u is data (a contact at a given parameter, a joint at a curve's end), the weights being
 //! data too, C(u), C′(u) and C″(u) are fixed linear combinations of the p + 1 control points of
@@ -20,11 +21,16 @@
 //! C′ read two points), so a residual at a fixed parameter neither evaluates the basis again nor
 //! carries the other control points through its derivatives.
 
-use camber_solve::scalar::{cst, from_usize, re};
+use camber_geom::basis::{basis_function_derivatives_at, rational_basis_derivatives};
+use camber_geom::KnotVector;
+use camber_solve::scalar::{cst, re};
 use camber_solve::Scalar;
 use smallvec::SmallVec;
 
 use crate::entity::Entity;
+
+/// The basis values of one evaluation: rows k = 0 … order of p + 1 derivatives dᵏRⱼ/duᵏ.
+type BasisRows<T> = SmallVec<[T; 32]>;
 
 /// Degree, knots and weights of a curve entity, for evaluation at generic scalars.
 ///
@@ -42,7 +48,7 @@ use crate::entity::Entity;
 #[derive(Debug, Clone, PartialEq)]
 pub struct CurveBasis {
     degree: usize,
-    knots: Vec<f64>,
+    knots: KnotVector<f64>,
     weights: Option<Vec<f64>>,
     count: usize,
     /// Set by [`CurveBasis::at`]: the evaluation is at a fixed parameter and reads only the
@@ -71,20 +77,11 @@ impl CurveBasis {
     /// The basis of a curve entity (`None` for points and circles).
     pub fn of(entity: &Entity) -> Option<Self> {
         let count = entity.points().len();
-        let clamped01 = |p: usize| {
-            let mut k = vec![0.0; p + 1];
-            k.extend(std::iter::repeat_n(1.0, p + 1));
-            k
-        };
         let (degree, knots, weights) = match entity {
-            Entity::Line(_) => (1, clamped01(1), None),
-            Entity::Bezier(c) => (c.degree(), clamped01(c.degree()), None),
-            Entity::BSpline(c) => (c.degree(), c.knots().as_slice().to_vec(), None),
-            Entity::Nurbs(c) => (
-                c.degree(),
-                c.knots().as_slice().to_vec(),
-                Some(c.weights().to_vec()),
-            ),
+            Entity::Line(_) => (1, KnotVector::bezier(1), None),
+            Entity::Bezier(c) => (c.degree(), KnotVector::bezier(c.degree()), None),
+            Entity::BSpline(c) => (c.degree(), c.knots().clone(), None),
+            Entity::Nurbs(c) => (c.degree(), c.knots().clone(), Some(c.weights().to_vec())),
             Entity::Point(_) | Entity::Circle { .. } => return None,
         };
         Some(Self {
@@ -117,27 +114,15 @@ impl CurveBasis {
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn at(&self, u: f64, order: usize) -> (CurveBasis, SmallVec<[usize; 8]>) {
-        let p = self.degree;
         let order = order.min(2);
-        let Some((first, [n0, n1, n2, _])) = self.basis_derivatives(u, false) else {
+        let Some((first, rows)) = self.basis_rows(u, 2) else {
             return (self.clone(), (0..self.count).collect());
         };
-        // Rᵣ = wᵣNᵣ/W and its derivatives (the rational basis; Nᵣ itself without weights).
-        let (mut w0, mut w1, mut w2) = (0.0, 0.0, 0.0);
-        for r in 0..=p {
-            let w = self.weight(first + r);
-            w0 += w * n0[r];
-            w1 += w * n1[r];
-            w2 += w * n2[r];
-        }
+        let w = self.degree + 1;
         let mut coefficients: SmallVec<[[f64; 3]; 8]> = SmallVec::new();
         let mut points = SmallVec::new();
-        for r in 0..=p {
-            let w = self.weight(first + r);
-            let r0 = w * n0[r] / w0;
-            let r1 = (w * n1[r] - w1 * r0) / w0;
-            let r2 = (w * n2[r] - 2.0 * w1 * r1 - w2 * r0) / w0;
-            let mut c = [r0, r1, r2];
+        for r in 0..w {
+            let mut c = [rows[r], rows[w + r], rows[2 * w + r]];
             c[order + 1..].fill(0.0);
             if c.iter().any(|v| *v != 0.0) {
                 coefficients.push(c);
@@ -221,13 +206,12 @@ impl CurveBasis {
             return 0..self.count();
         }
         let (a, b) = self.domain();
-        let k = self.span(u.clamp(a, b));
+        let k = self.knots.find_span(self.degree, u.clamp(a, b));
         k.saturating_sub(self.degree)..(k + 1).min(self.count)
     }
 
-    /// C(u) alone in f64 (u clamped to the domain), by the Cox–de Boor triangle of the p + 1
-    /// basis values without their derivatives: the cheap evaluation for dense sampling. Equal to
-    /// `eval(points, u).0` up to rounding.
+    /// C(u) alone in f64 (u clamped to the domain): the cheap evaluation for dense sampling,
+    /// equal to `eval(points, u).0`.
     ///
     /// ```
     /// use camber_sketch::{curve_eval::CurveBasis, Entity};
@@ -238,82 +222,18 @@ impl CurveBasis {
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn point(&self, points: &[&[f64]], u: f64) -> [f64; 2] {
-        let p = self.degree;
-        if self.fixed.is_some()
-            || self.count == 0
-            || self.knots.len() < self.count + p + 1
-            || points.len() < self.count
-        {
-            return self.eval(points, u).0;
+        match &self.fixed {
+            Some(_) => self.eval(points, u).0,
+            None => self.derivatives::<f64, 1>(points, u)[0],
         }
-        let (a, b) = self.domain();
-        let u = u.clamp(a, b);
-        let k = self.span(u);
-        let kn = &self.knots;
-        let mut n: SmallVec<[f64; 8]> = smallvec::smallvec![0.0; p + 1];
-        let mut left: SmallVec<[f64; 8]> = smallvec::smallvec![0.0; p + 1];
-        let mut right: SmallVec<[f64; 8]> = smallvec::smallvec![0.0; p + 1];
-        n[0] = 1.0;
-        for j in 1..=p {
-            left[j] = u - kn[k + 1 - j];
-            right[j] = kn[k + j] - u;
-            let mut saved = 0.0;
-            for r in 0..j {
-                let den = right[r + 1] + left[j - r];
-                let temp = if den.abs() > 0.0 { n[r] / den } else { 0.0 };
-                n[r] = saved + right[r + 1] * temp;
-                saved = left[j - r] * temp;
-            }
-            n[j] = saved;
-        }
-        let first = k - p;
-        let (mut c, mut w_sum) = ([0.0; 2], 0.0);
-        for (r, nr) in n.iter().enumerate() {
-            let w = self.weight(first + r) * nr;
-            let q = points[first + r];
-            c[0] += w * q[0];
-            c[1] += w * q[1];
-            w_sum += w;
-        }
-        if self.weights.is_some() {
-            c[0] /= w_sum;
-            c[1] /= w_sum;
-        }
-        c
     }
 
     /// The parametric domain [u_p, u_{n}] (n = number of control points).
     pub fn domain(&self) -> (f64, f64) {
-        let a = self.knots.get(self.degree).copied().unwrap_or(0.0);
-        let b = self.knots.get(self.count).copied().unwrap_or(1.0);
+        let k = self.knots.as_slice();
+        let a = k.get(self.degree).copied().unwrap_or(0.0);
+        let b = k.get(self.count).copied().unwrap_or(1.0);
         (a, b)
-    }
-
-    /// The span k with u_k ≤ u < u_{k+1}, clamped to the domain (the last non-empty span at
-    /// its end).
-    fn span(&self, u: f64) -> usize {
-        let (p, n) = (self.degree, self.count);
-        let (a, b) = self.domain();
-        if u >= b || u.is_nan() {
-            return n - 1;
-        }
-        if u <= a {
-            let mut k = p;
-            while k + 1 < n && self.knots[k + 1] <= a {
-                k += 1;
-            }
-            return k;
-        }
-        let (mut lo, mut hi) = (p, n);
-        while hi - lo > 1 {
-            let mid = (lo + hi) / 2;
-            if u < self.knots[mid] {
-                hi = mid;
-            } else {
-                lo = mid;
-            }
-        }
-        lo
     }
 
     /// C(u) and C′(u) with the control points `points[j] = [x, y]` (at least
@@ -324,214 +244,55 @@ impl CurveBasis {
             let [c, c1, _] = Self::fixed_eval(f, points, 1);
             return (c, c1);
         }
-        let zero = [T::zero(), T::zero()];
-        let p = self.degree;
-        if self.count == 0 || self.knots.len() < self.count + p + 1 || points.len() < self.count {
-            return (zero, zero);
-        }
-        let (a, b) = self.domain();
-        let u = if re(u) < a {
-            cst(a)
-        } else if re(u) > b {
-            cst(b)
-        } else {
-            u
-        };
-        let k = self.span(re(u));
-        let kn = &self.knots;
-        // Cox–de Boor: n holds degree-j functions N_{k−j..k}; `low` keeps degree p − 1.
-        let mut n: SmallVec<[T; 8]> = smallvec::smallvec![T::zero(); p + 1];
-        let mut low: SmallVec<[T; 8]> = smallvec::smallvec![T::zero(); p + 1];
-        let mut left: SmallVec<[T; 8]> = smallvec::smallvec![T::zero(); p + 1];
-        let mut right: SmallVec<[T; 8]> = smallvec::smallvec![T::zero(); p + 1];
-        n[0] = T::one();
-        for j in 1..=p {
-            if j == p {
-                low.copy_from_slice(&n);
-            }
-            left[j] = u - cst(kn[k + 1 - j]);
-            right[j] = cst::<T>(kn[k + j]) - u;
-            let mut saved = T::zero();
-            for r in 0..j {
-                let den = right[r + 1] + left[j - r];
-                let temp = if re(den).abs() > 0.0 {
-                    n[r] / den
-                } else {
-                    T::zero()
-                };
-                n[r] = saved + right[r + 1] * temp;
-                saved = left[j - r] * temp;
-            }
-            n[j] = saved;
-        }
-        if p == 0 {
-            low[0] = T::zero();
-        }
-        let first = k - p;
-        let pf: T = from_usize(p);
-        let mut dn: SmallVec<[T; 8]> = smallvec::smallvec![T::zero(); p + 1];
-        for r in 0..=p {
-            let i = first + r;
-            let mut d = T::zero();
-            if r >= 1 {
-                let den = kn[i + p] - kn[i];
-                if den.abs() > 0.0 {
-                    d += pf * low[r - 1] / cst(den);
-                }
-            }
-            if r < p {
-                let den = kn[i + p + 1] - kn[i + 1];
-                if den.abs() > 0.0 {
-                    d -= pf * low[r] / cst(den);
-                }
-            }
-            dn[r] = d;
-        }
-        let (mut c, mut c1) = (zero, zero);
-        match &self.weights {
-            None => {
-                for r in 0..=p {
-                    let q = points[first + r];
-                    for k2 in 0..2 {
-                        c[k2] += n[r] * q[k2];
-                        c1[k2] += dn[r] * q[k2];
-                    }
-                }
-            }
-            Some(w) => {
-                let (mut big_w, mut big_w1) = (T::zero(), T::zero());
-                for r in 0..=p {
-                    let wr = cst::<T>(w.get(first + r).copied().unwrap_or(1.0));
-                    big_w += wr * n[r];
-                    big_w1 += wr * dn[r];
-                    let q = points[first + r];
-                    for k2 in 0..2 {
-                        c[k2] += wr * n[r] * q[k2];
-                        c1[k2] += wr * dn[r] * q[k2];
-                    }
-                }
-                for k2 in 0..2 {
-                    c[k2] /= big_w;
-                    c1[k2] = (c1[k2] - big_w1 * c[k2]) / big_w;
-                }
-            }
-        }
+        let [c, c1] = self.derivatives::<T, 2>(points, u);
         (c, c1)
     }
-}
 
-impl CurveBasis {
-    /// C(u), C′(u) and C″(u) (for curvature). The basis derivatives come from the Cox–de Boor
-    /// triangle kept at degrees p − 2, p − 1 and p:
-    /// N′ⱼ,ₚ = p·(Nⱼ,ₚ₋₁/Δⱼ − Nⱼ₊₁,ₚ₋₁/Δⱼ₊₁) with Δⱼ = u_{j+p} − u_j, applied twice for N″;
-    /// for NURBS, C″ = (Σ wⱼN″ⱼPⱼ − 2W′·C′ − W″·C)/W. Same conventions as [`CurveBasis::eval`].
+    /// C(u), C′(u) and C″(u) (for curvature). Same conventions as [`CurveBasis::eval`].
     pub fn eval2<T: Scalar>(&self, points: &[&[T]], u: T) -> [[T; 2]; 3] {
         if let Some(f) = &self.fixed {
             debug_assert!(f.order >= 2, "eval2 on a basis fixed at order {}", f.order);
             return Self::fixed_eval(f, points, 2);
         }
-        let zero = [T::zero(), T::zero()];
-        if points.len() < self.count {
-            return [zero; 3];
-        }
-        let Some((first, [n0, n1, n2, _])) = self.basis_derivatives(u, false) else {
-            return [zero; 3];
-        };
-        let mut c = [zero; 3];
-        let (mut w0, mut w1, mut w2) = (T::zero(), T::zero(), T::zero());
-        for r in 0..n0.len() {
-            let wr = cst::<T>(self.weight(first + r));
-            w0 += wr * n0[r];
-            w1 += wr * n1[r];
-            w2 += wr * n2[r];
-            let q = points[first + r];
-            for d in 0..2 {
-                c[0][d] += wr * n0[r] * q[d];
-                c[1][d] += wr * n1[r] * q[d];
-                c[2][d] += wr * n2[r] * q[d];
-            }
-        }
-        if self.weights.is_some() {
-            // Per coordinate: C = A/W, C′ = (A′ − W′C)/W, C″ = (A″ − 2W′C′ − W″C)/W.
-            let rational = |a0: T, a1: T, a2: T| {
-                let c0 = a0 / w0;
-                let c1 = (a1 - w1 * c0) / w0;
-                (c0, c1, (a2 - cst::<T>(2.0) * w1 * c1 - w2 * c0) / w0)
-            };
-            let (x0, x1, x2) = rational(c[0][0], c[1][0], c[2][0]);
-            let (y0, y1, y2) = rational(c[0][1], c[1][1], c[2][1]);
-            return [[x0, y0], [x1, y1], [x2, y2]];
-        }
-        c
+        self.derivatives::<T, 3>(points, u)
     }
 
-    /// C(u), C′(u), C″(u) and C‴(u) (the third derivative from one more application of the
-    /// derivative recursion, zero for degrees below 3; for NURBS,
-    /// C‴ = (Σ wⱼN‴ⱼPⱼ − 3W′·C″ − 3W″·C′ − W‴·C)/W). Same conventions as
+    /// C(u), C′(u), C″(u) and C‴(u) (zero for degrees below 3). Same conventions as
     /// [`CurveBasis::eval`]; a basis fixed by [`CurveBasis::at`] gives C‴ = 0 (it keeps
     /// coefficients up to C″ only).
     pub fn eval3<T: Scalar>(&self, points: &[&[T]], u: T) -> [[T; 2]; 4] {
-        let zero = [T::zero(), T::zero()];
         if let Some(f) = &self.fixed {
             let [c0, c1, c2] = Self::fixed_eval(f, points, 2);
-            return [c0, c1, c2, zero];
+            return [c0, c1, c2, [T::zero(); 2]];
         }
-        if points.len() < self.count {
-            return [zero; 4];
-        }
-        let Some((first, n)) = self.basis_derivatives(u, true) else {
-            return [zero; 4];
-        };
-        let mut c = [zero; 4];
-        let mut w = [T::zero(); 4];
-        for r in 0..n[0].len() {
-            let wr = cst::<T>(self.weight(first + r));
-            let q = points[first + r];
-            for k in 0..4 {
-                w[k] += wr * n[k][r];
-                for d in 0..2 {
-                    c[k][d] += wr * n[k][r] * q[d];
-                }
-            }
-        }
-        if self.weights.is_some() {
-            // Per coordinate: C = A/W, C′ = (A′ − W′C)/W, C″ = (A″ − 2W′C′ − W″C)/W,
-            // C‴ = (A‴ − 3W′C″ − 3W″C′ − W‴C)/W.
-            let (two, three) = (cst::<T>(2.0), cst::<T>(3.0));
-            let rational = |a: [T; 4]| {
-                let c0 = a[0] / w[0];
-                let c1 = (a[1] - w[1] * c0) / w[0];
-                let c2 = (a[2] - two * w[1] * c1 - w[2] * c0) / w[0];
-                let c3 = (a[3] - three * w[1] * c2 - three * w[2] * c1 - w[3] * c0) / w[0];
-                [c0, c1, c2, c3]
-            };
-            let x = rational([c[0][0], c[1][0], c[2][0], c[3][0]]);
-            let y = rational([c[0][1], c[1][1], c[2][1], c[3][1]]);
-            return [[x[0], y[0]], [x[1], y[1]], [x[2], y[2]], [x[3], y[3]]];
-        }
-        c
+        self.derivatives::<T, 4>(points, u)
     }
 
-    /// The weight of control point j (1 for non-rational curves).
-    fn weight(&self, j: usize) -> f64 {
-        self.weights
-            .as_ref()
-            .and_then(|w| w.get(j).copied())
-            .unwrap_or(1.0)
+    /// C⁽ᵏ⁾(u) = Σⱼ R⁽ᵏ⁾ⱼ(u)·Pⱼ for k = 0 … N − 1 over the whole curve (zeros when the points
+    /// or the knots are too few).
+    fn derivatives<T: Scalar, const N: usize>(&self, points: &[&[T]], u: T) -> [[T; 2]; N] {
+        let mut out = [[T::zero(); 2]; N];
+        if points.len() < self.count {
+            return out;
+        }
+        let Some((first, rows)) = self.basis_rows(u, N - 1) else {
+            return out;
+        };
+        let w = self.degree + 1;
+        for (k, c) in out.iter_mut().enumerate() {
+            for (r, n) in rows[k * w..(k + 1) * w].iter().enumerate() {
+                let q = points[first + r];
+                c[0] += *n * q[0];
+                c[1] += *n * q[1];
+            }
+        }
+        out
     }
 
     /// The index of the first of the p + 1 basis functions that can be non-zero at u (clamped
-    /// to the domain) and their values, first and second derivatives (and third when `third`,
-    /// else zeros), from the Cox–de Boor triangle kept at degrees p − 3 to p:
-    /// N′ⱼ,ₚ = p·(Nⱼ,ₚ₋₁/Δⱼ − Nⱼ₊₁,ₚ₋₁/Δⱼ₊₁) with Δⱼ = u_{j+p} − u_j (0/0 read as 0),
-    /// applied twice for N″ and three times for N‴. `None` for a basis without a valid knot
-    /// vector.
-    #[allow(clippy::type_complexity)] // four parallel arrays of p + 1 values
-    fn basis_derivatives<T: Scalar>(
-        &self,
-        u: T,
-        third: bool,
-    ) -> Option<(usize, [SmallVec<[T; 8]>; 4])> {
+    /// to the domain) and their derivatives up to `order` (rational for NURBS), by the geometry
+    /// kernel's evaluator with the knots as data. `None` without a valid knot vector.
+    fn basis_rows<T: Scalar>(&self, u: T, order: usize) -> Option<(usize, BasisRows<T>)> {
         let p = self.degree;
         if self.count == 0 || self.knots.len() < self.count + p + 1 {
             return None;
@@ -544,82 +305,14 @@ impl CurveBasis {
         } else {
             u
         };
-        let k = self.span(re(u));
-        let kn = &self.knots;
-        // levels[d] holds the degree-d functions N_{k−d..k}.
-        let mut levels: SmallVec<[SmallVec<[T; 8]>; 8]> = SmallVec::new();
-        let mut n: SmallVec<[T; 8]> = smallvec::smallvec![T::zero(); p + 1];
-        n[0] = T::one();
-        levels.push(n.clone());
-        for j in 1..=p {
-            let mut next: SmallVec<[T; 8]> = smallvec::smallvec![T::zero(); p + 1];
-            for r in 0..=j {
-                // N_{i,j} with i = k − j + r, from N_{i,j−1} (index r − 1) and N_{i+1,j−1} (r).
-                let i = k + r - j;
-                let mut v = T::zero();
-                if r >= 1 {
-                    let den = kn[i + j] - kn[i];
-                    if den.abs() > 0.0 {
-                        v += (u - cst(kn[i])) / cst(den) * n[r - 1];
-                    }
-                }
-                if r < j {
-                    let den = kn[i + j + 1] - kn[i + 1];
-                    if den.abs() > 0.0 {
-                        v += (cst::<T>(kn[i + j + 1]) - u) / cst(den) * n[r];
-                    }
-                }
-                next[r] = v;
-            }
-            n = next;
-            levels.push(n.clone());
+        let span = self.knots.find_span(p, re(u));
+        let first = span - p;
+        let mut rows: BasisRows<T> = smallvec::smallvec![T::zero(); (order + 1) * (p + 1)];
+        basis_function_derivatives_at(self.knots.as_slice(), span, u, p, order, &mut rows);
+        if let Some(weights) = self.weights.as_deref().and_then(|w| w.get(first..=span)) {
+            rational_basis_derivatives(weights, order, &mut rows);
         }
-        // The derivative of degree-d functions (d + 1 of them) from degree-(d − 1) values.
-        let derive = |d: usize, lower: &[T]| -> SmallVec<[T; 8]> {
-            let mut out: SmallVec<[T; 8]> = smallvec::smallvec![T::zero(); p + 1];
-            if d == 0 {
-                return out;
-            }
-            let df: T = from_usize(d);
-            for r in 0..=d {
-                let i = k + r - d;
-                let mut v = T::zero();
-                if r >= 1 {
-                    let den = kn[i + d] - kn[i];
-                    if den.abs() > 0.0 {
-                        v += df * lower[r - 1] / cst(den);
-                    }
-                }
-                if r < d {
-                    let den = kn[i + d + 1] - kn[i + 1];
-                    if den.abs() > 0.0 {
-                        v -= df * lower[r] / cst(den);
-                    }
-                }
-                out[r] = v;
-            }
-            out
-        };
-        let n0 = levels[p].clone();
-        let n1 = if p >= 1 {
-            derive(p, &levels[p - 1])
-        } else {
-            smallvec::smallvec![T::zero(); p + 1]
-        };
-        let n2 = if p >= 2 {
-            let lower1 = derive(p - 1, &levels[p - 2]);
-            derive(p, &lower1)
-        } else {
-            smallvec::smallvec![T::zero(); p + 1]
-        };
-        let n3 = if p >= 3 && third {
-            let lower2 = derive(p - 2, &levels[p - 3]);
-            let lower1 = derive(p - 1, &lower2);
-            derive(p, &lower1)
-        } else {
-            smallvec::smallvec![T::zero(); p + 1]
-        };
-        Some((k - p, [n0, n1, n2, n3]))
+        Some((first, rows))
     }
 }
 

@@ -263,7 +263,7 @@ impl Sketch {
             return self.drag_nonlinear(point, &comp, plain);
         }
         let cp = self.build_component(&comp, Some(point))?;
-        let options = self.options();
+        let options = &self.solve_options();
         let lin = cp.problem().linearize()?;
         let (m, n) = (lin.g.len(), lin.map.len());
         let pin = [m - 2, m - 1];
@@ -304,7 +304,7 @@ impl Sketch {
             match factorize(&lin.jacobian.select_rows(&all)) {
                 Ok(f) => (all, Some(f)),
                 Err(camber_solve::Error::RankDeficient { .. }) => {
-                    let rows = analysed_rows(crate::solve::NAMING_ANALYSIS_MAX_ENTRIES)?;
+                    let rows = analysed_rows(usize::MAX)?;
                     let f = factorize(&lin.jacobian.select_rows(&rows))?;
                     (rows, Some(f))
                 }
@@ -397,7 +397,7 @@ impl Sketch {
                 return Err(Error::NotDraggable { point });
             }
         }
-        let freedom = nonlinear_freedom(&cp, block, self.options())?;
+        let freedom = nonlinear_freedom(&cp, block, &self.solve_options())?;
         let base_rows = cp.problem.num_residuals();
         if freedom == Freedom::Free {
             cp.problem.fix_block(block)?;
@@ -415,7 +415,7 @@ impl Sketch {
             },
             block,
             z,
-            options: self.options().clone(),
+            options: self.solve_options(),
             freedom,
             base_rows,
         }))

@@ -14,12 +14,15 @@
 //! Rⱼ = wⱼNⱼ/W,  R′ⱼ = wⱼ(N′ⱼ·W − Nⱼ·W′)/W².
 //!
 //! [`Entity::coefficients`] returns those cⱼ (only the p + 1 that can be non-zero), which makes
-//! every built-in constraint a constant-coefficient combination of control-point blocks.
+//! every constraint at a *given* parameter a constant-coefficient combination of control-point
+//! blocks (an affine constraint); those with a free parameter, distances, angles and lengths are
+//! nonlinear.
 
-use camber_geom::{BSplineCurve2, BezierCurve2, KnotVector, NurbsCurve2};
+use camber_geom::{BSplineCurve2, BezierCurve2, NurbsCurve2};
 use nalgebra::Point2;
 use smallvec::SmallVec;
 
+use crate::curve_eval::CurveBasis;
 use crate::errors::{Error, Result};
 use crate::ids::{EntityId, PointRef};
 
@@ -57,13 +60,6 @@ pub enum Entity {
     BSpline(BSplineCurve2<f64>),
     /// A NURBS curve (weights held fixed).
     Nurbs(NurbsCurve2<f64>),
-}
-
-/// Degree, knots and weights of a curve: what its basis needs.
-struct BasisData<'a> {
-    degree: usize,
-    knots: std::borrow::Cow<'a, [f64]>,
-    weights: Option<&'a [f64]>,
 }
 
 impl Entity {
@@ -203,62 +199,32 @@ impl Entity {
         )
     }
 
-    /// Degree, knots and weights (Bézier curves and lines get clamped knots on [0, 1]).
-    fn basis(&self) -> Option<BasisData<'_>> {
-        let clamped01 = |p: usize| {
-            let mut k = vec![0.0; p + 1];
-            k.extend(std::iter::repeat_n(1.0, p + 1));
-            std::borrow::Cow::Owned(k)
-        };
-        match self {
-            Entity::Line(_) => Some(BasisData {
-                degree: 1,
-                knots: clamped01(1),
-                weights: None,
-            }),
-            Entity::Bezier(c) => Some(BasisData {
-                degree: c.degree(),
-                knots: clamped01(c.degree()),
-                weights: None,
-            }),
-            Entity::BSpline(c) => Some(BasisData {
-                degree: c.degree(),
-                knots: std::borrow::Cow::Borrowed(c.knots().as_slice()),
-                weights: None,
-            }),
-            Entity::Nurbs(c) => Some(BasisData {
-                degree: c.degree(),
-                knots: std::borrow::Cow::Borrowed(c.knots().as_slice()),
-                weights: Some(c.weights()),
-            }),
-            _ => None,
-        }
-    }
-
     /// The parametric domain [a, b] of a curve (`None` for points and circles).
     pub fn domain(&self) -> Option<(f64, f64)> {
-        if matches!(self, Entity::Line(_) | Entity::Bezier(_)) {
-            return Some((0.0, 1.0));
+        match self {
+            Entity::Line(_) | Entity::Bezier(_) => Some((0.0, 1.0)),
+            Entity::BSpline(c) => Some(c.knots().domain(c.degree())),
+            Entity::Nurbs(c) => Some(c.knots().domain(c.degree())),
+            Entity::Point(_) | Entity::Circle { .. } => None,
         }
-        let b = self.basis()?;
-        let k = &b.knots;
-        Some((k[b.degree], k[k.len() - 1 - b.degree]))
     }
 
     /// Whether the curve is clamped at its start (`at_end` false) or end (true): the first
     /// (last) p + 1 knots are equal, so C(a) = P₀ and C′(a) ∥ P₁ − P₀ (likewise at b).
     pub fn is_clamped(&self, at_end: bool) -> bool {
-        let Some(b) = self.basis() else {
-            return false;
+        let (degree, knots) = match self {
+            Entity::Line(_) => return true,
+            Entity::Bezier(c) => return c.degree() >= 1,
+            Entity::BSpline(c) => (c.degree(), c.knots().as_slice()),
+            Entity::Nurbs(c) => (c.degree(), c.knots().as_slice()),
+            Entity::Point(_) | Entity::Circle { .. } => return false,
         };
-        let k = &b.knots;
-        let p = b.degree;
         let run: &[f64] = if at_end {
-            &k[k.len() - 1 - p..]
+            &knots[knots.len() - 1 - degree..]
         } else {
-            &k[..=p]
+            &knots[..=degree]
         };
-        p >= 1 && run.windows(2).all(|w| (w[1] - w[0]).abs() <= 0.0)
+        degree >= 1 && run.windows(2).all(|w| (w[1] - w[0]).abs() <= 0.0)
     }
 
     /// The coefficients cⱼ of C⁽ᵏ⁾(u) = Σ cⱼ·Pⱼ for `order` k ∈ {0, 1} (see the module
@@ -293,55 +259,16 @@ impl Entity {
             });
         }
         let order = order.min(1);
-        if let Entity::Line(_) | Entity::Bezier(_) = self {
-            let p = self.points().len() - 1;
-            // Bernstein polynomials directly: no knot vector needed.
-            let mut v: SmallVec<[f64; 16]> = smallvec::smallvec![0.0; p + 1];
-            camber_geom::bernstein::bernstein_derivatives(u, order, &mut v);
-            let mut out: Terms = v.iter().copied().enumerate().collect();
-            out.retain(|(_, c)| c.abs() > 0.0);
-            return Ok(out);
-        }
-        let Some(b) = self.basis() else {
-            return Err(Error::WrongEntityKind {
-                entity: id,
-                expected: "curve",
-                found: self.kind_name(),
-            });
+        let basis = CurveBasis::of(self).ok_or(Error::WrongEntityKind {
+            entity: id,
+            expected: "curve",
+            found: self.kind_name(),
+        })?;
+        let (at_u, points) = basis.at(u, order);
+        let mut out: Terms = match at_u.fixed_coefficients() {
+            Some(c) => points.iter().zip(c).map(|(j, c)| (*j, c[order])).collect(),
+            None => Terms::new(),
         };
-        let p = b.degree;
-        let knots = KnotVector::new_unchecked(b.knots.to_vec());
-        let span = knots.find_span(p, u);
-        let w = p + 1;
-        let mut ders: SmallVec<[f64; 32]> = smallvec::smallvec![0.0; 2 * w];
-        knots.basis_function_derivatives(span, u, p, 1, &mut ders);
-        let first = span - p;
-        let mut out = Terms::new();
-        match b.weights {
-            None => {
-                for j in 0..w {
-                    out.push((first + j, ders[order * w + j]));
-                }
-            }
-            Some(weights) => {
-                let (mut big_w, mut big_w1) = (0.0, 0.0);
-                for j in 0..w {
-                    let wj = weights.get(first + j).copied().unwrap_or(1.0);
-                    big_w += wj * ders[j];
-                    big_w1 += wj * ders[w + j];
-                }
-                for j in 0..w {
-                    let wj = weights.get(first + j).copied().unwrap_or(1.0);
-                    let (n, n1) = (ders[j], ders[w + j]);
-                    let c = if order == 0 {
-                        wj * n / big_w
-                    } else {
-                        wj * (n1 * big_w - n * big_w1) / (big_w * big_w)
-                    };
-                    out.push((first + j, c));
-                }
-            }
-        }
         out.retain(|(_, c)| c.abs() > 0.0);
         Ok(out)
     }
@@ -390,10 +317,41 @@ impl Entity {
         }
     }
 
-    /// Checks an entity on entry to a sketch (finite points, positive radius).
-    pub(crate) fn validate(&self) -> Result<()> {
+    /// Checks an entity on entry to a sketch as `id`: finite points, a positive radius, a
+    /// line or curve whose points do not all coincide (its squared extent is a positive f64),
+    /// a spline degree of at least 1.
+    pub(crate) fn validate(&self, id: EntityId) -> Result<()> {
         for (i, p) in self.points().iter().enumerate() {
             check_point("point", i, p)?;
+        }
+        let degenerate = |reason| Error::DegenerateEntity {
+            entity: id,
+            kind: self.kind_name(),
+            reason,
+        };
+        if let Entity::BSpline(c) = self {
+            if c.degree() == 0 {
+                return Err(degenerate("has degree 0 (a spline needs degree 1 or more)"));
+            }
+        }
+        if let Entity::Nurbs(c) = self {
+            if c.degree() == 0 {
+                return Err(degenerate("has degree 0 (a spline needs degree 1 or more)"));
+            }
+        }
+        if !matches!(self, Entity::Point(_) | Entity::Circle { .. }) {
+            let points = self.points();
+            let spread = points
+                .iter()
+                .map(|p| (p - points[0]).norm_squared())
+                .fold(0.0_f64, f64::max);
+            if spread <= 0.0 || spread.is_nan() {
+                return Err(degenerate(if matches!(self, Entity::Line(_)) {
+                    "has zero length"
+                } else {
+                    "has all its control points at one place"
+                }));
+            }
         }
         if let Entity::Circle { radius, .. } = self {
             if !(radius.is_finite() && *radius > 0.0) {
@@ -441,6 +399,7 @@ pub(crate) fn check_finite2(what: &'static str, index: usize, v: [f64; 2]) -> Re
 mod tests {
     use super::*;
     use approx::assert_relative_eq;
+    use camber_geom::KnotVector;
     use camber_geom::ParametricCurve;
 
     #[test]

@@ -96,6 +96,29 @@ pub enum Error {
         /// "start" or "end".
         end: &'static str,
     },
+    /// An entity whose points all lie on one place (a zero-length line, a curve whose control
+    /// points are all equal), or a curve of degree 0: it has no direction, so every tangent,
+    /// length and angle of it is undefined.
+    ///
+    /// ```
+    /// use camber_sketch::{EntityId, Error, Sketch};
+    /// use nalgebra::Point2;
+    /// let mut s = Sketch::new();
+    /// let p = Point2::new(1.0, 1.0);
+    /// assert_eq!(
+    ///     s.add_line(p, p).unwrap_err(),
+    ///     Error::DegenerateEntity { entity: EntityId(0), kind: "line", reason: "has zero length" }
+    /// );
+    /// ```
+    #[error("{entity} ({kind}) {reason}")]
+    DegenerateEntity {
+        /// The entity.
+        entity: EntityId,
+        /// Its kind ("line", "bezier", …).
+        kind: &'static str,
+        /// What is degenerate, in words.
+        reason: &'static str,
+    },
     /// An entity cannot be removed while constraints read it.
     #[error("{entity} is read by {constraint}")]
     EntityInUse {
@@ -108,19 +131,19 @@ pub enum Error {
     #[error("geometry: {0}")]
     Geometry(#[from] camber_geom::Error),
     /// Dependent constraints whose values contradict each other; nothing was moved.
-    #[error("conflicting constraints: {constraints:?}")]
+    #[error("conflicting constraints: {}", ids(constraints))]
     Conflicting {
         /// The constraints owning an inconsistent dependent row.
         constraints: Vec<ConstraintId>,
     },
     /// Consistent dependent constraints while the options forbid dropping them.
-    #[error("redundant constraints: {constraints:?}")]
+    #[error("redundant constraints: {}", ids(constraints))]
     Redundant {
         /// The constraints owning a consistent dependent row.
         constraints: Vec<ConstraintId>,
     },
     /// Constraints still violated after the solve; nothing was moved.
-    #[error("constraints not satisfied (constraint, max |g|): {failed:?}")]
+    #[error("constraints not satisfied: {}", residuals(failed))]
     NotSatisfied {
         /// Each failing constraint with its largest absolute residual.
         failed: Vec<(ConstraintId, f64)>,
@@ -144,7 +167,7 @@ pub enum Error {
         dot: f64,
     },
     /// The dragged point cannot move: it is fixed or fully determined by the constraints.
-    #[error("{point:?} cannot be dragged: it is fixed or determined by the constraints")]
+    #[error("{point} cannot be dragged: it is fixed or determined by the constraints")]
     NotDraggable {
         /// The point asked for.
         point: PointRef,
@@ -184,8 +207,12 @@ pub enum Error {
         /// The entity named twice.
         entity: EntityId,
     },
-    /// After the solve, the curve's tangent vanishes at a contact (a cusp). Nothing was moved.
-    #[error("{constraint} would leave a cusp at its contact (|C′| = {speed})")]
+    /// After the solve, the curve's tangent vanishes at a contact, or an oriented tangent
+    /// (a joint's, a recorded tangent direction's) collapses to zero length (a cusp). Nothing
+    /// was moved.
+    #[error(
+        "{constraint} would leave a cusp where it holds: the tangent vanishes (|C′| = {speed})"
+    )]
     Cusp {
         /// The contact constraint.
         constraint: ConstraintId,
@@ -273,6 +300,31 @@ pub enum Error {
         /// What was wrong, with the value.
         detail: String,
     },
+}
+
+/// A constraint in words; the drag's own pin row is "the drag target", never its internal id.
+fn constraint_name(id: ConstraintId) -> String {
+    if id == crate::component::DRAG_CONSTRAINT {
+        "the drag target".to_owned()
+    } else {
+        id.to_string()
+    }
+}
+
+/// "constraint 4, constraint 7" for a list of ids.
+fn ids(list: &[ConstraintId]) -> String {
+    list.iter()
+        .map(|&c| constraint_name(c))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// "constraint 4 (|g| = 1.000e-3), …" for failing constraints with their largest residual.
+fn residuals(list: &[(ConstraintId, f64)]) -> String {
+    list.iter()
+        .map(|&(c, g)| format!("{} (|g| = {g:.3e})", constraint_name(c)))
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 impl From<camber_solve::Error> for Error {

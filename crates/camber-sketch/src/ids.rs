@@ -53,6 +53,24 @@ pub enum PointRef {
     End(EntityId),
 }
 
+/// In words: "point entity 3", "control point 1 of entity 0", "the start of entity 2", "the
+/// end of entity 2".
+///
+/// ```
+/// use camber_sketch::{EntityId, PointRef};
+/// assert_eq!(PointRef::Control(EntityId(0), 1).to_string(), "control point 1 of entity 0");
+/// ```
+impl std::fmt::Display for PointRef {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            PointRef::Point(e) => write!(f, "point {e}"),
+            PointRef::Control(e, i) => write!(f, "control point {i} of {e}"),
+            PointRef::Start(e) => write!(f, "the start of {e}"),
+            PointRef::End(e) => write!(f, "the end of {e}"),
+        }
+    }
+}
+
 impl PointRef {
     /// The entity the point belongs to.
     pub fn entity(self) -> EntityId {

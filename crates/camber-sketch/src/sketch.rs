@@ -19,6 +19,11 @@ use crate::component::problem::build;
 use crate::component::{Component, ComponentProblem};
 use crate::constraints::Constraint;
 use crate::entity::{combine, Entity};
+
+/// How many rounding units ε·M above the exact residual [`Sketch::solve_options`] allows: 2⁸,
+/// room for the few operations a residual row takes and for Newton's stop at a tenth of the
+/// tolerance.
+pub const ROUNDING_HEADROOM: f64 = 256.0;
 use crate::errors::{Error, Result};
 use crate::ids::{EntityId, PointRef};
 use crate::lookup::EntityLookup;
@@ -133,7 +138,7 @@ impl Sketch {
     /// validation errors of [`Sketch::add_entity`]. Nothing is added then.
     pub fn add_entity_with_id(&mut self, id: EntityId, entity: Entity) -> Result<EntityId> {
         self.check_free_id(id.0)?;
-        entity.validate()?;
+        entity.validate(id)?;
         self.next_id = self.next_id.max(id.0.saturating_add(1));
         let node = self.graph.add_node(Node::Entity(id));
         self.entities.insert(id, (entity, node));
@@ -379,7 +384,7 @@ impl Sketch {
                 found: entity.kind_name(),
             });
         }
-        entity.validate()?;
+        entity.validate(id)?;
         let previous = match self.entities.get_mut(&id) {
             Some(slot) => std::mem::replace(&mut slot.0, entity),
             None => return Err(Error::UnknownEntity { entity: id }),
@@ -578,6 +583,47 @@ impl Sketch {
     /// The solver options.
     pub fn options(&self) -> &Options {
         &self.options
+    }
+
+    /// The options solves, drags and analyses of this sketch use: [`Sketch::options`] with the
+    /// residual tolerance raised, for sketches far from the origin, to what double rounding
+    /// can reach at their coordinates: tol = max(tolerance, [`ROUNDING_HEADROOM`]·ε·M), M the
+    /// largest |coordinate| (or radius) of any entity and ε the machine epsilon. Residuals are
+    /// differences of coordinates, so they cannot be computed more exactly than ε·M: with the
+    /// default 10⁻¹⁰ nothing changes below M ≈ 1,760, and a rectangle at x = 10⁷ solves to
+    /// 5.7·10⁻⁷ instead of chasing 10⁻¹⁰ it can never reach. The solve report records the
+    /// tolerance used ([`crate::SketchReport::tolerance`]).
+    ///
+    /// ```
+    /// use camber_sketch::Sketch;
+    /// use nalgebra::Point2;
+    /// let mut s = Sketch::new();
+    /// s.add_point(Point2::new(1.0, 2.0))?;
+    /// assert_eq!(s.solve_options().tolerance, s.options().tolerance);
+    /// s.add_point(Point2::new(1e7, 0.0))?;
+    /// assert!(s.solve_options().tolerance > 5e-7);
+    /// # Ok::<(), camber_sketch::Error>(())
+    /// ```
+    pub fn solve_options(&self) -> Options {
+        let magnitude = self
+            .entities()
+            .flat_map(|(_, e)| {
+                let radius = match e {
+                    Entity::Circle { radius, .. } => radius.abs(),
+                    _ => 0.0,
+                };
+                e.points()
+                    .iter()
+                    .map(move |p| p.x.abs().max(p.y.abs()).max(radius))
+            })
+            .filter(|m| m.is_finite())
+            .fold(0.0, f64::max);
+        let floor = ROUNDING_HEADROOM * f64::EPSILON * magnitude;
+        let mut options = self.options.clone();
+        if floor > options.tolerance {
+            options.tolerance = floor;
+        }
+        options
     }
 
     /// Replaces the solver options (tolerances, thresholds, the nonlinear settings such as a

@@ -11,9 +11,7 @@ use crate::component::Component;
 use crate::errors::Result;
 use crate::sketch::Sketch;
 
-pub use crate::component::policy::{
-    default_options, penetration_tolerance, MAX_ACTIVE_ROWS, NAMING_ANALYSIS_MAX_ENTRIES,
-};
+pub use crate::component::policy::{default_options, penetration_tolerance, MAX_ACTIVE_ROWS};
 
 /// The outcome of one component's solve.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
@@ -48,6 +46,10 @@ pub struct SketchReport {
     pub components: Vec<ComponentReport>,
     /// Near-degenerate input found in the sketch before the solve ([`Sketch::warnings`]).
     pub warnings: Vec<crate::warnings::Warning>,
+    /// The residual tolerance the solve used ([`Sketch::solve_options`]): the options'
+    /// tolerance, raised for sketches far from the origin to what double rounding can reach at
+    /// their coordinates.
+    pub tolerance: f64,
 }
 
 /// # Solving
@@ -88,7 +90,7 @@ impl Sketch {
         SolveReport,
         Vec<(crate::ids::EntityId, crate::entity::Entity)>,
     )> {
-        let first = match policy::solve(cp, self, self.options(), Start::Cold) {
+        let first = match policy::solve(cp, self, &self.solve_options(), Start::Cold) {
             Ok(solved) => return Ok(solved),
             Err(e) => e,
         };
@@ -100,7 +102,8 @@ impl Sketch {
             for (block, u) in &start {
                 cp.problem.set_block_values(*block, &[*u])?;
             }
-            if let Ok((mut r, solved)) = policy::solve(cp, self, self.options(), Start::Cold) {
+            if let Ok((mut r, solved)) = policy::solve(cp, self, &self.solve_options(), Start::Cold)
+            {
                 r.reason = format!(
                     "{}; from contact start {} of {} after the given guesses failed",
                     r.reason,
@@ -119,6 +122,7 @@ impl Sketch {
         let mut clean = Vec::new();
         let mut report = SketchReport {
             warnings: self.warnings(),
+            tolerance: self.solve_options().tolerance,
             ..SketchReport::default()
         };
         let mut free = Vec::new();

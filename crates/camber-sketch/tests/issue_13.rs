@@ -252,3 +252,73 @@ fn issue_13_case_6_nonlinear_drags_keep_contacts_honest() {
         assert!(accepted > 0, "control point {k}: every step refused");
     }
 }
+
+/// Case 2: a coincidence between two fixed points (0, 0) and (1, 0). Its y row is consistent
+/// and its x row is not: the constraint is conflicting, and only conflicting (deleting it would
+/// change what the sketch asks for).
+#[test]
+fn issue_13_case_2_a_constraint_is_never_both_redundant_and_conflicting() {
+    let mut s = Sketch::new();
+    let a = s.add_point(Point2::new(0.0, 0.0)).unwrap();
+    let b = s.add_point(Point2::new(1.0, 0.0)).unwrap();
+    s.add_constraint(Fixed::entity(a)).unwrap();
+    s.add_constraint(Fixed::entity(b)).unwrap();
+    let coincidence = s
+        .add_constraint(camber_sketch::constraints::Coincident {
+            a: PointRef::Point(a),
+            b: PointRef::Point(b),
+        })
+        .unwrap();
+    let analyses = s.analyze().unwrap();
+    let conflicting: Vec<_> = analyses
+        .iter()
+        .flat_map(|c| c.analysis.conflicting.clone())
+        .collect();
+    let redundant: Vec<_> = analyses
+        .iter()
+        .flat_map(|c| c.analysis.redundant.clone())
+        .collect();
+    assert!(conflicting.contains(&coincidence), "{analyses:?}");
+    assert!(
+        conflicting.iter().all(|c| !redundant.contains(c)),
+        "redundant {redundant:?}, conflicting {conflicting:?}"
+    );
+}
+
+/// A chain of `n` points, the first fixed, each at distance 1 from the next (nonlinear rows):
+/// 2n unknowns, 2 fixed, n − 1 rows, so n − 1 degrees of freedom and nothing dependent.
+pub fn point_chain(n: usize) -> Sketch {
+    let mut s = Sketch::new();
+    let points: Vec<EntityId> = (0..n)
+        .map(|i| {
+            let t = i as f64;
+            s.add_point(Point2::new(t, 0.1 * (t * 0.7).sin())).unwrap()
+        })
+        .collect();
+    s.add_constraint(Fixed::entity(points[0])).unwrap();
+    for pair in points.windows(2) {
+        let d = (s.point(PointRef::Point(pair[1])).unwrap()
+            - s.point(PointRef::Point(pair[0])).unwrap())
+        .norm();
+        s.add_constraint(camber_sketch::constraints::Distance {
+            a: PointRef::Point(pair[0]),
+            b: PointRef::Point(pair[1]),
+            distance: d,
+        })
+        .unwrap();
+    }
+    s
+}
+
+/// Case 5: the analysis of a large component is sparse: a 100,000-point chain is analysed
+/// (it aborted out of memory building a dense 10⁵ × 2·10⁵ matrix), with the right DOF.
+#[test]
+fn issue_13_case_5_a_huge_chain_is_analysed_without_a_dense_matrix() {
+    let n = 100_000;
+    let s = point_chain(n);
+    let analyses = s.analyze().unwrap();
+    assert_eq!(analyses.len(), 1);
+    let a = &analyses[0].analysis;
+    assert_eq!((a.free_unknowns, a.rank, a.dof), (2 * n - 2, n - 1, n - 1));
+    assert!(a.redundant.is_empty() && a.conflicting.is_empty());
+}

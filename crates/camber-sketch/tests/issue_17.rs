@@ -70,3 +70,38 @@ fn a_clean_sketch_has_no_warnings() {
     let (s, _) = camber_workloads::w2_bspline7().unwrap();
     assert_eq!(s.warnings(), vec![]);
 }
+
+/// Item 2: the tolerance is relative to the sketch's coordinates. The same perturbed rectangle
+/// at offsets 10⁻⁶ … 10⁷ solves on the same path in as many Newton iterations (one fewer far
+/// out, where the looser tolerance is met one quadratic step earlier; before, it took 100
+/// Newton iterations and SLSQP at 10⁶ and was "conflicting" at 10⁷), and the report says which
+/// tolerance it used.
+#[test]
+fn issue_17_rectangles_far_from_the_origin_solve_alike() {
+    let mut paths = Vec::new();
+    for offset in [0.0, 1e-6, 1e-3, 1.0, 1e3, 1e5, 1e6, 1e7] {
+        let (mut s, r) =
+            camber_workloads::w5_at(1, nalgebra::Vector2::new(offset, offset)).unwrap();
+        let report = s.solve().unwrap_or_else(|e| panic!("offset {offset}: {e}"));
+        assert!(
+            camber_workloads::w5_valid(&s, &r, 1e-6),
+            "offset {offset}: not valid"
+        );
+        let c = &report.components[0].report;
+        paths.push((offset, c.solver, c.iterations));
+        let floor = 256.0 * f64::EPSILON * (offset + 2.0);
+        assert!(report.tolerance >= s.options().tolerance);
+        assert!(
+            report.tolerance <= s.options().tolerance.max(floor),
+            "offset {offset}"
+        );
+    }
+    let (_, solver, iterations) = paths[0];
+    for (offset, s, i) in &paths {
+        assert_eq!(*s, solver, "offset {offset}: {paths:?}");
+        assert!(
+            *i == iterations || *i + 1 == iterations,
+            "offset {offset}: {paths:?}"
+        );
+    }
+}

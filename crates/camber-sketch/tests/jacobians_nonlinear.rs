@@ -53,6 +53,40 @@ fn check_step<R: camber_solve::Residual>(r: &R, blocks: &[Vec<f64>], step: f64) 
     check_jacobian(r, &refs, step, 1.0).unwrap().error
 }
 
+/// Whether the autodiff Jacobian jumps (by more than 1e-4, scaled) between x − δ·eᵢ and
+/// x + δ·eᵢ along some coordinate i: a kink at x, where no difference quotient is a reference.
+/// Smooth residuals change by about 2δ·|∂²r| there, far below the threshold.
+fn kinked<R: camber_solve::Residual>(r: &R, blocks: &[Vec<f64>], delta: f64) -> bool {
+    use camber_solve::autodiff::{jacobian_with, JacobianMode};
+    let dim = r.dim();
+    let n: usize = blocks.iter().map(Vec::len).sum();
+    let jac_at = |moved: &[Vec<f64>]| -> Vec<f64> {
+        let refs: Vec<&[f64]> = moved.iter().map(|b| &b[..]).collect();
+        let (mut values, mut jac) = (vec![0.0; dim], vec![0.0; dim * n]);
+        jacobian_with(r, &refs, &mut values, &mut jac, JacobianMode::Columns)
+            .expect("Jacobian dimensions");
+        jac
+    };
+    for (bi, block) in blocks.iter().enumerate() {
+        for ci in 0..block.len() {
+            let shifted = |sign: f64| {
+                let mut moved = blocks.to_vec();
+                moved[bi][ci] += sign * delta;
+                jac_at(&moved)
+            };
+            let (minus, plus) = (shifted(-1.0), shifted(1.0));
+            if minus
+                .iter()
+                .zip(&plus)
+                .any(|(a, b)| (a - b).abs() > 1e-4 * a.abs().max(1.0))
+            {
+                return true;
+            }
+        }
+    }
+    false
+}
+
 /// Whether Q(s) = [G(s) − G(u) − G′(u)(s − u)]/(s − u)² (written out here from the curve's
 /// points; G the signed gap to the target, squared form for a circle) has one clear least
 /// local minimum over the bracket of [`Clearance`] (u to the end of the domain on its side),
@@ -168,6 +202,12 @@ proptest! {
                 let spread = errors.iter().fold(0.0_f64, |m, e| m.max(*e))
                     - errors.iter().fold(f64::INFINITY, |m, e| m.min(*e));
                 prop_assume!(spread < 1e-5);
+                // A minimiser switching branch exactly at this configuration puts a kink at
+                // x itself: central differences of every step then average the two one-sided
+                // slopes and agree with each other, but not with either side. Such draws are
+                // skipped too (the Jacobian jumps between x − δ and x + δ).
+                // (Checked only for a draw that would fail: the check costs 2n Jacobians.)
+                prop_assume!(errors[0] < 1e-5 || !kinked(r, &b, 1e-7));
                 prop_assert!(errors[0] < 1e-5, "{errors:?}");
             }
         }

@@ -1,7 +1,8 @@
 //! Rank and degree-of-freedom analysis of a linearized problem.
 //!
-//! The numerical rank r of J (m × n) is the number of singular values above
-//! `rank_tolerance`·σ_max (SVD, dense). DOF = n − r, n being the reduced (free) unknowns.
+//! Dense form ([`analyze_rows`], small problems): the numerical rank r of J (m × n) is the
+//! number of singular values above `rank_tolerance`·σ_max (SVD). DOF = n − r, n being the
+//! reduced (free) unknowns.
 //!
 //! Which rows are dependent is decided greedily in row order by Gram–Schmidt on the rows of J
 //! (a QR factorization of Jᵀ that rejects instead of pivoting), orthogonalizing twice for
@@ -11,20 +12,31 @@
 //! h_i = g_i − Σ λ_k·g_k is available at no extra cost: |h_i| ≤ `residual_tolerance` means the
 //! row is **redundant** (consistent: J·Δz = −g stays solvable without it and then satisfies it);
 //! otherwise it is **conflicting** (no Δz satisfies all rows).
+//!
+//! Sparse form ([`analyze_rows_sparse`], any size, never a dense matrix): the same greedy
+//! decision in row order by a row-by-row Givens QR of [J | −g] (each incoming row is rotated
+//! against the triangular rows already accepted, which keeps the elimination orthogonal and so
+//! as stable as Gram–Schmidt). A row whose remainder has norm at most `rank_tolerance`·s is
+//! dependent, s being the largest row norm of J (σ_max ≥ s ≥ σ_max/√m); its rotated right-hand
+//! side is the least-squares residual it adds, zero (within `residual_tolerance`) for a
+//! redundant row. The rank is the number of independent rows. Work and storage follow the
+//! fill of the triangular factor: linear in the length of chains and ladders.
 
 use nalgebra::{DMatrix, DVector};
 
 use crate::errors::Result;
 use crate::ids::ConstraintId;
 use crate::reduced::Linearization;
-use crate::sparse::check_len;
+use crate::sparse::{check_len, SparseMatrix};
 
 /// A row found to depend on the rows before it.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct DependentRow {
     /// The row of J.
     pub row: usize,
-    /// |g_i − Σ λ_k·g_k|: zero (within tolerance) for a redundant row.
+    /// How far the row's right-hand side is from those of the rows it depends on: zero
+    /// (within tolerance) for a redundant row. Dense form: |g_i − Σ λ_k·g_k| with row i ≈
+    /// Σ λ_k·(row k); sparse form: the least-squares residual the row adds.
     pub mismatch: f64,
     /// Whether the row is consistent (redundant) rather than conflicting.
     pub consistent: bool,
@@ -33,10 +45,11 @@ pub struct DependentRow {
 /// The outcome of [`analyze_rows`].
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct RowAnalysis {
-    /// Numerical rank of J by SVD.
+    /// Numerical rank of J (by SVD in the dense form, the independent rows in the sparse one).
     pub rank: usize,
-    /// Largest singular value σ_max of J (the scale of the rank tolerance).
-    pub sigma_max: f64,
+    /// The scale of the rank tolerance: σ_max of J in the dense form, its largest row norm in
+    /// the sparse one.
+    pub scale: f64,
     /// Rows kept, in order (independent of each other).
     pub independent: Vec<usize>,
     /// Rows dependent on earlier rows, in order.
@@ -109,10 +122,166 @@ pub fn analyze_rows(
     }
     Ok(RowAnalysis {
         rank,
-        sigma_max,
+        scale: sigma_max,
         independent,
         dependent,
     })
+}
+
+/// Above this many entries of J (rows × unknowns), [`analyze`] runs the sparse analysis.
+pub const DENSE_ANALYSIS_MAX_ENTRIES: usize = 1 << 16;
+
+/// [`analyze_rows`] without a dense matrix: dependent rows in row order by a row-by-row Givens
+/// QR (see the module documentation for the tolerances).
+///
+/// ```
+/// use camber_solve::{analysis::analyze_rows_sparse, SparseMatrix};
+/// // x₀ = 1, x₀ = 1 again (redundant), x₀ + x₁ = 2, x₀ = 2 (conflicting); g = J·0 − b.
+/// let j = SparseMatrix::try_from_triplets(4, 2, &[(0, 0, 1.0), (1, 0, 1.0), (2, 0, 1.0), (2, 1, 1.0), (3, 0, 1.0)])?;
+/// let a = analyze_rows_sparse(&j, &[-1.0, -1.0, -2.0, -2.0], 1e-10, 1e-10)?;
+/// assert_eq!((a.rank, a.independent.clone()), (2, vec![0, 2]));
+/// assert!(a.dependent[0].consistent && a.dependent[0].row == 1);
+/// assert!(!a.dependent[1].consistent && a.dependent[1].row == 3);
+/// # Ok::<(), camber_solve::Error>(())
+/// ```
+///
+/// # Errors
+/// [`crate::Error::Dimension`] when `g` does not have one entry per row.
+pub fn analyze_rows_sparse(
+    j: &SparseMatrix,
+    g: &[f64],
+    rank_tolerance: f64,
+    residual_tolerance: f64,
+) -> Result<RowAnalysis> {
+    let (m, n) = (j.nrows(), j.ncols());
+    check_len("residual rows", m, g.len())?;
+    let scale = (0..m)
+        .map(|i| j.row(i).1.iter().map(|v| v * v).sum::<f64>().sqrt())
+        .fold(0.0, f64::max);
+    let threshold = rank_tolerance * scale;
+    // Entries this small are rounding left by a rotation: dropped, so they neither become
+    // pivots nor grow the fill.
+    let negligible = f64::EPSILON * scale;
+    let mut factor = GivensRows::new(n);
+    let mut independent = Vec::new();
+    let mut dependent = Vec::new();
+    for (i, gi) in g.iter().enumerate() {
+        let (cols, vals) = j.row(i);
+        let row = cols.iter().copied().zip(vals.iter().copied());
+        match factor.insert(row, *gi, threshold, negligible) {
+            None => independent.push(i),
+            Some(h) => dependent.push(DependentRow {
+                row: i,
+                mismatch: h.abs(),
+                consistent: h.abs() <= residual_tolerance,
+            }),
+        }
+    }
+    Ok(RowAnalysis {
+        rank: independent.len(),
+        scale,
+        independent,
+        dependent,
+    })
+}
+
+/// The upper-triangular factor R of the rows accepted so far, one sparse row per pivot
+/// column, each with its rotated right-hand side.
+struct GivensRows {
+    /// `rows[k]`: the row whose first entry is in column k, as (column, value) pairs in
+    /// increasing column order, and its right-hand side.
+    rows: Vec<Option<Row>>,
+    /// The rows of R an incoming row has rotated so far, as they were before: a row found
+    /// dependent leaves R as it found it, so R stays the factor of the accepted rows alone.
+    undo: Vec<(usize, Row)>,
+    /// Scratch for the incoming row and a rotation's output.
+    incoming: Vec<(usize, f64)>,
+    spare: Vec<(usize, f64)>,
+}
+
+/// A row of R: its entries and its right-hand side.
+type Row = (Vec<(usize, f64)>, f64);
+
+impl GivensRows {
+    fn new(columns: usize) -> Self {
+        Self {
+            rows: vec![None; columns],
+            undo: Vec::new(),
+            incoming: Vec::new(),
+            spare: Vec::new(),
+        }
+    }
+
+    /// Rotates the row w (with right-hand side h) against R until its first entry has no
+    /// pivot row: it joins R there (`None`, independent) when its norm exceeds `threshold`;
+    /// else it is dependent, R is restored, and its remaining right-hand side is returned.
+    fn insert(
+        &mut self,
+        row: impl Iterator<Item = (usize, f64)>,
+        h: f64,
+        threshold: f64,
+        negligible: f64,
+    ) -> Option<f64> {
+        let mut w = std::mem::take(&mut self.incoming);
+        w.clear();
+        w.extend(row.filter(|(_, v)| v.abs() > negligible));
+        let mut h = h;
+        self.undo.clear();
+        loop {
+            let Some(&(k, wk)) = w.first() else {
+                return self.dependent(w, h);
+            };
+            let Some((r, hr)) = self.rows[k].take() else {
+                let norm = w.iter().map(|(_, v)| v * v).sum::<f64>().sqrt();
+                if norm > threshold && norm > 0.0 {
+                    self.rows[k] = Some((w, h));
+                    return None;
+                }
+                return self.dependent(w, h);
+            };
+            // [c s; −s c] with c = r_kk/ρ, s = w_k/ρ zeroes w_k.
+            let rho = r[0].1.hypot(wk);
+            let (c, s) = (r[0].1 / rho, wk / rho);
+            let mut new_r = Vec::with_capacity(r.len() + w.len());
+            let mut rest = std::mem::take(&mut self.spare);
+            rest.clear();
+            let (mut a, mut b) = (0, 0);
+            while a < r.len() || b < w.len() {
+                let ca = r.get(a).map_or(usize::MAX, |e| e.0);
+                let cb = w.get(b).map_or(usize::MAX, |e| e.0);
+                let col = ca.min(cb);
+                let ra = if ca == col { r[a].1 } else { 0.0 };
+                let wb = if cb == col { w[b].1 } else { 0.0 };
+                a += usize::from(ca == col);
+                b += usize::from(cb == col);
+                if col == k {
+                    new_r.push((k, rho));
+                    continue;
+                }
+                let (x, y) = (c * ra + s * wb, c * wb - s * ra);
+                if x.abs() > negligible {
+                    new_r.push((col, x));
+                }
+                if y.abs() > negligible {
+                    rest.push((col, y));
+                }
+            }
+            let new_hr = c * hr + s * h;
+            h = c * h - s * hr;
+            self.undo.push((k, (r, hr)));
+            self.rows[k] = Some((new_r, new_hr));
+            self.spare = std::mem::replace(&mut w, rest);
+        }
+    }
+
+    /// A dependent row: undoes its rotations of R and returns its remaining right-hand side.
+    fn dependent(&mut self, w: Vec<(usize, f64)>, h: f64) -> Option<f64> {
+        for (k, row) in self.undo.drain(..).rev() {
+            self.rows[k] = Some(row);
+        }
+        self.incoming = w;
+        Some(h)
+    }
 }
 
 /// The DOF analysis of a problem, by constraint.
@@ -124,15 +293,18 @@ pub struct DofAnalysis {
     pub rank: usize,
     /// n − r.
     pub dof: usize,
-    /// Constraints owning a consistent dependent row (each once, in row order).
+    /// Constraints owning a consistent dependent row and no inconsistent one (each once, in
+    /// row order).
     pub redundant: Vec<ConstraintId>,
-    /// Constraints owning an inconsistent dependent row (each once, in row order).
+    /// Constraints owning an inconsistent dependent row (each once, in row order); never also
+    /// listed as redundant.
     pub conflicting: Vec<ConstraintId>,
     /// The row-level result.
     pub rows: RowAnalysis,
 }
 
-/// Runs [`analyze_rows`] on a linearization and names the constraints.
+/// Runs [`analyze_rows`] (up to [`DENSE_ANALYSIS_MAX_ENTRIES`] entries of J) or
+/// [`analyze_rows_sparse`] on a linearization and names the constraints.
 ///
 /// # Errors
 /// As [`analyze_rows`].
@@ -141,12 +313,17 @@ pub fn analyze(
     rank_tolerance: f64,
     residual_tolerance: f64,
 ) -> Result<DofAnalysis> {
-    let rows = analyze_rows(
-        &lin.jacobian.to_dense(),
-        &lin.g,
-        rank_tolerance,
-        residual_tolerance,
-    )?;
+    let (m, n) = (lin.jacobian.nrows(), lin.jacobian.ncols());
+    let rows = if m.saturating_mul(n) <= DENSE_ANALYSIS_MAX_ENTRIES {
+        analyze_rows(
+            &lin.jacobian.to_dense(),
+            &lin.g,
+            rank_tolerance,
+            residual_tolerance,
+        )?
+    } else {
+        analyze_rows_sparse(&lin.jacobian, &lin.g, rank_tolerance, residual_tolerance)?
+    };
     let mut redundant = Vec::new();
     let mut conflicting = Vec::new();
     for d in &rows.dependent {
@@ -161,6 +338,9 @@ pub fn analyze(
             }
         }
     }
+    // A constraint with one inconsistent row is conflicting, even where its other rows are
+    // merely redundant: never both.
+    redundant.retain(|c| !conflicting.contains(c));
     let free_unknowns = lin.map.len();
     Ok(DofAnalysis {
         free_unknowns,
@@ -176,6 +356,86 @@ pub fn analyze(
 mod tests {
     use super::*;
     use nalgebra::dmatrix;
+    use proptest::prelude::*;
+
+    /// Rows that are random small-integer rows or integer combinations of earlier ones, with a
+    /// right-hand side consistent with a point z (g = J·z), except where `break_row` shifts it.
+    fn dependent_system() -> impl Strategy<Value = (DMatrix<f64>, Vec<f64>)> {
+        (2usize..7, 3usize..9, any::<u64>()).prop_map(|(n, m, seed)| {
+            let mut state = seed | 1;
+            let mut next = move |k: i64| {
+                state ^= state << 13;
+                state ^= state >> 7;
+                state ^= state << 17;
+                (state % (2 * k as u64 + 1)) as i64 - k
+            };
+            let mut j = DMatrix::<f64>::zeros(m, n);
+            for i in 0..m {
+                if i > 0 && next(1) == 0 {
+                    for k in 0..i {
+                        let a = next(2) as f64;
+                        for c in 0..n {
+                            j[(i, c)] += a * j[(k, c)];
+                        }
+                    }
+                } else {
+                    for c in 0..n {
+                        j[(i, c)] = next(3) as f64;
+                    }
+                }
+            }
+            let z: Vec<f64> = (0..n).map(|_| next(4) as f64 * 0.25).collect();
+            let mut g: Vec<f64> = (0..m)
+                .map(|i| (0..n).map(|c| j[(i, c)] * z[c]).sum())
+                .collect();
+            let broken = (next(100) + 100) as usize % (m + 2);
+            if broken < m {
+                g[broken] += 0.5;
+            }
+            (j, g)
+        })
+    }
+
+    proptest! {
+        /// The sparse analysis agrees with the dense one (SVD rank, Gram–Schmidt rows):
+        /// same rank, same independent rows, same redundant/conflicting verdicts.
+        #[test]
+        fn sparse_agrees_with_dense((j, g) in dependent_system()) {
+            let dense = analyze_rows(&j, &g, 1e-10, 1e-9).unwrap();
+            let sparse = analyze_rows_sparse(&SparseMatrix::from_dense(&j), &g, 1e-10, 1e-9).unwrap();
+            prop_assert_eq!(sparse.rank, dense.rank);
+            prop_assert_eq!(&sparse.independent, &dense.independent);
+            let verdicts = |a: &RowAnalysis| a.dependent.iter().map(|d| (d.row, d.consistent)).collect::<Vec<_>>();
+            prop_assert_eq!(verdicts(&sparse), verdicts(&dense));
+        }
+    }
+
+    #[test]
+    fn a_long_chain_is_analysed_sparsely() {
+        // x_{i+1} − x_i = 1 for 200,000 unknowns, then a closing row x_last − x_0 = n − 1
+        // (redundant) and x_0 = 5 twice with different values (the second conflicting).
+        let n = 200_000;
+        let mut t = Vec::new();
+        let mut g = Vec::new();
+        for i in 0..n - 1 {
+            t.push((i, i, -1.0));
+            t.push((i, i + 1, 1.0));
+            g.push(-1.0);
+        }
+        t.push((n - 1, 0, -1.0));
+        t.push((n - 1, n - 1, 1.0));
+        g.push(-((n - 1) as f64));
+        t.push((n, 0, 1.0));
+        g.push(-5.0);
+        t.push((n + 1, 0, 1.0));
+        g.push(-6.0);
+        let j = SparseMatrix::try_from_triplets(n + 2, n, &t).unwrap();
+        let a = analyze_rows_sparse(&j, &g, 1e-10, 1e-9).unwrap();
+        assert_eq!(a.rank, n);
+        let verdicts: Vec<(usize, bool)> =
+            a.dependent.iter().map(|d| (d.row, d.consistent)).collect();
+        assert_eq!(verdicts, vec![(n - 1, true), (n + 1, false)]);
+    }
 
     #[test]
     fn independent_rows_are_all_kept() {

@@ -105,6 +105,20 @@ pub enum Error {
         /// The constraints owning an inconsistent dependent row, in row order.
         constraints: Vec<ConstraintId>,
     },
+    /// No solver met every constraint, and nothing proves that they conflict: the
+    /// least-squares search stopped where its residual still has a component along the range
+    /// of the Jacobian (it could go on decreasing), so the constraints may well be consistent
+    /// from another start. Not [`Error::Conflicting`], which needs that proof.
+    #[error(
+        "not solved: {tried}; largest residuals: {}",
+        worst_residuals(residuals)
+    )]
+    NotSolved {
+        /// The solvers tried and how each ended.
+        tried: String,
+        /// Each constraint's largest |g| where the least-squares search stopped.
+        residuals: Vec<crate::report::ConstraintResidual>,
+    },
     /// Consistent but dependent rows while the options forbid dropping them.
     #[error("redundant constraints: {constraints:?}")]
     Redundant {
@@ -228,3 +242,22 @@ pub enum Error {
 
 /// Result with camber-solve's [`Error`].
 pub type Result<T> = std::result::Result<T, Error>;
+
+/// The constraints above 1e-9 in `residuals`, largest first, at most five, as text.
+fn worst_residuals(residuals: &[crate::report::ConstraintResidual]) -> String {
+    let mut worst: Vec<&crate::report::ConstraintResidual> = residuals
+        .iter()
+        .filter(|r| r.max_abs > 1e-9 || r.max_abs.is_nan())
+        .collect();
+    worst.sort_by(|a, b| b.max_abs.total_cmp(&a.max_abs));
+    let shown: Vec<String> = worst
+        .iter()
+        .take(5)
+        .map(|r| format!("constraint {} |g| = {:.3e}", r.constraint.0, r.max_abs))
+        .collect();
+    if shown.is_empty() {
+        "none above 1e-9".to_owned()
+    } else {
+        shown.join(", ")
+    }
+}

@@ -35,9 +35,9 @@
 use crate::errors::{Error, Result};
 use crate::evaluator::{max_abs, norm2, Evaluator};
 use crate::min_norm::MinNormFactorization;
+use crate::options::Options;
 use crate::problem::Problem;
 use crate::projected_cg::{self, CgOutcome, QpData, Start};
-use crate::solve::Options;
 
 /// Reusable buffers of the Newton iterations: a drag session keeps one and passes it to
 /// [`crate::solve_newton_from`] at every mouse event, so repeated solves of the same problem

@@ -2,7 +2,7 @@
 //! selection between them, carried in [`Options::nonlinear`].
 
 use crate::objective::Objective;
-use crate::solve::Options;
+use crate::options::Options;
 
 /// A solver the caller may force instead of the automatic selection (for comparisons).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -1,9 +1,9 @@
 //! The numeric bound residuals are generic over, and helpers around it.
 //!
-//! This is camber-geom's [`Scalar`] (`nalgebra::RealField + Copy`, blanket implemented),
+//! This is camber-scalar's [`Scalar`] (`nalgebra::RealField + Copy`, blanket implemented),
 //! re-exported so that residuals and curve evaluations share one bound: a residual generic over
-//! `T: camber_solve::Scalar` can evaluate any camber-geom curve at `T`. Only the trait and its
-//! helpers come from the geometry crate; the solver knows nothing of curves.
+//! `T: camber_solve::Scalar` can evaluate any camber-geom curve at `T`. The solver knows nothing
+//! of curves and does not depend on the geometry crate.
 //!
 //! ```
 //! use camber_solve::Scalar;
@@ -13,4 +13,4 @@
 //! assert!((camber_solve::scalar::re(c) - 1.5).abs() < 1e-15);
 //! ```
 
-pub use camber_geom::scalar::{cst, from_usize, is_finite, re, Scalar};
+pub use camber_scalar::{cst, from_usize, is_finite, re, Scalar};

@@ -25,8 +25,8 @@ use nlopt::{Algorithm, Nlopt, Target};
 use crate::errors::{Error, Result};
 use crate::evaluator::Evaluator;
 use crate::objective::ObjectiveEval;
+use crate::options::Options;
 use crate::problem::Problem;
-use crate::solve::Options;
 
 /// How an SLSQP run ended (the point is returned beside it).
 #[derive(Debug, Clone, PartialEq)]

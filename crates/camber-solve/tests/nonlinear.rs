@@ -488,3 +488,53 @@ fn issue_11_slsqp_limits() {
         + 1;
     assert!(len_w < i128::from(i32::MAX) / 8, "{len_w}");
 }
+
+/// Issue 13: "conflicting" only when proven. Two circles that do meet, with every solver cut
+/// to one iteration or evaluation: nothing solves, but the least-squares search stopped far
+/// from a least-squares point, so the answer is NotSolved with each constraint's residual (and
+/// nothing moves); with the iterations restored the same problem solves.
+#[test]
+fn a_solve_that_merely_failed_is_not_called_conflicting() {
+    let meeting = || {
+        let mut p = Problem::new();
+        let b = p.add_block(&[3.0, 2.5]).unwrap();
+        p.add_residual(
+            OnCircle {
+                c: [0.0, 0.0],
+                r: 1.0,
+            },
+            &[b],
+            ConstraintId(1),
+        )
+        .unwrap();
+        p.add_residual(
+            OnCircle {
+                c: [1.5, 0.0],
+                r: 1.0,
+            },
+            &[b],
+            ConstraintId(2),
+        )
+        .unwrap();
+        p
+    };
+    let starved = Options::default().with_nonlinear(
+        NonlinearOptions::default()
+            .with_max_iterations(1)
+            .with_slsqp_max_evaluations(1),
+    );
+    let mut p = meeting();
+    let before = p.values().to_vec();
+    match solve(&mut p, &starved) {
+        Err(Error::NotSolved { tried, residuals }) => {
+            assert!(tried.contains("Levenberg"), "{tried}");
+            let named: Vec<ConstraintId> = residuals.iter().map(|r| r.constraint).collect();
+            assert_eq!(named, vec![ConstraintId(1), ConstraintId(2)]);
+            assert!(residuals.iter().all(|r| r.max_abs > 1e-3), "{residuals:?}");
+        }
+        other => panic!("expected NotSolved, got {other:?}"),
+    }
+    assert_eq!(p.values(), &before[..]);
+    let mut q = meeting();
+    assert!(solve(&mut q, &Options::default()).is_ok());
+}

@@ -18,7 +18,7 @@ use camber_sketch::{EntityId, PointRef};
 
 mod rectangles;
 mod two_curves;
-pub use rectangles::{w5, w5_valid, w5b, Rectangles};
+pub use rectangles::{w5, w5_at, w5_valid, w5b, Rectangles};
 pub use two_curves::{two_curves, two_curves_valid, TwoCurves, TWO_CURVES_CIRCLES};
 
 /// W1: the cubic P₀ = (0, 0), P₁ = 1.2·D, P₂ = (2.2, 0.9), P₃ = (3, 0) with D = (cos 30°,

@@ -135,11 +135,28 @@ impl Rectangles {
 /// # Errors
 /// None in practice.
 pub fn w5(n: usize) -> Result<(Sketch, Rectangles)> {
+    w5_at(n, Vector2::zeros())
+}
+
+/// W5 moved by `origin`: the same rectangles, constraints and perturbation with every design
+/// point shifted (issue 17: the same sketch far from the origin must solve alike).
+///
+/// ```
+/// use nalgebra::Vector2;
+/// let (mut s, r) = camber_workloads::w5_at(1, Vector2::new(1e6, -1e6))?;
+/// s.solve()?;
+/// assert!(camber_workloads::w5_valid(&s, &r, 1e-6));
+/// # Ok::<(), camber_sketch::Error>(())
+/// ```
+///
+/// # Errors
+/// None in practice.
+pub fn w5_at(n: usize, origin: Vector2<f64>) -> Result<(Sketch, Rectangles)> {
     let columns = (n as f64).sqrt().ceil().max(1.0) as usize;
     let mut design = Vec::with_capacity(4 * n);
     for k in 0..n {
         let (col, row) = (k % columns, k / columns);
-        let a = Point2::new(2.0 * col as f64, 2.0 * row as f64);
+        let a = Point2::new(2.0 * col as f64, 2.0 * row as f64) + origin;
         let (w, h) = (width(k), height(k));
         let (b, c, d) = (
             a + Vector2::new(w, 0.0),

@@ -21,8 +21,8 @@ pub struct BenchArgs {
     #[arg(long)]
     pub quick: bool,
     /// Sizes N for W3, W3a (segments), W5 (rectangles) and W5b (cells) instead of
-    /// 10,100,1000,10000.
-    #[arg(long, value_delimiter = ',', value_name = "N")]
+    /// 10,100,1000,10000; each from 1 to 100000.
+    #[arg(long, value_delimiter = ',', value_name = "N", value_parser = chain_size)]
     pub sizes: Vec<usize>,
     /// Print JSON (the plan and one object per case) instead of the table.
     #[arg(long)]
@@ -34,11 +34,27 @@ pub struct BenchArgs {
     pub compare: Option<std::path::PathBuf>,
 }
 
+/// The largest size `--sizes` accepts: ten times the standard plan's largest chain, which
+/// already takes minutes; a larger one would only exhaust memory.
+pub const MAX_CHAIN_SIZE: usize = 100_000;
+
+/// Parses one `--sizes` entry: a whole number from 1 to [`MAX_CHAIN_SIZE`].
+fn chain_size(s: &str) -> std::result::Result<usize, String> {
+    let n: usize = s
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{s}` is not a whole number"))?;
+    if n == 0 || n > MAX_CHAIN_SIZE {
+        return Err(format!("{n} is outside 1..={MAX_CHAIN_SIZE}"));
+    }
+    Ok(n)
+}
+
 /// Runs the chosen workloads and prints the table or the JSON. The progress bar goes to
 /// stderr, and only when stderr is a terminal and the output is not JSON.
 pub fn run(args: &BenchArgs) -> Result<()> {
-    if let Some(0) = args.sizes.iter().copied().min() {
-        anyhow::bail!("--sizes: a chain needs at least one segment");
+    if let Some(&n) = args.sizes.iter().find(|&&n| n == 0 || n > MAX_CHAIN_SIZE) {
+        anyhow::bail!("--sizes: {n} is outside 1..={MAX_CHAIN_SIZE}");
     }
     let plan = if args.quick {
         Plan::quick()
@@ -61,8 +77,7 @@ pub fn run(args: &BenchArgs) -> Result<()> {
     };
     let baseline = match &args.compare {
         Some(path) => {
-            let text = std::fs::read_to_string(path)
-                .with_context(|| format!("cannot read the baseline {}", path.display()))?;
+            let text = crate::curve_file::read_text(path)?;
             let b: bench::Baseline = serde_json::from_str(&text).with_context(|| {
                 format!("{} is not a camber bench --json report", path.display())
             })?;

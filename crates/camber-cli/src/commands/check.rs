@@ -13,15 +13,59 @@ use crate::sketch_file::{self, describe_constraints, describe_entities, describe
 pub struct CheckArgs {
     /// The sketch file.
     pub input: PathBuf,
+    /// Print JSON instead of text: `{"components": [{"component": {"entities",
+    /// "constraints"}, "analysis": {"free_unknowns", "rank", "dof", "redundant",
+    /// "conflicting"}}], "warnings": [...]}`.
+    #[arg(long)]
+    pub json: bool,
 }
 
 /// Prints, per component, the free unknowns, the rank, the free DOF and the redundant and
-/// conflicting constraints by id and kind. Conflicts are reported, not treated as a failure:
-/// the exit code is 0 whenever the file loads.
+/// conflicting constraints by id and kind, then the sketch's warnings. Conflicts are
+/// reported, not treated as a failure: the exit code is 0 when the file loads and its analysis
+/// runs, 2 otherwise.
 pub fn run(args: &CheckArgs) -> Result<()> {
     let sketch = sketch_file::load(&args.input)?;
-    let text = check(&sketch).with_context(|| args.input.display().to_string())?;
+    let text = if args.json {
+        check_json(&sketch)
+    } else {
+        check(&sketch)
+    }
+    .with_context(|| args.input.display().to_string())?;
     crate::print_stdout(&text)
+}
+
+/// The JSON report of `check --json`: each component with its DOF analysis (the serde forms
+/// of [`camber_sketch::Component`] and [`camber_solve::DofAnalysis`]) and the warnings.
+///
+/// ```
+/// use camber_cli::{commands::check, sketch_file};
+/// let s = sketch_file::parse(r#"{"version": 1,
+///   "entities": [{"id": 0, "kind": "point", "at": [0, 0]}],
+///   "constraints": [{"id": 1, "kind": "fixed", "target": {"point": {"point": 0}}}]}"#)?;
+/// let v: serde_json::Value = serde_json::from_str(&check::check_json(&s)?)?;
+/// assert_eq!(v["components"][0]["analysis"]["dof"], 0);
+/// assert_eq!(v["warnings"].as_array().map(Vec::len), Some(0));
+/// # Ok::<(), anyhow::Error>(())
+/// ```
+pub fn check_json(sketch: &Sketch) -> Result<String> {
+    let analyses = sketch
+        .analyze()
+        .map_err(|e| anyhow!("analysis failed: {}", describe_error(sketch, &e)))?;
+    let components: Vec<serde_json::Value> = analyses
+        .iter()
+        .map(|a| {
+            Ok(serde_json::json!({
+                "component": serde_json::to_value(&a.component)?,
+                "analysis": serde_json::to_value(&a.analysis)?,
+            }))
+        })
+        .collect::<serde_json::Result<_>>()?;
+    let doc = serde_json::json!({
+        "components": components,
+        "warnings": serde_json::to_value(sketch.warnings())?,
+    });
+    Ok(serde_json::to_string_pretty(&doc)?)
 }
 
 /// The report of [`run`].
@@ -44,10 +88,10 @@ pub fn check(sketch: &Sketch) -> Result<String> {
     for (k, a) in analyses.iter().enumerate() {
         let d = &a.analysis;
         lines.push(format!(
-            "component {} ({}, {} constraints): {} free unknowns, rank {}, DOF {}",
+            "component {} ({}; {}): {} free unknowns, rank {}, DOF {}",
             k + 1,
             describe_entities(&a.component.entities),
-            a.component.constraints.len(),
+            crate::sketch_file::describe_constraint_ids(&a.component.constraints),
             d.free_unknowns,
             d.rank,
             d.dof
@@ -64,5 +108,6 @@ pub fn check(sketch: &Sketch) -> Result<String> {
     if lines.is_empty() {
         lines.push("empty sketch".to_owned());
     }
+    lines.extend(sketch.warnings().iter().map(|w| format!("warning: {w}")));
     Ok(lines.join("\n"))
 }

@@ -7,7 +7,6 @@ use anyhow::{Context, Result};
 use clap::Args;
 
 use crate::commands::{render, solve};
-use crate::curve_file::write_text;
 use crate::sketch_file;
 
 /// The bundled blade section sketch (examples/sketches/blade_section.json).
@@ -27,7 +26,7 @@ pub fn run(args: &DemoArgs) -> Result<()> {
     let report = solve::solve(&mut sketch).context("bundled blade_section.json")?;
     let svg = render::picture(&sketch, true).context("bundled blade_section.json")?;
     let path = args.output.join("blade_section.svg");
-    write_text(&path, &svg)?;
+    crate::output::write_all(&[], &[(path.clone(), svg)])?;
     crate::print_stdout(
         "blade section: pressure side, leading edge, suction side and trailing edge, \
          joined G1 with fixed joint directions",

@@ -19,9 +19,14 @@ pub struct EditArgs {
     #[arg(long, default_value_t = 0)]
     pub port: u16,
     /// The address to listen on. Other machines can reach the editor only if this is not a
-    /// loopback address; it has no password, so keep the default on shared networks.
+    /// loopback address; it has no password, so a non-loopback address also needs
+    /// `--allow-remote`.
     #[arg(long, value_name = "ADDR", default_value_t = IpAddr::V4(Ipv4Addr::LOCALHOST))]
     pub bind: IpAddr,
+    /// Allow a non-loopback `--bind` address: anyone who can reach it can edit and save the
+    /// sketch, since the editor has no authentication.
+    #[arg(long)]
+    pub allow_remote: bool,
     /// Where "Save" writes the sketch (default: the input file itself).
     #[arg(short, long, value_name = "OUT.json")]
     pub output: Option<PathBuf>,
@@ -32,6 +37,20 @@ pub struct EditArgs {
 
 /// Loads the sketch, listens, prints the address, and answers requests until interrupted.
 pub fn run(args: &EditArgs) -> Result<()> {
+    if !args.bind.is_loopback() {
+        if !args.allow_remote {
+            anyhow::bail!(
+                "--bind {}: not a loopback address, so other machines could edit and save the \
+                 sketch without any password; add --allow-remote if that is intended",
+                args.bind
+            );
+        }
+        eprintln!(
+            "camber edit: warning: listening on {}, reachable from other machines without \
+             authentication",
+            args.bind
+        );
+    }
     let mut state = EditorState::load(&args.input, args.output.clone())?;
     let server = Server::bind(SocketAddr::new(args.bind, args.port))?;
     let url = server.url();

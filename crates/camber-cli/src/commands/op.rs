@@ -14,6 +14,7 @@ use anyhow::{bail, Context, Result};
 use camber_geom::curve::check_interior_parameter;
 use clap::{Args, Subcommand};
 
+use super::geometry_op::{self, GeometryOp};
 use crate::curve_file::{self, Curve};
 
 /// Arguments of `camber op`.
@@ -29,7 +30,7 @@ pub struct OpArgs {
 /// Where the result goes.
 #[derive(Debug, Args)]
 pub struct Output {
-    /// The result curve file (for split: the first piece).
+    /// The result curve file.
     #[arg(short, long, value_name = "OUT.json")]
     pub output: PathBuf,
 }
@@ -39,6 +40,7 @@ pub struct Output {
 #[derive(Debug, Subcommand)]
 pub enum Op {
     /// Split at U: the piece before U goes to -o, the piece after U to --second.
+    #[command(mut_arg("output", |a| a.help("The curve file for the first piece (the one before U)")))]
     Split {
         /// The parameter to split at, strictly inside the domain.
         #[arg(long, allow_negative_numbers = true, value_name = "U")]
@@ -51,6 +53,7 @@ pub enum Op {
         second: PathBuf,
     },
     /// Insert the knot U R times (B-spline and NURBS); the shape does not change.
+    #[command(mut_arg("output", |a| a.help("The curve file written: the curve with the knot inserted")))]
     InsertKnot {
         /// The knot value, inside the domain.
         #[arg(long, allow_negative_numbers = true, value_name = "U")]
@@ -63,6 +66,7 @@ pub enum Op {
         out: Output,
     },
     /// Raise the degree T times (Bézier, B-spline, NURBS); the shape does not change.
+    #[command(mut_arg("output", |a| a.help("The curve file written: the curve of raised degree")))]
     Elevate {
         /// How many degrees to add.
         #[arg(long, default_value_t = 1, value_name = "T")]
@@ -72,12 +76,14 @@ pub enum Op {
         out: Output,
     },
     /// Traverse the curve the other way: the new curve at a + b − u is the old one at u.
+    #[command(mut_arg("output", |a| a.help("The curve file written: the reversed curve")))]
     Reverse {
         /// The output file.
         #[command(flatten)]
         out: Output,
     },
     /// Map the domain linearly onto [A, B] (B-spline and NURBS); the shape does not change.
+    #[command(mut_arg("output", |a| a.help("The curve file written: the curve on its new domain")))]
     Reparam {
         /// The new domain, A < B.
         #[arg(long, value_parser = parse_interval, allow_hyphen_values = true, value_name = "A,B")]
@@ -86,6 +92,10 @@ pub enum Op {
         #[command(flatten)]
         out: Output,
     },
+    /// Extension, fitting, interpolation, knot removal, degree reduction and offsets
+    /// (see [`geometry_op`]).
+    #[command(flatten)]
+    Geometry(GeometryOp),
 }
 
 /// Parses `A,B` into two numbers.
@@ -111,6 +121,7 @@ impl Op {
             Op::Elevate { .. } => "elevate",
             Op::Reverse { .. } => "reverse",
             Op::Reparam { .. } => "reparam",
+            Op::Geometry(g) => g.name(),
         }
     }
 
@@ -125,6 +136,7 @@ impl Op {
             )
         };
         let out = match (self, curve) {
+            (Op::Geometry(g), c) => vec![g.apply(c)?.0],
             (Op::Split { at, .. }, c) => {
                 check_interior_parameter(*at, c.as_parametric().domain())
                     .with_context(|| format!("cannot split at {at}"))?;
@@ -169,6 +181,7 @@ impl Op {
             | Op::Elevate { out, .. }
             | Op::Reverse { out }
             | Op::Reparam { out, .. } => vec![&out.output],
+            Op::Geometry(g) => vec![g.output()],
         }
     }
 }
@@ -180,13 +193,23 @@ fn pair<C>((a, b): (C, C), wrap: fn(C) -> Curve) -> Vec<Curve> {
 /// Loads the curve, applies the operation, writes the result file(s) and prints one line per
 /// file written.
 pub fn run(args: &OpArgs) -> Result<()> {
+    if let Op::Geometry(g) = &args.op {
+        return geometry_op::run(&args.curve, g);
+    }
     let curve = curve_file::load(&args.curve)?;
     let results = args
         .op
         .apply(&curve)
         .with_context(|| args.curve.display().to_string())?;
+    let mut files = Vec::new();
     for (result, path) in results.iter().zip(args.op.outputs()) {
-        curve_file::save(path, result)?;
+        let text = result
+            .to_json()
+            .with_context(|| path.display().to_string())?;
+        files.push((path.to_path_buf(), text));
+    }
+    crate::output::write_all(&[&args.curve], &files)?;
+    for (result, path) in results.iter().zip(args.op.outputs()) {
         println!("wrote {}: {}", path.display(), curve_file::describe(result));
     }
     Ok(())

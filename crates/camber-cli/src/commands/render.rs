@@ -10,7 +10,6 @@ use camber_sketch::{ConstraintId, Entity, Sketch};
 use clap::Args;
 use nalgebra::Vector2;
 
-use crate::curve_file::write_text;
 use crate::draw::{self, Comb, SAMPLES_PER_PIECE, TEETH_PER_PIECE};
 use crate::scene::{glyphs, Glyph, View};
 use crate::sketch_file::{self, describe_error};
@@ -24,10 +23,6 @@ pub const CONFLICT: &str = "#c0392b";
 pub const CURVE: &str = "#2471a3";
 /// Colour of point entities.
 pub const POINT: &str = "#34495e";
-
-/// Sketches with more entities are drawn without the DOF analysis (the dense rank analysis
-/// grows with the cube of the size), so conflicts are not marked in them.
-pub const ANALYSIS_MAX_ENTITIES: usize = 200;
 
 /// Arguments of `camber render`.
 #[derive(Debug, Args)]
@@ -46,8 +41,19 @@ pub struct RenderArgs {
 pub fn run(args: &RenderArgs) -> Result<()> {
     let sketch = sketch_file::load(&args.input)?;
     let svg = picture(&sketch, args.combs).with_context(|| args.input.display().to_string())?;
-    write_text(&args.output, &svg)?;
+    crate::output::write_all(&[&args.input], &[(args.output.clone(), svg)])?;
     crate::print_stdout(&format!("wrote {}", args.output.display()))
+}
+
+/// The most constraints whose glyphs a picture draws; above it every k-th is drawn (and every
+/// conflicting one), so a 1,000-segment chain shows its curve rather than a band of glyphs.
+pub const MAX_GLYPH_CONSTRAINTS: usize = 200;
+
+/// Where a glyph sits, for the picture's box.
+fn glyph_anchor(g: &Glyph) -> nalgebra::Point2<f64> {
+    match g {
+        Glyph::Arrow(p, _) | Glyph::Fixed(p) | Glyph::Ring(p) | Glyph::Mark(p, _) => *p,
+    }
 }
 
 fn draw_glyph(svg: &mut Svg, g: &Glyph, size: f64, colour: &str) {
@@ -84,23 +90,18 @@ fn draw_glyph(svg: &mut Svg, g: &Glyph, size: f64, colour: &str) {
     }
 }
 
-/// The SVG document of [`run`]. Conflicting constraints are those the DOF analysis names (for
-/// sketches of at most [`ANALYSIS_MAX_ENTITIES`] entities).
+/// The SVG document of [`run`]. Conflicting constraints are those the DOF analysis names (sparse
+/// for large components, so every sketch is analysed).
 ///
 /// # Errors
 /// Evaluation failures and analysis failures (which name the constraints).
 pub fn picture(sketch: &Sketch, combs: bool) -> Result<String> {
-    let conflicting: BTreeSet<ConstraintId> = if sketch.entities().count() <= ANALYSIS_MAX_ENTITIES
-    {
-        sketch
-            .analyze()
-            .map_err(|e| anyhow!("analysis failed: {}", describe_error(sketch, &e)))?
-            .into_iter()
-            .flat_map(|a| a.analysis.conflicting)
-            .collect()
-    } else {
-        BTreeSet::new()
-    };
+    let conflicting: BTreeSet<ConstraintId> = sketch
+        .analyze()
+        .map_err(|e| anyhow!("analysis failed: {}", describe_error(sketch, &e)))?
+        .into_iter()
+        .flat_map(|a| a.analysis.conflicting)
+        .collect();
     // Sample first, so the box holds everything.
     let mut bbox = BBox::empty();
     let mut curves = Vec::new();
@@ -116,6 +117,29 @@ pub fn picture(sketch: &Sketch, combs: bool) -> Result<String> {
             curves.push((c, samples, e.points().to_vec()));
         }
     }
+    // Glyphs too: a target ring away from its curve (a conflicting target) must be in the
+    // picture. On large sketches only every k-th constraint's glyphs are drawn (all the
+    // conflicting ones), so the curves stay visible.
+    let view = View::new(sketch);
+    let mut marks = Vec::new();
+    for (id, c) in sketch.constraints() {
+        let list = glyphs(&view, c)?;
+        if !list.is_empty() {
+            marks.push((id, list));
+        }
+    }
+    let every = marks.len().div_ceil(MAX_GLYPH_CONSTRAINTS).max(1);
+    let marks: Vec<_> = marks
+        .into_iter()
+        .enumerate()
+        .filter(|(k, (id, _))| k % every == 0 || conflicting.contains(id))
+        .map(|(_, m)| m)
+        .collect();
+    for (_, list) in &marks {
+        for g in list {
+            bbox.include(glyph_anchor(g));
+        }
+    }
     let mut comb_list = Vec::new();
     if combs {
         let (w, h) = bbox.size();
@@ -126,7 +150,6 @@ pub fn picture(sketch: &Sketch, combs: bool) -> Result<String> {
         }
     }
     let mut svg = Svg::new(bbox, 0.08);
-    let view = View::new(sketch);
     let size = 6.0 * svg.unit();
     for comb in &comb_list {
         comb.draw(&mut svg);
@@ -145,14 +168,14 @@ pub fn picture(sketch: &Sketch, combs: bool) -> Result<String> {
             _ => {}
         }
     }
-    for (id, c) in sketch.constraints() {
-        let colour = if conflicting.contains(&id) {
+    for (id, list) in &marks {
+        let colour = if conflicting.contains(id) {
             CONFLICT
         } else {
             GLYPH
         };
-        for g in glyphs(&view, c)? {
-            draw_glyph(&mut svg, &g, size, colour);
+        for g in list {
+            draw_glyph(&mut svg, g, size, colour);
         }
     }
     Ok(svg.finish())

@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use anyhow::{Context, Result};
 use clap::Args;
 
-use crate::curve_file::{self, write_text};
+use crate::curve_file;
 use crate::draw::{self, Comb, SAMPLES_PER_PIECE, TEETH_PER_PIECE};
 use crate::svg::{Anchor, BBox, Svg};
 
@@ -28,7 +28,7 @@ pub struct RenderCurveArgs {
 pub fn run(args: &RenderCurveArgs) -> Result<()> {
     let curve = curve_file::load(&args.curve)?;
     let svg = picture(&curve, args.combs).with_context(|| args.curve.display().to_string())?;
-    write_text(&args.output, &svg)?;
+    crate::output::write_all(&[&args.curve], &[(args.output.clone(), svg)])?;
     println!("wrote {}", args.output.display());
     Ok(())
 }

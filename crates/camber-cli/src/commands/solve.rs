@@ -7,7 +7,6 @@ use camber_sketch::{Sketch, SketchReport};
 use clap::Args;
 
 use crate::commands::render;
-use crate::curve_file::write_text;
 use crate::sketch_file::{self, describe_entities, describe_error};
 
 /// Arguments of `camber solve`.
@@ -25,10 +24,15 @@ pub struct SolveArgs {
     /// (the blade-design method, for comparison; the usual solve takes over when its rounds stall).
     #[arg(long)]
     pub displacement: bool,
+    /// Print the report as JSON (`{"components": [{"component", "report"}], "warnings"}`,
+    /// the serde form of the sketch report) instead of text.
+    #[arg(long)]
+    pub json: bool,
 }
 
 /// Loads, solves every component, writes the result (and the picture), prints the report. A
-/// failed solve writes nothing and names the constraints at fault.
+/// failed solve writes nothing and names the constraints at fault; the files are written all
+/// or nothing, never over the input ([`crate::output`]).
 pub fn run(args: &SolveArgs) -> Result<()> {
     let mut sketch = sketch_file::load(&args.input)?;
     let report = if args.displacement {
@@ -36,7 +40,7 @@ pub fn run(args: &SolveArgs) -> Result<()> {
             .solve_by_displacement(&camber_sketch::displacement::DisplacementOptions::default())
             .map_err(|e| anyhow!("solve failed: {}", describe_error(&sketch, &e)))
             .with_context(|| args.input.display().to_string())?;
-        crate::print_stdout(&format!(
+        let line = format!(
             "iterative displacement: {} round(s), {}",
             run.rounds,
             if run.converged {
@@ -44,16 +48,28 @@ pub fn run(args: &SolveArgs) -> Result<()> {
             } else {
                 "stalled, solved by the usual solve"
             }
-        ))?;
+        );
+        if !args.json {
+            crate::print_stdout(&line)?;
+        }
         run.report
     } else {
         solve(&mut sketch).with_context(|| args.input.display().to_string())?
     };
-    sketch_file::save(&args.output, &sketch)?;
+    let text = camber_sketch::file::to_json(&sketch)
+        .map_err(|e| anyhow!("{e}"))
+        .with_context(|| args.output.display().to_string())?;
+    let mut outputs = vec![(args.output.clone(), text)];
     if let Some(pic) = &args.svg {
         let svg =
             render::picture(&sketch, false).with_context(|| args.input.display().to_string())?;
-        write_text(pic, &svg)?;
+        outputs.push((pic.clone(), svg));
+    }
+    crate::output::write_all(&[&args.input], &outputs)?;
+    if args.json {
+        let text =
+            serde_json::to_string_pretty(&report).context("cannot write the report as JSON")?;
+        return crate::print_stdout(&text);
     }
     crate::print_stdout(&format_report(&report))?;
     crate::print_stdout(&format!("wrote {}", args.output.display()))?;
@@ -75,7 +91,7 @@ pub fn solve(sketch: &mut Sketch) -> Result<SketchReport> {
 ///   "entities": [{"id": 0, "kind": "point", "at": [0, 0]}, {"id": 1, "kind": "point", "at": [1, 0]}],
 ///   "constraints": [{"id": 2, "kind": "coincident", "a": {"point": 0}, "b": {"point": 1}}]}"#)?;
 /// let report = solve::solve(&mut s)?;
-/// assert!(solve::format_report(&report).starts_with("component 1 (entities 0, 1): solver DenseMinNorm, DOF 2"));
+/// assert!(solve::format_report(&report).starts_with("component 1 (entities 0, 1): solver dense_min_norm, DOF 2"));
 /// # Ok::<(), anyhow::Error>(())
 /// ```
 pub fn format_report(report: &SketchReport) -> String {
@@ -84,10 +100,10 @@ pub fn format_report(report: &SketchReport) -> String {
         let r = &c.report;
         let residual = r.residuals.iter().fold(0.0_f64, |m, g| m.max(g.max_abs));
         lines.push(format!(
-            "component {} ({}): solver {:?}, DOF {}, residual {residual:.3e}, time {:.3} ms",
+            "component {} ({}): solver {}, DOF {}, residual {residual:.3e}, time {:.3} ms",
             k + 1,
             describe_entities(&c.component.entities),
-            r.solver,
+            sketch_file::solver_name(r.solver),
             r.dof,
             r.elapsed.as_secs_f64() * 1e3
         ));
@@ -95,5 +111,6 @@ pub fn format_report(report: &SketchReport) -> String {
     if lines.is_empty() {
         lines.push("nothing to solve (no constraints)".to_owned());
     }
+    lines.extend(report.warnings.iter().map(|w| format!("warning: {w}")));
     lines.join("\n")
 }

@@ -11,14 +11,17 @@ use camber_surface::{deform_to_g1, DeformOptions, DeformationReport};
 use clap::Args;
 use nalgebra::Point2;
 
-use crate::curve_file::{read_text, write_text};
+use crate::curve_file::read_text;
 use crate::svg::{Anchor, BBox, Style, Svg};
 
 /// Arguments of `camber surface`.
 #[derive(Debug, Args)]
 pub struct SurfaceArgs {
-    /// The deformation case: `{"face": SURFACE, "neighbours": [{"surface": SURFACE, "edge":
-    /// "UMax", ...}]}`, as in examples/data/surface_crease10.json.
+    /// The deformation case: `{"face": SURFACE, "neighbours": [{"surface": SURFACE,
+    /// "face_edge": "VMax", "neighbour_edge": "VMin"}]}`, where SURFACE is `{"degree_u",
+    /// "degree_v", "knots_u", "knots_v", "control_points": [[x, y, z], …] (v fastest),
+    /// "weights"}` and edges are UMin, UMax, VMin or VMax; see docs/cli.md and
+    /// examples/data/surface_crease10.json.
     pub case: PathBuf,
     /// Where to write the deformed face (a NURBS surface in the same JSON form).
     #[arg(short, long, value_name = "OUT.json")]
@@ -37,7 +40,11 @@ pub fn run(args: &SurfaceArgs) -> Result<()> {
         .map_err(|e| anyhow!("{name}: deformation failed: {e}"))?;
     let mut json = serde_json::to_string_pretty(&face).context("cannot encode the face")?;
     json.push('\n');
-    write_text(&args.output, &json)?;
+    let mut outputs = vec![(args.output.clone(), json)];
+    if let Some(plot_path) = &args.plot {
+        outputs.push((plot_path.clone(), plot(&report)));
+    }
+    crate::output::write_all(&[&args.case], &outputs)?;
     print!("{}", report_text(&report));
     println!(
         "deformed face ({} × {} control points) written to {}",
@@ -46,7 +53,6 @@ pub fn run(args: &SurfaceArgs) -> Result<()> {
         args.output.display()
     );
     if let Some(plot_path) = &args.plot {
-        write_text(plot_path, &plot(&report))?;
         println!("plot written to {}", plot_path.display());
     }
     Ok(())

@@ -43,7 +43,6 @@ use nalgebra::Point2;
 use serde::de::DeserializeOwned;
 use serde::Serialize;
 
-use crate::commands::render::ANALYSIS_MAX_ENTITIES;
 use crate::scene::View;
 use crate::sketch_file::{self, describe_error};
 use wire::{
@@ -116,13 +115,13 @@ struct Failure(u16, String);
 
 impl Failure {
     fn new(status: u16, message: impl Into<String>) -> Self {
-        Self(status, message.into())
+        Self(status, crate::tidy_numbers(&message.into()))
     }
 }
 
 impl From<anyhow::Error> for Failure {
     fn from(e: anyhow::Error) -> Self {
-        Self(500, format!("{e:#}"))
+        Self(500, crate::tidy_numbers(&format!("{e:#}")))
     }
 }
 
@@ -140,6 +139,41 @@ struct Drag {
     updates: usize,
     refused: usize,
     update_time: Duration,
+    /// The centre of the sketch's box and its scale when the drag began: targets farther than
+    /// [`MAX_DRAG_REACH`] scales from the centre are refused.
+    centre: Point2<f64>,
+    scale: f64,
+}
+
+/// The largest entity or constraint id the editor accepts: 2^53 − 1, the largest integer a
+/// JavaScript number holds exactly (a larger id would be rounded by the page and name another
+/// entity or none).
+pub const MAX_EDITOR_ID: u64 = (1 << 53) - 1;
+
+/// How far a drag target may lie from the centre of the sketch, in multiples of the sketch's
+/// scale (the diagonal of its box, at least 1): a thousand sketches away is surely a slip of
+/// the hand or a hostile request, and would wreck the drawing's numbers.
+pub const MAX_DRAG_REACH: f64 = 1000.0;
+
+/// The centre of the box of every entity point (circles with their radius); the origin for an
+/// empty sketch.
+fn sketch_centre(sketch: &Sketch) -> Point2<f64> {
+    let mut bbox = crate::svg::BBox::empty();
+    for (_, e) in sketch.entities() {
+        let r = match e {
+            Entity::Circle { radius, .. } => *radius,
+            _ => 0.0,
+        };
+        for p in e.points() {
+            bbox.include(Point2::new(p.x - r, p.y - r));
+            bbox.include(Point2::new(p.x + r, p.y + r));
+        }
+    }
+    if bbox.is_empty() {
+        Point2::origin()
+    } else {
+        Point2::from((bbox.min.coords + bbox.max.coords) / 2.0)
+    }
 }
 
 /// The editor: the sketch, the drag in progress, the undo history and the last report.
@@ -172,8 +206,22 @@ impl EditorState {
     /// An editor on a sketch that came from `file`.
     ///
     /// # Errors
-    /// The analysis of the sketch fails (it names the constraints).
+    /// An id above [`MAX_EDITOR_ID`] (the page could not address it); the analysis of the
+    /// sketch fails (it names the constraints).
     pub fn new(sketch: Sketch, file: PathBuf, output: Option<PathBuf>) -> Result<Self> {
+        let ids = sketch
+            .entities()
+            .map(|(id, _)| ("entity", id.0))
+            .chain(sketch.constraints().map(|(id, _)| ("constraint", id.0)));
+        for (what, id) in ids {
+            if id > MAX_EDITOR_ID {
+                anyhow::bail!(
+                    "{}: {what} id {id} is above {MAX_EDITOR_ID} (2^53 - 1), the largest id the \
+                     editor's page can address exactly; renumber the sketch to edit it",
+                    file.display()
+                );
+            }
+        }
         let mut state = Self {
             sketch,
             output: output.unwrap_or_else(|| file.clone()),
@@ -349,6 +397,8 @@ impl EditorState {
             updates: 0,
             refused: 0,
             update_time: Duration::ZERO,
+            centre: sketch_centre(&self.sketch),
+            scale: self.sketch.scale(),
         });
         Ok(Response::json(200, &dragged))
     }
@@ -359,8 +409,24 @@ impl EditorState {
         let Some(drag) = self.drag.as_mut() else {
             return Err(Failure::new(409, "no drag in progress: start one first"));
         };
+        let to = Point2::new(req.to[0], req.to[1]);
+        let reach = MAX_DRAG_REACH * drag.scale;
+        if !(to - drag.centre).norm().is_finite() || (to - drag.centre).norm() > reach {
+            drag.refused += 1;
+            return Err(Failure::new(
+                422,
+                format!(
+                    "move refused: the target ({}, {}) is too far from the sketch (more than {} \
+                     from its centre, {} times its size)",
+                    crate::short_number(to.x),
+                    crate::short_number(to.y),
+                    crate::short_number(reach),
+                    MAX_DRAG_REACH
+                ),
+            ));
+        }
         let t = Instant::now();
-        let result = drag.session.update(Point2::new(req.to[0], req.to[1]));
+        let result = drag.session.update(to);
         let update_time = t.elapsed();
         drag.update_time += update_time;
         if let Err(e) = result {
@@ -470,7 +536,7 @@ impl EditorState {
                 let r = &c.report;
                 ComponentReportJson {
                     entities: c.component.entities.iter().map(|e| e.0).collect(),
-                    solver: format!("{:?}", r.solver),
+                    solver: crate::sketch_file::solver_name(r.solver).to_owned(),
                     reason: r.reason.clone(),
                     dof: Some(r.dof),
                     residual: r.residuals.iter().fold(0.0_f64, |m, g| m.max(g.max_abs)),
@@ -502,7 +568,8 @@ impl EditorState {
         self.no_drag("save")?;
         let text = camber_sketch::file::to_json(&self.sketch)
             .map_err(|e| Failure::new(422, format!("cannot save: {e}")))?;
-        write_atomically(&self.output, &text).map_err(|e| Failure::new(500, format!("{e:#}")))?;
+        crate::output::write_all(&[], &[(self.output.clone(), text.clone())])
+            .map_err(|e| Failure::new(500, format!("{e:#}")))?;
         self.saved_version = self.version;
         Ok(Response::json(
             200,
@@ -556,9 +623,8 @@ fn parse<T: DeserializeOwned>(body: &[u8]) -> std::result::Result<T, Failure> {
     serde_json::from_slice(body).map_err(|e| Failure::new(400, format!("bad request body: {e}")))
 }
 
-/// The components of a sketch with their analysis (for sketches of at most
-/// [`ANALYSIS_MAX_ENTITIES`] entities) and their largest residual now, and every constraint the
-/// analysis names conflicting.
+/// The components of a sketch with their analysis (sparse for large components) and their
+/// largest residual now, and every constraint the analysis names conflicting.
 ///
 /// # Errors
 /// Building a component's problem fails (the message names the constraint).
@@ -567,22 +633,20 @@ pub fn analyse(sketch: &Sketch) -> Result<(Vec<ComponentJson>, BTreeSet<Constrai
         |e: camber_sketch::Error| anyhow!("analysis failed: {}", describe_error(sketch, &e));
     let mut analyses: BTreeMap<EntityId, AnalysisJson> = BTreeMap::new();
     let mut conflicting = BTreeSet::new();
-    if sketch.entities().count() <= ANALYSIS_MAX_ENTITIES {
-        for a in sketch.analyze().map_err(failed)? {
-            let d = &a.analysis;
-            conflicting.extend(d.conflicting.iter().copied());
-            if let Some(first) = a.component.entities.first() {
-                analyses.insert(
-                    *first,
-                    AnalysisJson {
-                        free_unknowns: d.free_unknowns,
-                        rank: d.rank,
-                        dof: d.dof,
-                        redundant: ConstraintRef::list(sketch, &d.redundant),
-                        conflicting: ConstraintRef::list(sketch, &d.conflicting),
-                    },
-                );
-            }
+    for a in sketch.analyze().map_err(failed)? {
+        let d = &a.analysis;
+        conflicting.extend(d.conflicting.iter().copied());
+        if let Some(first) = a.component.entities.first() {
+            analyses.insert(
+                *first,
+                AnalysisJson {
+                    free_unknowns: d.free_unknowns,
+                    rank: d.rank,
+                    dof: d.dof,
+                    redundant: ConstraintRef::list(sketch, &d.redundant),
+                    conflicting: ConstraintRef::list(sketch, &d.conflicting),
+                },
+            );
         }
     }
     let mut out = Vec::new();
@@ -618,23 +682,6 @@ pub fn analyse(sketch: &Sketch) -> Result<(Vec<ComponentJson>, BTreeSet<Constrai
     Ok((out, conflicting))
 }
 
-/// Writes `text` to a temporary file beside `path`, then renames it over `path`, so a failed
-/// write never leaves half a sketch file.
-fn write_atomically(path: &Path, text: &str) -> Result<()> {
-    let name = path
-        .file_name()
-        .ok_or_else(|| anyhow!("{}: not a file name", path.display()))?;
-    let mut tmp_name = std::ffi::OsString::from(".");
-    tmp_name.push(name);
-    tmp_name.push(".camber-edit.tmp");
-    let tmp = path.with_file_name(tmp_name);
-    crate::curve_file::write_text(&tmp, text)?;
-    std::fs::rename(&tmp, path).map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        anyhow!("{}: cannot write: {e}", path.display())
-    })
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -644,7 +691,7 @@ mod tests {
         let dir = tempfile::tempdir().unwrap();
         let path = dir.path().join("s.json");
         std::fs::write(&path, "old").unwrap();
-        write_atomically(&path, "new text").unwrap();
+        crate::output::write_all(&[], &[(path.clone(), "new text".into())]).unwrap();
         assert_eq!(std::fs::read_to_string(&path).unwrap(), "new text");
         let names: Vec<_> = std::fs::read_dir(dir.path())
             .unwrap()
@@ -653,7 +700,9 @@ mod tests {
         assert_eq!(names, ["s.json"]);
         // A missing folder fails plainly, naming the file, and creates nothing.
         let missing = dir.path().join("no/such/s.json");
-        let e = write_atomically(&missing, "x").unwrap_err().to_string();
+        let e = crate::output::write_all(&[], &[(missing, "x".into())])
+            .unwrap_err()
+            .to_string();
         assert!(
             e.contains("cannot write") && e.contains("no such file or directory"),
             "{e}"

@@ -2,7 +2,7 @@
 //! the DOF analysis per component, the reports). docs/cli.md describes every field.
 //!
 //! Geometry goes out as the [`crate::scene`] computes it: control points in full precision,
-//! curve samples rounded to f32 (they are only drawn), glyphs in model coordinates.
+//! curve samples in f64 (f32 would overflow to null on large drawings), glyphs in model coordinates.
 
 use std::collections::BTreeSet;
 
@@ -47,7 +47,7 @@ pub struct EntityJson {
     pub radius: Option<f64>,
     /// Points along a curve (Bézier, B-spline, NURBS) for drawing.
     #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub samples: Vec<[f32; 2]>,
+    pub samples: Vec<[f64; 2]>,
 }
 
 impl EntityJson {
@@ -59,7 +59,7 @@ impl EntityJson {
         let samples = match e.as_curve() {
             Some(c) => sample_curve(c, SAMPLES_PER_PIECE)?
                 .iter()
-                .map(|p| [p.x as f32, p.y as f32])
+                .map(|p| [p.x, p.y])
                 .collect(),
             None => Vec::new(),
         };
@@ -176,8 +176,7 @@ impl ConstraintRef {
     }
 }
 
-/// The DOF analysis of one component (absent when the component is too large to analyse
-/// densely, see [`crate::commands::render::ANALYSIS_MAX_ENTITIES`]).
+/// The DOF analysis of one component.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct AnalysisJson {
     /// Free unknowns.

@@ -52,19 +52,23 @@
 
 mod closest;
 mod curvature;
+mod curve_curve;
 mod distance;
 mod intersect;
+mod pieces;
 
 pub use closest::{closest_point, closest_point_with};
 pub use curvature::{
     curvature, curvature_from_derivatives, curvature_vector, curvature_vector_from_derivatives,
     signed_curvature, signed_curvature_from_derivatives,
 };
+pub use curve_curve::{curve_distance, intersect_curves, CurveCurveOptions, CurvePairPoint};
 pub use distance::{
     distance_to_circle, distance_to_circle_with, distance_to_line, distance_to_line_with,
     signed_distance_to_circle, signed_distance_to_circle_with,
 };
 pub use intersect::{intersect_circle, intersect_circle_with, intersect_line, intersect_line_with};
+pub use pieces::{BezierPieces, RationalPiece};
 
 use nalgebra::{Point, Point2, SVector};
 

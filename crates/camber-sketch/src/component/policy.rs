@@ -29,19 +29,14 @@ use crate::errors::Result;
 use crate::ids::EntityId;
 use crate::lookup::EntityLookup;
 
-/// Components with rows × unknowns up to this many get the dense rank analysis anyway when the
-/// sparse factorization finds dependent rows (so that redundant rows are dropped and
-/// conflicting constraints named); above it the solver's rank error is returned as it is.
-pub const NAMING_ANALYSIS_MAX_ENTRIES: usize = 1 << 22;
-
 /// Active rows (clearances of contacts that crossed, speed floors of contacts that collapsed or
 /// started reversed) added per component solve before giving up.
 pub const MAX_ACTIVE_ROWS: usize = 4;
 
 /// The solver options a [`crate::Sketch`] uses by default: camber-solve's defaults, except that
-/// the dense rank analysis runs up front only for components of at most 2¹⁶ Jacobian entries
-/// (larger components go straight to the sparse factorization and are analysed only if it
-/// fails, see [`NAMING_ANALYSIS_MAX_ENTRIES`]).
+/// the rank analysis runs up front only for components of at most 2¹⁶ Jacobian entries
+/// (larger components go straight to the sparse factorization and are analysed, sparsely, only
+/// if it meets dependent rows).
 pub fn default_options() -> Options {
     Options::default().with_dense_analysis_max_entries(1 << 16)
 }
@@ -70,15 +65,11 @@ impl ComponentProblem {
             camber_solve::solve(&mut self.problem, options)?
         } else {
             match solve_linear(&mut self.problem, options) {
-                Err(camber_solve::Error::RankDeficient { .. })
-                    if self.problem.num_rows() * self.problem.num_unknowns()
-                        <= NAMING_ANALYSIS_MAX_ENTRIES =>
-                {
-                    // The fast path skipped the dense analysis and met dependent rows: run it
-                    // now to drop redundant rows or name the conflicting constraints.
-                    let full = options
-                        .clone()
-                        .with_dense_analysis_max_entries(NAMING_ANALYSIS_MAX_ENTRIES);
+                Err(camber_solve::Error::RankDeficient { .. }) => {
+                    // The fast path skipped the analysis and met dependent rows: run it now
+                    // (sparse at this size) to drop redundant rows or name the conflicting
+                    // constraints.
+                    let full = options.clone().with_dense_analysis_max_entries(usize::MAX);
                     solve_linear(&mut self.problem, &full)?
                 }
                 other => other?,

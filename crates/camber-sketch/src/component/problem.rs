@@ -54,7 +54,30 @@ impl Orientation {
         }
         vx * self.direction[0] + vy * self.direction[1]
     }
+
+    /// |v|, the length of the oriented tangent at `x`, when it has vanished: when it is no
+    /// more than [`COLLAPSED_TANGENT`] times the size of the terms it sums (rounding left over
+    /// from points that coincide, whose sign means nothing); `None` otherwise.
+    pub(crate) fn collapsed(&self, x: &[f64]) -> Option<f64> {
+        let (mut vx, mut vy, mut size) = (0.0_f64, 0.0_f64, 0.0_f64);
+        for (i, c) in &self.terms {
+            let (px, py) = (
+                x.get(*i).copied().unwrap_or(f64::NAN),
+                x.get(*i + 1).copied().unwrap_or(f64::NAN),
+            );
+            vx += c * px;
+            vy += c * py;
+            size += c.abs() * px.hypot(py);
+        }
+        let speed = vx.hypot(vy);
+        (speed <= COLLAPSED_TANGENT * size).then_some(speed)
+    }
 }
+
+/// The relative size below which an oriented tangent counts as vanished (issue 11: a linear
+/// solve that collapsed a G1 joint left a tangent of 2e-15 whose sign passed the check, and the
+/// next solve of the written-back sketch failed on it).
+const COLLAPSED_TANGENT: f64 = 1e-9;
 
 /// A check of the solved state with its owner and the blocks of the owner's free parameters.
 #[derive(Debug, Clone)]
@@ -597,6 +620,12 @@ impl ComponentProblem {
     /// The first orientation check that fails at `x`, as an error.
     pub(crate) fn check_orientations(&self, x: &[f64]) -> Result<()> {
         for o in &self.orientations {
+            if let Some(speed) = o.collapsed(x) {
+                return Err(Error::Cusp {
+                    constraint: o.constraint,
+                    speed,
+                });
+            }
             let dot = o.dot(x);
             if dot.is_nan() || dot <= 0.0 {
                 return Err(Error::OrientationFlipped {

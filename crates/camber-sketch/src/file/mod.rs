@@ -72,8 +72,9 @@ pub enum FileError {
         /// The version found (as written).
         found: String,
     },
-    /// The sketch refused an entity (bad knots, weights, radius, a duplicate id, …).
-    #[error("entity {id} ({kind}): {source}")]
+    /// The sketch refused an entity (bad knots, weights, radius, a duplicate id, a zero-length
+    /// line, …).
+    #[error("entity {id} ({kind}): {}", entity_reason(source))]
     Entity {
         /// The entity's id in the file.
         id: u64,
@@ -118,6 +119,14 @@ pub enum FileError {
         /// Its residual's name.
         name: String,
     },
+}
+
+/// The sketch's reason for refusing an entity, without naming the entity again.
+fn entity_reason(e: &Error) -> String {
+    match e {
+        Error::DegenerateEntity { reason, .. } => (*reason).to_owned(),
+        other => other.to_string(),
+    }
 }
 
 /// Decodes the parameters of one custom kind into a constraint over the given arguments.
@@ -220,7 +229,8 @@ pub fn from_json(text: &str) -> std::result::Result<Sketch, FileError> {
 }
 
 /// Reads a sketch file; custom constraints are decoded through `registry`. Entities are added
-/// first, then constraints, each in file order under its own id.
+/// first, then constraints, each in file order under its own id. A leading UTF-8 byte order
+/// mark is skipped.
 ///
 /// # Errors
 /// [`FileError::Syntax`], [`FileError::Version`], [`FileError::Shape`] (with the JSON path),
@@ -230,6 +240,8 @@ pub fn from_json_with(
     text: &str,
     registry: &CustomRegistry,
 ) -> std::result::Result<Sketch, FileError> {
+    // A UTF-8 byte order mark (some editors write one) is not part of the JSON.
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let value: Value = serde_json::from_str(text).map_err(|e| FileError::Syntax {
         message: if e.to_string().starts_with("number out of range") {
             format!(
@@ -260,7 +272,13 @@ pub fn from_json_with(
         message: e.inner().to_string(),
     })?;
     let mut sketch = Sketch::new();
-    for e in raw.entities {
+    let entities = raw
+        .entities
+        .into_iter()
+        .enumerate()
+        .map(|(i, v)| load_entity(i, v))
+        .collect::<std::result::Result<Vec<_>, _>>()?;
+    for e in entities {
         let kind = e.shape.kind();
         let entity = e.shape.into_entity().map_err(|source| FileError::Entity {
             id: e.id,
@@ -336,6 +354,69 @@ pub fn constraint_to_value(constraint: &Constraint) -> std::result::Result<Value
 pub fn entity_to_value(entity: &Entity) -> std::result::Result<Value, FileError> {
     serde_json::to_value(RawShape::from_entity(entity)).map_err(|e| FileError::Syntax {
         message: e.to_string(),
+    })
+}
+
+/// One entity of a file: its id and shape, with the JSON path of a bad field inside it
+/// (`entities[0].control_points[1]: invalid length 3, expected an array of length 2`).
+fn load_entity(i: usize, mut value: Value) -> std::result::Result<RawEntity, FileError> {
+    let shape = |path: String, message: String| FileError::Shape { path, message };
+    let Value::Object(map) = &mut value else {
+        return Err(shape(
+            format!("entities[{i}]"),
+            "expected an object with \"id\" and \"kind\"".into(),
+        ));
+    };
+    let id = match map.remove("id") {
+        Some(v) => v.as_u64().ok_or_else(|| {
+            shape(
+                format!("entities[{i}].id"),
+                format!("expected a non-negative integer id, found {v}"),
+            )
+        })?,
+        None => return Err(shape(format!("entities[{i}]"), "missing field `id`".into())),
+    };
+    let kind = match map.remove("kind") {
+        Some(Value::String(k)) => k,
+        Some(v) => {
+            return Err(shape(
+                format!("entities[{i}].kind"),
+                format!("expected a kind name, found {v}"),
+            ))
+        }
+        None => {
+            return Err(shape(
+                format!("entities[{i}]"),
+                "missing field `kind`".into(),
+            ))
+        }
+    };
+    let mut keyed = serde_json::Map::new();
+    keyed.insert(kind, value);
+    let shape_of: raw::KeyedShape = serde_path_to_error::deserialize(Value::Object(keyed))
+        .map_err(|e| {
+            // The path starts with the kind (the key of the keyed form): drop it.
+            let path = e.path().to_string();
+            let message = e
+                .inner()
+                .to_string()
+                .replace("unknown variant", "unknown entity kind")
+                .replace(
+                    "expected fewer elements in array",
+                    "expected a point [x, y] of 2 numbers",
+                );
+            let inner = match path.split_once('.') {
+                Some((_, rest)) if !rest.is_empty() && rest != "?" => {
+                    format!("entities[{i}].{rest}")
+                }
+                _ if message.starts_with("unknown entity kind") => format!("entities[{i}].kind"),
+                _ => format!("entities[{i}]"),
+            };
+            shape(inner, message)
+        })?;
+    Ok(RawEntity {
+        id,
+        shape: shape_of.into(),
     })
 }
 

@@ -24,7 +24,7 @@ fn xy_p(p: &Point2<f64>) -> Xy {
 pub(super) struct RawSketch {
     pub(super) version: u64,
     #[serde(default)]
-    pub(super) entities: Vec<RawEntity>,
+    pub(super) entities: Vec<Value>,
     #[serde(default)]
     pub(super) constraints: Vec<Value>,
 }
@@ -34,6 +34,70 @@ pub(super) struct RawEntity {
     pub(super) id: u64,
     #[serde(flatten)]
     pub(super) shape: RawShape,
+}
+
+/// The same shapes keyed by kind (`{"line": {"from": …, "to": …}}`): loading reads an
+/// entity's fields through this form, so that an error's JSON path reaches inside the entity
+/// (`entities[0].control_points[1]`), which an internally tagged enum cannot report.
+#[derive(Deserialize)]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
+pub(super) enum KeyedShape {
+    Point {
+        at: Xy,
+    },
+    Line {
+        from: Xy,
+        to: Xy,
+    },
+    Circle {
+        center: Xy,
+        radius: f64,
+    },
+    Bezier {
+        control_points: Vec<Xy>,
+    },
+    Bspline {
+        degree: usize,
+        knots: Vec<f64>,
+        control_points: Vec<Xy>,
+    },
+    Nurbs {
+        degree: usize,
+        knots: Vec<f64>,
+        control_points: Vec<Xy>,
+        weights: Vec<f64>,
+    },
+}
+
+impl From<KeyedShape> for RawShape {
+    fn from(k: KeyedShape) -> Self {
+        match k {
+            KeyedShape::Point { at } => RawShape::Point { at },
+            KeyedShape::Line { from, to } => RawShape::Line { from, to },
+            KeyedShape::Circle { center, radius } => RawShape::Circle { center, radius },
+            KeyedShape::Bezier { control_points } => RawShape::Bezier { control_points },
+            KeyedShape::Bspline {
+                degree,
+                knots,
+                control_points,
+            } => RawShape::Bspline {
+                degree,
+                knots,
+                control_points,
+            },
+            KeyedShape::Nurbs {
+                degree,
+                knots,
+                control_points,
+                weights,
+            } => RawShape::Nurbs {
+                degree,
+                knots,
+                control_points,
+                weights,
+            },
+        }
+    }
 }
 
 #[derive(Serialize, Deserialize)]

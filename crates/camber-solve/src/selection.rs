@@ -9,9 +9,11 @@
 //! - nonlinear and rank deficient at the start: SLSQP (the `slsqp` module, `nlopt` feature);
 //! - when those fail (or SLSQP is not built): Levenberg–Marquardt on the least-squares sum from
 //!   the start, then Newton from its answer with the pull-back toward the start;
-//! - when nothing meets every constraint: the soft compromise if asked, otherwise
-//!   [`Error::Conflicting`] naming the constraints left above tolerance at the least-squares
-//!   point.
+//! - when nothing meets every constraint: the soft compromise if asked; otherwise
+//!   [`Error::Conflicting`] naming the constraints left above tolerance when the
+//!   least-squares search ended at a least-squares point (g orthogonal to the range of J:
+//!   no step reduces every residual, so they conflict there), and [`Error::NotSolved`] with
+//!   each constraint's residual when it stopped short of one (nothing proves a conflict).
 //!
 //! Every candidate is re-evaluated before anything is written: all residuals within
 //! `options.tolerance` and all bounds held, or the problem keeps its values. The report's
@@ -23,12 +25,13 @@ use crate::analysis::{self, DofAnalysis};
 use crate::errors::{Error, Result};
 use crate::evaluator::{norm2, Evaluator};
 use crate::ids::ConstraintId;
+use crate::linear::solve_linear;
 use crate::newton::{self, NewtonWorkspace};
 use crate::nonlinear::SolverChoice;
+use crate::options::Options;
 use crate::problem::Problem;
 use crate::report::{ConstraintResidual, SolveReport, SolverKind, Status};
 use crate::soft;
-use crate::solve::{solve_linear, Options};
 
 /// What the analysis at the start says, carried into every report.
 #[derive(Debug, Clone)]
@@ -431,15 +434,49 @@ pub fn solve(problem: &mut Problem, options: &Options) -> Result<SolveReport> {
         return soft_path(problem, options, &start, &notes.join("; "));
     }
     let mut g = vec![0.0; ev.rows()];
-    ev.residuals(problem, &z_lm, &mut g)?;
-    let mut named = start.conflicting.clone();
-    for r in ev.per_constraint(&g) {
-        if (r.max_abs > options.tolerance || r.max_abs.is_nan()) && !named.contains(&r.constraint) {
-            named.push(r.constraint);
+    ev.linearize(problem, &z_lm, &mut g)?;
+    let residuals = ev.per_constraint(&g);
+    if !start.conflicting.is_empty() || at_least_squares_point(&ev.jacobian(&[])?, &g)? {
+        let mut named = start.conflicting.clone();
+        for r in &residuals {
+            if (r.max_abs > options.tolerance || r.max_abs.is_nan())
+                && !named.contains(&r.constraint)
+            {
+                named.push(r.constraint);
+            }
+        }
+        return Err(Error::Conflicting { constraints: named });
+    }
+    Err(Error::NotSolved {
+        tried: format!(
+            "{} → Levenberg–Marquardt ({} iterations) stopped short of a least-squares point",
+            notes.join("; "),
+            lm.iterations
+        ),
+        residuals,
+    })
+}
+
+/// Whether g is (numerically) orthogonal to the range of J: the point is stationary for ‖g‖²
+/// (Jᵀg = 0) while g ≠ 0, so no step, however small, reduces every residual: the constraints
+/// conflict there. The test is relative, ‖Jᵀg‖ ≤ [`LEAST_SQUARES_COSINE`]·‖J‖_F·‖g‖: the
+/// cosine between g and its best approximation from the range of J.
+fn at_least_squares_point(j: &crate::SparseMatrix, g: &[f64]) -> Result<bool> {
+    let mut jtg = vec![0.0; j.ncols()];
+    let mut frobenius = 0.0;
+    for (i, gi) in g.iter().enumerate() {
+        let (cols, vals) = j.row(i);
+        for (c, v) in cols.iter().zip(vals) {
+            jtg[*c] += v * gi;
+            frobenius += v * v;
         }
     }
-    Err(Error::Conflicting { constraints: named })
+    let (gradient, g_norm) = (norm2(&jtg), norm2(g));
+    Ok(g_norm > 0.0 && gradient <= LEAST_SQUARES_COSINE * frobenius.sqrt() * g_norm)
 }
+
+/// See [`at_least_squares_point`].
+const LEAST_SQUARES_COSINE: f64 = 1e-6;
 
 /// Runs the forced solver.
 fn forced(

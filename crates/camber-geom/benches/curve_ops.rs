@@ -1,0 +1,110 @@
+//! Cost of the curve toolkit's searches and fits: curve–curve intersection and distance
+//! (cubic Bézier pairs and 10-point cubic B-splines crossing several times), and
+//! interpolation, least squares and fitting to a tolerance through 100 and 1000 points.
+
+// Fixed, valid inputs: a panic is the right way for a benchmark to fail.
+#![allow(clippy::unwrap_used)]
+
+use camber_geom::fit::{approximate, fit_to_tolerance, interpolate, ParameterMethod};
+use camber_geom::queries::{curve_distance, intersect_curves, CurveCurveOptions};
+use camber_geom::{BSplineCurve2, BezierCurve2, KnotVector};
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
+use nalgebra::Point2;
+use std::hint::black_box;
+
+/// A wave y = amplitude·sin(k·x) on x ∈ [0, 1] as a cubic B-spline through 10 points.
+fn wave(amplitude: f64, k: f64, shift: f64) -> BSplineCurve2<f64> {
+    let points = (0..10)
+        .map(|i| {
+            let x = f64::from(i) / 9.0;
+            Point2::new(x, amplitude * (k * x + shift).sin())
+        })
+        .collect();
+    BSplineCurve2::try_new(3, KnotVector::clamped_uniform(3, 10).unwrap(), points).unwrap()
+}
+
+fn bench_intersection(c: &mut Criterion) {
+    let opts = CurveCurveOptions::default();
+    let mut group = c.benchmark_group("intersect");
+    let a = BezierCurve2::try_new(vec![
+        Point2::new(0.0, 0.0),
+        Point2::new(1.0, 3.0),
+        Point2::new(2.0, -3.0),
+        Point2::new(3.0, 0.0),
+    ])
+    .unwrap();
+    let b = BezierCurve2::try_new(vec![
+        Point2::new(0.0, 1.0),
+        Point2::new(1.0, -2.0),
+        Point2::new(2.0, 2.0),
+        Point2::new(3.0, -1.0),
+    ])
+    .unwrap();
+    let hits = intersect_curves(&a, &b, &opts).unwrap().len();
+    group.bench_function(
+        BenchmarkId::new("bezier_cubics", format!("{hits}_hits")),
+        |bench| bench.iter(|| intersect_curves(black_box(&a), black_box(&b), &opts).unwrap()),
+    );
+    let (s, t) = (wave(0.2, 12.0, 0.0), wave(0.2, 12.0, 1.0));
+    let hits = intersect_curves(&s, &t, &opts).unwrap().len();
+    group.bench_function(
+        BenchmarkId::new("bspline_waves", format!("{hits}_hits")),
+        |bench| bench.iter(|| intersect_curves(black_box(&s), black_box(&t), &opts).unwrap()),
+    );
+    group.finish();
+
+    let mut group = c.benchmark_group("distance");
+    let apart = wave(0.2, 12.0, 0.0);
+    let lifted = BSplineCurve2::try_new(
+        3,
+        apart.knots().clone(),
+        apart
+            .control_points()
+            .iter()
+            .map(|p| Point2::new(p.x, p.y + 0.7))
+            .collect(),
+    )
+    .unwrap();
+    group.bench_function("bspline_waves_apart", |bench| {
+        bench.iter(|| curve_distance(black_box(&apart), black_box(&lifted), &opts).unwrap())
+    });
+    group.finish();
+}
+
+/// `n` samples of a blade-like profile.
+fn samples(n: usize) -> Vec<Point2<f64>> {
+    (0..n)
+        .map(|i| {
+            let t = i as f64 / (n - 1) as f64;
+            Point2::new(
+                t,
+                0.12 * (std::f64::consts::PI * t).sin() + 0.01 * (9.0 * t).sin(),
+            )
+        })
+        .collect()
+}
+
+fn bench_fitting(c: &mut Criterion) {
+    let mut group = c.benchmark_group("fit");
+    group.sample_size(20);
+    for n in [100, 1000] {
+        let pts = samples(n);
+        group.bench_with_input(BenchmarkId::new("interpolate_cubic", n), &pts, |b, pts| {
+            b.iter(|| interpolate(black_box(pts), 3, ParameterMethod::ChordLength, None).unwrap())
+        });
+        group.bench_with_input(BenchmarkId::new("least_squares_20cp", n), &pts, |b, pts| {
+            b.iter(|| {
+                approximate(black_box(pts), 3, 20, ParameterMethod::ChordLength, true).unwrap()
+            })
+        });
+        group.bench_with_input(BenchmarkId::new("to_tolerance_1e-5", n), &pts, |b, pts| {
+            b.iter(|| {
+                fit_to_tolerance(black_box(pts), 3, 1e-5, ParameterMethod::ChordLength).unwrap()
+            })
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, bench_intersection, bench_fitting);
+criterion_main!(benches);

@@ -1,0 +1,507 @@
+//! Intersections and minimum distance between two curves of any kinds (Bézier, B-spline,
+//! NURBS, Hermite, segment, circle, in any pairing), each result with both parameters.
+//!
+//! **Search.** Both curves are cut into rational Bézier pieces ([`BezierPieces`]). A pair of
+//! pieces whose control-point boxes (grown by the tolerance) are disjoint cannot meet and is
+//! dropped; otherwise the piece with the larger box is halved by de Casteljau's algorithm and
+//! the halves are paired again, until both boxes are below a leaf size (10⁻³ of the curves'
+//! extent). Each surviving leaf pair seeds a Newton iteration.
+//!
+//! **Refinement.** From the seed (s, t), Newton's method minimises f = ½|A(s) − B(t)|² with the
+//! exact Hessian: with F = A − B, f_s = F·A′, f_t = −F·B′,
+//! f_ss = |A′|² + F·A″, f_tt = |B′|² − F·B″, f_st = −A′·B′, parameters kept in their domains
+//! and a Levenberg–Marquardt shift when the Hessian is not positive definite. At a transversal
+//! crossing this is Newton on F = 0 (quadratic convergence); at a tangential contact F·A″ and
+//! F·B″ vanish with F and the iteration still converges to the contact (linearly). A result is
+//! an intersection when |F| ≤ the tolerance; results closer than 10⁻⁶ of the extent merge.
+//! A contact is *tangential* when the sine of the angle between A′ and B′ is below 10⁻⁶. Near
+//! a touch the gap grows only quadratically, |F| ≈ ½Δκ·δ², so the minimisation locates a touch
+//! to about √(2·tolerance/Δκ) along the curves (Δκ the difference of the curvatures); in the
+//! plane a second Newton iteration on "parallel tangents and foot point" then pins it down to
+//! rounding whenever the curvatures differ.
+//!
+//! **Distance.** Branch and bound over the same piece pairs: the distance between two boxes
+//! bounds the pieces' distance from below, piece end points (on the curves) from above; pairs
+//! that cannot beat the best value are dropped, leaves are refined by the same Newton
+//! iteration, and both curves' end points are projected onto the other curve.
+
+use std::cmp::Ordering;
+use std::collections::BinaryHeap;
+
+use nalgebra::{Point, SVector};
+
+use super::closest_point;
+use super::pieces::{BezierPieces, RationalPiece};
+use crate::curve::ParametricCurve;
+use crate::errors::{Error, Result};
+
+/// Settings of the curve–curve searches.
+///
+/// ```
+/// use camber_geom::queries::CurveCurveOptions;
+/// let opts = CurveCurveOptions::default().with_tolerance(1e-8);
+/// assert!((opts.tolerance - 1e-8).abs() < 1e-20);
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CurveCurveOptions {
+    /// Two points closer than this (length units) coincide: it accepts intersections and grows
+    /// the boxes (default 1e-9).
+    pub tolerance: f64,
+    /// The most leaf pairs a search may refine before it gives up with
+    /// [`Error::TooManyCandidates`] (intersections) or returns its best so far (distance)
+    /// (default 20 000).
+    pub max_candidates: usize,
+}
+
+impl Default for CurveCurveOptions {
+    fn default() -> Self {
+        Self {
+            tolerance: 1e-9,
+            max_candidates: 20_000,
+        }
+    }
+}
+
+impl CurveCurveOptions {
+    /// Sets [`tolerance`](Self::tolerance).
+    pub fn with_tolerance(mut self, tolerance: f64) -> Self {
+        self.tolerance = tolerance;
+        self
+    }
+
+    /// Sets [`max_candidates`](Self::max_candidates).
+    pub fn with_max_candidates(mut self, max: usize) -> Self {
+        self.max_candidates = max;
+        self
+    }
+
+    fn check(&self) -> Result<()> {
+        if !self.tolerance.is_finite() {
+            return Err(Error::NonFinite {
+                what: "intersection tolerance",
+                index: 0,
+                value: self.tolerance,
+            });
+        }
+        if self.tolerance <= 0.0 {
+            return Err(Error::NonPositiveTolerance {
+                value: self.tolerance,
+            });
+        }
+        if self.max_candidates == 0 {
+            return Err(Error::ZeroCount {
+                what: "candidate limit",
+            });
+        }
+        Ok(())
+    }
+}
+
+/// A point where two curves meet, or their closest pair of points.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CurvePairPoint<const D: usize> {
+    /// The parameter on the first curve.
+    pub parameter_a: f64,
+    /// The parameter on the second curve.
+    pub parameter_b: f64,
+    /// The point on the first curve.
+    pub point_a: Point<f64, D>,
+    /// The point on the second curve.
+    pub point_b: Point<f64, D>,
+    /// |point_a − point_b|.
+    pub distance: f64,
+    /// Whether the curves are tangent there (sine of the angle between the tangents < 1e-6).
+    pub tangential: bool,
+}
+
+/// The extent (diagonal of the common box) of a set of pieces.
+fn extent<const D: usize>(pieces: &[RationalPiece<D>]) -> f64 {
+    let mut lo = SVector::<f64, D>::repeat(f64::INFINITY);
+    let mut hi = SVector::<f64, D>::repeat(f64::NEG_INFINITY);
+    for p in pieces {
+        let (a, b) = p.bounding_box();
+        lo = lo.inf(&a);
+        hi = hi.sup(&b);
+    }
+    (hi - lo).norm()
+}
+
+/// The distance between two boxes (0 when they overlap).
+fn box_distance<const D: usize>(
+    (alo, ahi): &(SVector<f64, D>, SVector<f64, D>),
+    (blo, bhi): &(SVector<f64, D>, SVector<f64, D>),
+) -> f64 {
+    let mut d2 = 0.0;
+    for i in 0..D {
+        let gap = (blo[i] - ahi[i]).max(alo[i] - bhi[i]).max(0.0);
+        d2 += gap * gap;
+    }
+    d2.sqrt()
+}
+
+fn diagonal<const D: usize>((lo, hi): &(SVector<f64, D>, SVector<f64, D>)) -> f64 {
+    (hi - lo).norm()
+}
+
+/// The sine of the angle between two tangents (0 when either vanishes).
+fn sine_between<const D: usize>(da: &SVector<f64, D>, db: &SVector<f64, D>) -> f64 {
+    let (na, nb) = (da.norm(), db.norm());
+    if na > 0.0 && nb > 0.0 {
+        let cos = da.dot(db) / (na * nb);
+        (1.0 - cos * cos).max(0.0).sqrt()
+    } else {
+        0.0
+    }
+}
+
+/// Evaluates both curves and the pair's data at (s, t).
+fn pair_point<const D: usize, A, B>(a: &A, b: &B, s: f64, t: f64) -> Result<CurvePairPoint<D>>
+where
+    A: ParametricCurve<f64, D> + ?Sized,
+    B: ParametricCurve<f64, D> + ?Sized,
+{
+    let (pa, da) = a.point_and_derivative(s)?;
+    let (pb, db) = b.point_and_derivative(t)?;
+    let tangential = sine_between(&da, &db) < 1e-6;
+    Ok(CurvePairPoint {
+        parameter_a: s,
+        parameter_b: t,
+        point_a: pa,
+        point_b: pb,
+        distance: (pa - pb).norm(),
+        tangential,
+    })
+}
+
+/// Newton on ½|A(s) − B(t)|² from (s, t), inside both domains.
+fn refine<const D: usize, A, B>(a: &A, b: &B, mut s: f64, mut t: f64) -> Result<(f64, f64)>
+where
+    A: ParametricCurve<f64, D> + ?Sized,
+    B: ParametricCurve<f64, D> + ?Sized,
+{
+    let ((a0, a1), (b0, b1)) = (a.domain(), b.domain());
+    for _ in 0..200 {
+        let [pa, da, dda] = a.second_order(s)?;
+        let [pb, db, ddb] = b.second_order(t)?;
+        let f = pa - pb;
+        let value = f.norm_squared();
+        let gs = f.dot(&da);
+        let gt = -f.dot(&db);
+        let mut hss = da.norm_squared() + f.dot(&dda);
+        let mut htt = db.norm_squared() - f.dot(&ddb);
+        let hst = -da.dot(&db);
+        // Levenberg–Marquardt shift until positive definite.
+        let scale = (da.norm_squared() + db.norm_squared()).max(1e-300);
+        let mut shift = 0.0;
+        while hss <= 0.0 || htt <= 0.0 || hss * htt - hst * hst <= 1e-14 * scale * scale {
+            shift = if shift == 0.0 {
+                1e-10 * scale
+            } else {
+                shift * 10.0
+            };
+            hss += shift;
+            htt += shift;
+            if shift > 1e10 * scale {
+                break;
+            }
+        }
+        let det = hss * htt - hst * hst;
+        if det <= 0.0 || !det.is_finite() {
+            break;
+        }
+        let ds = -(htt * gs - hst * gt) / det;
+        let dt = -(hss * gt - hst * gs) / det;
+        let (ns, nt) = ((s + ds).clamp(a0, a1), (t + dt).clamp(b0, b1));
+        let moved = (ns - s).abs() / (a1 - a0) + (nt - t).abs() / (b1 - b0);
+        s = ns;
+        t = nt;
+        if moved < 1e-16 || value == 0.0 {
+            break;
+        }
+    }
+    Ok((s, t))
+}
+
+/// In the plane, a tangential contact solves G = (A′ × B′, (A − B)·B′) = 0 — parallel tangents
+/// and B's foot point — whose Jacobian [[A″ × B′, A′ × B″], [A′·B′, (A − B)·B″ − |B′|²]] is
+/// regular when the curvatures differ (its determinant is −λ²|B′|⁵(κ_B − κ_A) at the contact,
+/// λ = |A′|/|B′|). Newton on G from a converged (s, t) locates the touch to rounding instead of
+/// to √tolerance. Returns `None` when it does not converge inside both domains.
+fn refine_touch<const D: usize, A, B>(
+    a: &A,
+    b: &B,
+    mut s: f64,
+    mut t: f64,
+) -> Result<Option<(f64, f64)>>
+where
+    A: ParametricCurve<f64, D> + ?Sized,
+    B: ParametricCurve<f64, D> + ?Sized,
+{
+    if D != 2 {
+        return Ok(None);
+    }
+    let ((a0, a1), (b0, b1)) = (a.domain(), b.domain());
+    let cross = |x: &SVector<f64, D>, y: &SVector<f64, D>| x[0] * y[1] - x[1] * y[0];
+    for _ in 0..30 {
+        let [pa, da, dda] = a.second_order(s)?;
+        let [pb, db, ddb] = b.second_order(t)?;
+        let f = pa - pb;
+        let g = [cross(&da, &db), f.dot(&db)];
+        let j = [
+            [cross(&dda, &db), cross(&da, &ddb)],
+            [da.dot(&db), f.dot(&ddb) - db.norm_squared()],
+        ];
+        let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
+        if det == 0.0 || !det.is_finite() {
+            return Ok(None);
+        }
+        let ds = -(j[1][1] * g[0] - j[0][1] * g[1]) / det;
+        let dt = -(j[0][0] * g[1] - j[1][0] * g[0]) / det;
+        let (ns, nt) = (s + ds, t + dt);
+        if ns < a0 || ns > a1 || nt < b0 || nt > b1 || !ns.is_finite() || !nt.is_finite() {
+            return Ok(None);
+        }
+        let moved = (ns - s).abs() / (a1 - a0) + (nt - t).abs() / (b1 - b0);
+        s = ns;
+        t = nt;
+        if moved < 1e-15 {
+            return Ok(Some((s, t)));
+        }
+    }
+    Ok(Some((s, t)))
+}
+
+/// Every point where `a` and `b` meet (within the tolerance), in order of the first curve's
+/// parameter, each with both parameters and whether the contact is tangential.
+///
+/// ```
+/// use camber_geom::queries::{intersect_curves, CurveCurveOptions};
+/// use camber_geom::{BezierCurve2, Circle};
+/// use nalgebra::Point2;
+/// // The parabola y = x² − 1 (x from −2 to 2) meets the unit circle where x⁴ − x² = 0: it
+/// // crosses at (±1, 0) and touches at (0, −1) (a double root).
+/// let parabola = BezierCurve2::try_new(vec![Point2::new(-2.0, 3.0), Point2::new(0.0, -5.0),
+///     Point2::new(2.0, 3.0)])?;
+/// let circle = Circle::try_new(Point2::origin(), 1.0)?;
+/// let hits = intersect_curves(&parabola, &circle, &CurveCurveOptions::default())?;
+/// assert_eq!(hits.len(), 3);
+/// assert!((hits[1].point_a - Point2::new(0.0, -1.0)).norm() < 1e-9);
+/// assert!(hits[1].tangential);
+/// # Ok::<(), camber_geom::Error>(())
+/// ```
+///
+/// Errors: bad options ([`Error::NonPositiveTolerance`], [`Error::NonFinite`],
+/// [`Error::ZeroCount`]), and [`Error::TooManyCandidates`] when the curves overlap along a
+/// stretch (too many leaf pairs).
+pub fn intersect_curves<const D: usize, A, B>(
+    a: &A,
+    b: &B,
+    opts: &CurveCurveOptions,
+) -> Result<Vec<CurvePairPoint<D>>>
+where
+    A: BezierPieces<D> + ?Sized,
+    B: BezierPieces<D> + ?Sized,
+{
+    opts.check()?;
+    let (pa, pb) = (a.bezier_pieces(), b.bezier_pieces());
+    let size = extent(&pa).max(extent(&pb)).max(opts.tolerance);
+    let leaf = 1e-3 * size;
+    let grow = opts.tolerance;
+    let mut stack: Vec<(RationalPiece<D>, RationalPiece<D>)> = Vec::new();
+    for x in &pa {
+        for y in &pb {
+            stack.push((x.clone(), y.clone()));
+        }
+    }
+    let mut seeds = Vec::new();
+    while let Some((x, y)) = stack.pop() {
+        let (bx, by) = (x.bounding_box(), y.bounding_box());
+        if box_distance(&bx, &by) > grow {
+            continue;
+        }
+        let (dx, dy) = (diagonal(&bx), diagonal(&by));
+        if dx <= leaf && dy <= leaf {
+            seeds.push((0.5 * (x.start + x.end), 0.5 * (y.start + y.end)));
+            if seeds.len() > opts.max_candidates {
+                return Err(Error::TooManyCandidates {
+                    what: "leaf pairs",
+                    limit: opts.max_candidates,
+                });
+            }
+            continue;
+        }
+        if dx >= dy {
+            let (l, r) = x.halves();
+            stack.push((l, y.clone()));
+            stack.push((r, y));
+        } else {
+            let (l, r) = y.halves();
+            stack.push((x.clone(), l));
+            stack.push((x, r));
+        }
+    }
+    let mut found: Vec<CurvePairPoint<D>> = Vec::new();
+    let merge = 1e-6 * size;
+    for (s, t) in seeds {
+        let (s, t) = refine(a, b, s, t)?;
+        let mut hit = pair_point(a, b, s, t)?;
+        if hit.distance > opts.tolerance {
+            continue;
+        }
+        // The minimisation leaves a touch imprecise, so its tangents may still differ by the
+        // curvature times √tolerance: try the sharp touch iteration on anything near-parallel.
+        let near_parallel = sine_between(&a.derivative(s)?, &b.derivative(t)?) < 1e-3;
+        if near_parallel {
+            if let Some((s2, t2)) = refine_touch(a, b, s, t)? {
+                let touch = pair_point(a, b, s2, t2)?;
+                // Keep the sharper location only if it is still a contact.
+                if touch.distance <= opts.tolerance
+                    && touch.distance <= hit.distance.max(1e-300) * 10.0
+                {
+                    hit = touch;
+                }
+            }
+        }
+        match found
+            .iter_mut()
+            .find(|h| (h.point_a - hit.point_a).norm() <= merge)
+        {
+            Some(h) => {
+                if hit.distance < h.distance {
+                    *h = hit;
+                }
+            }
+            None => found.push(hit),
+        }
+    }
+    found.sort_by(|x, y| x.parameter_a.total_cmp(&y.parameter_a));
+    Ok(found)
+}
+
+/// A piece pair in the distance search, ordered by its lower bound (smallest first).
+struct Candidate<const D: usize> {
+    lower: f64,
+    a: RationalPiece<D>,
+    b: RationalPiece<D>,
+}
+
+impl<const D: usize> PartialEq for Candidate<D> {
+    fn eq(&self, other: &Self) -> bool {
+        self.lower.total_cmp(&other.lower) == Ordering::Equal
+    }
+}
+impl<const D: usize> Eq for Candidate<D> {}
+impl<const D: usize> PartialOrd for Candidate<D> {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+impl<const D: usize> Ord for Candidate<D> {
+    fn cmp(&self, other: &Self) -> Ordering {
+        // BinaryHeap is a max-heap: reverse so the smallest lower bound comes first.
+        other.lower.total_cmp(&self.lower)
+    }
+}
+
+/// The closest pair of points of `a` and `b` (distance 0 where they meet), with both
+/// parameters. When the search hits `max_candidates` leaf pairs it returns the best pair found
+/// so far (an upper bound on the distance).
+///
+/// ```
+/// use camber_geom::queries::{curve_distance, CurveCurveOptions};
+/// use camber_geom::{Circle, Segment};
+/// use nalgebra::Point2;
+/// // The segment y = 3 from x = −1 to 1 is 2 away from the unit circle, at (0, 3) and (0, 1).
+/// let s = Segment::try_new(Point2::new(-1.0, 3.0), Point2::new(1.0, 3.0))?;
+/// let c = Circle::try_new(Point2::origin(), 1.0)?;
+/// let near = curve_distance(&s, &c, &CurveCurveOptions::default())?;
+/// assert!((near.distance - 2.0).abs() < 1e-9);
+/// assert!((near.point_b - Point2::new(0.0, 1.0)).norm() < 1e-6);
+/// # Ok::<(), camber_geom::Error>(())
+/// ```
+///
+/// Errors: bad options, and the curves' evaluation errors.
+pub fn curve_distance<const D: usize, A, B>(
+    a: &A,
+    b: &B,
+    opts: &CurveCurveOptions,
+) -> Result<CurvePairPoint<D>>
+where
+    A: BezierPieces<D> + ?Sized,
+    B: BezierPieces<D> + ?Sized,
+{
+    opts.check()?;
+    let (pa, pb) = (a.bezier_pieces(), b.bezier_pieces());
+    let size = extent(&pa).max(extent(&pb)).max(opts.tolerance);
+    let leaf = 1e-3 * size;
+    let ((a0, a1), (b0, b1)) = (a.domain(), b.domain());
+    let mut best = pair_point(a, b, a0, b0)?;
+    let consider = |cand: CurvePairPoint<D>, best: &mut CurvePairPoint<D>| {
+        if cand.distance < best.distance {
+            *best = cand;
+        }
+    };
+    // Curve ends projected onto the other curve.
+    for s in [a0, a1] {
+        let p = a.point(s)?;
+        let c = closest_point(b, &p)?;
+        consider(pair_point(a, b, s, c.parameter)?, &mut best);
+    }
+    for t in [b0, b1] {
+        let p = b.point(t)?;
+        let c = closest_point(a, &p)?;
+        consider(pair_point(a, b, c.parameter, t)?, &mut best);
+    }
+    let mut heap = BinaryHeap::new();
+    for x in &pa {
+        for y in &pb {
+            let lower = box_distance(&x.bounding_box(), &y.bounding_box());
+            heap.push(Candidate {
+                lower,
+                a: x.clone(),
+                b: y.clone(),
+            });
+        }
+    }
+    let mut leaves = 0;
+    while let Some(Candidate { lower, a: x, b: y }) = heap.pop() {
+        if lower >= best.distance - opts.tolerance {
+            break;
+        }
+        // Piece ends are curve points: an upper bound.
+        let (xa, xb) = (x.start, x.end);
+        let (ya, yb) = (y.start, y.end);
+        for (s, t) in [(xa, ya), (xa, yb), (xb, ya), (xb, yb)] {
+            consider(pair_point(a, b, s, t)?, &mut best);
+        }
+        let (bx, by) = (x.bounding_box(), y.bounding_box());
+        let (dx, dy) = (diagonal(&bx), diagonal(&by));
+        if dx <= leaf && dy <= leaf {
+            leaves += 1;
+            let (s, t) = refine(a, b, 0.5 * (xa + xb), 0.5 * (ya + yb))?;
+            consider(pair_point(a, b, s, t)?, &mut best);
+            if leaves >= opts.max_candidates {
+                break;
+            }
+            continue;
+        }
+        let children = if dx >= dy {
+            let (l, r) = x.halves();
+            [(l, y.clone()), (r, y)]
+        } else {
+            let (l, r) = y.halves();
+            [(x.clone(), l), (x, r)]
+        };
+        for (cx, cy) in children {
+            let lower = box_distance(&cx.bounding_box(), &cy.bounding_box());
+            if lower < best.distance - opts.tolerance {
+                heap.push(Candidate {
+                    lower,
+                    a: cx,
+                    b: cy,
+                });
+            }
+        }
+    }
+    Ok(best)
+}

@@ -1,0 +1,236 @@
+//! Interpolation and approximation: hand-derived interpolants, reproduction of curves the
+//! spline space contains (a second method: the curve the data were sampled from), and
+//! properties (interpolants pass through their points and meet their end derivatives, least
+//! squares is optimal against perturbations, fits meet their tolerance).
+
+// Test helpers outside #[test] functions unwrap too; a failed unwrap is a failed test.
+#![allow(clippy::unwrap_used)]
+
+use camber_geom::fit::{
+    approximate, data_parameters, fit_to_tolerance, interpolate, ParameterMethod,
+};
+use camber_geom::{BezierCurve2, Error, ParametricCurve};
+use nalgebra::{Point2, Vector2};
+use proptest::prelude::*;
+
+#[test]
+fn a_quadratic_through_three_points_by_hand() {
+    // Uniform parameters 0, 1/2, 1 and p = 2: one Bézier span with C(1/2) = (1, 1), so
+    // P1 = 2 C(1/2) − (P0 + P2)/2 = (1, 2).
+    let pts = [
+        Point2::new(0.0, 0.0),
+        Point2::new(1.0, 1.0),
+        Point2::new(2.0, 0.0),
+    ];
+    let fit = interpolate(&pts, 2, ParameterMethod::Uniform, None).unwrap();
+    let cps = fit.curve.control_points();
+    assert_eq!(cps.len(), 3);
+    assert!((cps[1] - Point2::new(1.0, 2.0)).norm() < 1e-14, "{cps:?}");
+    assert!(fit.max_error < 1e-14);
+}
+
+#[test]
+fn a_cubic_is_reproduced_from_four_samples() {
+    let bezier = BezierCurve2::try_new(vec![
+        Point2::new(0.0, 0.0),
+        Point2::new(1.0, 3.0),
+        Point2::new(2.0, -1.0),
+        Point2::new(4.0, 1.0),
+    ])
+    .unwrap();
+    let samples: Vec<_> = (0..4)
+        .map(|i| bezier.point(f64::from(i) / 3.0).unwrap())
+        .collect();
+    let fit = interpolate(&samples, 3, ParameterMethod::Uniform, None).unwrap();
+    for (a, b) in fit
+        .curve
+        .control_points()
+        .iter()
+        .zip(bezier.control_points())
+    {
+        assert!((a - b).norm() < 1e-12);
+    }
+    // Least squares over many samples recovers it too (the data lie in the spline space).
+    let many: Vec<_> = (0..=30)
+        .map(|i| bezier.point(f64::from(i) / 30.0).unwrap())
+        .collect();
+    let ls = approximate(&many, 3, 4, ParameterMethod::Uniform, false).unwrap();
+    for (a, b) in ls
+        .curve
+        .control_points()
+        .iter()
+        .zip(bezier.control_points())
+    {
+        assert!((a - b).norm() < 1e-10);
+    }
+}
+
+#[test]
+fn end_derivatives_are_met() {
+    let pts = [
+        Point2::new(0.0, 0.0),
+        Point2::new(1.0, 1.0),
+        Point2::new(2.0, 0.0),
+        Point2::new(3.0, 1.0),
+    ];
+    let (d0, d1) = (Vector2::new(0.0, 5.0), Vector2::new(5.0, 0.0));
+    let fit = interpolate(&pts, 3, ParameterMethod::ChordLength, Some((d0, d1))).unwrap();
+    assert_eq!(fit.curve.control_points().len(), 6);
+    assert!((fit.curve.derivative(0.0).unwrap() - d0).norm() < 1e-10);
+    assert!((fit.curve.derivative(1.0).unwrap() - d1).norm() < 1e-10);
+    assert!(fit.max_error < 1e-12);
+}
+
+#[test]
+fn bad_data_is_typed() {
+    let pts = [
+        Point2::new(0.0, 0.0),
+        Point2::new(0.0, 0.0),
+        Point2::new(1.0, 0.0),
+    ];
+    assert_eq!(
+        interpolate(&pts, 2, ParameterMethod::ChordLength, None).unwrap_err(),
+        Error::CoincidentDataPoints { index: 1 }
+    );
+    assert!(matches!(
+        interpolate(&pts[..2], 2, ParameterMethod::Uniform, None),
+        Err(Error::TooFewDataPoints {
+            needed: 3,
+            found: 2,
+            ..
+        })
+    ));
+    let line = [
+        Point2::new(0.0, 0.0),
+        Point2::new(1.0, 0.0),
+        Point2::new(2.0, 0.0),
+    ];
+    assert!(matches!(
+        approximate(&line, 1, 5, ParameterMethod::Uniform, true),
+        Err(Error::TooFewDataPoints { .. })
+    ));
+    assert!(matches!(
+        fit_to_tolerance(&line, 1, 0.0, ParameterMethod::Uniform),
+        Err(Error::NonPositiveTolerance { .. })
+    ));
+    assert!(matches!(
+        data_parameters(
+            &[Point2::new(f64::NAN, 0.0), Point2::new(1.0, 0.0)],
+            ParameterMethod::Uniform
+        ),
+        Err(Error::NonFinite { .. })
+    ));
+}
+
+fn data_strategy() -> impl Strategy<Value = (usize, Vec<Point2<f64>>)> {
+    (1usize..=4, 0usize..12).prop_flat_map(|(p, extra)| {
+        proptest::collection::vec((-10.0..10.0, -10.0..10.0), p + 1 + extra).prop_map(move |pts| {
+            // Walk forward in x so consecutive points never coincide.
+            let mut x = 0.0;
+            let points = pts
+                .into_iter()
+                .map(|(dx, y): (f64, f64)| {
+                    x += 0.5 + dx.abs();
+                    Point2::new(x, y)
+                })
+                .collect();
+            (p, points)
+        })
+    })
+}
+
+fn method(i: u8) -> ParameterMethod {
+    [
+        ParameterMethod::Uniform,
+        ParameterMethod::ChordLength,
+        ParameterMethod::Centripetal,
+    ][usize::from(i % 3)]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(96))]
+
+    #[test]
+    fn interpolation_passes_through_its_points((p, pts) in data_strategy(), m in 0u8..3, with_d in any::<bool>()) {
+        let ends = with_d.then(|| (Vector2::new(1.0, 2.0) * 3.0, Vector2::new(2.0, -1.0) * 3.0));
+        let fit = match interpolate(&pts, p, method(m), ends) {
+            Ok(f) => f,
+            Err(Error::SingularSystem { .. }) if with_d && p == 1 => return Ok(()),
+            Err(e) => return Err(TestCaseError::fail(e.to_string())),
+        };
+        let scale = 1.0 + pts.iter().map(|q| q.coords.norm()).fold(0.0, f64::max);
+        for (q, &u) in pts.iter().zip(&fit.parameters) {
+            prop_assert!((fit.curve.point(u).unwrap() - q).norm() < 1e-8 * scale);
+        }
+        if let Some((d0, d1)) = ends {
+            prop_assert!((fit.curve.derivative(0.0).unwrap() - d0).norm() < 1e-7 * scale);
+            prop_assert!((fit.curve.derivative(1.0).unwrap() - d1).norm() < 1e-7 * scale);
+        }
+    }
+
+    #[test]
+    fn least_squares_beats_its_perturbations(
+        (p, pts) in data_strategy(), m in 0u8..3, fixed in any::<bool>(), k in 0usize..8,
+        dx in -0.1..0.1_f64, dy in -0.1..0.1_f64,
+    ) {
+        let n = (p + 1 + k).min(pts.len());
+        let fit = approximate(&pts, p, n, method(m), fixed).unwrap();
+        let sse = |c: &camber_geom::BSplineCurve2<f64>| -> f64 {
+            pts.iter().zip(&fit.parameters).map(|(q, &u)| (c.point(u).unwrap() - q).norm_squared()).sum()
+        };
+        let base = sse(&fit.curve);
+        let mut cps = fit.curve.control_points().to_vec();
+        let lo = usize::from(fixed);
+        let hi = cps.len() - usize::from(fixed);
+        prop_assume!(lo < hi);
+        let i = lo + k % (hi - lo);
+        cps[i] += Vector2::new(dx, dy);
+        let moved = fit.curve.with_control_points(cps).unwrap();
+        prop_assert!(sse(&moved) >= base - 1e-9 * (1.0 + base), "{} < {base}", sse(&moved));
+        if fixed {
+            prop_assert!((fit.curve.point(0.0).unwrap() - pts[0]).norm() < 1e-12);
+            prop_assert!((fit.curve.point(1.0).unwrap() - pts[pts.len() - 1]).norm() < 1e-12);
+        }
+    }
+
+    #[test]
+    fn fits_meet_their_tolerance((p, pts) in data_strategy(), m in 0u8..3, tol_exp in -6i32..0) {
+        let tol = 10f64.powi(tol_exp);
+        let fit = fit_to_tolerance(&pts, p, tol, method(m)).unwrap();
+        prop_assert!(fit.max_error <= tol);
+        prop_assert!(fit.curve.control_points().len() <= pts.len());
+        // Measured again independently of the fit's own figure.
+        for (q, &u) in pts.iter().zip(&fit.parameters) {
+            prop_assert!((fit.curve.point(u).unwrap() - q).norm() <= tol * (1.0 + 1e-9));
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// The banded solver against nalgebra's dense LU on random diagonally weighted band
+    /// matrices (lower width 2, upper width 1).
+    #[test]
+    fn banded_elimination_agrees_with_dense_lu(
+        n in 3usize..12, values in proptest::collection::vec(-1.0..1.0_f64, 48),
+    ) {
+        use nalgebra::DMatrix;
+        let mut a = DMatrix::<f64>::zeros(n, n);
+        let mut k = 0;
+        for r in 0..n {
+            for c in r.saturating_sub(2)..=(r + 1).min(n - 1) {
+                a[(r, c)] = values[k % values.len()] + if r == c { 0.5 } else { 0.0 };
+                k += 1;
+            }
+        }
+        let b = DMatrix::from_fn(n, 2, |r, c| values[(r + 7 * c) % values.len()]);
+        let dense = a.clone().lu().solve(&b);
+        let banded = camber_geom::banded::solve_banded(a.clone(), b.clone());
+        if let (Some(x), Some(y)) = (&dense, &banded) {
+            let residual = (&a * y - &b).norm();
+            prop_assume!((&a * x - &b).norm() < 1e-8);
+            prop_assert!(residual < 1e-8 * (1.0 + x.norm()), "{residual}");
+        }
+    }
+}

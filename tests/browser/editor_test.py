@@ -1,0 +1,263 @@
+#!/usr/bin/env python3
+"""The editor in a real browser, end to end (issue 11).
+
+Starts `camber edit` on a copy of the bundled blade section, opens the page in headless
+Chromium (Python playwright driving the system's /usr/bin/chromium; no browser is downloaded),
+drags a control point with real mouse events, and checks through the editor's HTTP API that
+every constraint still holds (the editor's own residuals, and the G1 joins and fixed points
+recomputed here from the points), after solving the blade with the Solve button (it is not
+solved as shipped). Then it undoes with the Undo button, drags again, saves
+with Ctrl+S, reloads the page, restarts the editor on the saved file, and checks that a
+request from a foreign Origin is refused and changes nothing. A screenshot goes to
+target/browser/editor.png.
+
+Usage: editor_test.py [CAMBER_BINARY]   (default: target/release/camber)
+Any failed step raises, prints `browser test FAILED: …` and exits with 1.
+"""
+
+import json
+import math
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+import urllib.error
+import urllib.request
+from pathlib import Path
+
+from playwright.sync_api import sync_playwright
+
+ROOT = Path(__file__).resolve().parents[2]
+BLADE = ROOT / "examples" / "sketches" / "blade_section.json"
+CHROMIUM = os.environ.get("CHROMIUM", "/usr/bin/chromium")
+SHOTS = ROOT / "target" / "browser"
+
+# The editor's tolerance is 1e-10 on residual rows; the joins recomputed here from rounded
+# decimal points get a little more.
+RESIDUAL_TOLERANCE = 1e-9
+
+
+class Failure(Exception):
+    """A step of the test that did not do what it should."""
+
+
+def check(condition, message):
+    if not condition:
+        raise Failure(message)
+
+
+class Editor:
+    """A running `camber edit` process and its URL."""
+
+    def __init__(self, binary, sketch):
+        self.process = subprocess.Popen(
+            [str(binary), "edit", str(sketch), "--port", "0"],
+            stdout=subprocess.PIPE,
+            stderr=subprocess.PIPE,
+            text=True,
+        )
+        line = self.process.stdout.readline()
+        check(" at http://" in line, f"camber edit did not print its address: {line!r}")
+        self.url = line.split(" at ", 1)[1].split(" ", 1)[0]
+        self.host = self.url.removeprefix("http://").rstrip("/")
+
+    def request(self, method, path, body=None, headers=None):
+        """(status, JSON answer) of one request; no Origin header unless given."""
+        data = None if body is None else json.dumps(body).encode()
+        req = urllib.request.Request(self.url.rstrip("/") + path, data=data, method=method)
+        if method == "POST":
+            req.add_header("Content-Type", "application/json")
+            if data is None:
+                req.data = b"{}"
+        for k, v in (headers or {}).items():
+            req.add_header(k, v)
+        try:
+            with urllib.request.urlopen(req, timeout=30) as r:
+                return r.status, json.loads(r.read())
+        except urllib.error.HTTPError as e:
+            return e.code, json.loads(e.read())
+
+    def state(self):
+        status, s = self.request("GET", "/api/state")
+        check(status == 200, f"GET /api/state answered {status}: {s}")
+        return s
+
+    def stop(self):
+        self.process.terminate()
+        try:
+            self.process.wait(timeout=10)
+        except subprocess.TimeoutExpired:
+            self.process.kill()
+            self.process.wait()
+
+
+def points(state):
+    return {e["id"]: e["points"] for e in state["scene"]["entities"]}
+
+
+def check_constraints(state, sketch_file, original):
+    """Every constraint of the blade holds: the editor's residual per component, and each
+    constraint recomputed here from the points the API returns."""
+    for c in state["components"]:
+        check(
+            c["residual"] <= RESIDUAL_TOLERANCE,
+            f"component {c['entities']} has residual {c['residual']} (worst {c['worst']})",
+        )
+    pts = points(state)
+    for c in json.loads(sketch_file.read_text())["constraints"]:
+        if c["kind"] == "g1_join":
+            first, second = pts[c["first"]], pts[c["second"]]
+            end, start = first[-1], second[0]
+            gap = math.dist(end, start)
+            check(gap <= RESIDUAL_TOLERANCE, f"g1_join {c['id']}: the ends are {gap} apart")
+            d = c["direction"]
+            dn = math.hypot(*d)
+            for name, (a, b) in (("first", (first[-2], first[-1])), ("second", (second[0], second[1]))):
+                t = (b[0] - a[0], b[1] - a[1])
+                tn = math.hypot(*t)
+                cross = (t[0] * d[1] - t[1] * d[0]) / (tn * dn)
+                dot = (t[0] * d[0] + t[1] * d[1]) / (tn * dn)
+                check(abs(cross) <= RESIDUAL_TOLERANCE, f"g1_join {c['id']}: {name} tangent off by {cross}")
+                check(dot > 0, f"g1_join {c['id']}: {name} tangent points against the joint")
+        elif c["kind"] == "fixed":
+            target = c["target"]["point"]
+            (where, entity), = target.items()
+            index = 0 if where == "start" else -1
+            now, was = pts[entity][index], original[entity][index]
+            check(now == was, f"fixed {c['id']}: the {where} of {entity} moved from {was} to {now}")
+        else:
+            raise Failure(f"the test does not know constraint kind {c['kind']}")
+
+
+def handle(page, entity, index):
+    return page.locator(f'#layer-points circle[data-entity="{entity}"][data-index="{index}"]')
+
+
+def drag(page, editor, entity, index, dx, dy):
+    """Drags a handle by (dx, dy) pixels with real mouse events; returns the state after."""
+    box = handle(page, entity, index).bounding_box()
+    check(box is not None, f"no handle for point {index} of entity {entity}")
+    x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+    page.mouse.move(x, y)
+    page.mouse.down()
+    for k in range(1, 11):
+        page.mouse.move(x + dx * k / 10, y + dy * k / 10)
+        page.wait_for_timeout(30)
+    page.mouse.up()
+    # The page ends the drag after its last move is answered.
+    deadline = time.monotonic() + 20
+    while time.monotonic() < deadline:
+        s = editor.state()
+        if s["dragging"] is None and s["report"] and s["report"]["action"] == "drag":
+            return s
+        page.wait_for_timeout(50)
+    raise Failure("the drag did not end within 20 s")
+
+
+def main():
+    binary = Path(sys.argv[1] if len(sys.argv) > 1 else ROOT / "target" / "release" / "camber")
+    check(binary.exists(), f"{binary} does not exist (build it first)")
+    check(Path(CHROMIUM).exists(), f"{CHROMIUM} does not exist (apt-get install chromium)")
+    SHOTS.mkdir(parents=True, exist_ok=True)
+    work = Path(tempfile.mkdtemp(prefix="camber-browser-"))
+    sketch = work / "blade_section.json"
+    shutil.copy(BLADE, sketch)
+    started = time.monotonic()
+    editor = Editor(binary, sketch)
+    errors = []
+    try:
+        with sync_playwright() as p:
+            browser = p.chromium.launch(executable_path=CHROMIUM, headless=True, args=["--no-sandbox"])
+            page = browser.new_page(viewport={"width": 1200, "height": 800})
+            page.on("pageerror", lambda e: errors.append(f"page error: {e}"))
+            page.on("console", lambda m: errors.append(f"console {m.type}: {m.text}") if m.type == "error" else None)
+
+            # 1. The page loads and draws every control point.
+            page.goto(editor.url)
+            page.wait_for_selector("#layer-points circle[data-entity]")
+            loaded = points(editor.state())
+            drawn = page.locator("#layer-points circle[data-entity]").count()
+            expected = sum(len(v) for v in loaded.values())
+            check(drawn == expected, f"the page draws {drawn} handles, the sketch has {expected} points")
+
+            # 2. The bundled blade is not solved as shipped: Solve (the button) solves it, and
+            # the fixed points stay where the file has them.
+            page.click("#solve")
+            deadline = time.monotonic() + 20
+            while not editor.state()["report"] and time.monotonic() < deadline:
+                page.wait_for_timeout(50)
+            solved = editor.state()
+            check(solved["report"] and solved["report"]["action"] == "solve", f"Solve did not report: {solved['report']}")
+            check_constraints(solved, sketch, loaded)
+            original = points(solved)
+
+            # 3. Drag control point 2 of the suction side with the mouse; the constraints hold.
+            after = drag(page, editor, 0, 2, 60, -45)
+            moved = points(after)
+            check(moved[0][2] != original[0][2], f"the dragged point did not move: {moved[0][2]}")
+            check(after["unsaved"] and after["can_undo"], f"after the drag: unsaved {after['unsaved']}, can_undo {after['can_undo']}")
+            check_constraints(after, sketch, original)
+            page.screenshot(path=str(SHOTS / "editor_after_drag.png"))
+
+            # 4. Undo (the button): every point is back, exactly.
+            page.click("#undo")
+            page.wait_for_function("() => !document.getElementById('message').hidden")
+            undone = editor.state()
+            check(points(undone) == original, "undo did not restore the original points")
+            check(undone["can_undo"], "undo of the drag also undid the solve")
+
+            # 5. Drag again and save with Ctrl+S; the file on disk holds the dragged geometry.
+            after = drag(page, editor, 2, 3, -50, 40)
+            check_constraints(after, sketch, original)
+            page.keyboard.press("Control+s")
+            deadline = time.monotonic() + 10
+            while editor.state()["unsaved"] and time.monotonic() < deadline:
+                page.wait_for_timeout(50)
+            saved_state = editor.state()
+            check(not saved_state["unsaved"], "Ctrl+S did not save")
+            saved = json.loads(sketch.read_text())
+            on_disk = {e["id"]: e["control_points"] for e in saved["entities"]}
+            check(on_disk == points(saved_state), "the saved file differs from the editor's sketch")
+            check(on_disk != original, "the saved file still holds the original geometry")
+
+            # 6. Reload the page: it draws the saved geometry.
+            page.reload()
+            page.wait_for_selector("#layer-points circle[data-entity]")
+            page.wait_for_function("() => document.getElementById('status').textContent.startsWith('ready')")
+            shown = page.evaluate("() => state.scene.entities.map((e) => [e.id, e.points])")
+            check({k: v for k, v in shown} == on_disk, "the reloaded page shows other points than the file")
+
+            # 7. A request from another site is refused and changes nothing.
+            before = editor.state()
+            for path, body in (("/api/drag/start", {"entity": 0, "index": 2}), ("/api/solve", None), ("/api/save", None)):
+                status, answer = editor.request("POST", path, body, {"Origin": "https://attacker.example"})
+                check(status == 403, f"POST {path} from a foreign Origin answered {status}: {answer}")
+            # The same request from the page's own origin goes through (the sketch is solved, so
+            # nothing moves).
+            status, answer = editor.request("POST", "/api/solve", None, {"Origin": f"http://{editor.host}"})
+            check(status == 200, f"POST /api/solve from the page's own Origin answered {status}: {answer}")
+            check(points(editor.state()) == points(before), "a refused request changed the sketch")
+
+            page.screenshot(path=str(SHOTS / "editor.png"))
+            browser.close()
+        check(not errors, f"the page reported errors: {errors}")
+
+        # 8. The saved file opens again in a new editor with the same geometry.
+        editor.stop()
+        editor = Editor(binary, sketch)
+        check(points(editor.state()) == on_disk, "the restarted editor shows other geometry than the saved file")
+        check_constraints(editor.state(), sketch, original)
+    finally:
+        editor.stop()
+        shutil.rmtree(work, ignore_errors=True)
+    print(f"browser test passed in {time.monotonic() - started:.1f} s; screenshots in {SHOTS}")
+
+
+if __name__ == "__main__":
+    try:
+        main()
+    except Exception as e:  # every failure, including playwright's timeouts, fails loudly
+        print(f"browser test FAILED: {type(e).__name__}: {e}", file=sys.stderr)
+        sys.exit(1)
