@@ -60,7 +60,7 @@ use anyhow::Result;
 use clap::{Parser, Subcommand};
 
 use commands::{
-    bench as bench_cmd, check, demo, edit, eval, intersect, op, render, render_curve, solve,
+    batch, bench as bench_cmd, check, demo, edit, eval, intersect, op, render, render_curve, solve,
     surface,
 };
 
@@ -111,6 +111,8 @@ pub enum Command {
     Demo(demo::DemoArgs),
     /// Run the standard workloads W1–W5b: median, p95 and valid counts per case.
     Bench(bench_cmd::BenchArgs),
+    /// Solve every sketch file of a directory in parallel: one JSON line per file.
+    Batch(batch::BatchArgs),
 }
 
 /// Which operation works on which curve type, shown under `camber op --help`.
@@ -137,6 +139,7 @@ pub fn run(cli: &Cli) -> Result<()> {
         Command::Edit(a) => edit::run(a),
         Command::Demo(a) => demo::run(a),
         Command::Bench(a) => bench_cmd::run(a),
+        Command::Batch(a) => batch::run(a),
     }
 }
 

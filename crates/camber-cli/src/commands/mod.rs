@@ -1,6 +1,7 @@
 //! One module per subcommand; each has an `…Args` struct (clap derive) and a `run` function.
 
 pub mod arc_length;
+pub mod batch;
 pub mod bench;
 pub mod check;
 pub mod demo;

@@ -36,6 +36,7 @@ use serde_json::Value;
 
 use crate::constraints::custom::{Arg, Custom};
 use crate::constraints::Constraint;
+use crate::entity::Entity;
 use crate::errors::Error;
 use crate::ids::{ConstraintId, EntityId};
 use crate::sketch::Sketch;
@@ -300,6 +301,60 @@ pub fn from_json_with(
             .map_err(|source| FileError::Constraint { id, kind, source })?;
     }
     Ok(sketch)
+}
+
+/// Reads one constraint from its file form without an id (`{"kind": "distance", …}`), as
+/// bindings and tools that build constraints from data do. Custom kinds are refused (they need
+/// a [`CustomRegistry`]).
+///
+/// ```
+/// use camber_sketch::file::constraint_from_value;
+/// let c = constraint_from_value(serde_json::json!(
+///     {"kind": "horizontal", "of": {"a": {"point": 0}, "b": {"point": 1}}}))?;
+/// assert_eq!(c.tag(), "horizontal");
+/// let err = constraint_from_value(serde_json::json!({"kind": "horizontal"})).unwrap_err();
+/// assert!(err.to_string().starts_with("at constraints[0]"));
+/// # Ok::<(), camber_sketch::file::FileError>(())
+/// ```
+///
+/// # Errors
+/// [`FileError::Shape`] (an unknown kind, a missing or malformed field, with its path),
+/// [`FileError::UnregisteredCustom`] for a custom kind.
+pub fn constraint_from_value(mut value: Value) -> std::result::Result<Constraint, FileError> {
+    if let Value::Object(map) = &mut value {
+        map.entry("id").or_insert(Value::from(0));
+    }
+    load_constraint(0, value, &CustomRegistry::new()).map(|(_, c)| c)
+}
+
+/// One constraint's file form without its id (`{"kind": …, …fields}`).
+///
+/// # Errors
+/// [`FileError::Syntax`] when serialization fails (it does not for built-in kinds).
+pub fn constraint_to_value(constraint: &Constraint) -> std::result::Result<Value, FileError> {
+    let text = constraint.save().map_err(|e| FileError::Syntax {
+        message: e.to_string(),
+    })?;
+    serde_json::from_str(&text).map_err(|e| FileError::Syntax {
+        message: e.to_string(),
+    })
+}
+
+/// One entity's file form without its id (`{"kind": "bezier", "control_points": …}`).
+///
+/// ```
+/// use camber_sketch::{file::entity_to_value, Entity};
+/// let v = entity_to_value(&Entity::Point(nalgebra::Point2::new(1.0, 2.0)))?;
+/// assert_eq!(v, serde_json::json!({"kind": "point", "at": [1.0, 2.0]}));
+/// # Ok::<(), camber_sketch::file::FileError>(())
+/// ```
+///
+/// # Errors
+/// [`FileError::Syntax`] when serialization fails (it does not for finite geometry).
+pub fn entity_to_value(entity: &Entity) -> std::result::Result<Value, FileError> {
+    serde_json::to_value(RawShape::from_entity(entity)).map_err(|e| FileError::Syntax {
+        message: e.to_string(),
+    })
 }
 
 /// One entity of a file: its id and shape, with the JSON path of a bad field inside it

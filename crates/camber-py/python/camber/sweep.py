@@ -1,0 +1,65 @@
+"""Sweeps of the bundled diffuser sketch (examples/sketches/diffuser.json): variants of its
+circles' radii and positions, and one solve per variant returning a table row. The functions
+are plain and picklable, so any task engine can run them (docs/python.md runs them on Dask).
+"""
+
+import os
+import random
+
+import camber
+
+#: The diffuser's circles: leading edge (entity 1), the middle contact (3), trailing edge (5).
+CIRCLES = (1, 3, 5)
+
+
+def diffuser_variants(count, seed=0, spread=0.1):
+    """``count`` variants: each circle's radius and centre scaled/moved by up to ``spread``
+    (relative to the radius), reproducibly from ``seed``."""
+    rng = random.Random(seed)
+    out = []
+    for _ in range(count):
+        out.append(
+            {
+                cid: {
+                    "scale": 1.0 + rng.uniform(-spread, spread),
+                    "dx": rng.uniform(-spread, spread),
+                    "dy": rng.uniform(-spread, spread),
+                }
+                for cid in CIRCLES
+            }
+        )
+    return out
+
+
+def apply_variant(base_json, variant):
+    """The diffuser sketch text with the variant's circles."""
+    import json
+
+    doc = json.loads(base_json)
+    for e in doc["entities"]:
+        change = variant.get(e["id"]) or variant.get(str(e["id"]))
+        if change is None:
+            continue
+        r = e["radius"]
+        e["radius"] = r * change["scale"]
+        e["center"] = [e["center"][0] + change["dx"] * r, e["center"][1] + change["dy"] * r]
+    return json.dumps(doc)
+
+
+def solve_variant(base_json, variant):
+    """Solves one variant; returns a row: ok, the error, the largest residual, the solved
+    middle contact parameter, the solver time and the worker's process id."""
+    sketch = camber.Sketch.from_json(apply_variant(base_json, variant))
+    row = {"ok": False, "error": None, "max_residual": None, "contact_u": None}
+    row["worker_pid"] = os.getpid()
+    row.update({f"r{cid}": variant[cid]["scale"] for cid in CIRCLES if cid in variant})
+    try:
+        report = sketch.solve()
+    except camber.CamberError as e:
+        row["error"] = str(e)
+        return row
+    row["ok"] = True
+    row["max_residual"] = report.max_residual
+    row["contact_u"] = sketch.constraint(8)["u"]["free"]
+    row["elapsed"] = report.elapsed
+    return row

@@ -1,0 +1,117 @@
+//! `solve_many`: independent sketches solved in parallel on a rayon pool, the GIL released.
+//!
+//! Each item is a `Sketch` (solved in place, like `Sketch.solve`) or a path to a sketch file
+//! (read and solved on the pool). One failure does not stop the others: every item gets its
+//! own result.
+
+use std::path::PathBuf;
+
+use camber_sketch::SketchReport;
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+use rayon::prelude::*;
+
+use crate::errors;
+use crate::sketch::{report_object, Sketch};
+
+enum Job {
+    Sketch(Box<camber_sketch::Sketch>),
+    Path(PathBuf),
+}
+
+struct Outcome {
+    sketch: Option<camber_sketch::Sketch>,
+    result: Result<SketchReport, String>,
+}
+
+fn run(job: Job) -> Outcome {
+    let mut sketch = match job {
+        Job::Sketch(s) => *s,
+        Job::Path(p) => {
+            let loaded = std::fs::read_to_string(&p)
+                .map_err(|e| format!("cannot read {}: {e}", p.display()))
+                .and_then(|t| camber_sketch::file::from_json(&t).map_err(|e| e.to_string()));
+            match loaded {
+                Ok(s) => s,
+                Err(e) => {
+                    return Outcome {
+                        sketch: None,
+                        result: Err(e),
+                    }
+                }
+            }
+        }
+    };
+    let result = sketch.solve_all().map_err(|e| e.to_string());
+    Outcome {
+        sketch: Some(sketch),
+        result,
+    }
+}
+
+/// Solves independent sketches in parallel (rayon, `threads` workers; all cores when None).
+///
+/// `items` holds `Sketch` objects (solved in place on success) and paths of sketch files.
+/// Returns one dict per item, in order: {"ok": bool, "report": SolveReport or None,
+/// "error": message or None, "sketch": the solved Sketch (None when a file could not be
+/// read)}.
+#[pyfunction]
+#[pyo3(signature = (items, threads = None))]
+pub fn solve_many(
+    py: Python<'_>,
+    items: Vec<Bound<'_, PyAny>>,
+    threads: Option<usize>,
+) -> PyResult<Vec<Py<PyAny>>> {
+    let mut jobs = Vec::with_capacity(items.len());
+    for item in &items {
+        if let Ok(s) = item.cast::<Sketch>() {
+            jobs.push(Job::Sketch(Box::new(s.borrow().inner.clone())));
+        } else {
+            let path: PathBuf = item.extract().map_err(|_| {
+                errors::SketchError::new_err(format!(
+                    "solve_many takes Sketch objects and paths, found {}",
+                    item.get_type()
+                        .name()
+                        .map(|n| n.to_string())
+                        .unwrap_or_default()
+                ))
+            })?;
+            jobs.push(Job::Path(path));
+        }
+    }
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads.unwrap_or(0))
+        .build()
+        .map_err(|e| errors::CamberError::new_err(format!("cannot start the thread pool: {e}")))?;
+    let outcomes: Vec<Outcome> =
+        py.detach(|| pool.install(|| jobs.into_par_iter().map(run).collect()));
+    crate::custom::raise_pending(py)?;
+    let mut out = Vec::with_capacity(outcomes.len());
+    for (item, outcome) in items.iter().zip(outcomes) {
+        let d = PyDict::new(py);
+        d.set_item("ok", outcome.result.is_ok())?;
+        match &outcome.result {
+            Ok(r) => {
+                d.set_item("report", report_object(py, r)?)?;
+                d.set_item("error", py.None())?;
+            }
+            Err(e) => {
+                d.set_item("report", py.None())?;
+                d.set_item("error", e)?;
+            }
+        }
+        let sketch_obj: Py<PyAny> = match (item.cast::<Sketch>(), outcome.sketch) {
+            (Ok(s), Some(solved)) => {
+                if outcome.result.is_ok() {
+                    s.borrow_mut().inner = solved;
+                }
+                s.clone().into_any().unbind()
+            }
+            (Err(_), Some(solved)) => Py::new(py, Sketch { inner: solved })?.into_any(),
+            (_, None) => py.None(),
+        };
+        d.set_item("sketch", sketch_obj)?;
+        out.push(d.into_any().unbind());
+    }
+    Ok(out)
+}

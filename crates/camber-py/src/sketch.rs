@@ -1,0 +1,452 @@
+//! The `Sketch` class: entities, every constraint kind through its file form, load and save,
+//! solve (a `SolveReport` with per-constraint residuals), the DOF analysis, iterative
+//! displacement, and drag sessions (`DragSession`). Solves, analyses and drags release the
+//! GIL.
+
+use camber_sketch::displacement::DisplacementOptions;
+use camber_sketch::file::{constraint_from_value, constraint_to_value, entity_to_value};
+use camber_sketch::{ConstraintId, Entity, EntityId, PointRef, SketchReport};
+use nalgebra::Point2;
+use numpy::{AllowTypeChange, PyArray1, PyArrayLike2};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+use crate::arrays::{points, vector};
+use crate::curve::{AnyCurve, Curve};
+use crate::errors;
+use crate::json::{to_python, to_value};
+
+/// A point reference: an int (a point entity) or its file form (`{"point": 0}`,
+/// `{"control": [curve, index]}`, `{"start": curve}`, `{"end": curve}`).
+pub fn point_ref(obj: &Bound<'_, PyAny>) -> PyResult<PointRef> {
+    if let Ok(id) = obj.extract::<u64>() {
+        return Ok(PointRef::Point(EntityId(id)));
+    }
+    serde_json::from_value(to_value(obj)?)
+        .map_err(|e| errors::SketchError::new_err(format!("invalid point reference: {e}")))
+}
+
+fn xy(v: &[f64], what: &str) -> PyResult<Point2<f64>> {
+    Ok(Point2::from(vector::<2>(v, what)?))
+}
+
+/// A solve report as a `camber.reports.SolveReport`.
+pub fn report_object(py: Python<'_>, report: &SketchReport) -> PyResult<Py<PyAny>> {
+    let dict = to_python(py, report)?;
+    Ok(py
+        .import("camber.reports")?
+        .getattr("SolveReport")?
+        .call1((dict,))?
+        .unbind())
+}
+
+/// A planar sketch of points, lines, circles and curves held by constraints.
+///
+/// Entities and constraints are named by integer ids that stay valid across edits. Constraints
+/// of every kind are added by their file form: `sketch.add_constraint("distance",
+/// a={"point": 0}, b={"point": 1}, value=2.0)` (docs/file-format.md lists the kinds and
+/// fields).
+#[pyclass(module = "camber._native")]
+#[derive(Debug, Clone, Default)]
+pub struct Sketch {
+    /// The library's sketch.
+    pub inner: camber_sketch::Sketch,
+}
+
+#[pymethods]
+impl Sketch {
+    #[new]
+    fn new() -> Self {
+        Self::default()
+    }
+
+    /// Reads a sketch from its JSON text.
+    #[staticmethod]
+    fn from_json(py: Python<'_>, text: &str) -> PyResult<Self> {
+        let text = text.to_owned();
+        let inner = py
+            .detach(move || camber_sketch::file::from_json(&text))
+            .map_err(errors::file)?;
+        Ok(Self { inner })
+    }
+
+    /// Reads a sketch file.
+    #[staticmethod]
+    fn load(py: Python<'_>, path: std::path::PathBuf) -> PyResult<Self> {
+        let text = std::fs::read_to_string(&path).map_err(|e| {
+            errors::FileError::new_err(format!("cannot read {}: {e}", path.display()))
+        })?;
+        Self::from_json(py, &text)
+    }
+
+    /// The sketch as JSON text (the file format).
+    fn to_json(&self) -> PyResult<String> {
+        camber_sketch::file::to_json(&self.inner).map_err(errors::file)
+    }
+
+    /// Writes the sketch file.
+    fn save(&self, path: std::path::PathBuf) -> PyResult<()> {
+        let text = self.to_json()?;
+        std::fs::write(&path, text).map_err(|e| {
+            errors::FileError::new_err(format!("cannot write {}: {e}", path.display()))
+        })
+    }
+
+    /// An independent copy.
+    fn copy(&self) -> Self {
+        self.clone()
+    }
+
+    /// Adds a point entity; returns its id.
+    fn add_point(&mut self, at: Vec<f64>) -> PyResult<u64> {
+        let p = xy(&at, "at")?;
+        Ok(self.inner.add_point(p).map_err(errors::sketch)?.0)
+    }
+
+    /// Adds a line through two points; returns its id.
+    fn add_line(&mut self, start: Vec<f64>, end: Vec<f64>) -> PyResult<u64> {
+        let (a, b) = (xy(&start, "start")?, xy(&end, "end")?);
+        Ok(self.inner.add_line(a, b).map_err(errors::sketch)?.0)
+    }
+
+    /// Adds a circle; returns its id.
+    fn add_circle(&mut self, center: Vec<f64>, radius: f64) -> PyResult<u64> {
+        let c = xy(&center, "center")?;
+        Ok(self.inner.add_circle(c, radius).map_err(errors::sketch)?.0)
+    }
+
+    /// Adds a planar Bézier, B-spline or NURBS curve (a `camber` curve object); returns its id.
+    fn add_curve(&mut self, curve: PyRef<'_, Curve>) -> PyResult<u64> {
+        let id = match &curve.inner {
+            AnyCurve::Bezier2(c) => self.inner.add_bezier(c.clone()),
+            AnyCurve::BSpline2(c) => self.inner.add_bspline(c.clone()),
+            AnyCurve::Nurbs2(c) => self.inner.add_nurbs(c.clone()),
+            _ => {
+                return Err(errors::SketchError::new_err(
+                    "a sketch holds planar Bézier, B-spline and NURBS curves",
+                ))
+            }
+        };
+        Ok(id.map_err(errors::sketch)?.0)
+    }
+
+    /// Adds a Bézier curve from an (n, 2) array of control points; returns its id.
+    fn add_bezier(
+        &mut self,
+        control_points: PyArrayLike2<'_, f64, AllowTypeChange>,
+    ) -> PyResult<u64> {
+        let pts = points::<2>(&control_points, "control_points")?;
+        let c = camber_geom::BezierCurve2::try_new(pts).map_err(errors::geometry)?;
+        Ok(self.inner.add_bezier(c).map_err(errors::sketch)?.0)
+    }
+
+    /// Entity ids, in increasing order.
+    fn entity_ids(&self) -> Vec<u64> {
+        self.inner.entities().map(|(id, _)| id.0).collect()
+    }
+
+    /// Constraint ids, in increasing order.
+    fn constraint_ids(&self) -> Vec<u64> {
+        self.inner.constraints().map(|(id, _)| id.0).collect()
+    }
+
+    /// An entity's file form as a dict (`{"kind": "bezier", "control_points": …}`).
+    fn entity(&self, py: Python<'_>, id: u64) -> PyResult<Py<PyAny>> {
+        let e = self.inner.entity(EntityId(id)).map_err(errors::sketch)?;
+        to_python(py, &entity_to_value(e).map_err(errors::file)?)
+    }
+
+    /// A curve entity (or line) as a camber curve object, for evaluation and plotting.
+    fn curve(&self, py: Python<'_>, id: u64) -> PyResult<Py<PyAny>> {
+        let e = self.inner.entity(EntityId(id)).map_err(errors::sketch)?;
+        let inner = match e {
+            Entity::Bezier(c) => AnyCurve::Bezier2(c.clone()),
+            Entity::BSpline(c) => AnyCurve::BSpline2(c.clone()),
+            Entity::Nurbs(c) => AnyCurve::Nurbs2(c.clone()),
+            Entity::Line([a, b]) => AnyCurve::Bezier2(
+                camber_geom::BezierCurve2::try_new(vec![*a, *b]).map_err(errors::geometry)?,
+            ),
+            other => {
+                return Err(errors::SketchError::new_err(format!(
+                    "entity {id} is a {}, not a curve",
+                    other.kind_name()
+                )))
+            }
+        };
+        crate::curve_kinds::wrap(py, inner)
+    }
+
+    /// The coordinates of a point (see the class documentation for point references).
+    fn point<'py>(
+        &self,
+        py: Python<'py>,
+        at: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        let p = self.inner.point(point_ref(at)?).map_err(errors::sketch)?;
+        Ok(PyArray1::from_slice(py, p.coords.as_slice()))
+    }
+
+    /// Moves a point (marks its component for the next solve).
+    fn set_point(&mut self, at: &Bound<'_, PyAny>, to: Vec<f64>) -> PyResult<()> {
+        let r = point_ref(at)?;
+        let p = xy(&to, "to")?;
+        self.inner.set_point(r, p).map_err(errors::sketch)
+    }
+
+    /// The point C(u) of a curve entity.
+    fn curve_point<'py>(
+        &self,
+        py: Python<'py>,
+        curve: u64,
+        u: f64,
+    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        let p = self
+            .inner
+            .curve_point(EntityId(curve), u)
+            .map_err(errors::sketch)?;
+        Ok(PyArray1::from_slice(py, p.coords.as_slice()))
+    }
+
+    /// Removes an entity (and the constraints on it); returns its file form.
+    fn remove_entity(&mut self, py: Python<'_>, id: u64) -> PyResult<Py<PyAny>> {
+        let e = self
+            .inner
+            .remove_entity(EntityId(id))
+            .map_err(errors::sketch)?;
+        to_python(py, &entity_to_value(&e).map_err(errors::file)?)
+    }
+
+    /// Adds a constraint of kind `kind` with the fields of its file form; returns its id.
+    ///
+    /// `sketch.add_constraint("fixed", target={"point": {"start": 0}})`,
+    /// `sketch.add_constraint("tangent_to_circle", curve=0, circle=1, u={"free": 0.5},
+    /// side="outside", rotation="clockwise")`. The kind's JSON is read by the library's own
+    /// loader, so every kind and field the file format has is available and checked the same
+    /// way (errors name the bad field).
+    #[pyo3(signature = (kind, **fields))]
+    fn add_constraint(&mut self, kind: &str, fields: Option<&Bound<'_, PyDict>>) -> PyResult<u64> {
+        let mut map = match fields {
+            Some(f) => match to_value(f.as_any())? {
+                serde_json::Value::Object(m) => m,
+                _ => serde_json::Map::new(),
+            },
+            None => serde_json::Map::new(),
+        };
+        map.insert("kind".into(), serde_json::Value::String(kind.to_owned()));
+        let c = constraint_from_value(serde_json::Value::Object(map)).map_err(errors::file)?;
+        Ok(self.inner.add_constraint(c).map_err(errors::sketch)?.0)
+    }
+
+    /// Adds a custom constraint whose residual is the Python function `residual(x)`; returns
+    /// its id. `args` lists what it reads, in order: an int (a point entity) or a file form
+    /// (`{"point": ref}` / `{"control": [curve, i]}` wrapped as `{"point": {...}}`,
+    /// `{"radius": circle}`, `{"free_of": [constraint, index]}`, `{"param": start}`); `x` is
+    /// their values flattened (a point gives two). `residual` returns `dim` numbers and is
+    /// differentiated exactly with num-dual's dual numbers (see `camber.custom`). Declare
+    /// `affine=True` only for a residual affine in its arguments: its component may then take
+    /// the one-step linear path.
+    #[pyo3(signature = (residual, args, dim, name = "python".to_owned(), affine = false))]
+    fn add_custom(
+        &mut self,
+        residual: Py<PyAny>,
+        args: Vec<Bound<'_, PyAny>>,
+        dim: usize,
+        name: String,
+        affine: bool,
+    ) -> PyResult<u64> {
+        let c = crate::custom::custom(residual, &args, dim, name, affine)?;
+        Ok(self.inner.add_constraint(c).map_err(errors::sketch)?.0)
+    }
+
+    /// The current value of a custom constraint's own parameters (its `{"param": …}` args).
+    fn custom_params(&self, id: u64) -> PyResult<Vec<f64>> {
+        let c = self
+            .inner
+            .constraint(ConstraintId(id))
+            .map_err(errors::sketch)?;
+        let custom = c.as_custom().ok_or_else(|| {
+            errors::SketchError::new_err(format!("constraint {id} is not a custom constraint"))
+        })?;
+        Ok(custom
+            .args()
+            .iter()
+            .filter_map(|a| match a {
+                camber_sketch::Arg::Param(v) => Some(*v),
+                _ => None,
+            })
+            .collect())
+    }
+
+    /// A constraint's file form as a dict (`{"kind": …, …fields}`).
+    fn constraint(&self, py: Python<'_>, id: u64) -> PyResult<Py<PyAny>> {
+        let c = self
+            .inner
+            .constraint(ConstraintId(id))
+            .map_err(errors::sketch)?;
+        to_python(py, &constraint_to_value(c).map_err(errors::file)?)
+    }
+
+    /// Removes a constraint; returns its file form (custom constraints: their name).
+    fn remove_constraint(&mut self, py: Python<'_>, id: u64) -> PyResult<Py<PyAny>> {
+        let c = self
+            .inner
+            .remove_constraint(ConstraintId(id))
+            .map_err(errors::sketch)?;
+        match constraint_to_value(&c) {
+            Ok(v) => to_python(py, &v),
+            Err(_) => to_python(py, &serde_json::json!({"kind": c.tag()})),
+        }
+    }
+
+    /// The connected components: a list of {"entities": [...], "constraints": [...]}.
+    fn components(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
+        to_python(py, &self.inner.components())
+    }
+
+    /// Solves the components changed since the last solve (every component with `all=True`).
+    /// Returns a `SolveReport`; raises `SolveError` (the sketch unchanged) when a component
+    /// fails. The GIL is released during the solve.
+    #[pyo3(signature = (all = false))]
+    fn solve(&mut self, py: Python<'_>, all: bool) -> PyResult<Py<PyAny>> {
+        let inner = &mut self.inner;
+        let report = py
+            .detach(|| {
+                if all {
+                    inner.solve_all()
+                } else {
+                    inner.solve()
+                }
+            })
+            .map_err(errors::solve);
+        crate::custom::raise_pending(py)?;
+        report_object(py, &report?)
+    }
+
+    /// The DOF analysis of every component: a list of {"component", "analysis": {"unknowns",
+    /// "rank", "dof", "redundant", "conflicting", …}}.
+    fn analyze(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
+        let inner = &self.inner;
+        let analysis = py.detach(|| inner.analyze()).map_err(errors::solve);
+        crate::custom::raise_pending(py)?;
+        to_python(py, &analysis?)
+    }
+
+    /// Solves contacts with fixed circles and lines by iterative displacement (the blade-design
+    /// method). Returns {"rounds", "converged", "history", "report": SolveReport}.
+    #[pyo3(signature = (max_rounds = 50, tolerance = 1e-6, samples = 200))]
+    fn solve_by_displacement(
+        &mut self,
+        py: Python<'_>,
+        max_rounds: usize,
+        tolerance: f64,
+        samples: usize,
+    ) -> PyResult<Py<PyAny>> {
+        let options = DisplacementOptions {
+            max_rounds,
+            tolerance,
+            samples,
+        };
+        let inner = &mut self.inner;
+        let run = py
+            .detach(|| inner.solve_by_displacement(&options))
+            .map_err(errors::solve);
+        crate::custom::raise_pending(py)?;
+        let run = run?;
+        let out = PyDict::new(py);
+        out.set_item("rounds", run.rounds)?;
+        out.set_item("converged", run.converged)?;
+        out.set_item("history", run.history)?;
+        out.set_item("report", report_object(py, &run.report)?)?;
+        Ok(out.into_any().unbind())
+    }
+
+    /// Starts dragging a point; `session.update(xy)` moves it, `session.finish()` writes the
+    /// dragged state back into this sketch.
+    fn drag(slf: Bound<'_, Self>, at: &Bound<'_, PyAny>) -> PyResult<DragSession> {
+        let r = point_ref(at)?;
+        let py = slf.py();
+        let session = {
+            let this = slf.borrow();
+            let inner = &this.inner;
+            py.detach(|| inner.drag(r)).map_err(errors::solve)
+        };
+        crate::custom::raise_pending(py)?;
+        Ok(DragSession {
+            session: Some(session?),
+            sketch: slf.unbind(),
+        })
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "<Sketch: {} entities, {} constraints>",
+            self.inner.entities().count(),
+            self.inner.constraints().count()
+        )
+    }
+}
+
+/// An interactive drag of one point of a sketch (see `Sketch.drag`).
+#[pyclass(module = "camber._native")]
+pub struct DragSession {
+    session: Option<camber_sketch::DragSession>,
+    sketch: Py<Sketch>,
+}
+
+impl DragSession {
+    fn live(&mut self) -> PyResult<&mut camber_sketch::DragSession> {
+        self.session
+            .as_mut()
+            .ok_or_else(|| errors::SolveError::new_err("the drag session is finished"))
+    }
+}
+
+#[pymethods]
+impl DragSession {
+    /// Moves the dragged point towards `target` and re-solves its component (GIL released).
+    fn update(&mut self, py: Python<'_>, target: Vec<f64>) -> PyResult<()> {
+        let p = xy(&target, "target")?;
+        let session = self.live()?;
+        let done = py.detach(|| session.update(p)).map_err(errors::solve);
+        crate::custom::raise_pending(py)?;
+        done
+    }
+
+    /// A point's coordinates in the dragged state.
+    fn point<'py>(
+        &mut self,
+        py: Python<'py>,
+        at: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        let r = point_ref(at)?;
+        let p = self.live()?.point(r).map_err(errors::solve)?;
+        Ok(PyArray1::from_slice(py, p.coords.as_slice()))
+    }
+
+    /// How the point can move: ("free", None), ("along", (dx, dy)) or ("determined", None).
+    #[getter]
+    fn freedom(&mut self) -> PyResult<(&'static str, Option<(f64, f64)>)> {
+        Ok(match self.live()?.freedom() {
+            camber_sketch::drag::Freedom::Free => ("free", None),
+            camber_sketch::drag::Freedom::Along(d) => ("along", Some((d.x, d.y))),
+            camber_sketch::drag::Freedom::Determined => ("determined", None),
+        })
+    }
+
+    /// Writes the dragged state back into the sketch and ends the session.
+    fn finish(&mut self, py: Python<'_>) -> PyResult<()> {
+        let session = self
+            .session
+            .take()
+            .ok_or_else(|| errors::SolveError::new_err("the drag session is finished"))?;
+        let mut sketch = self.sketch.borrow_mut(py);
+        session.finish(&mut sketch.inner).map_err(errors::solve)
+    }
+}
+
+/// Adds the sketch classes to the module.
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<Sketch>()?;
+    m.add_class::<DragSession>()?;
+    Ok(())
+}
