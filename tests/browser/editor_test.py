@@ -137,7 +137,14 @@ def handle(page, entity, index):
 
 def drag(page, editor, entity, index, dx, dy):
     """Drags a handle by (dx, dy) pixels with real mouse events; returns the state after."""
-    box = handle(page, entity, index).bounding_box()
+    # The page redraws its handles when a state arrives (the element is replaced), so the box
+    # is read again until a drawn handle answers.
+    box = None
+    deadline = time.monotonic() + 5
+    while box is None and time.monotonic() < deadline:
+        box = handle(page, entity, index).bounding_box()
+        if box is None:
+            page.wait_for_timeout(50)
     check(box is not None, f"no handle for point {index} of entity {entity}")
     x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
     page.mouse.move(x, y)
