@@ -302,6 +302,7 @@ function renderPanel() {
       ["free", a ? freeText(a.free, a.free_parameters) : "–"],
       ["residual", residual, unsolved],
       ["redundant", a ? named(a.redundant) || "none" : "–"],
+      ...(a && a.partly_redundant.length ? [["partly redundant", named(a.partly_redundant)]] : []),
       ["conflicting", a ? named(a.conflicting) || "none" : "–", a && a.conflicting.length > 0],
     ]));
   });

@@ -120,8 +120,15 @@ fn every_bundled_file_loads_solves_and_round_trips() {
         assert_eq!(to_json(&sketch).unwrap(), text, "{}", path.display());
         let report = sketch.solve().unwrap();
         assert!(!report.components.is_empty());
+        // Constraints a priority let go are named in the report; every other one holds.
+        let relaxed = report.relaxed();
         for c in &report.components {
-            for r in &c.report.residuals {
+            for r in c
+                .report
+                .residuals
+                .iter()
+                .filter(|r| !relaxed.contains(&r.constraint))
+            {
                 assert!(r.max_abs < 1e-9, "{}: {r:?}", path.display());
             }
         }

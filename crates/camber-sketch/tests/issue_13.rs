@@ -322,3 +322,82 @@ fn issue_13_case_5_a_huge_chain_is_analysed_without_a_dense_matrix() {
     assert_eq!((a.free_unknowns, a.rank, a.dof), (2 * n - 2, n - 1, n - 1));
     assert!(a.redundant.is_empty() && a.conflicting.is_empty());
 }
+
+fn cubic(s: &mut Sketch, points: [(f64, f64); 4]) -> EntityId {
+    s.add_bezier(
+        BezierCurve2::try_new(points.iter().map(|(x, y)| Point2::new(*x, *y)).collect()).unwrap(),
+    )
+    .unwrap()
+}
+
+/// Case 3: a constraint whose rows are only partly implied by the others is not redundant:
+/// deleting it would change the sketch. A tangency at two curve ends that a coincidence already
+/// joins repeats the coincidence in its position rows, but its direction row is its own.
+#[test]
+fn issue_13_case_3_a_partly_redundant_constraint_is_not_called_redundant() {
+    use camber_sketch::constraints::{Coincident, CurveCurveTangent};
+    let mut s = Sketch::new();
+    let a = cubic(&mut s, [(0.0, 0.0), (1.0, 1.0), (2.0, 1.0), (3.0, 0.0)]);
+    let b = cubic(&mut s, [(3.0, 0.0), (4.0, 0.5), (5.0, 1.0), (6.0, 0.0)]);
+    s.add_constraint(Fixed::entity(a)).unwrap();
+    s.add_constraint(Coincident {
+        a: PointRef::End(a),
+        b: PointRef::Start(b),
+    })
+    .unwrap();
+    let tangent = s
+        .add_constraint(CurveCurveTangent {
+            first: a,
+            u: Contact::At(1.0),
+            second: b,
+            v: Contact::At(0.0),
+            sense: Sense::Agree,
+        })
+        .unwrap();
+    let analysis = &s.analyze().unwrap()[0].analysis;
+    assert!(!analysis.redundant.contains(&tangent), "{analysis:?}");
+    assert_eq!(analysis.partly_redundant, vec![tangent]);
+    // B's free points (3 of them after the join: 6 unknowns) lose one to the direction row.
+    assert_eq!(analysis.dof, 5);
+    // Started with a kink, it solves to a tangent join: the direction row was needed.
+    s.solve().unwrap();
+    let end_a =
+        s.point(PointRef::Control(a, 3)).unwrap() - s.point(PointRef::Control(a, 2)).unwrap();
+    let start_b =
+        s.point(PointRef::Control(b, 1)).unwrap() - s.point(PointRef::Control(b, 0)).unwrap();
+    let cross = end_a.x * start_b.y - end_a.y * start_b.x;
+    assert!(cross.abs() < 1e-9 * end_a.norm() * start_b.norm() && end_a.dot(&start_b) > 0.0);
+}
+
+/// Case 3 with a line: a curve end coincident with a line's end and tangent to the line there.
+/// The tangency's on-the-line row repeats the coincidence; its direction row does not.
+#[test]
+fn issue_13_case_3_tangent_to_a_line_at_a_joined_end_is_needed() {
+    use camber_sketch::constraints::Coincident;
+    let mut s = Sketch::new();
+    let c = cubic(&mut s, [(0.0, 0.0), (1.0, 1.0), (2.0, 1.0), (3.0, 0.5)]);
+    let line = s
+        .add_line(Point2::new(3.0, 0.5), Point2::new(5.0, 0.5))
+        .unwrap();
+    s.add_constraint(Fixed::entity(line)).unwrap();
+    s.add_constraint(Fixed::point(PointRef::Start(c))).unwrap();
+    let join = s
+        .add_constraint(Coincident {
+            a: PointRef::End(c),
+            b: PointRef::Start(line),
+        })
+        .unwrap();
+    let tangent = s
+        .add_constraint(TangentToLine {
+            curve: c,
+            line,
+            u: Contact::At(1.0),
+            side: LineSide::Left,
+            sense: Sense::Agree,
+        })
+        .unwrap();
+    let analysis = &s.analyze().unwrap()[0].analysis;
+    assert!(!analysis.redundant.contains(&tangent), "{analysis:?}");
+    assert!(!analysis.redundant.contains(&join), "{analysis:?}");
+    assert_eq!(analysis.partly_redundant, vec![tangent], "{analysis:?}");
+}

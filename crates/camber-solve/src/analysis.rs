@@ -368,9 +368,14 @@ pub struct DofAnalysis {
     pub rank: usize,
     /// n − r.
     pub dof: usize,
-    /// Constraints owning a consistent dependent row and no inconsistent one (each once, in
-    /// row order).
+    /// Constraints that can be deleted without changing the solution set to first order: they
+    /// own a consistent dependent row, no inconsistent one, and J without their rows keeps its
+    /// rank (each once, in row order).
     pub redundant: Vec<ConstraintId>,
+    /// Constraints with consistent dependent rows that are still needed: deleting them would
+    /// lower the rank (a tangency whose position rows repeat a coincidence but whose direction
+    /// row does not). Their dependent rows are left out of solves like those of redundant ones.
+    pub partly_redundant: Vec<ConstraintId>,
     /// Constraints owning an inconsistent dependent row (each once, in row order); never also
     /// listed as redundant.
     pub conflicting: Vec<ConstraintId>,
@@ -416,15 +421,50 @@ pub fn analyze(
     // A constraint with one inconsistent row is conflicting, even where its other rows are
     // merely redundant: never both.
     redundant.retain(|c| !conflicting.contains(c));
+    let partly_redundant = needed(lin, &rows, &redundant, rank_tolerance, residual_tolerance)?;
+    redundant.retain(|c| !partly_redundant.contains(c));
     let free_unknowns = lin.map.len();
     Ok(DofAnalysis {
         free_unknowns,
         rank: rows.rank,
         dof: free_unknowns.saturating_sub(rows.rank),
         redundant,
+        partly_redundant,
         conflicting,
         rows,
     })
+}
+
+/// The constraints of `candidates` (each with a consistent dependent row) that cannot be
+/// deleted: J without their rows has a lower rank. A candidate all of whose rows were found
+/// dependent is deletable at once (each depends on accepted rows of other constraints); one
+/// with an accepted row is tested by the rank of J without it.
+fn needed(
+    lin: &Linearization,
+    rows: &RowAnalysis,
+    candidates: &[ConstraintId],
+    rank_tolerance: f64,
+    residual_tolerance: f64,
+) -> Result<Vec<ConstraintId>> {
+    let mut out = Vec::new();
+    for c in candidates {
+        let owned = |i: &usize| lin.row_owner.get(*i) == Some(c);
+        if !rows.independent.iter().any(owned) {
+            continue;
+        }
+        let others: Vec<usize> = (0..lin.g.len()).filter(|i| !owned(i)).collect();
+        let j = lin.jacobian.select_rows(&others);
+        let g: Vec<f64> = others.iter().map(|i| lin.g[*i]).collect();
+        let rank = if others.len().saturating_mul(j.ncols()) <= DENSE_ANALYSIS_MAX_ENTRIES {
+            analyze_rows(&j.to_dense(), &g, rank_tolerance, residual_tolerance)?.rank
+        } else {
+            analyze_rows_sparse(&j, &g, rank_tolerance, residual_tolerance)?.rank
+        };
+        if rank < rows.rank {
+            out.push(*c);
+        }
+    }
+    Ok(out)
 }
 
 #[cfg(test)]

@@ -80,10 +80,11 @@ pub fn solve_linear(problem: &mut Problem, options: &Options) -> Result<SolveRep
                 constraints: a.conflicting,
             });
         }
-        if !a.redundant.is_empty() && !options.drop_redundant {
-            return Err(Error::Redundant {
-                constraints: a.redundant,
-            });
+        let dependent = !a.redundant.is_empty() || !a.partly_redundant.is_empty();
+        if dependent && !options.drop_redundant {
+            let mut constraints = a.redundant.clone();
+            constraints.extend(&a.partly_redundant);
+            return Err(Error::Redundant { constraints });
         }
         (a.rank, a.dof, a.redundant, a.rows.independent)
     } else {

@@ -80,7 +80,7 @@ impl Start {
             Some(a) => Self {
                 full_rank: a.rank == m,
                 independent: (a.conflicting.is_empty()
-                    && !a.redundant.is_empty()
+                    && !a.rows.dependent.is_empty()
                     && options.drop_redundant)
                     .then(|| a.rows.independent.clone()),
                 basis: Some(a.rows.independent.clone()),

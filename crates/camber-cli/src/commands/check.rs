@@ -148,6 +148,12 @@ pub fn check(sketch: &Sketch) -> Result<String> {
             "  redundant: {}",
             describe_constraints(sketch, &d.redundant)
         ));
+        if !d.partly_redundant.is_empty() {
+            lines.push(format!(
+                "  partly redundant (some rows repeat others, still needed): {}",
+                describe_constraints(sketch, &d.partly_redundant)
+            ));
+        }
         lines.push(format!(
             "  conflicting: {}",
             describe_constraints(sketch, &d.conflicting)

@@ -644,6 +644,7 @@ pub fn analyse(sketch: &Sketch) -> Result<(Vec<ComponentJson>, BTreeSet<Constrai
                     rank: d.rank,
                     dof: d.dof,
                     redundant: ConstraintRef::list(sketch, &d.redundant),
+                    partly_redundant: ConstraintRef::list(sketch, &d.partly_redundant),
                     conflicting: ConstraintRef::list(sketch, &d.conflicting),
                     free: a.freedom.clone(),
                     free_parameters: a.free_parameters.clone(),

@@ -187,6 +187,9 @@ pub struct AnalysisJson {
     pub dof: usize,
     /// Constraints with consistent dependent rows.
     pub redundant: Vec<ConstraintRef>,
+    /// Constraints with consistent dependent rows that are still needed (deleting them would
+    /// change the sketch).
+    pub partly_redundant: Vec<ConstraintRef>,
     /// Constraints with inconsistent dependent rows.
     pub conflicting: Vec<ConstraintRef>,
     /// What can still move, entity by entity (entities not listed are fully determined).
