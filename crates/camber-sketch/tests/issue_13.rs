@@ -401,3 +401,105 @@ fn issue_13_case_3_tangent_to_a_line_at_a_joined_end_is_needed() {
     assert!(!analysis.redundant.contains(&join), "{analysis:?}");
     assert_eq!(analysis.partly_redundant, vec![tangent], "{analysis:?}");
 }
+
+/// Case 1 (the FreeCAD 5931 pattern): a fixed line y = `line_y`, a circle of fixed centre
+/// (0, 0) and free radius starting at 1, a point at (0, 1) on both, and radius = `radius`.
+fn case_1(line_y: f64, radius: f64) -> (Sketch, camber_sketch::ConstraintId) {
+    use camber_sketch::constraints::{PointOnCircle, PointOnLine, Radius};
+    let mut s = Sketch::new();
+    let line = s
+        .add_line(Point2::new(-3.0, line_y), Point2::new(3.0, line_y))
+        .unwrap();
+    s.add_constraint(Fixed::entity(line)).unwrap();
+    let circle = s.add_circle(Point2::new(0.0, 0.0), 1.0).unwrap();
+    s.add_constraint(Fixed::point(PointRef::Control(circle, 0)))
+        .unwrap();
+    let p = s.add_point(Point2::new(0.0, 1.0)).unwrap();
+    s.add_constraint(PointOnLine {
+        point: PointRef::Point(p),
+        line,
+    })
+    .unwrap();
+    s.add_constraint(PointOnCircle {
+        point: PointRef::Point(p),
+        circle,
+    })
+    .unwrap();
+    let r = s.add_constraint(Radius { circle, radius }).unwrap();
+    (s, r)
+}
+
+/// Case 1: a tangency by design is not redundancy. The point, the line and the circle touch at
+/// (0, 1), where the Jacobian is singular; nearby it is not, so DOF is 0 and nothing is
+/// redundant; the radius is named as dependent only here.
+#[test]
+fn issue_13_case_1_a_tangency_by_design_is_not_redundant() {
+    let (s, radius) = case_1(1.0, 1.0);
+    let a = &s.analyze().unwrap()[0];
+    assert_eq!(a.analysis.dof, 0, "{:?}", a.analysis);
+    assert!(a.analysis.redundant.is_empty(), "{:?}", a.analysis);
+    assert_eq!(a.analysis.accidental, vec![radius]);
+    // With the line at y = 0.6 the circle crosses it: the same answer (the start (0, 1) is
+    // still a singular point of the rows, which the analysis says rather than "redundant").
+    let (s, _) = case_1(0.6, 1.0);
+    let a = &s.analyze().unwrap()[0];
+    assert_eq!(a.analysis.dof, 0);
+    assert!(a.analysis.redundant.is_empty() && a.analysis.conflicting.is_empty());
+}
+
+/// Case 1 with radius 1.1 from the same start: not "conflicting", and the solve succeeds.
+#[test]
+fn issue_13_case_1_a_singular_start_is_not_a_conflict() {
+    let (mut s, radius) = case_1(1.0, 1.1);
+    let a = &s.analyze().unwrap()[0];
+    assert!(a.analysis.conflicting.is_empty(), "{:?}", a.analysis);
+    assert_eq!(a.analysis.accidental, vec![radius]);
+    assert_eq!(a.analysis.dof, 0);
+    // The start sits on the symmetry x = 0, which least squares never leaves; the solve moves
+    // off it and finds the crossing: radius 1.1, the point at (±√0.21, 1).
+    let report = s.solve().unwrap();
+    assert!(report.components[0]
+        .report
+        .reason
+        .contains("moved off the singular"));
+    let p = s.point(PointRef::Point(EntityId(4))).unwrap();
+    assert!(
+        (p.x.abs() - 0.21_f64.sqrt()).abs() < 1e-9 && (p.y - 1.0).abs() < 1e-9,
+        "{p:?}"
+    );
+    let _ = radius;
+}
+
+/// The other side: a constraint implied by the others keeps its dependence along the
+/// manifold and stays redundant. P, C and D lie on line L (free ends); line M joins C and D;
+/// "P on M" is then implied.
+#[test]
+fn issue_13_an_implied_constraint_stays_redundant_along_the_manifold() {
+    use camber_sketch::constraints::{Coincident, PointOnLine};
+    let mut s = Sketch::new();
+    let l = s
+        .add_line(Point2::new(0.0, 0.0), Point2::new(4.0, 1.0))
+        .unwrap();
+    let m = s
+        .add_line(Point2::new(1.0, 0.25), Point2::new(3.0, 0.75))
+        .unwrap();
+    let p = s.add_point(Point2::new(2.0, 0.5)).unwrap();
+    for point in [PointRef::Start(m), PointRef::End(m), PointRef::Point(p)] {
+        s.add_constraint(PointOnLine { point, line: l }).unwrap();
+    }
+    let implied = s
+        .add_constraint(PointOnLine {
+            point: PointRef::Point(p),
+            line: m,
+        })
+        .unwrap();
+    let a = &s.analyze().unwrap()[0];
+    assert_eq!(a.analysis.redundant, vec![implied], "{:?}", a.analysis);
+    assert!(a.analysis.accidental.is_empty());
+    // 4 (L) + 4 (M) + 2 (P) unknowns, 3 independent rows.
+    assert_eq!(a.analysis.dof, 7);
+    let _ = Coincident {
+        a: PointRef::Point(p),
+        b: PointRef::Point(p),
+    };
+}

@@ -83,6 +83,11 @@ fn draws(seed: u64, n: usize) -> Vec<f64> {
         .collect()
 }
 
+/// [`draws`] for the other modules of the crate.
+pub(crate) fn random_draws(seed: u64, n: usize) -> Vec<f64> {
+    draws(seed, n)
+}
+
 /// The columns where one of the null vectors `vectors` is not negligible (see
 /// [`FREE_COLUMN_TOLERANCE`]).
 fn free_columns_of(vectors: &[Vec<f64>], n: usize) -> Vec<usize> {
@@ -379,6 +384,12 @@ pub struct DofAnalysis {
     /// Constraints owning an inconsistent dependent row (each once, in row order); never also
     /// listed as redundant.
     pub conflicting: Vec<ConstraintId>,
+    /// Constraints whose rows are dependent only at this configuration (a tangency by design, a
+    /// singular start): nearby on the constraint manifold they are independent, so they are
+    /// neither redundant nor conflicting, and `rank` and `dof` are the nearby (generic) ones.
+    /// Filled by [`crate::Problem::analyze`] for nonlinear problems; empty from [`analyze`].
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub accidental: Vec<ConstraintId>,
     /// The row-level result.
     pub rows: RowAnalysis,
 }
@@ -431,6 +442,7 @@ pub fn analyze(
         redundant,
         partly_redundant,
         conflicting,
+        accidental: Vec::new(),
         rows,
     })
 }

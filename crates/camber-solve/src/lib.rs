@@ -48,6 +48,7 @@
 //!   (feature `nlopt`, on by default), and on request a soft least-squares compromise for
 //!   conflicting systems.
 
+mod accidental;
 pub mod analysis;
 pub mod autodiff;
 pub mod errors;

@@ -16,14 +16,19 @@ const REFINEMENT_STEPS: usize = 3;
 
 /// # Analysis
 impl Problem {
-    /// The DOF analysis at the current values (dense; see [`crate::analysis`]).
+    /// The DOF analysis at the current values (see [`crate::analysis`]). For a nonlinear
+    /// problem whose rows are dependent here, the dependence is checked again at a nearby
+    /// configuration on the constraint manifold: rows dependent only here are reported as
+    /// [`DofAnalysis::accidental`], and the rank and DOF are the nearby ones (see the
+    /// `accidental` module).
     ///
     /// # Errors
     /// Those of [`Problem::linearize`].
     pub fn analyze(&self, options: &Options) -> Result<DofAnalysis> {
         options.validate()?;
         let lin = self.linearize()?;
-        analysis::analyze(&lin, options.rank_tolerance, options.tolerance)
+        let analysis = analysis::analyze(&lin, options.rank_tolerance, options.tolerance)?;
+        crate::accidental::reclassify(self, &lin, analysis, options)
     }
 }
 

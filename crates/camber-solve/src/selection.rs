@@ -482,6 +482,34 @@ fn solve_whole(problem: &mut Problem, options: &Options) -> Result<SolveReport> 
             }
         }
     }
+    // A singular start (J rank deficient on a nonlinear problem) may be a symmetric point
+    // that no method leaves (x = 0 where two curves touch by design): once more by Newton
+    // from a start moved slightly along the independent rows, toward the start.
+    if !start.full_rank {
+        if let Some(basis) = start.basis.as_deref() {
+            let mut ev_moved = Evaluator::new(problem)?;
+            if let Some(z1) =
+                crate::accidental::moved_along(problem, &mut ev_moved, &start.z0, basis, options)?
+            {
+                if let Ok((iterations, _, residuals, z)) =
+                    newton_path(problem, options, &mut ws, &z1, &start.z0, None)
+                {
+                    let reason = format!(
+                        "{} → Newton minimum norm from a start moved off the singular one",
+                        notes.join("; ")
+                    );
+                    return Ok(start.report(
+                        SolverKind::Newton,
+                        Selection::Fallback,
+                        reason,
+                        lm.iterations + iterations,
+                        residuals,
+                        &z,
+                    ));
+                }
+            }
+        }
+    }
     if options.nonlinear.soft {
         return soft_path(problem, options, &start, &notes.join("; "));
     }
