@@ -99,11 +99,12 @@ impl Sketch {
     fn solve_with_starts(
         &self,
         cp: &mut crate::component::ComponentProblem,
+        options: &camber_solve::Options,
     ) -> Result<(
         SolveReport,
         Vec<(crate::ids::EntityId, crate::entity::Entity)>,
     )> {
-        let first = match policy::solve(cp, self, &self.solve_options(), Start::Cold) {
+        let first = match policy::solve(cp, self, options, Start::Cold) {
             Ok(solved) => return Ok(solved),
             Err(e) => e,
         };
@@ -115,8 +116,7 @@ impl Sketch {
             for (block, u) in &start {
                 cp.problem.set_block_values(*block, &[*u])?;
             }
-            if let Ok((mut r, solved)) = policy::solve(cp, self, &self.solve_options(), Start::Cold)
-            {
+            if let Ok((mut r, solved)) = policy::solve(cp, self, options, Start::Cold) {
                 r.reason = format!(
                     "{}; from contact start {} of {} after the given guesses failed",
                     r.reason,
@@ -133,9 +133,12 @@ impl Sketch {
     fn solve_components(&mut self, comps: Vec<Component>) -> Result<SketchReport> {
         let mut updates = Vec::new();
         let mut clean = Vec::new();
+        // The options depend on the largest coordinate of the whole sketch: worked out once per
+        // solve, not once per component (which made many components quadratic).
+        let options = self.solve_options();
         let mut report = SketchReport {
             warnings: self.warnings(),
-            tolerance: self.solve_options().tolerance,
+            tolerance: options.tolerance,
             ..SketchReport::default()
         };
         let mut free = Vec::new();
@@ -145,7 +148,7 @@ impl Sketch {
                 continue;
             }
             let mut cp = self.build_component(&comp, None)?;
-            let (r, solved) = self.solve_with_starts(&mut cp)?;
+            let (r, solved) = self.solve_with_starts(&mut cp, &options)?;
             free.extend(cp.free_at(cp.problem().values())?);
             updates.extend(solved);
             report.components.push(ComponentReport {

@@ -20,7 +20,9 @@
 //! solution its model can mislead, so every iteration tries the second-order step at full length
 //! (or with its second-order correction) and keeps it only if the merit accepts it; otherwise it
 //! takes the Gauss–Newton step with a backtracking search. Near the solution the second-order
-//! steps are accepted and the iteration count stops growing with the curvature.
+//! steps are accepted and the iteration count stops growing with the curvature. With as many
+//! independent rows as free unknowns the null space is empty and the second-order step is the
+//! Gauss–Newton step, so it is not formed.
 //!
 //! **Damping.** Steps are accepted by the merit φ(z) = ½‖z − z_ref‖²_W + μ‖g(z)‖₂ (an exact
 //! penalty; μ grows so that Δz is a descent direction and stays above ‖λ‖, as in Nocedal &
@@ -260,7 +262,16 @@ pub(crate) fn run(
         // once the Gauss–Newton steps have shrunk fourfold: far from the solution its model is
         // poor, and each attempt costs a Hessian and a conjugate-gradient solve.
         let gn_length = max_abs(&ws.step);
-        if iteration > 0 && gn_length <= second_order_gate && ws.lambda.iter().any(|l| *l != 0.0) {
+        // With as many independent rows as free unknowns (a square component, the classic
+        // sketch), J·Δ = −g fixes Δ alone: the null space is empty, the second-order step is
+        // the Gauss–Newton step, and its Hessian and solve would be spent for nothing.
+        let held = ws.drop.iter().filter(|d| **d).count();
+        let null_space = n.saturating_sub(held).saturating_sub(used_rows) > 0;
+        if null_space
+            && iteration > 0
+            && gn_length <= second_order_gate
+            && ws.lambda.iter().any(|l| *l != 0.0)
+        {
             spread(&ws.lambda, rows, &mut ws.lambda_full);
             if let Some(h) = ev.hessian(problem, &ws.z, &ws.lambda_full)? {
                 let data = QpData {

@@ -17,7 +17,7 @@
 //!
 //! [`Constraint::Coincident`]: crate::constraints::Coincident
 
-use std::collections::{HashMap, HashSet};
+use rustc_hash::{FxHashMap, FxHashSet};
 
 use camber_solve::{BlockId, ConstraintId};
 
@@ -30,7 +30,7 @@ pub(crate) struct Merges {
     /// Every merged block and the block it is bound to.
     pub(crate) into: Vec<(BlockId, BlockId)>,
     /// (constraint position, piece position) of the coincidences replaced by bindings.
-    pub(crate) replaced: HashSet<(usize, usize)>,
+    pub(crate) replaced: FxHashSet<(usize, usize)>,
     /// Constraints with a coincidence between points already merged.
     pub(crate) redundant: Vec<ConstraintId>,
 }
@@ -65,7 +65,7 @@ pub(crate) fn coincidence(
 
 /// Union–find over point blocks, each class rooted at its representative.
 struct Classes<'a> {
-    parent: HashMap<BlockId, BlockId>,
+    parent: FxHashMap<BlockId, BlockId>,
     /// Blocks that must be the representative of their class.
     anchored: &'a dyn Fn(BlockId) -> bool,
 }
@@ -113,13 +113,13 @@ impl Classes<'_> {
 pub(crate) fn plan(
     pieces: &[(ConstraintId, &[Piece])],
     block: impl Fn(crate::ids::EntityId, usize) -> Result<BlockId> + Copy,
-    fixed: &HashSet<BlockId>,
-    targets: &HashSet<BlockId>,
-    bases: &HashSet<BlockId>,
+    fixed: &FxHashSet<BlockId>,
+    targets: &FxHashSet<BlockId>,
+    bases: &FxHashSet<BlockId>,
 ) -> Result<Merges> {
     let anchored = |b: BlockId| fixed.contains(&b) || bases.contains(&b);
     let mut classes = Classes {
-        parent: HashMap::new(),
+        parent: FxHashMap::default(),
         anchored: &anchored,
     };
     let mut merges = Merges::default();

@@ -176,8 +176,11 @@ fn active_set(
             }
         }
         rows = live;
+        // The start in reduced unknowns is read only by the multipliers of active rows: the
+        // reduced map is not built for it when there are none (the common case).
         let z_start = match &reference {
             Some(z) => z.clone(),
+            None if rows.is_empty() => Vec::new(),
             None => cp.problem.reduced_map()?.z0().to_vec(),
         };
         let newton_only =

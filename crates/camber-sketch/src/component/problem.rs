@@ -9,7 +9,9 @@
 //! then coincident points are merged (module `merge`), then every other row; a residual
 //! reading another constraint's free parameter comes after the constraint that owns it.
 
-use std::collections::{HashMap, HashSet};
+use std::collections::HashMap;
+
+use rustc_hash::{FxHashMap, FxHashSet};
 use std::sync::Arc;
 
 use camber_solve::{BlockId, ConstraintId, Problem, Var};
@@ -116,7 +118,7 @@ pub(crate) struct CheckEntry {
 pub struct ComponentProblem {
     pub(crate) problem: Problem,
     pub(crate) component: Component,
-    layout: HashMap<EntityId, EntityBlocks>,
+    layout: FxHashMap<EntityId, EntityBlocks>,
     pub(crate) orientations: Vec<Orientation>,
     /// The first constraint whose residual is not affine, with the residual's name.
     pub(crate) nonlinear: Option<(ConstraintId, String)>,
@@ -126,7 +128,7 @@ pub struct ComponentProblem {
     /// The checks of the solved state, with their owners.
     pub(crate) checks: Vec<CheckEntry>,
     /// Point blocks bound to a coincident one (block → the block whose unknowns it shares).
-    pub(crate) merged: HashMap<BlockId, BlockId>,
+    pub(crate) merged: FxHashMap<BlockId, BlockId>,
     /// Constraints whose coincidence joined points already merged (redundant).
     pub(crate) merged_redundant: Vec<ConstraintId>,
 }
@@ -357,12 +359,12 @@ pub(crate) fn build(
     let mut cp = ComponentProblem {
         problem: Problem::new(),
         component: component.clone(),
-        layout: HashMap::with_capacity(component.entities.len()),
+        layout: FxHashMap::with_capacity_and_hasher(component.entities.len(), Default::default()),
         orientations: Vec::new(),
         nonlinear: None,
         free: Vec::new(),
         checks: Vec::new(),
-        merged: HashMap::new(),
+        merged: FxHashMap::default(),
         merged_redundant: Vec::new(),
     };
     for id in &component.entities {
@@ -389,7 +391,7 @@ pub(crate) fn build(
     }
 
     // Points held by `Fixed` (one block each).
-    let mut fixed: HashSet<BlockId> = HashSet::new();
+    let mut fixed: FxHashSet<BlockId> = FxHashSet::default();
     for (_, pieces) in compiled {
         for piece in pieces {
             match piece {
@@ -407,7 +409,7 @@ pub(crate) fn build(
     }
 
     // Eliminations first.
-    let (mut targets, mut bases): (HashSet<BlockId>, HashSet<BlockId>) = Default::default();
+    let (mut targets, mut bases): (FxHashSet<BlockId>, FxHashSet<BlockId>) = Default::default();
     let mut rows: Vec<(ConstraintId, Piece)> = Vec::new();
     for (id, pieces) in compiled {
         for piece in pieces {
@@ -513,7 +515,7 @@ pub(crate) fn build(
         &targets,
         &bases,
     )?;
-    let mut groups: HashMap<BlockId, Vec<BlockId>> = HashMap::new();
+    let mut groups: FxHashMap<BlockId, Vec<BlockId>> = FxHashMap::default();
     for (b, r) in &merges.into {
         groups.entry(*r).or_default().push(*b);
     }
