@@ -113,9 +113,10 @@ function drawEntity(e) {
   const old = drawn.get(e.id);
   if (old) old.forEach((el) => el.remove());
   const els = [];
-  const curveLike = e.kind === "bezier" || e.kind === "bspline" || e.kind === "nurbs";
+  const curveLike = ["bezier", "bspline", "nurbs", "hermite", "composite"].includes(e.kind);
   if (curveLike) {
-    els.push(element("polyline", { class: "polygon", points: pointsAttr(e.points) }, layers.polygons));
+    // Hermite and composite curves send their polygon (nodes and tangent handles) apart.
+    els.push(element("polyline", { class: "polygon", points: pointsAttr(e.polygon ?? e.points) }, layers.polygons));
     els.push(element("polyline", { class: "curve", points: pointsAttr(e.samples ?? []) }, layers.curves));
   } else if (e.kind === "line") {
     els.push(element("polyline", { class: "curve", points: pointsAttr(e.points) }, layers.curves));
