@@ -400,3 +400,43 @@ fn a_multi_segment_hermite_is_refused_and_rebuilds_keep_counts() {
     assert_eq!(rebuilt.points(), moved.as_slice());
     assert!(e.is_tangent_block(4) && !e.is_tangent_block(3));
 }
+
+/// The bundled example (examples/sketches/hermite_composite.json) loads, solves, round-trips,
+/// and its solved geometry satisfies every constraint when measured on the curves.
+#[test]
+fn the_bundled_example_solves_to_valid_geometry() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../examples/sketches/hermite_composite.json");
+    let mut s = from_json(&std::fs::read_to_string(path).unwrap()).unwrap();
+    let report = s.solve().unwrap();
+    assert!(max_residual(&report) < 1e-9, "{report:?}");
+    assert_eq!(
+        to_json(&from_json(&to_json(&s).unwrap()).unwrap()).unwrap(),
+        to_json(&s).unwrap()
+    );
+    let composite = s.entity(EntityId(0)).unwrap().clone();
+    let hermite = s.entity(EntityId(1)).unwrap().clone();
+    let curve = composite.as_curve().unwrap();
+    assert_relative_eq!(curve.point(0.0).unwrap(), Point2::origin(), epsilon = 1e-12);
+    let samples: Vec<Point2<f64>> = (0..=30_000)
+        .map(|k| curve.point(3.0 * f64::from(k) / 30_000.0).unwrap())
+        .collect();
+    // Tangent to y = 0 from above (the start point lies on it too), outside the circle.
+    let lowest = samples.iter().map(|p| p.y).fold(f64::INFINITY, f64::min);
+    assert!(lowest.abs() < 1e-6, "lowest {lowest}");
+    let nearest = samples
+        .iter()
+        .map(|p| (p - Point2::new(2.0, 3.0)).norm())
+        .fold(f64::INFINITY, f64::min);
+    assert!((nearest - 1.0).abs() < 1e-6, "nearest {nearest}");
+    // G1 join along (2, 1); the Hermite end at (9, 0.5) heading down.
+    let (end, d) = composite.point_tangent(3.0).unwrap();
+    let (start, e) = hermite.point_tangent(0.0).unwrap();
+    assert_relative_eq!(end, start, epsilon = 1e-9);
+    for t in [d, e] {
+        assert!((t.x - 2.0 * t.y).abs() < 1e-9 * t.norm() && t.x > 0.0);
+    }
+    let (p1, t1) = hermite.point_tangent(1.0).unwrap();
+    assert_relative_eq!(p1, Point2::new(9.0, 0.5), epsilon = 1e-9);
+    assert!(t1.x.abs() < 1e-9 && t1.y < 0.0);
+}
