@@ -77,6 +77,7 @@ pub mod vocabulary;
 pub mod warnings;
 
 pub use analysis::{ComponentAnalysis, EntityFreedom};
+pub use camber_solve::Priority;
 pub use component::{Component, ComponentProblem, DRAG_CONSTRAINT};
 pub use constraints::custom::{Arg, ArgKind, Args, CustomResidual};
 pub use constraints::{Constraint, Custom, Glyph};

@@ -335,11 +335,13 @@ fn reads_other_free(piece: &Piece) -> bool {
 }
 
 /// Builds the problem of `component` from its constraints' pieces, with the rows pinning
-/// `pin` (if any) at its current position last, owned by [`DRAG_CONSTRAINT`].
+/// `pin` (if any) at its current position last, owned by [`DRAG_CONSTRAINT`]. The coincidences
+/// of `relaxable` constraints (a priority above 0) stay rows: a merge could not give way.
 pub(crate) fn build(
     lookup: &dyn EntityLookup,
     component: &Component,
     compiled: &[(ConstraintId, super::piece::Pieces)],
+    relaxable: &[ConstraintId],
     pin: Option<PointRef>,
 ) -> Result<ComponentProblem> {
     let mut cp = ComponentProblem {
@@ -487,8 +489,13 @@ pub(crate) fn build(
     }
 
     // Coincident points: one set of unknowns per class instead of two rows per pair.
-    let lists: Vec<(ConstraintId, &[Piece])> =
-        compiled.iter().map(|(id, p)| (*id, p.as_slice())).collect();
+    let lists: Vec<(ConstraintId, &[Piece])> = compiled
+        .iter()
+        .map(|(id, p)| {
+            let pieces: &[Piece] = if relaxable.contains(id) { &[] } else { p };
+            (*id, pieces)
+        })
+        .collect();
     let merges = super::merge::plan(
         &lists,
         |e, j| cp.point_block(e, j),
