@@ -48,6 +48,7 @@
 //! ```
 
 use camber_geom::curve::check_parameter;
+use camber_geom::queries::{BezierPieces, RationalPiece};
 use camber_geom::{BezierCurve2, HermiteCurve2, KnotVector, ParametricCurve};
 use nalgebra::{Point2, SVector, Vector2};
 use serde::{Deserialize, Serialize};
@@ -398,6 +399,19 @@ impl HermiteChain {
     }
 }
 
+/// The chain's segments as cubic Bézier pieces on [i, i + 1], so that the kernel's curve–curve
+/// intersection and distance ([`camber_geom::queries::intersect_curves`],
+/// [`camber_geom::queries::curve_distance`]) take Hermite and composite entities and report
+/// parameters on the chain's own domain [0, n].
+impl BezierPieces<2> for HermiteChain {
+    fn bezier_pieces(&self) -> Vec<RationalPiece<2>> {
+        let q = self.bezier_points();
+        (0..self.segment_count())
+            .map(|i| RationalPiece::new(i as f64, (i + 1) as f64, &q[3 * i..=3 * i + 3], &[1.0; 4]))
+            .collect()
+    }
+}
+
 impl ParametricCurve<f64, 2> for HermiteChain {
     /// [0, n].
     fn domain(&self) -> (f64, f64) {
@@ -502,6 +516,40 @@ mod tests {
         }
         assert_eq!(c.handle(2), Some(c.nodes()[2]));
         assert_eq!(c.handle(9), None);
+    }
+
+    /// Intersections of the chain with a horizontal segment: the chain's parameters equal the
+    /// per-segment intersections of the equivalent Bézier curves shifted by the segment index,
+    /// and both points lie on the line.
+    #[test]
+    fn intersections_report_parameters_on_the_chain() {
+        use camber_geom::queries::{curve_distance, intersect_curves, CurveCurveOptions};
+        use camber_geom::Segment;
+        let c = corner_chain();
+        let line = Segment::try_new(Point2::new(-1.0, 0.25), Point2::new(6.0, 0.25)).unwrap();
+        let opts = CurveCurveOptions::default();
+        let hits = intersect_curves(&c, &line, &opts).unwrap();
+        let mut expected = Vec::new();
+        for i in 0..c.segment_count() {
+            let bez = c.segment_bezier(i).unwrap();
+            for h in intersect_curves(&bez, &line, &opts).unwrap() {
+                expected.push(i as f64 + h.parameter_a);
+            }
+        }
+        expected.dedup_by(|a, b| (*a - *b).abs() < 1e-9);
+        assert!(!hits.is_empty());
+        assert_eq!(hits.len(), expected.len(), "{hits:?} vs {expected:?}");
+        for (h, u) in hits.iter().zip(&expected) {
+            assert_relative_eq!(h.parameter_a, *u, epsilon = 1e-9);
+            assert_relative_eq!(c.point(h.parameter_a).unwrap().y, 0.25, epsilon = 1e-9);
+        }
+        // Distance to a line above the chain: the highest point, where C′ is horizontal.
+        let high = Segment::try_new(Point2::new(-1.0, 5.0), Point2::new(6.0, 5.0)).unwrap();
+        let d = curve_distance(&c, &high, &opts).unwrap();
+        let top = (0..=60_000)
+            .map(|k| c.point(3.0 * f64::from(k) / 60_000.0).unwrap().y)
+            .fold(f64::NEG_INFINITY, f64::max);
+        assert_relative_eq!(d.distance, 5.0 - top, epsilon = 1e-7);
     }
 
     #[test]
