@@ -552,6 +552,23 @@ mod tests {
         assert_relative_eq!(d.distance, 5.0 - top, epsilon = 1e-7);
     }
 
+    /// The chain against its own middle segment as a Bézier curve: one overlap, u ∈ [1, 2] on
+    /// the chain and [0, 1] on the segment.
+    #[test]
+    fn a_chain_overlaps_its_own_segment_on_its_interval() {
+        use camber_geom::queries::{intersect_curves_with_overlaps, CurveCurveOptions};
+        let c = corner_chain();
+        let middle = c.segment_bezier(1).unwrap();
+        let hits =
+            intersect_curves_with_overlaps(&c, &middle, &CurveCurveOptions::default()).unwrap();
+        assert_eq!(hits.overlaps.len(), 1, "{hits:?}");
+        let o = hits.overlaps[0];
+        assert_relative_eq!(o.a.0, 1.0, epsilon = 1e-7);
+        assert_relative_eq!(o.a.1, 2.0, epsilon = 1e-7);
+        assert_relative_eq!(o.b.0, 0.0, epsilon = 1e-7);
+        assert_relative_eq!(o.b.1, 1.0, epsilon = 1e-7);
+    }
+
     #[test]
     fn bad_counts_name_their_field() {
         let two = vec![Point2::new(0.0, 0.0), Point2::new(1.0, 0.0)];
