@@ -76,7 +76,7 @@ pub mod solve;
 pub mod vocabulary;
 pub mod warnings;
 
-pub use analysis::{ComponentAnalysis, EntityFreedom};
+pub use analysis::{ComponentAnalysis, EntityFreedom, ParameterFreedom};
 pub use camber_solve::Priority;
 pub use component::{Component, ComponentProblem, DRAG_CONSTRAINT};
 pub use constraints::custom::{Arg, ArgKind, Args, CustomResidual};

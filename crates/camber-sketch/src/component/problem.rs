@@ -40,6 +40,16 @@ pub struct EntityFreedom {
     pub scalars: Vec<usize>,
 }
 
+/// A free parameter of a constraint (a contact parameter, say) that can still change with the
+/// component's constraints held (to first order): the contact can slide.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+pub struct ParameterFreedom {
+    /// The constraint owning the parameter.
+    pub constraint: ConstraintId,
+    /// Which of its free parameters (0 for the first).
+    pub parameter: usize,
+}
+
 #[derive(Debug, Clone)]
 struct EntityBlocks {
     points: Vec<BlockId>,
@@ -634,6 +644,37 @@ impl ComponentProblem {
                     entity: *id,
                     points,
                     scalars,
+                });
+            }
+        }
+        Ok(out)
+    }
+
+    /// Which constraints' free parameters can still change, given the free columns of the DOF
+    /// analysis (as [`ComponentProblem::freedom`] for entities), in constraint order.
+    ///
+    /// # Errors
+    /// Building the reduced map fails (it does not once the problem was analysed).
+    pub(crate) fn parameter_freedom(
+        &self,
+        free_columns: &[usize],
+    ) -> Result<Vec<ParameterFreedom>> {
+        let map = self.problem.reduced_map()?;
+        let mut out = Vec::new();
+        let mut seen: Vec<ConstraintId> = Vec::new();
+        for (c, b) in &self.free {
+            let parameter = seen.iter().filter(|o| *o == c).count();
+            seen.push(*c);
+            let u = self.problem.unknown(*b, 0)?.index();
+            if map
+                .row(u)
+                .0
+                .iter()
+                .any(|(col, a)| *a != 0.0 && free_columns.contains(col))
+            {
+                out.push(ParameterFreedom {
+                    constraint: *c,
+                    parameter,
                 });
             }
         }
