@@ -128,9 +128,10 @@ function drawEntity(e) {
   const freedom = freedomOf(e.id);
   const determined = freedom !== null && freedom.points.size === 0 && !freedom.radius;
   const curveClass = determined ? "curve determined" : "curve";
-  const curveLike = e.kind === "bezier" || e.kind === "bspline" || e.kind === "nurbs";
+  const curveLike = ["bezier", "bspline", "nurbs", "hermite", "composite"].includes(e.kind);
   if (curveLike) {
-    els.push(element("polyline", { class: "polygon", points: pointsAttr(e.points) }, layers.polygons));
+    // Hermite and composite curves send their polygon (nodes and tangent handles) apart.
+    els.push(element("polyline", { class: "polygon", points: pointsAttr(e.polygon ?? e.points) }, layers.polygons));
     els.push(element("polyline", { class: curveClass, points: pointsAttr(e.samples ?? []) }, layers.curves));
   } else if (e.kind === "line") {
     els.push(element("polyline", { class: curveClass, points: pointsAttr(e.points) }, layers.curves));

@@ -23,6 +23,8 @@ pub fn kind_word(e: &Entity) -> &'static str {
         Entity::Bezier(_) => "bezier",
         Entity::BSpline(_) => "bspline",
         Entity::Nurbs(_) => "nurbs",
+        Entity::Hermite(_) => "hermite",
+        Entity::Composite(_) => "composite",
     }
 }
 

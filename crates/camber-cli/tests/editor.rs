@@ -60,7 +60,10 @@ fn apply(sketch: &mut Sketch, answer: &Value) {
             } else {
                 PointRef::Control(id, i)
             };
-            sketch.set_point(r, point(p)).unwrap();
+            // A tangent block is sent at its handle N ± t/3; its node comes earlier, so it is
+            // already in place here.
+            let block = sketch.entity(id).unwrap().block_for_handle(i, point(p));
+            sketch.set_point(r, block).unwrap();
         }
     }
 }
@@ -718,4 +721,54 @@ fn issue_11_solve_with_seven_contacts_answers_and_the_editor_survives() {
     assert!(line["residual"].as_f64().unwrap() < 1e-9, "{line}");
     // Still serving.
     assert_eq!(state(&mut ed)["components"][0]["nonlinear"], true);
+}
+
+/// Issue 16: a Hermite curve's tangent is dragged by its handle p1 − t1/3. The answer draws the
+/// handle where it was pulled, the tangent block underneath is −3·(handle − p1), and the
+/// constraints on the curve (its pinned end, the end tangent's direction) still hold.
+#[test]
+fn a_hermite_tangent_is_dragged_by_its_handle() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut ed = editor("hermite_composite.json", &dir.path().join("out.json"));
+    assert_eq!(post(&mut ed, "/api/solve", json!({})).0, 200);
+    let solved = ed.sketch().clone();
+    let scene = state(&mut ed);
+    let drawn = scene["scene"]["entities"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|e| e["id"] == 1)
+        .unwrap()
+        .clone();
+    assert_eq!(drawn["kind"], "hermite");
+    let Entity::Hermite(h) = solved.entity(EntityId(1)).unwrap() else {
+        panic!("entity 1 is a Hermite curve");
+    };
+    let handle = point(&drawn["points"][3]);
+    assert!((handle - h.handle(3).unwrap()).norm() < 1e-12);
+    assert_eq!(drawn["polygon"].as_array().unwrap().len(), 4);
+
+    let (status, started) = post(&mut ed, "/api/drag/start", json!({"entity": 1, "index": 3}));
+    assert_eq!(status, 200, "{started}");
+    let target = Point2::new(9.0, 1.6);
+    let (status, moved) = post(
+        &mut ed,
+        "/api/drag/move",
+        json!({"to": [target.x, target.y]}),
+    );
+    assert_eq!(status, 200, "{moved}");
+    let mut client = solved.clone();
+    apply(&mut client, &moved);
+    let e = client.entity(EntityId(1)).unwrap();
+    assert!(
+        (e.handle(3).unwrap() - target).norm() < 1e-9,
+        "{:?}",
+        e.handle(3)
+    );
+    let (p1, t1) = e.point_tangent(1.0).unwrap();
+    assert!((p1 - Point2::new(9.0, 0.5)).norm() < 1e-9);
+    assert!(t1.x.abs() < 1e-9 && (t1.y + 3.3).abs() < 1e-9, "{t1}");
+    assert_eq!(post(&mut ed, "/api/drag/end", json!({})).0, 200);
+    let committed = ed.sketch().entity(EntityId(1)).unwrap();
+    assert!((committed.handle(3).unwrap() - target).norm() < 1e-9);
 }

@@ -370,6 +370,40 @@ fn every_bundled_sketch_solves_and_draws_from_the_command_line() {
     }
 }
 
+/// Issue 16: the bundled Hermite/composite sketch solves, and its picture draws both curves
+/// with their Bézier polygons — nodes and tangent handles (3n + 1 points for n segments), not
+/// the tangent vectors read as positions.
+#[test]
+fn hermite_and_composite_curves_solve_and_render() {
+    let dir = tempfile::tempdir().unwrap();
+    let solved = dir.path().join("solved.json");
+    camber()
+        .arg("solve")
+        .arg(sketch("hermite_composite.json"))
+        .arg("-o")
+        .arg(&solved)
+        .assert()
+        .success();
+    let svg = dir.path().join("hc.svg");
+    camber()
+        .arg("render")
+        .arg(&solved)
+        .arg("-o")
+        .arg(&svg)
+        .assert()
+        .success();
+    let text = std::fs::read_to_string(&svg).unwrap();
+    let doc = roxmltree::Document::parse(&text).unwrap();
+    assert_eq!(count(&doc, "polyline", "stroke", "#2471a3"), 2);
+    let mut polygons: Vec<usize> = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("polyline") && n.attribute("stroke-dasharray").is_some())
+        .map(|n| n.attribute("points").unwrap().split_whitespace().count())
+        .collect();
+    polygons.sort_unstable();
+    assert_eq!(polygons, vec![4, 10]);
+}
+
 #[test]
 fn solve_names_every_constraint_a_priority_let_go() {
     // examples/sketches/priorities.json: C(½) wanted at (1.5, 1) (priority 1) and at (1.5, 2)

@@ -20,14 +20,22 @@
 //! whose coefficient is not zero up to the derivative order asked for (at a clamped end, C and
 //! C′ read two points), so a residual at a fixed parameter neither evaluates the basis again nor
 //! carries the other control points through its derivatives.
+//!
+//! Hermite and composite curves are cubic B-splines whose control points Q are a fixed linear
+//! map Q = M·X of their blocks X (nodes and tangents, [`crate::hermite_chain`]). The basis keeps
+//! M and reads the blocks: C⁽ᵏ⁾(u) = Σᵣ N⁽ᵏ⁾ᵣ(u)·Σⱼ Mᵣⱼ·Xⱼ, and at a fixed parameter the
+//! coefficient of block j is Σᵣ N⁽ᵏ⁾ᵣ(u)·Mᵣⱼ — still constants, so those constraints stay
+//! affine.
 
 use camber_geom::basis::{basis_function_derivatives_at, rational_basis_derivatives};
 use camber_geom::KnotVector;
 use camber_solve::scalar::{cst, re};
 use camber_solve::Scalar;
 use smallvec::SmallVec;
+use std::sync::Arc;
 
 use crate::entity::Entity;
+use crate::hermite_chain::MapRow;
 
 /// The basis values of one evaluation: rows k = 0 … order of p + 1 derivatives dᵏRⱼ/duᵏ.
 type BasisRows<T> = SmallVec<[T; 32]>;
@@ -50,7 +58,12 @@ pub struct CurveBasis {
     degree: usize,
     knots: KnotVector<f64>,
     weights: Option<Vec<f64>>,
+    /// The number of B-spline control points Q.
     count: usize,
+    /// For Hermite and composite curves: row r gives Qᵣ as a combination of blocks.
+    map: Option<Arc<[MapRow]>>,
+    /// The number of blocks the evaluation reads over the whole curve (`count` without a map).
+    blocks: usize,
     /// Set by [`CurveBasis::at`]: the evaluation is at a fixed parameter and reads only the
     /// control points of its span.
     fixed: Option<FixedParameter>,
@@ -76,19 +89,35 @@ impl CurveBasis {
 impl CurveBasis {
     /// The basis of a curve entity (`None` for points and circles).
     pub fn of(entity: &Entity) -> Option<Self> {
-        let count = entity.points().len();
+        let blocks = entity.points().len();
+        if let Entity::Hermite(c) | Entity::Composite(c) = entity {
+            let map: Arc<[MapRow]> = c.bezier_map().into();
+            return Some(Self {
+                degree: 3,
+                knots: c.knots(),
+                weights: None,
+                count: map.len(),
+                map: Some(map),
+                blocks,
+                fixed: None,
+            });
+        }
+        let count = blocks;
         let (degree, knots, weights) = match entity {
             Entity::Line(_) => (1, KnotVector::bezier(1), None),
             Entity::Bezier(c) => (c.degree(), KnotVector::bezier(c.degree()), None),
             Entity::BSpline(c) => (c.degree(), c.knots().clone(), None),
             Entity::Nurbs(c) => (c.degree(), c.knots().clone(), Some(c.weights().to_vec())),
             Entity::Point(_) | Entity::Circle { .. } => return None,
+            Entity::Hermite(_) | Entity::Composite(_) => return None,
         };
         Some(Self {
             degree,
             knots,
             weights,
             count,
+            map: None,
+            blocks,
             fixed: None,
         })
     }
@@ -116,18 +145,50 @@ impl CurveBasis {
     pub fn at(&self, u: f64, order: usize) -> (CurveBasis, SmallVec<[usize; 8]>) {
         let order = order.min(2);
         let Some((first, rows)) = self.basis_rows(u, 2) else {
-            return (self.clone(), (0..self.count).collect());
+            return (self.clone(), (0..self.blocks).collect());
         };
         let w = self.degree + 1;
         let mut coefficients: SmallVec<[[f64; 3]; 8]> = SmallVec::new();
-        let mut points = SmallVec::new();
+        let mut points: SmallVec<[usize; 8]> = SmallVec::new();
         for r in 0..w {
             let mut c = [rows[r], rows[w + r], rows[2 * w + r]];
             c[order + 1..].fill(0.0);
-            if c.iter().any(|v| *v != 0.0) {
-                coefficients.push(c);
-                points.push(first + r);
+            if c.iter().all(|v| *v == 0.0) {
+                continue;
             }
+            match self.map.as_deref().and_then(|m| m.get(first + r)) {
+                None => {
+                    coefficients.push(c);
+                    points.push(first + r);
+                }
+                Some(row) => {
+                    for (j, m) in row {
+                        let k = match points.iter().position(|q| q == j) {
+                            Some(k) => k,
+                            None => {
+                                points.push(*j);
+                                coefficients.push([0.0; 3]);
+                                coefficients.len() - 1
+                            }
+                        };
+                        for (acc, ck) in coefficients[k].iter_mut().zip(c) {
+                            *acc += m * ck;
+                        }
+                    }
+                }
+            }
+        }
+        if self.map.is_some() {
+            // Blocks in increasing order, without those whose terms cancelled.
+            let mut pairs: SmallVec<[(usize, [f64; 3]); 8]> = points
+                .iter()
+                .copied()
+                .zip(coefficients.iter().copied())
+                .collect();
+            pairs.retain(|(_, c)| c.iter().any(|v| *v != 0.0));
+            pairs.sort_by_key(|(j, _)| *j);
+            points = pairs.iter().map(|(j, _)| *j).collect();
+            coefficients = pairs.iter().map(|(_, c)| *c).collect();
         }
         let basis = CurveBasis {
             fixed: Some(FixedParameter {
@@ -144,7 +205,7 @@ impl CurveBasis {
     pub fn count(&self) -> usize {
         match &self.fixed {
             Some(f) => f.coefficients.len(),
-            None => self.count,
+            None => self.blocks,
         }
     }
 
@@ -207,7 +268,20 @@ impl CurveBasis {
         }
         let (a, b) = self.domain();
         let k = self.knots.find_span(self.degree, u.clamp(a, b));
-        k.saturating_sub(self.degree)..(k + 1).min(self.count)
+        let span = k.saturating_sub(self.degree)..(k + 1).min(self.count);
+        match self.map.as_deref() {
+            None => span,
+            Some(map) => {
+                // The blocks the span's control points read, as one range (a superset).
+                let touched = map[span].iter().flat_map(|row| row.iter().map(|(j, _)| *j));
+                let (lo, hi) = touched.fold((usize::MAX, 0), |(lo, hi), j| (lo.min(j), hi.max(j)));
+                if lo > hi {
+                    0..self.blocks
+                } else {
+                    lo..hi + 1
+                }
+            }
+        }
     }
 
     /// C(u) alone in f64 (u clamped to the domain): the cheap evaluation for dense sampling,
@@ -272,16 +346,32 @@ impl CurveBasis {
     /// or the knots are too few).
     fn derivatives<T: Scalar, const N: usize>(&self, points: &[&[T]], u: T) -> [[T; 2]; N] {
         let mut out = [[T::zero(); 2]; N];
-        if points.len() < self.count {
+        if points.len() < self.blocks {
             return out;
         }
         let Some((first, rows)) = self.basis_rows(u, N - 1) else {
             return out;
         };
         let w = self.degree + 1;
+        let mapped: Option<SmallVec<[[T; 2]; 4]>> = self.map.as_deref().map(|map| {
+            (0..w)
+                .map(|r| {
+                    let mut q = [T::zero(); 2];
+                    for (j, m) in map.get(first + r).into_iter().flatten() {
+                        let m = cst::<T>(*m);
+                        q[0] += m * points[*j][0];
+                        q[1] += m * points[*j][1];
+                    }
+                    q
+                })
+                .collect()
+        });
         for (k, c) in out.iter_mut().enumerate() {
             for (r, n) in rows[k * w..(k + 1) * w].iter().enumerate() {
-                let q = points[first + r];
+                let q: &[T] = match &mapped {
+                    Some(m) => &m[r],
+                    None => points[first + r],
+                };
                 c[0] += *n * q[0];
                 c[1] += *n * q[1];
             }

@@ -1,5 +1,6 @@
-//! Entities: points, lines, circles and Bézier, B-spline and NURBS curves (planar, f64), and the
-//! linear maps from their control points to curve points and tangents.
+//! Entities: points, lines, circles, Bézier, B-spline and NURBS curves, cubic Hermite curves and
+//! composite curves (planar, f64), and the linear maps from their blocks to curve points and
+//! tangents.
 //!
 //! Every point of an entity (a point, a line end, a circle centre, a control point) is one
 //! parameter block of two unknowns (x, y) in a solve; a circle's radius is a block of one.
@@ -13,6 +14,10 @@
 //!
 //! Rⱼ = wⱼNⱼ/W,  R′ⱼ = wⱼ(N′ⱼ·W − Nⱼ·W′)/W².
 //!
+//! Hermite and composite curves ([`HermiteChain`]) have nodes and tangent vectors as their
+//! blocks; their Bézier control points are a fixed linear map of those blocks, so the same
+//! holds with cⱼ summed through that map ([`crate::hermite_chain`]).
+//!
 //! [`Entity::coefficients`] returns those cⱼ (only the p + 1 that can be non-zero), which makes
 //! every constraint at a *given* parameter a constant-coefficient combination of control-point
 //! blocks (an affine constraint); those with a free parameter, distances, angles and lengths are
@@ -24,6 +29,7 @@ use smallvec::SmallVec;
 
 use crate::curve_eval::CurveBasis;
 use crate::errors::{Error, Result};
+use crate::hermite_chain::HermiteChain;
 use crate::ids::{EntityId, PointRef};
 
 /// A linear combination Σ cⱼ·Pⱼ over an entity's points: (point index, coefficient) pairs.
@@ -60,6 +66,13 @@ pub enum Entity {
     BSpline(BSplineCurve2<f64>),
     /// A NURBS curve (weights held fixed).
     Nurbs(NurbsCurve2<f64>),
+    /// A cubic Hermite curve on [0, 1]: a chain of one segment, blocks [p0, p1, t0, t1] (end
+    /// points, then end tangent vectors).
+    Hermite(HermiteChain),
+    /// A composite curve: a chain of n cubic Hermite segments on [0, n] whose joins are shared
+    /// nodes (C0) and, at smooth joins, shared tangents (C1); blocks are the nodes, then the
+    /// tangents ([`crate::hermite_chain`]).
+    Composite(HermiteChain),
 }
 
 impl Entity {
@@ -81,6 +94,7 @@ impl Entity {
             Entity::Bezier(c) => Some(c),
             Entity::BSpline(c) => Some(c),
             Entity::Nurbs(c) => Some(c),
+            Entity::Hermite(c) | Entity::Composite(c) => Some(c),
             Entity::Point(_) | Entity::Line(_) | Entity::Circle { .. } => None,
         }
     }
@@ -110,11 +124,14 @@ impl Entity {
             Entity::Bezier(_) => "Bézier curve",
             Entity::BSpline(_) => "B-spline curve",
             Entity::Nurbs(_) => "NURBS curve",
+            Entity::Hermite(_) => "Hermite curve",
+            Entity::Composite(_) => "composite curve",
         }
     }
 
     /// The entity's points in block order: the point; the two line ends; the circle centre; the
-    /// control points.
+    /// control points; for Hermite and composite curves the nodes, then the tangent vectors
+    /// (whose coordinates are not positions: see [`Entity::hull_points`]).
     pub fn points(&self) -> &[Point2<f64>] {
         match self {
             Entity::Point(p) => std::slice::from_ref(p),
@@ -123,6 +140,54 @@ impl Entity {
             Entity::Bezier(c) => c.control_points(),
             Entity::BSpline(c) => c.control_points(),
             Entity::Nurbs(c) => c.control_points(),
+            Entity::Hermite(c) | Entity::Composite(c) => c.blocks(),
+        }
+    }
+
+    /// Positions that bound the entity's drawing (with a circle's radius): its points, or for
+    /// Hermite and composite curves the Bézier control points of their segments (nodes and the
+    /// handles N ± t/3), whose hull holds the curve.
+    ///
+    /// ```
+    /// use camber_sketch::{hermite_chain::HermiteChain, Entity};
+    /// use nalgebra::{Point2, Vector2};
+    /// let h = Entity::Hermite(HermiteChain::single(
+    ///     Point2::new(0.0, 0.0), Point2::new(3.0, 0.0), Vector2::new(0.0, 3.0), Vector2::new(0.0, -3.0),
+    /// )?);
+    /// assert_eq!(h.hull_points()[1], Point2::new(0.0, 1.0));
+    /// # Ok::<(), camber_sketch::Error>(())
+    /// ```
+    pub fn hull_points(&self) -> std::borrow::Cow<'_, [Point2<f64>]> {
+        match self {
+            Entity::Hermite(c) | Entity::Composite(c) => c.bezier_points().into(),
+            other => other.points().into(),
+        }
+    }
+
+    /// Where point block `index` is drawn and grabbed: the point itself, or for a tangent block
+    /// of a Hermite or composite curve its handle N ± t/3 ([`HermiteChain::handle`]).
+    pub fn handle(&self, index: usize) -> Option<Point2<f64>> {
+        match self {
+            Entity::Hermite(c) | Entity::Composite(c) => c.handle(index),
+            other => other.points().get(index).copied(),
+        }
+    }
+
+    /// The value of point block `index` that puts its handle at `q` (the inverse of
+    /// [`Entity::handle`], the other blocks as they are).
+    pub fn block_for_handle(&self, index: usize, q: Point2<f64>) -> Point2<f64> {
+        match self {
+            Entity::Hermite(c) | Entity::Composite(c) => c.block_for_handle(index, q),
+            _ => q,
+        }
+    }
+
+    /// Whether point block `index` is a tangent vector rather than a position (the tangent
+    /// blocks of Hermite and composite curves).
+    pub fn is_tangent_block(&self, index: usize) -> bool {
+        match self {
+            Entity::Hermite(c) | Entity::Composite(c) => c.is_tangent_block(index),
+            _ => false,
         }
     }
 
@@ -188,15 +253,15 @@ impl Entity {
                 points.to_vec(),
                 c.weights().to_vec(),
             )?),
+            Entity::Hermite(c) => Entity::Hermite(c.with_blocks(points)?),
+            Entity::Composite(c) => Entity::Composite(c.with_blocks(points)?),
         })
     }
 
-    /// Whether the entity is a curve (line, Bézier, B-spline or NURBS): it has a parameter.
+    /// Whether the entity is a curve (line, Bézier, B-spline, NURBS, Hermite or composite): it
+    /// has a parameter.
     pub fn is_curve(&self) -> bool {
-        matches!(
-            self,
-            Entity::Line(_) | Entity::Bezier(_) | Entity::BSpline(_) | Entity::Nurbs(_)
-        )
+        !matches!(self, Entity::Point(_) | Entity::Circle { .. })
     }
 
     /// The parametric domain [a, b] of a curve (`None` for points and circles).
@@ -205,14 +270,18 @@ impl Entity {
             Entity::Line(_) | Entity::Bezier(_) => Some((0.0, 1.0)),
             Entity::BSpline(c) => Some(c.knots().domain(c.degree())),
             Entity::Nurbs(c) => Some(c.knots().domain(c.degree())),
+            Entity::Hermite(c) | Entity::Composite(c) => Some((0.0, c.segment_count() as f64)),
             Entity::Point(_) | Entity::Circle { .. } => None,
         }
     }
 
     /// Whether the curve is clamped at its start (`at_end` false) or end (true): the first
-    /// (last) p + 1 knots are equal, so C(a) = P₀ and C′(a) ∥ P₁ − P₀ (likewise at b).
+    /// (last) p + 1 knots are equal, so C(a) = P₀ and C′(a) ∥ P₁ − P₀ (likewise at b). Hermite
+    /// and composite curves are not: their end tangent is a block of its own, not a difference
+    /// of neighbouring points.
     pub fn is_clamped(&self, at_end: bool) -> bool {
         let (degree, knots) = match self {
+            Entity::Hermite(_) | Entity::Composite(_) => return false,
             Entity::Line(_) => return true,
             Entity::Bezier(c) => return c.degree() >= 1,
             Entity::BSpline(c) => (c.degree(), c.knots().as_slice()),
@@ -350,8 +419,15 @@ impl Entity {
                 return Err(degenerate("has degree 0 (a spline needs degree 1 or more)"));
             }
         }
+        if let Entity::Hermite(c) = self {
+            if c.segment_count() != 1 {
+                return Err(degenerate(
+                    "has more than one segment (a chain of segments is a composite curve)",
+                ));
+            }
+        }
         if !matches!(self, Entity::Point(_) | Entity::Circle { .. }) {
-            let points = self.points();
+            let points = self.hull_points();
             let spread = points
                 .iter()
                 .map(|p| (p - points[0]).norm_squared())

@@ -292,6 +292,26 @@ pub enum Error {
         /// A constraint reading it.
         by: ConstraintId,
     },
+    /// A list in an entity's data with the wrong number of entries (a composite curve's
+    /// `nodes`, `joins` or `tangents`, the blocks given to rebuild one).
+    ///
+    /// ```
+    /// use camber_sketch::hermite_chain::{HermiteChain, Join};
+    /// use camber_sketch::Error;
+    /// use nalgebra::{Point2, Vector2};
+    /// let e = HermiteChain::try_new(vec![Point2::origin()], vec![], vec![]).unwrap_err();
+    /// assert_eq!(e, Error::CountMismatch { field: "nodes", expected: 2, found: 1 });
+    /// assert_eq!(e.to_string(), "`nodes` has 1 entries, expected 2");
+    /// ```
+    #[error("`{field}` has {found} entries, expected {expected}")]
+    CountMismatch {
+        /// The field.
+        field: &'static str,
+        /// How many it needs (at least, for `nodes`).
+        expected: usize,
+        /// How many it has.
+        found: usize,
+    },
     /// An option out of its range.
     #[error("{what}: {detail}")]
     InvalidOption {

@@ -111,7 +111,7 @@ impl Sketch {
                 Entity::Circle { radius, .. } => *radius,
                 _ => 0.0,
             };
-            for p in e.points() {
+            for p in e.hull_points().iter() {
                 lo = [lo[0].min(p.x - r), lo[1].min(p.y - r)];
                 hi = [hi[0].max(p.x + r), hi[1].max(p.y + r)];
             }
@@ -158,7 +158,13 @@ impl Sketch {
                 }
                 Entity::Point(_) => {}
                 _ => {
-                    for (index, w) in e.points().windows(2).enumerate() {
+                    // Hermite and composite curves: neighbouring nodes (their other blocks are
+                    // tangent vectors, not positions).
+                    let positions = match e {
+                        Entity::Hermite(c) | Entity::Composite(c) => c.nodes(),
+                        _ => e.points(),
+                    };
+                    for (index, w) in positions.windows(2).enumerate() {
                         let distance = (w[1] - w[0]).norm();
                         if distance < near {
                             out.push(Warning::CoincidentControlPoints {

@@ -106,7 +106,7 @@ pub fn picture(sketch: &Sketch, combs: bool) -> Result<String> {
     let mut bbox = BBox::empty();
     let mut curves = Vec::new();
     for (_, e) in sketch.entities() {
-        e.points().iter().for_each(|p| bbox.include(*p));
+        e.hull_points().iter().for_each(|p| bbox.include(*p));
         if let Entity::Circle { center, radius } = e {
             bbox.include(center + Vector2::new(*radius, *radius));
             bbox.include(center - Vector2::new(*radius, *radius));
@@ -114,7 +114,8 @@ pub fn picture(sketch: &Sketch, combs: bool) -> Result<String> {
         if let Some(c) = e.as_curve() {
             let samples = draw::sample_curve(c, SAMPLES_PER_PIECE)?;
             samples.iter().for_each(|p| bbox.include(*p));
-            curves.push((c, samples, e.points().to_vec()));
+            // Hermite and composite curves: the polygon through nodes and tangent handles.
+            curves.push((c, samples, e.hull_points().to_vec()));
         }
     }
     // Glyphs too: a target ring away from its curve (a conflicting target) must be in the

@@ -164,7 +164,7 @@ fn sketch_centre(sketch: &Sketch) -> Point2<f64> {
             Entity::Circle { radius, .. } => *radius,
             _ => 0.0,
         };
-        for p in e.points() {
+        for p in e.hull_points().iter() {
             bbox.include(Point2::new(p.x - r, p.y - r));
             bbox.include(Point2::new(p.x + r, p.y + r));
         }
@@ -425,8 +425,14 @@ impl EditorState {
                 ),
             ));
         }
+        // A tangent block of a Hermite or composite curve is grabbed at its handle N ± t/3:
+        // the block's target is the tangent that puts the handle at `to`.
+        let target = match drag.current.get(&drag.entity) {
+            Some(e) => e.block_for_handle(drag.index, to),
+            None => to,
+        };
         let t = Instant::now();
-        let result = drag.session.update(to);
+        let result = drag.session.update(target);
         let update_time = t.elapsed();
         drag.update_time += update_time;
         if let Err(e) = result {

@@ -38,10 +38,15 @@ pub struct DragMove {
 pub struct EntityJson {
     /// The entity id.
     pub id: u64,
-    /// `point`, `line`, `circle`, `bezier`, `bspline` or `nurbs`.
+    /// `point`, `line`, `circle`, `bezier`, `bspline`, `nurbs`, `hermite` or `composite`.
     pub kind: &'static str,
-    /// The entity's points in file order, in full precision.
+    /// The entity's points in file order, in full precision, where they are grabbed: a
+    /// Hermite or composite curve's tangent blocks at their handles N ± t/3.
     pub points: Vec<[f64; 2]>,
+    /// The control polygon to draw when it is not `points` in order (Hermite and composite
+    /// curves: nodes and handles, segment by segment).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub polygon: Vec<[f64; 2]>,
     /// A circle's radius.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub radius: Option<f64>,
@@ -66,7 +71,16 @@ impl EntityJson {
         Ok(Self {
             id: id.0,
             kind: kind_word(e),
-            points: e.points().iter().map(|p| [p.x, p.y]).collect(),
+            points: (0..e.points().len())
+                .filter_map(|j| e.handle(j))
+                .map(|p| [p.x, p.y])
+                .collect(),
+            polygon: match e {
+                Entity::Hermite(_) | Entity::Composite(_) => {
+                    e.hull_points().iter().map(|p| [p.x, p.y]).collect()
+                }
+                _ => Vec::new(),
+            },
             radius: match e {
                 Entity::Circle { radius, .. } => Some(*radius),
                 _ => None,

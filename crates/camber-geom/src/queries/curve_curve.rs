@@ -75,7 +75,7 @@ impl CurveCurveOptions {
         self
     }
 
-    fn check(&self) -> Result<()> {
+    pub(super) fn check(&self) -> Result<()> {
         if !self.tolerance.is_finite() {
             return Err(Error::NonFinite {
                 what: "intersection tolerance",
@@ -115,7 +115,7 @@ pub struct CurvePairPoint<const D: usize> {
 }
 
 /// The extent (diagonal of the common box) of a set of pieces.
-fn extent<const D: usize>(pieces: &[RationalPiece<D>]) -> f64 {
+pub(super) fn extent<const D: usize>(pieces: &[RationalPiece<D>]) -> f64 {
     let mut lo = SVector::<f64, D>::repeat(f64::INFINITY);
     let mut hi = SVector::<f64, D>::repeat(f64::NEG_INFINITY);
     for p in pieces {
@@ -302,8 +302,25 @@ where
     A: BezierPieces<D> + ?Sized,
     B: BezierPieces<D> + ?Sized,
 {
+    intersect_excluding(a, b, opts, &[])
+}
+
+/// [`intersect_curves`] without the stretches of `a` in `excluded` (parameter intervals of `a`
+/// already known to overlap `b`): piece pairs whose `a` piece lies inside one are dropped, and
+/// so are contacts found inside one.
+pub(super) fn intersect_excluding<const D: usize, A, B>(
+    a: &A,
+    b: &B,
+    opts: &CurveCurveOptions,
+    excluded: &[(f64, f64)],
+) -> Result<Vec<CurvePairPoint<D>>>
+where
+    A: BezierPieces<D> + ?Sized,
+    B: BezierPieces<D> + ?Sized,
+{
     opts.check()?;
     let (pa, pb) = (a.bezier_pieces(), b.bezier_pieces());
+    let inside = |lo: f64, hi: f64| excluded.iter().any(|(x, y)| lo >= *x && hi <= *y);
     let size = extent(&pa).max(extent(&pb)).max(opts.tolerance);
     let leaf = 1e-3 * size;
     let grow = opts.tolerance;
@@ -315,6 +332,9 @@ where
     }
     let mut seeds = Vec::new();
     while let Some((x, y)) = stack.pop() {
+        if inside(x.start, x.end) {
+            continue;
+        }
         let (bx, by) = (x.bounding_box(), y.bounding_box());
         if box_distance(&bx, &by) > grow {
             continue;
@@ -345,7 +365,7 @@ where
     for (s, t) in seeds {
         let (s, t) = refine(a, b, s, t)?;
         let mut hit = pair_point(a, b, s, t)?;
-        if hit.distance > opts.tolerance {
+        if hit.distance > opts.tolerance || inside(hit.parameter_a, hit.parameter_a) {
             continue;
         }
         // The minimisation leaves a touch imprecise, so its tangents may still differ by the

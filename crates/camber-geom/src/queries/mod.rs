@@ -55,6 +55,7 @@ mod curvature;
 mod curve_curve;
 mod distance;
 mod intersect;
+mod overlap;
 mod pieces;
 
 pub use closest::{closest_point, closest_point_with};
@@ -68,6 +69,7 @@ pub use distance::{
     signed_distance_to_circle, signed_distance_to_circle_with,
 };
 pub use intersect::{intersect_circle, intersect_circle_with, intersect_line, intersect_line_with};
+pub use overlap::{intersect_curves_with_overlaps, CurveIntersections, Overlap};
 pub use pieces::{BezierPieces, RationalPiece};
 
 use nalgebra::{Point, Point2, SVector};

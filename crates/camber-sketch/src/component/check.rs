@@ -207,7 +207,11 @@ pub trait SolvedCheck: Debug + Send + Sync {
 /// curve's mean speed before the solve (its control-polygon length over its parameter span).
 /// A solve that shrinks a curve a million times over has collapsed it, not touched anything.
 pub(crate) fn speed_floor(e: &Entity) -> f64 {
-    let length: f64 = e.points().windows(2).map(|w| (w[1] - w[0]).norm()).sum();
+    let length: f64 = e
+        .hull_points()
+        .windows(2)
+        .map(|w| (w[1] - w[0]).norm())
+        .sum();
     let (a, b) = e.domain().unwrap_or((0.0, 1.0));
     1e-6 * length / (b - a).max(f64::MIN_POSITIVE)
 }

@@ -146,9 +146,14 @@ impl Residual for LengthOf {
 pub(crate) fn breakpoints(e: &crate::entity::Entity) -> Vec<f64> {
     let (a, b) = e.domain().unwrap_or((0.0, 1.0));
     let mut out = vec![a];
+    let chain_knots;
     let knots: &[f64] = match e {
         crate::entity::Entity::BSpline(c) => c.knots().as_slice(),
         crate::entity::Entity::Nurbs(c) => c.knots().as_slice(),
+        crate::entity::Entity::Composite(c) => {
+            chain_knots = c.knots();
+            chain_knots.as_slice()
+        }
         _ => &[],
     };
     for k in knots {

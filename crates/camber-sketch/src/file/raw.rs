@@ -3,16 +3,21 @@
 //! written in their kinds' own forms ([`crate::constraints`]), one JSON object each.
 
 use camber_geom::{BSplineCurve2, BezierCurve2, KnotVector, NurbsCurve2};
-use nalgebra::Point2;
+use nalgebra::{Point2, Vector2};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 
 use crate::entity::Entity;
+use crate::hermite_chain::{HermiteChain, Join};
 
 pub(super) type Xy = [f64; 2];
 
 fn pt(p: Xy) -> Point2<f64> {
     Point2::new(p[0], p[1])
+}
+
+fn vec(v: Xy) -> Vector2<f64> {
+    Vector2::new(v[0], v[1])
 }
 
 fn xy_p(p: &Point2<f64>) -> Xy {
@@ -67,6 +72,18 @@ pub(super) enum KeyedShape {
         control_points: Vec<Xy>,
         weights: Vec<f64>,
     },
+    Hermite {
+        p0: Xy,
+        p1: Xy,
+        t0: Xy,
+        t1: Xy,
+    },
+    Composite {
+        nodes: Vec<Xy>,
+        tangents: Vec<Xy>,
+        #[serde(default)]
+        joins: Vec<Join>,
+    },
 }
 
 impl From<KeyedShape> for RawShape {
@@ -95,6 +112,16 @@ impl From<KeyedShape> for RawShape {
                 knots,
                 control_points,
                 weights,
+            },
+            KeyedShape::Hermite { p0, p1, t0, t1 } => RawShape::Hermite { p0, p1, t0, t1 },
+            KeyedShape::Composite {
+                nodes,
+                tangents,
+                joins,
+            } => RawShape::Composite {
+                nodes,
+                tangents,
+                joins,
             },
         }
     }
@@ -128,6 +155,18 @@ pub(super) enum RawShape {
         control_points: Vec<Xy>,
         weights: Vec<f64>,
     },
+    Hermite {
+        p0: Xy,
+        p1: Xy,
+        t0: Xy,
+        t1: Xy,
+    },
+    Composite {
+        nodes: Vec<Xy>,
+        tangents: Vec<Xy>,
+        #[serde(default)]
+        joins: Vec<Join>,
+    },
 }
 
 impl RawShape {
@@ -139,6 +178,8 @@ impl RawShape {
             RawShape::Bezier { .. } => "bezier",
             RawShape::Bspline { .. } => "bspline",
             RawShape::Nurbs { .. } => "nurbs",
+            RawShape::Hermite { .. } => "hermite",
+            RawShape::Composite { .. } => "composite",
         }
     }
 
@@ -174,6 +215,18 @@ impl RawShape {
                 pts(control_points),
                 weights,
             )?),
+            RawShape::Hermite { p0, p1, t0, t1 } => {
+                Entity::Hermite(HermiteChain::single(pt(p0), pt(p1), vec(t0), vec(t1))?)
+            }
+            RawShape::Composite {
+                nodes,
+                tangents,
+                joins,
+            } => Entity::Composite(HermiteChain::try_new(
+                pts(nodes),
+                tangents.into_iter().map(vec).collect(),
+                joins,
+            )?),
         })
     }
 
@@ -202,6 +255,21 @@ impl RawShape {
                 knots: c.knots().as_slice().to_vec(),
                 control_points: pts(c.control_points()),
                 weights: c.weights().to_vec(),
+            },
+            Entity::Hermite(c) if c.segment_count() == 1 => {
+                // One segment: blocks [p0, p1, t0, t1].
+                let b = c.blocks();
+                RawShape::Hermite {
+                    p0: xy_p(&b[0]),
+                    p1: xy_p(&b[1]),
+                    t0: xy_p(&b[2]),
+                    t1: xy_p(&b[3]),
+                }
+            }
+            Entity::Hermite(c) | Entity::Composite(c) => RawShape::Composite {
+                nodes: pts(c.nodes()),
+                tangents: c.tangents().iter().map(|t| [t.x, t.y]).collect(),
+                joins: c.joins().to_vec(),
             },
         }
     }

@@ -1,0 +1,233 @@
+//! Curve–curve intersection with overlaps: where two curves coincide along a stretch, the
+//! stretch is reported as a pair of parameter intervals instead of (too many) points.
+//!
+//! **Finding overlaps.** Curve `a` is sampled (33 parameters per Bézier piece, ends included);
+//! a sample is *on* `b` when its closest point on `b` ([`super::closest_point`]) is within the
+//! tolerance. Runs of at least two consecutive on-samples, whose midpoints are on `b` too, are
+//! overlap candidates; each end of a run is then located by bisection between its last on-sample
+//! and the next off-sample (60 halvings, down to rounding). The interval on `b` is given by the
+//! closest points of the two ends (it runs backwards when the curves are traced in opposite
+//! directions). An overlap shorter than the sample spacing is not seen as one: its contacts are
+//! searched as points like any other.
+//!
+//! **Points.** The point search of [`super::intersect_curves`] then runs with the overlap
+//! stretches of `a` taken out (piece pairs inside them are dropped, contacts inside them too),
+//! so a coincident stretch is neither a list of points along it nor a drain on the candidate
+//! budget; crossings elsewhere are reported as usual.
+
+use nalgebra::Point;
+
+use super::closest_point;
+use super::curve_curve::{extent, intersect_excluding, CurveCurveOptions, CurvePairPoint};
+use super::pieces::BezierPieces;
+use crate::errors::Result;
+
+/// Samples per Bézier piece of `a` when looking for overlaps (the pieces' ends included).
+const SAMPLES_PER_PIECE: usize = 32;
+
+/// Halvings that locate an overlap's end.
+const BISECTIONS: usize = 60;
+
+/// A stretch along which two curves coincide: `a` on [a.0, a.1] (a.0 < a.1) traces the same
+/// points as `b` from b.0 to b.1 (b.0 > b.1 when `b` runs the other way).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Overlap {
+    /// The interval on the first curve, increasing.
+    pub a: (f64, f64),
+    /// The matching parameters on the second curve, at a.0 and at a.1.
+    pub b: (f64, f64),
+}
+
+/// Intersections of two curves: isolated contacts, and coincident stretches.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CurveIntersections<const D: usize> {
+    /// Contacts outside the overlaps, in increasing parameter on `a`.
+    pub points: Vec<CurvePairPoint<D>>,
+    /// Coincident stretches, in increasing parameter on `a`.
+    pub overlaps: Vec<Overlap>,
+}
+
+/// The intersections of `a` and `b` with overlaps reported as intervals (see the module
+/// documentation).
+///
+/// ```
+/// use camber_geom::queries::{intersect_curves_with_overlaps, CurveCurveOptions};
+/// use camber_geom::Segment;
+/// use nalgebra::Point2;
+/// // Two collinear segments sharing x ∈ [1, 2].
+/// let a = Segment::try_new(Point2::new(0.0, 0.0), Point2::new(2.0, 0.0))?;
+/// let b = Segment::try_new(Point2::new(1.0, 0.0), Point2::new(3.0, 0.0))?;
+/// let hits = intersect_curves_with_overlaps(&a, &b, &CurveCurveOptions::default())?;
+/// assert!(hits.points.is_empty());
+/// let o = hits.overlaps[0];
+/// assert!((o.a.0 - 0.5).abs() < 1e-9 && (o.a.1 - 1.0).abs() < 1e-9);
+/// assert!(o.b.0.abs() < 1e-9 && (o.b.1 - 0.5).abs() < 1e-9);
+/// # Ok::<(), camber_geom::Error>(())
+/// ```
+///
+/// Errors: as [`super::intersect_curves`] (bad options, too many candidates), and the curves'
+/// evaluation errors.
+pub fn intersect_curves_with_overlaps<const D: usize, A, B>(
+    a: &A,
+    b: &B,
+    opts: &CurveCurveOptions,
+) -> Result<CurveIntersections<D>>
+where
+    A: BezierPieces<D> + ?Sized,
+    B: BezierPieces<D> + ?Sized,
+{
+    opts.check()?;
+    let pieces = a.bezier_pieces();
+    let size = extent(&pieces).max(extent(&b.bezier_pieces()));
+    // On `b`: within the tolerance, or within what rounding leaves of the closest point.
+    let near = opts.tolerance.max(1e-12 * size);
+    let on = |s: f64| -> Result<bool> {
+        let p: Point<f64, D> = a.point(s)?;
+        Ok(closest_point(b, &p)?.distance <= near)
+    };
+    let mut params: Vec<f64> = Vec::new();
+    for piece in &pieces {
+        for k in 0..=SAMPLES_PER_PIECE {
+            let s = piece.start + (piece.end - piece.start) * k as f64 / SAMPLES_PER_PIECE as f64;
+            if params.last().is_none_or(|l| s > *l) {
+                params.push(s);
+            }
+        }
+    }
+    let flags = params
+        .iter()
+        .map(|s| on(*s))
+        .collect::<Result<Vec<bool>>>()?;
+    let mut overlaps = Vec::new();
+    let mut k = 0;
+    while k < params.len() {
+        if !flags[k] {
+            k += 1;
+            continue;
+        }
+        // The run k..=m of on-samples whose midpoints are on `b` too.
+        let mut m = k;
+        while m + 1 < params.len() && flags[m + 1] && on(0.5 * (params[m] + params[m + 1]))? {
+            m += 1;
+        }
+        if m > k {
+            let start = match k.checked_sub(1) {
+                Some(j) => boundary(&on, params[k], params[j])?,
+                None => params[k],
+            };
+            let end = match params.get(m + 1) {
+                Some(next) => boundary(&on, params[m], *next)?,
+                None => params[m],
+            };
+            let tb = |s: f64| -> Result<f64> { Ok(closest_point(b, &a.point(s)?)?.parameter) };
+            overlaps.push(Overlap {
+                a: (start, end),
+                b: (tb(start)?, tb(end)?),
+            });
+        }
+        k = m + 1;
+    }
+    let excluded: Vec<(f64, f64)> = overlaps.iter().map(|o| o.a).collect();
+    let points = intersect_excluding(a, b, opts, &excluded)?;
+    Ok(CurveIntersections { points, overlaps })
+}
+
+/// The parameter between `inside` (on the other curve) and `outside` (off it) where the curve
+/// leaves the other one, by bisection.
+fn boundary(on: &impl Fn(f64) -> Result<bool>, inside: f64, outside: f64) -> Result<f64> {
+    let (mut lo, mut hi) = (inside, outside);
+    for _ in 0..BISECTIONS {
+        let mid = 0.5 * (lo + hi);
+        if on(mid)? {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    Ok(lo)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::queries::intersect_curves;
+    use crate::{BSplineCurve2, BezierCurve2, KnotVector, Segment};
+    use approx::assert_relative_eq;
+    use nalgebra::Point2;
+
+    /// A cubic and its own piece over [0.3, 0.8] (de Casteljau): the overlap is exactly those
+    /// intervals, where the plain point search returns a list of points along the stretch.
+    #[test]
+    fn a_curve_and_its_own_piece_overlap_on_the_piece() {
+        let a = BezierCurve2::try_new(vec![
+            Point2::new(0.0, 0.0),
+            Point2::new(1.0, 2.0),
+            Point2::new(3.0, -1.0),
+            Point2::new(4.0, 1.0),
+        ])
+        .unwrap();
+        let b = a.segment(0.3, 0.8).unwrap();
+        let opts = CurveCurveOptions::default();
+        let hits = intersect_curves_with_overlaps(&a, &b, &opts).unwrap();
+        assert_eq!(hits.overlaps.len(), 1, "{hits:?}");
+        let o = hits.overlaps[0];
+        assert_relative_eq!(o.a.0, 0.3, epsilon = 1e-7);
+        assert_relative_eq!(o.a.1, 0.8, epsilon = 1e-7);
+        assert_relative_eq!(o.b.0, 0.0, epsilon = 1e-7);
+        assert_relative_eq!(o.b.1, 1.0, epsilon = 1e-7);
+        assert!(hits.points.is_empty(), "{:?}", hits.points);
+        // The plain point search reports the stretch as a list of points along it.
+        let plain = intersect_curves(&a, &b, &opts).unwrap();
+        assert!(plain.len() > 10, "{}", plain.len());
+    }
+
+    /// A polyline that runs along the segment for x ∈ [1, 2], leaves it, and crosses it again at
+    /// x = 3.25 (hand-derived): one overlap, one crossing. Reversed, the `b` interval runs
+    /// backwards.
+    #[test]
+    fn an_overlap_and_a_crossing_are_told_apart() {
+        let line = Segment::try_new(Point2::new(0.0, 0.0), Point2::new(4.0, 0.0)).unwrap();
+        let knots = KnotVector::try_new(vec![0.0, 0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0, 1.0]).unwrap();
+        let pts = vec![
+            Point2::new(1.0, 0.0),
+            Point2::new(2.0, 0.0),
+            Point2::new(3.0, 1.0),
+            Point2::new(3.5, -1.0),
+        ];
+        let poly = BSplineCurve2::try_new(1, knots.clone(), pts.clone()).unwrap();
+        let opts = CurveCurveOptions::default();
+        let hits = intersect_curves_with_overlaps(&line, &poly, &opts).unwrap();
+        assert_eq!(hits.overlaps.len(), 1, "{hits:?}");
+        let o = hits.overlaps[0];
+        assert_relative_eq!(o.a.0, 0.25, epsilon = 1e-9);
+        assert_relative_eq!(o.a.1, 0.5, epsilon = 1e-9);
+        assert_relative_eq!(o.b.0, 0.0, epsilon = 1e-9);
+        assert_relative_eq!(o.b.1, 1.0 / 3.0, epsilon = 1e-9);
+        assert_eq!(hits.points.len(), 1, "{:?}", hits.points);
+        assert_relative_eq!(hits.points[0].parameter_a, 3.25 / 4.0, epsilon = 1e-9);
+        // The polyline traced backwards: the same stretch, b's interval reversed.
+        let back: Vec<_> = pts.into_iter().rev().collect();
+        let rev = BSplineCurve2::try_new(1, knots, back).unwrap();
+        let hits = intersect_curves_with_overlaps(&line, &rev, &opts).unwrap();
+        let o = hits.overlaps[0];
+        assert_relative_eq!(o.b.0, 1.0, epsilon = 1e-9);
+        assert_relative_eq!(o.b.1, 2.0 / 3.0, epsilon = 1e-9);
+    }
+
+    /// Without an overlap the answer is the plain point search's.
+    #[test]
+    fn without_overlaps_the_points_are_the_plain_search() {
+        let a = BezierCurve2::try_new(vec![
+            Point2::new(-2.0, 3.0),
+            Point2::new(0.0, -5.0),
+            Point2::new(2.0, 3.0),
+        ])
+        .unwrap();
+        let b = Segment::try_new(Point2::new(-3.0, 0.5), Point2::new(3.0, -0.5)).unwrap();
+        let opts = CurveCurveOptions::default();
+        let hits = intersect_curves_with_overlaps(&a, &b, &opts).unwrap();
+        assert!(hits.overlaps.is_empty());
+        assert_eq!(hits.points, intersect_curves(&a, &b, &opts).unwrap());
+        assert_eq!(hits.points.len(), 2);
+    }
+}
