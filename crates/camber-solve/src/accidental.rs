@@ -118,6 +118,9 @@ pub(crate) fn reclassify(
     ] {
         list.retain(|c| !accidental.contains(c));
     }
+    analysis
+        .depends_on
+        .retain(|d| !accidental.contains(&d.constraint));
     analysis.accidental = accidental;
     analysis.rank = nearby.rank;
     analysis.dof = analysis.free_unknowns.saturating_sub(nearby.rank);

@@ -390,8 +390,83 @@ pub struct DofAnalysis {
     /// Filled by [`crate::Problem::analyze`] for nonlinear problems; empty from [`analyze`].
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub accidental: Vec<ConstraintId>,
+    /// For each redundant, partly redundant or conflicting constraint (in that order, as
+    /// listed), the other constraints its dependent rows are combinations of: row_i ≈
+    /// Σ λ_k·row_k over the independent rows k, the constraints owning a k with λ_k ≠ 0.
+    /// Left empty above [`DEPENDENCY_NAMING_MAX_ROWS`] dependent rows.
+    pub depends_on: Vec<Dependency>,
     /// The row-level result.
     pub rows: RowAnalysis,
+}
+
+/// Which constraints a constraint's dependent rows are combinations of.
+#[derive(Debug, Clone, PartialEq, Eq, serde::Serialize)]
+pub struct Dependency {
+    /// The constraint with dependent rows.
+    pub constraint: ConstraintId,
+    /// The other constraints owning the independent rows its dependent rows combine.
+    pub on: Vec<ConstraintId>,
+}
+
+/// At most this many dependent rows get their [`Dependency`] named (one projection each on
+/// the factorization of the independent rows).
+pub const DEPENDENCY_NAMING_MAX_ROWS: usize = 1000;
+
+/// The constraints each named constraint's dependent rows depend on: for a dependent row i,
+/// the multipliers y of the projection of row_iᵀ onto the span of the independent rows (the
+/// minimum-norm factorization's y = (J_A·J_Aᵀ)⁻¹·J_A·row_iᵀ, so row_i ≈ yᵀ·J_A); the owners of
+/// the rows with |y_k| above 10⁻⁸·max |y|.
+fn dependencies(
+    lin: &Linearization,
+    rows: &RowAnalysis,
+    named: &[ConstraintId],
+) -> Result<Vec<Dependency>> {
+    if named.is_empty()
+        || rows.dependent.len() > DEPENDENCY_NAMING_MAX_ROWS
+        || rows.independent.is_empty()
+    {
+        return Ok(Vec::new());
+    }
+    let n = lin.jacobian.ncols();
+    let independent = lin.jacobian.select_rows(&rows.independent);
+    let mut f = MinNormFactorization::try_auto(&independent, &vec![1.0; n], 2000)?;
+    let mut out: Vec<Dependency> = named
+        .iter()
+        .map(|c| Dependency {
+            constraint: *c,
+            on: Vec::new(),
+        })
+        .collect();
+    let (mut v, mut projected) = (vec![0.0; n], vec![0.0; n]);
+    let mut y = vec![0.0; rows.independent.len()];
+    for d in &rows.dependent {
+        let Some(owner) = lin.row_owner.get(d.row) else {
+            continue;
+        };
+        let Some(entry) = out.iter_mut().find(|e| e.constraint == *owner) else {
+            continue;
+        };
+        v.fill(0.0);
+        let (cols, vals) = lin.jacobian.row(d.row);
+        for (c, x) in cols.iter().zip(vals) {
+            v[*c] = *x;
+        }
+        f.project(&v, &mut projected, &mut y)?;
+        let top = y.iter().fold(0.0_f64, |m, x| m.max(x.abs()));
+        for (k, yk) in y.iter().enumerate() {
+            if yk.abs() > 1e-8 * top {
+                if let Some(o) = lin.row_owner.get(rows.independent[k]) {
+                    if o != owner && !entry.on.contains(o) {
+                        entry.on.push(*o);
+                    }
+                }
+            }
+        }
+    }
+    for e in &mut out {
+        e.on.sort_unstable();
+    }
+    Ok(out)
 }
 
 /// Runs [`analyze_rows`] (up to [`DENSE_ANALYSIS_MAX_ENTRIES`] entries of J) or
@@ -434,6 +509,13 @@ pub fn analyze(
     redundant.retain(|c| !conflicting.contains(c));
     let partly_redundant = needed(lin, &rows, &redundant, rank_tolerance, residual_tolerance)?;
     redundant.retain(|c| !partly_redundant.contains(c));
+    let named: Vec<ConstraintId> = redundant
+        .iter()
+        .chain(&partly_redundant)
+        .chain(&conflicting)
+        .copied()
+        .collect();
+    let depends_on = dependencies(lin, &rows, &named)?;
     let free_unknowns = lin.map.len();
     Ok(DofAnalysis {
         free_unknowns,
@@ -443,6 +525,7 @@ pub fn analyze(
         partly_redundant,
         conflicting,
         accidental: Vec::new(),
+        depends_on,
         rows,
     })
 }

@@ -70,7 +70,7 @@ pub mod sparse;
 #[cfg(feature = "testing")]
 pub mod testing;
 
-pub use analysis::DofAnalysis;
+pub use analysis::{Dependency, DofAnalysis};
 pub use errors::{Error, Result};
 pub use ids::{AuxId, BlockId, ConstraintId, ResidualId, UnknownId, Var};
 pub use linear::solve_linear;

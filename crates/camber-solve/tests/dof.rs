@@ -100,3 +100,31 @@ fn a_violated_constraint_on_fixed_unknowns_conflicts() {
     let d = p.analyze(&Options::default()).unwrap();
     assert_eq!((d.rank, d.conflicting.clone()), (0, vec![ConstraintId(30)]));
 }
+
+#[test]
+fn a_dependent_constraint_names_the_constraints_it_depends_on() {
+    // Over one point (x, y): x = 1 (constraint 1), y = 2 (2), x + y = 3 (3)
+    // and 2x = 2 (4). Row 3 is row 1 + row 2; row 4 is 2 × row 1.
+    let mut p = Problem::new();
+    let b = p.add_block(&[0.0, 0.0]).unwrap();
+    p.add_residual(row(&[1.0, 0.0], 1.0), &[b], ConstraintId(1))
+        .unwrap();
+    p.add_residual(row(&[0.0, 1.0], 2.0), &[b], ConstraintId(2))
+        .unwrap();
+    p.add_residual(row(&[1.0, 1.0], 3.0), &[b], ConstraintId(3))
+        .unwrap();
+    p.add_residual(row(&[2.0, 0.0], 2.0), &[b], ConstraintId(4))
+        .unwrap();
+    let d = p.analyze(&Options::default()).unwrap();
+    assert_eq!(d.redundant, vec![ConstraintId(3), ConstraintId(4)]);
+    let on = |c: u64| {
+        d.depends_on
+            .iter()
+            .find(|x| x.constraint == ConstraintId(c))
+            .unwrap()
+            .on
+            .clone()
+    };
+    assert_eq!(on(3), vec![ConstraintId(1), ConstraintId(2)]);
+    assert_eq!(on(4), vec![ConstraintId(1)]);
+}

@@ -158,6 +158,19 @@ pub fn check(sketch: &Sketch) -> Result<String> {
             "  conflicting: {}",
             describe_constraints(sketch, &d.conflicting)
         ));
+        for dep in d.depends_on.iter().filter(|dep| !dep.on.is_empty()) {
+            lines.push(format!(
+                "  constraint {} depends on {}",
+                dep.constraint.0,
+                describe_constraints(sketch, &dep.on)
+            ));
+        }
+        if !d.accidental.is_empty() {
+            lines.push(format!(
+                "  dependent only here (singular configuration, not redundant): {}",
+                describe_constraints(sketch, &d.accidental)
+            ));
+        }
         lines.push(format!("  free: {}", describe_freedom(sketch, a)));
     }
     if lines.is_empty() {
