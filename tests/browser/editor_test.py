@@ -189,6 +189,17 @@ def main():
             expected = sum(len(v) for v in loaded.values())
             check(drawn == expected, f"the page draws {drawn} handles, the sketch has {expected} points")
 
+            # 1b. The points the DOF analysis leaves no freedom are drawn as determined.
+            determined = 0
+            for comp in editor.state()["components"]:
+                analysis = comp["analysis"]
+                free = {f["entity"]: set(f["points"]) for f in analysis["free"]}
+                for e in comp["entities"]:
+                    determined += sum(1 for k in range(len(loaded[e])) if k not in free.get(e, set()))
+            shown = page.locator("#layer-points circle.determined").count()
+            check(determined > 0, "the blade has fixed points, so some handles are determined")
+            check(shown == determined, f"{shown} handles drawn as determined, the analysis says {determined}")
+
             # 2. The bundled blade is not solved as shipped: Solve (the button) solves it, and
             # the fixed points stay where the file has them.
             page.click("#solve")

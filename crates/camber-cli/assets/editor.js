@@ -109,24 +109,40 @@ const pointsAttr = (list) => list.map((p) => toScreen(p).map((v) => v.toFixed(2)
 /** The elements of each entity in each layer, by entity id, so an update replaces only them. */
 const drawn = new Map();
 
+/**
+ * What of entity `id` can still move, from its component's DOF analysis: the indices of its
+ * free points and whether its radius is free; `null` when the component was not analysed.
+ */
+function freedomOf(id) {
+  const c = state?.components?.find((comp) => comp.entities.includes(id));
+  if (!c || !c.analysis) return null;
+  const f = c.analysis.free.find((x) => x.entity === id);
+  return { points: new Set(f ? f.points : []), radius: !!(f && f.scalars.length) };
+}
+
 function drawEntity(e) {
   const old = drawn.get(e.id);
   if (old) old.forEach((el) => el.remove());
   const els = [];
+  // Fully determined entities and points are drawn in the "determined" colour.
+  const freedom = freedomOf(e.id);
+  const determined = freedom !== null && freedom.points.size === 0 && !freedom.radius;
+  const curveClass = determined ? "curve determined" : "curve";
   const curveLike = e.kind === "bezier" || e.kind === "bspline" || e.kind === "nurbs";
   if (curveLike) {
     els.push(element("polyline", { class: "polygon", points: pointsAttr(e.points) }, layers.polygons));
-    els.push(element("polyline", { class: "curve", points: pointsAttr(e.samples ?? []) }, layers.curves));
+    els.push(element("polyline", { class: curveClass, points: pointsAttr(e.samples ?? []) }, layers.curves));
   } else if (e.kind === "line") {
-    els.push(element("polyline", { class: "curve", points: pointsAttr(e.points) }, layers.curves));
+    els.push(element("polyline", { class: curveClass, points: pointsAttr(e.points) }, layers.curves));
   } else if (e.kind === "circle") {
     const [cx, cy] = toScreen(e.points[0]);
-    els.push(element("circle", { class: "curve", cx, cy, r: e.radius * view.k }, layers.curves));
+    els.push(element("circle", { class: curveClass, cx, cy, r: e.radius * view.k }, layers.curves));
   }
   e.points.forEach((p, index) => {
     const [cx, cy] = toScreen(p);
     const active = drag && drag.entity === e.id && drag.index === index;
-    const cls = `handle${e.kind === "point" ? " point" : ""}${active ? " active" : ""}`;
+    const fixed = freedom !== null && !freedom.points.has(index);
+    const cls = `handle${e.kind === "point" ? " point" : ""}${active ? " active" : ""}${fixed ? " determined" : ""}`;
     const el = element("circle", { class: cls, cx, cy, r: e.kind === "point" ? 5 : 4.5 }, layers.points);
     el.dataset.entity = e.id;
     el.dataset.index = index;
@@ -283,7 +299,7 @@ function renderPanel() {
       : `${sci(c.residual)}${c.worst && unsolved ? ` at ${c.worst.id} (${c.worst.kind})` : ""}`;
     comps.appendChild(block(`${k + 1}. entities ${ids(c.entities)}${c.nonlinear ? " (nonlinear)" : ""}`, [
       ["DOF", a ? `${a.dof} (${a.free_unknowns} free unknowns, rank ${a.rank})` : "not analysed"],
-      ["free", a ? freeText(a.free) : "–"],
+      ["free", a ? freeText(a.free, a.free_parameters) : "–"],
       ["residual", residual, unsolved],
       ["redundant", a ? named(a.redundant) || "none" : "–"],
       ["conflicting", a ? named(a.conflicting) || "none" : "–", a && a.conflicting.length > 0],
@@ -291,9 +307,12 @@ function renderPanel() {
   });
 }
 
-// What can still move: "3: points 1, 2; 5: radius", or "nothing (fully constrained)".
-function freeText(free) {
-  if (!free || free.length === 0) return "nothing (fully constrained)";
+// What can still move: "3: points 1, 2; 5: radius; constraint 8: parameter 0", or "nothing
+// (fully constrained)".
+function freeText(free, parameters) {
+  if ((!free || free.length === 0) && (!parameters || parameters.length === 0)) {
+    return "nothing (fully constrained)";
+  }
   return free
     .map((f) => {
       const parts = [];
@@ -301,6 +320,7 @@ function freeText(free) {
       if (f.scalars.length) parts.push("radius");
       return `${f.entity}: ${parts.join(", ")}`;
     })
+    .concat((parameters ?? []).map((p) => `constraint ${p.constraint}: parameter ${p.parameter}`))
     .join("; ");
 }
 

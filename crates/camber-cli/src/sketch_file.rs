@@ -93,6 +93,7 @@ pub fn solver_name(kind: camber_solve::SolverKind) -> &'static str {
         K::Newton => "newton",
         K::Slsqp => "slsqp",
         K::LevenbergMarquardt => "levenberg_marquardt",
+        K::Prioritized => "prioritized",
     }
 }
 

@@ -369,3 +369,41 @@ fn every_bundled_sketch_solves_and_draws_from_the_command_line() {
         assert_eq!(count(&doc, "line", "stroke", CONFLICT), 0, "{name}");
     }
 }
+
+#[test]
+fn solve_names_every_constraint_a_priority_let_go() {
+    // examples/sketches/priorities.json: C(½) wanted at (1.5, 1) (priority 1) and at (1.5, 2)
+    // (priority 2), C(¼) at (0.5, 1) (priority 2). The first and the last can be met together;
+    // the second cannot and is the one named.
+    let out = tempfile::tempdir().unwrap();
+    let solved = out.path().join("solved.json");
+    camber()
+        .args(["solve"])
+        .arg(sketch("priorities.json"))
+        .arg("-o")
+        .arg(&solved)
+        .assert()
+        .success()
+        .stdout(predicate::str::contains("solver prioritized"))
+        .stdout(predicate::str::contains("priority 1: met"))
+        .stdout(predicate::str::contains(
+            "priority 2: relaxed constraint 4 (residual 1.000e0)\n",
+        ));
+    // The priorities are kept in the written file, and the JSON report carries the tiers.
+    let text = std::fs::read_to_string(&solved).unwrap();
+    assert!(text.contains(r#""id":4,"priority":2"#), "{text}");
+    let json = camber()
+        .args(["solve", "--json"])
+        .arg(sketch("priorities.json"))
+        .arg("-o")
+        .arg(out.path().join("again.json"))
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
+    let v: serde_json::Value = serde_json::from_slice(&json).unwrap();
+    let report = &v["components"][0]["report"];
+    assert_eq!(report["status"], "relaxed");
+    assert_eq!(report["priorities"][2]["relaxed"], serde_json::json!([4]));
+}

@@ -5,7 +5,7 @@
 
 use camber_solve::DofAnalysis;
 
-pub use crate::component::problem::EntityFreedom;
+pub use crate::component::problem::{EntityFreedom, ParameterFreedom};
 use crate::component::Component;
 use crate::errors::Result;
 use crate::sketch::Sketch;
@@ -20,6 +20,9 @@ pub struct ComponentAnalysis {
     /// The entities with something still free (points that can move, radii that can change),
     /// in id order; an entity of the component not listed is fully determined.
     pub freedom: Vec<EntityFreedom>,
+    /// The free parameters of constraints (contact parameters) that can still change: the
+    /// contacts that can slide along their curve.
+    pub free_parameters: Vec<ParameterFreedom>,
 }
 
 impl ComponentAnalysis {
@@ -47,10 +50,12 @@ impl Sketch {
             analysis.redundant.retain(|c| !conflicting.contains(c));
             let mut freedom = cp.freedom(&analysis.rows.free_columns)?;
             freedom.sort_by_key(|f| f.entity);
+            let free_parameters = cp.parameter_freedom(&analysis.rows.free_columns)?;
             out.push(ComponentAnalysis {
                 component: comp,
                 analysis,
                 freedom,
+                free_parameters,
             });
         }
         Ok(out)

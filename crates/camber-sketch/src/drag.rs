@@ -152,6 +152,10 @@ pub struct NonlinearDrag {
     freedom: Freedom,
     /// The residual rows of the problem without the pin row.
     base_rows: usize,
+    /// Whether the component has constraints with priorities: the cursor is then a wish
+    /// below every tier (pin rows of the lowest priority, never a fixed block), so no
+    /// constraint gives way to it.
+    wish: bool,
 }
 
 /// How a dragged point can move under its constraints, at the state a session is in.
@@ -399,7 +403,8 @@ impl Sketch {
         }
         let freedom = nonlinear_freedom(&cp, block, &self.solve_options())?;
         let base_rows = cp.problem.num_residuals();
-        if freedom == Freedom::Free {
+        let wish = cp.problem.has_priorities();
+        if freedom == Freedom::Free && !wish {
             cp.problem.fix_block(block)?;
         }
         let z = cp.problem.reduced_map()?.z0().to_vec();
@@ -418,6 +423,7 @@ impl Sketch {
             options: self.solve_options(),
             freedom,
             base_rows,
+            wish,
         }))
     }
 }
@@ -584,21 +590,33 @@ impl NonlinearDrag {
         let options = self.options.clone();
         let cp = &mut self.common.cp;
         let before = cp.problem.block_values(self.block)?.to_vec();
-        match u {
-            None => cp
-                .problem
-                .set_block_values(self.block, &[target.x, target.y])?,
-            Some(u) => {
-                cp.problem.truncate_residuals(self.base_rows);
+        // The pin: rows along the directions the point may move (both axes for a free point
+        // whose cursor is a wish), or the free block set to the target.
+        let axes: SmallVec<[[f64; 2]; 2]> = match u {
+            Some(u) => SmallVec::from_slice(&[[u.x, u.y]]),
+            None if self.wish => SmallVec::from_slice(&[[1.0, 0.0], [0.0, 1.0]]),
+            None => SmallVec::new(),
+        };
+        let pinned_by_rows = !axes.is_empty();
+        if pinned_by_rows {
+            cp.problem.truncate_residuals(self.base_rows);
+            for axis in axes {
                 cp.problem.add_residual(
                     PinAlong {
-                        u: [u.x, u.y],
+                        u: axis,
                         target: [target.x, target.y],
                     },
                     &[self.block],
                     DRAG_CONSTRAINT,
                 )?;
             }
+            if self.wish {
+                cp.problem
+                    .set_priority(DRAG_CONSTRAINT, camber_solve::Priority::MAX);
+            }
+        } else {
+            cp.problem
+                .set_block_values(self.block, &[target.x, target.y])?;
         }
         let start = Start::Warm {
             from: self.z.clone(),
@@ -610,7 +628,7 @@ impl NonlinearDrag {
                 self.common.x.clear();
                 self.common.x.extend_from_slice(cp.problem.values());
                 self.common.moved = true;
-                if u.is_some() {
+                if pinned_by_rows {
                     // The direction of freedom turns as the point slides (on a circle, say).
                     cp.problem.truncate_residuals(self.base_rows);
                     self.freedom = nonlinear_freedom(cp, self.block, &options)?;
@@ -619,7 +637,7 @@ impl NonlinearDrag {
             }
             Err(e) => {
                 // The policy left the problem at its start: move the dragged block back too.
-                if u.is_some() {
+                if pinned_by_rows {
                     cp.problem.truncate_residuals(self.base_rows);
                 } else {
                     cp.problem.set_block_values(self.block, &before)?;

@@ -75,7 +75,8 @@ pub mod solve;
 pub mod vocabulary;
 pub mod warnings;
 
-pub use analysis::{ComponentAnalysis, EntityFreedom};
+pub use analysis::{ComponentAnalysis, EntityFreedom, ParameterFreedom};
+pub use camber_solve::Priority;
 pub use component::{Component, ComponentProblem, DRAG_CONSTRAINT};
 pub use constraints::custom::{Arg, ArgKind, Args, CustomResidual};
 pub use constraints::{Constraint, Custom, Glyph};

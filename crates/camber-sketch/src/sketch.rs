@@ -10,7 +10,7 @@
 use std::collections::{BTreeMap, BTreeSet};
 
 use camber_geom::{BSplineCurve2, BezierCurve2, NurbsCurve2};
-use camber_solve::{ConstraintId, Options};
+use camber_solve::{ConstraintId, Options, Priority};
 use nalgebra::Point2;
 use petgraph::stable_graph::{NodeIndex, StableUnGraph};
 use petgraph::visit::NodeIndexable;
@@ -66,6 +66,8 @@ pub struct Sketch {
     options: Options,
     /// Weights of points in the minimum-norm metric, by (entity, point index); absent = 1.
     weights: BTreeMap<(EntityId, usize), f64>,
+    /// Priority tiers of constraints that may be relaxed; absent = 0 (required).
+    priorities: BTreeMap<ConstraintId, Priority>,
 }
 
 impl Default for Sketch {
@@ -105,6 +107,7 @@ impl Sketch {
             revision: 0,
             options,
             weights: BTreeMap::new(),
+            priorities: BTreeMap::new(),
         }
     }
 }
@@ -514,9 +517,60 @@ impl Sketch {
             .remove(&id)
             .ok_or(Error::UnknownConstraint { constraint: id })?;
         self.graph.remove_node(node);
+        self.priorities.remove(&id);
         self.dirty.extend(c.entities());
         self.revision += 1;
         Ok(c)
+    }
+}
+
+/// # Priorities
+impl Sketch {
+    /// Gives a constraint a priority tier: 0 (the default) is required; a constraint of tier
+    /// 1, 2, … may be relaxed when the whole set cannot be met, the higher tiers first. The
+    /// solve then meets the tiers in order, each as closely as the tiers before allow (least
+    /// squares within their solutions), and its report names every relaxed constraint
+    /// ([`crate::SketchReport::relaxed`]). A constraint with a priority is always solved as
+    /// rows, never folded into the unknowns (a `fixed` point stays an unknown held by two
+    /// rows, a coincidence is not merged), so that it can give way. Marks its entities dirty.
+    ///
+    /// ```
+    /// use camber_sketch::constraints::{Distance, Fixed};
+    /// use camber_sketch::{PointRef, Sketch};
+    /// use nalgebra::Point2;
+    /// let mut s = Sketch::new();
+    /// let a = s.add_point(Point2::new(0.0, 0.0))?;
+    /// let b = s.add_point(Point2::new(1.0, 0.0))?;
+    /// s.add_constraint(Fixed::point(PointRef::Point(a)))?;
+    /// s.add_constraint(Fixed::point(PointRef::Point(b)))?;
+    /// // 2 apart cannot be met with both points fixed: as priority 1 it gives way.
+    /// let d = s.add_constraint(Distance { a: PointRef::Point(a), b: PointRef::Point(b), distance: 2.0 })?;
+    /// s.set_priority(d, 1)?;
+    /// let report = s.solve()?;
+    /// assert_eq!(report.relaxed(), vec![d]);
+    /// assert_eq!(s.point(PointRef::Point(b))?, Point2::new(1.0, 0.0));
+    /// # Ok::<(), camber_sketch::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`Error::UnknownConstraint`].
+    pub fn set_priority(&mut self, id: ConstraintId, priority: Priority) -> Result<()> {
+        let entities = self.constraint(id)?.entities();
+        if priority == 0 {
+            self.priorities.remove(&id);
+        } else {
+            self.priorities.insert(id, priority);
+        }
+        for e in entities {
+            self.mark_dirty(e);
+        }
+        Ok(())
+    }
+
+    /// A constraint's priority tier (0, required, unless [`Sketch::set_priority`] said
+    /// otherwise; 0 also for an unknown id).
+    pub fn priority(&self, id: ConstraintId) -> Priority {
+        self.priorities.get(&id).copied().unwrap_or(0)
     }
 }
 
@@ -649,9 +703,31 @@ impl Sketch {
     ) -> Result<ComponentProblem> {
         let mut compiled = Vec::with_capacity(comp.constraints.len());
         for id in &comp.constraints {
-            compiled.push((*id, self.constraint(*id)?.compile(self)?));
+            let pieces = self.constraint(*id)?.compile(self)?;
+            let pieces = if self.priority(*id) > 0 {
+                crate::component::piece::as_rows(self, pieces)?
+            } else {
+                pieces
+            };
+            compiled.push((*id, pieces));
         }
-        build(self, comp, &compiled, pin)
+        let relaxable: Vec<ConstraintId> = comp
+            .constraints
+            .iter()
+            .copied()
+            .filter(|id| self.priority(*id) > 0)
+            .collect();
+        let mut cp = build(self, comp, &compiled, &relaxable, pin)?;
+        if !relaxable.is_empty() && pin.is_some() {
+            // The cursor is a wish below every tier: the constraints are met first, the
+            // dragged point then comes as close to it as they allow.
+            cp.problem
+                .set_priority(crate::component::DRAG_CONSTRAINT, Priority::MAX);
+        }
+        for id in relaxable {
+            cp.problem.set_priority(id, self.priority(id));
+        }
+        Ok(cp)
     }
 
     /// Marks an entity as changed, so that the next solve solves its component.

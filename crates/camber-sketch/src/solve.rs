@@ -52,6 +52,19 @@ pub struct SketchReport {
     pub tolerance: f64,
 }
 
+impl SketchReport {
+    /// The constraints left above tolerance because the whole set could not be met: those of
+    /// a priority above 0 that gave way ([`Sketch::set_priority`]), in component order. Empty
+    /// when every constraint is met.
+    pub fn relaxed(&self) -> Vec<camber_solve::ConstraintId> {
+        self.components
+            .iter()
+            .filter(|c| c.report.status == camber_solve::Status::Relaxed)
+            .flat_map(|c| c.report.conflicting.iter().copied())
+            .collect()
+    }
+}
+
 /// # Solving
 impl Sketch {
     /// Solves the components that contain an entity changed since the last solve.

@@ -145,3 +145,62 @@ fn issue_17_free_unknowns_are_named_per_entity() {
     assert!(p.freedom.is_empty() && p.is_determined(point));
     assert!(!l.is_determined(line));
 }
+
+#[test]
+fn issue_17_contact_parameters_that_can_slide_are_named() {
+    use camber_sketch::constraints::TangentToCircle;
+    use camber_sketch::ParameterFreedom;
+    use camber_sketch::{CircleSide, Contact, Rotation};
+    // A cubic with fixed ends touching a fixed circle: the curve keeps interior freedom, so
+    // the contact can slide along it (its parameter is free).
+    let build = |fix_interior: bool| {
+        let mut s = Sketch::new();
+        let curve = s
+            .add_bezier(
+                BezierCurve2::try_new(vec![
+                    Point2::new(-3.0, 0.0),
+                    Point2::new(-1.0, 2.0),
+                    Point2::new(1.0, 2.0),
+                    Point2::new(3.0, 0.0),
+                ])
+                .unwrap(),
+            )
+            .unwrap();
+        let circle = s.add_circle(Point2::new(0.0, 3.0), 1.5).unwrap();
+        s.add_constraint(Fixed::entity(circle)).unwrap();
+        s.add_constraint(Fixed::point(PointRef::Start(curve)))
+            .unwrap();
+        s.add_constraint(Fixed::point(PointRef::End(curve)))
+            .unwrap();
+        if fix_interior {
+            s.add_constraint(Fixed::point(PointRef::Control(curve, 2)))
+                .unwrap();
+        }
+        let touch = s
+            .add_constraint(TangentToCircle {
+                curve,
+                circle,
+                u: Contact::Free(0.5),
+                side: CircleSide::Outside,
+                rotation: Rotation::Clockwise,
+            })
+            .unwrap();
+        (s, touch)
+    };
+    let (s, touch) = build(false);
+    let a = &s.analyze().unwrap()[0];
+    assert_eq!(a.analysis.dof, 3, "{:?}", a.analysis);
+    assert_eq!(
+        a.free_parameters,
+        vec![ParameterFreedom {
+            constraint: touch,
+            parameter: 0
+        }]
+    );
+    // With P₂ fixed too, P₁ (2 unknowns) and the parameter meet the 2 contact rows: 1 DOF
+    // left, still able to slide (P₁ moves along with it).
+    let (s, _) = build(true);
+    let a = &s.analyze().unwrap()[0];
+    assert_eq!(a.analysis.dof, 1, "{:?}", a.analysis);
+    assert_eq!(a.free_parameters.len(), 1);
+}

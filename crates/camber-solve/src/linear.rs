@@ -109,6 +109,7 @@ pub fn solve_linear(problem: &mut Problem, options: &Options) -> Result<SolveRep
             dof,
             redundant,
             conflicting: Vec::new(),
+            priorities: Vec::new(),
             elapsed: start.elapsed(),
         });
     }
@@ -167,6 +168,7 @@ pub fn solve_linear(problem: &mut Problem, options: &Options) -> Result<SolveRep
         dof,
         redundant,
         conflicting: Vec::new(),
+        priorities: Vec::new(),
         elapsed: start.elapsed(),
     })
 }

@@ -38,6 +38,8 @@ pub(crate) struct ResidualBlock {
     pub(crate) residual: Box<dyn DynResidual>,
     pub(crate) blocks: Vec<BlockId>,
     pub(crate) owner: ConstraintId,
+    /// Its priority tier (0, required, unless [`Problem::set_priority`] said otherwise).
+    pub(crate) priority: crate::priority::Priority,
 }
 
 /// Parameter blocks, their bindings and the residual blocks over them.
@@ -168,8 +170,66 @@ impl Problem {
             residual,
             blocks: blocks.to_vec(),
             owner,
+            priority: 0,
         });
         Ok(ResidualId(self.residuals.len() - 1))
+    }
+}
+
+/// # Priorities
+impl Problem {
+    /// Gives every residual block owned by `owner` the priority tier `priority`: 0 (the
+    /// default) is required; 1, 2, … may be relaxed, the higher tiers first, when the whole set
+    /// cannot be met (see [`crate::priority`]). Returns how many residual blocks it changed.
+    ///
+    /// ```
+    /// use camber_solve::{solve, ConstraintId, Options, Problem, Residual, Scalar, Status};
+    /// use camber_solve::scalar::cst;
+    /// /// x = a.
+    /// #[derive(Debug)]
+    /// struct XIs(f64);
+    /// impl Residual for XIs {
+    ///     fn name(&self) -> &str { "x is" }
+    ///     fn dim(&self) -> usize { 1 }
+    ///     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) { out[0] = x[0][0] - cst(self.0); }
+    ///     fn is_affine(&self) -> bool { true }
+    /// }
+    /// let mut p = Problem::new();
+    /// let b = p.add_block(&[0.0])?;
+    /// p.add_residual(XIs(1.0), &[b], ConstraintId(1))?;
+    /// p.add_residual(XIs(2.0), &[b], ConstraintId(2))?;
+    /// assert_eq!(p.set_priority(ConstraintId(2), 1), 1);
+    /// let report = solve(&mut p, &Options::default())?;
+    /// // x = 1 is required; x = 2 is relaxed, and the report says so.
+    /// assert_eq!(report.status, Status::Relaxed);
+    /// assert_eq!(report.conflicting, vec![ConstraintId(2)]);
+    /// assert!((p.values()[0] - 1.0).abs() < 1e-12);
+    /// # Ok::<(), camber_solve::Error>(())
+    /// ```
+    pub fn set_priority(
+        &mut self,
+        owner: ConstraintId,
+        priority: crate::priority::Priority,
+    ) -> usize {
+        let mut changed = 0;
+        for rb in self.residuals.iter_mut().filter(|rb| rb.owner == owner) {
+            rb.priority = priority;
+            changed += 1;
+        }
+        changed
+    }
+
+    /// The priority tier of `owner`'s residual blocks (0 when it owns none).
+    pub fn priority(&self, owner: ConstraintId) -> crate::priority::Priority {
+        self.residuals
+            .iter()
+            .find(|rb| rb.owner == owner)
+            .map_or(0, |rb| rb.priority)
+    }
+
+    /// Whether any residual block may be relaxed (has a priority above 0).
+    pub fn has_priorities(&self) -> bool {
+        self.residuals.iter().any(|rb| rb.priority > 0)
     }
 }
 

@@ -16,8 +16,9 @@ pub enum Status {
     /// Every residual was already within tolerance and no substitution had to be imposed;
     /// nothing was moved.
     AlreadySatisfied,
-    /// Soft mode: the constraints could not all be met; the least-squares compromise was
-    /// written back and [`SolveReport::conflicting`] lists the constraints left above tolerance.
+    /// The constraints could not all be met; the least-squares compromise was written back and
+    /// [`SolveReport::conflicting`] lists the constraints left above tolerance: the soft mode,
+    /// or constraints of a lower priority relaxed ([`SolveReport::priorities`] says which).
     Relaxed,
 }
 
@@ -38,6 +39,9 @@ pub enum SolverKind {
     /// Levenberg–Marquardt on Σ g_i² + ε‖z − z₀‖²_W (the soft mode, or a rescue before a
     /// Newton polish).
     LevenbergMarquardt,
+    /// Priority tiers in order, each by least squares within the tiers before it
+    /// ([`crate::priority`]).
+    Prioritized,
 }
 
 /// Why the solve took its path: the selection's decision, typed (the report's `reason` adds the
@@ -65,6 +69,22 @@ pub enum Selection {
     Forced,
     /// A warm-started Newton step of a drag session.
     WarmStart,
+    /// The whole set could not be met and constraints have priorities: tiers in order
+    /// ([`crate::priority`]).
+    Prioritized,
+}
+
+/// How one priority tier came out of a prioritized solve ([`crate::priority`]).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct TierOutcome {
+    /// The tier (0 required; higher tiers were relaxed first).
+    pub priority: crate::priority::Priority,
+    /// Whether every constraint of the tier is within tolerance.
+    pub met: bool,
+    /// The tier's constraints left above tolerance (empty when met).
+    pub relaxed: Vec<ConstraintId>,
+    /// max |g| over the tier's rows at the answer.
+    pub max_residual: f64,
 }
 
 /// The largest absolute residual of one constraint (over all rows it owns).
@@ -123,6 +143,10 @@ pub struct SolveReport {
     /// Constraints with inconsistent dependent rows (always empty for the linear solver, which
     /// fails on them; kept for the soft solvers to come).
     pub conflicting: Vec<ConstraintId>,
+    /// Per priority tier, in order, whether it was met (only when the prioritized path ran:
+    /// the whole set could not be met and some constraints have priorities; empty otherwise).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub priorities: Vec<TierOutcome>,
     /// Wall-clock time of the solve.
     #[serde(serialize_with = "seconds")]
     pub elapsed: Duration,

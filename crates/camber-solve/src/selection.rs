@@ -132,6 +132,7 @@ impl Start {
             dof: self.dof,
             redundant: self.redundant.clone(),
             conflicting: Vec::new(),
+            priorities: Vec::new(),
             elapsed: self.clock.elapsed(),
         }
     }
@@ -318,11 +319,32 @@ fn soft_path(
 /// # Ok::<(), camber_solve::Error>(())
 /// ```
 ///
+/// When the whole set cannot be met ([`Error::Conflicting`] or [`Error::NotSolved`]) and some
+/// constraints have a priority above 0 ([`Problem::set_priority`]), the tiers are met in order
+/// instead, each as well as the tiers before it allow ([`crate::priority`]); the report then
+/// has [`Status::Relaxed`] and names the relaxed constraints. Not with a forced solver or the
+/// soft mode, which answer for the whole set.
+///
 /// # Errors
 /// [`Error::Conflicting`] naming the constraints that cannot be met together (without soft
-/// mode); [`Error::SolverUnavailable`] when a forced solver is not built; the errors of the
-/// forced solver otherwise. The problem's values are unchanged on every error.
+/// mode; with priorities, the required ones); [`Error::SolverUnavailable`] when a forced solver
+/// is not built; the errors of the forced solver otherwise. The problem's values are unchanged
+/// on every error.
 pub fn solve(problem: &mut Problem, options: &Options) -> Result<SolveReport> {
+    match solve_whole(problem, options) {
+        Err(Error::Conflicting { .. } | Error::NotSolved { .. })
+            if problem.has_priorities()
+                && options.nonlinear.force.is_none()
+                && !options.nonlinear.soft =>
+        {
+            crate::priority::solve(problem, options)
+        }
+        outcome => outcome,
+    }
+}
+
+/// [`solve`] for the whole set of constraints, priorities aside.
+fn solve_whole(problem: &mut Problem, options: &Options) -> Result<SolveReport> {
     let (start, satisfied) = Start::new(problem, options)?;
     if satisfied {
         return start.already_satisfied(problem);
@@ -634,6 +656,7 @@ pub fn solve_newton_from(
         dof: n.saturating_sub(problem.num_rows()),
         redundant: Vec::new(),
         conflicting: Vec::new(),
+        priorities: Vec::new(),
         elapsed: clock.elapsed(),
     })
 }

@@ -202,6 +202,15 @@ impl SparseMatrix {
         m
     }
 
+    /// Every value multiplied by `factor` (same pattern).
+    pub(crate) fn scaled(&self, factor: f64) -> Self {
+        let mut out = self.clone();
+        for v in &mut out.values {
+            *v *= factor;
+        }
+        out
+    }
+
     /// The rows listed in `rows`, in that order, as a new matrix (same columns).
     pub fn select_rows(&self, rows: &[usize]) -> Self {
         let mut row_ptr = vec![0];

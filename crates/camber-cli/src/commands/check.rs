@@ -59,6 +59,7 @@ pub fn check_json(sketch: &Sketch) -> Result<String> {
                 "component": serde_json::to_value(&a.component)?,
                 "analysis": serde_json::to_value(&a.analysis)?,
                 "free": serde_json::to_value(&a.freedom)?,
+                "free_parameters": serde_json::to_value(&a.free_parameters)?,
             }))
         })
         .collect::<serde_json::Result<_>>()?;
@@ -69,12 +70,24 @@ pub fn check_json(sketch: &Sketch) -> Result<String> {
     Ok(serde_json::to_string_pretty(&doc)?)
 }
 
-/// What can still move, entity by entity: `entity 3 (line): point 1; entity 5 (circle):
-/// radius`, or `nothing (fully constrained)`.
-fn describe_freedom(sketch: &Sketch, freedom: &[camber_sketch::EntityFreedom]) -> String {
-    if freedom.is_empty() {
+/// What can still move, entity by entity, then the contact parameters that can slide:
+/// `entity 3 (line): point 1; entity 5 (circle): radius; constraint 7 (tangent_to_circle):
+/// parameter 0`, or `nothing (fully constrained)`.
+fn describe_freedom(sketch: &Sketch, analysis: &camber_sketch::ComponentAnalysis) -> String {
+    let (freedom, parameters) = (&analysis.freedom, &analysis.free_parameters);
+    if freedom.is_empty() && parameters.is_empty() {
         return "nothing (fully constrained)".to_owned();
     }
+    let parameters = parameters.iter().map(|p| {
+        let kind = sketch
+            .constraint(p.constraint)
+            .map(|c| c.tag())
+            .unwrap_or("constraint");
+        format!(
+            "constraint {} ({kind}): parameter {}",
+            p.constraint.0, p.parameter
+        )
+    });
     freedom
         .iter()
         .map(|f| {
@@ -97,6 +110,7 @@ fn describe_freedom(sketch: &Sketch, freedom: &[camber_sketch::EntityFreedom]) -
             }
             format!("entity {} ({kind}): {}", f.entity.0, parts.join(", "))
         })
+        .chain(parameters)
         .collect::<Vec<_>>()
         .join("; ")
 }
@@ -138,7 +152,7 @@ pub fn check(sketch: &Sketch) -> Result<String> {
             "  conflicting: {}",
             describe_constraints(sketch, &d.conflicting)
         ));
-        lines.push(format!("  free: {}", describe_freedom(sketch, &a.freedom)));
+        lines.push(format!("  free: {}", describe_freedom(sketch, a)));
     }
     if lines.is_empty() {
         lines.push("empty sketch".to_owned());

@@ -107,6 +107,27 @@ pub fn format_report(report: &SketchReport) -> String {
             r.dof,
             r.elapsed.as_secs_f64() * 1e3
         ));
+        // Priority tiers, when some had to give way: never silently.
+        for tier in &r.priorities {
+            let what = if tier.met {
+                "met".to_owned()
+            } else {
+                let named: Vec<String> = tier
+                    .relaxed
+                    .iter()
+                    .map(|id| {
+                        let g = r
+                            .residuals
+                            .iter()
+                            .find(|g| g.constraint == *id)
+                            .map_or(f64::NAN, |g| g.max_abs);
+                        format!("constraint {} (residual {g:.3e})", id.0)
+                    })
+                    .collect();
+                format!("relaxed {}", named.join(", "))
+            };
+            lines.push(format!("  priority {}: {what}", tier.priority));
+        }
     }
     if lines.is_empty() {
         lines.push("nothing to solve (no constraints)".to_owned());

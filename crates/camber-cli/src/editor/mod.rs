@@ -646,6 +646,7 @@ pub fn analyse(sketch: &Sketch) -> Result<(Vec<ComponentJson>, BTreeSet<Constrai
                     redundant: ConstraintRef::list(sketch, &d.redundant),
                     conflicting: ConstraintRef::list(sketch, &d.conflicting),
                     free: a.freedom.clone(),
+                    free_parameters: a.free_parameters.clone(),
                 },
             );
         }

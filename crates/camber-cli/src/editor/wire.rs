@@ -191,6 +191,8 @@ pub struct AnalysisJson {
     pub conflicting: Vec<ConstraintRef>,
     /// What can still move, entity by entity (entities not listed are fully determined).
     pub free: Vec<camber_sketch::EntityFreedom>,
+    /// Contact parameters that can still slide.
+    pub free_parameters: Vec<camber_sketch::ParameterFreedom>,
 }
 
 /// One connected component: its ids, its DOF analysis, its largest residual now.

@@ -108,3 +108,49 @@ pub(crate) fn curve_slots(
     let slots = (0..e.points().len()).map(|j| Slot::Point(id, j)).collect();
     Ok((basis, slots))
 }
+
+/// The pieces of a constraint that may be relaxed (a priority above 0), every binding written
+/// as rows instead: a fixed point becomes P − P_now = 0, a fixed circle's radius r − r_now = 0,
+/// an eliminated tangent its row form. A binding cannot give way; rows can.
+///
+/// # Errors
+/// [`crate::Error::UnknownEntity`] for an entity the sketch does not hold.
+pub(crate) fn as_rows(
+    lookup: &dyn crate::lookup::EntityLookup,
+    pieces: Pieces,
+) -> crate::Result<Pieces> {
+    let mut out = Pieces::new();
+    let fixed_point = |e: EntityId, j: usize, at: nalgebra::Point2<f64>| {
+        let mut terms = ETerms::new();
+        terms.push((e, j, 1.0));
+        Piece::Combination {
+            name: "fixed",
+            terms,
+            target: [at.x, at.y],
+        }
+    };
+    for piece in pieces {
+        match piece {
+            Piece::FixPoint(e, j) => {
+                let at = lookup.lookup(e)?.points()[j];
+                out.push(fixed_point(e, j, at));
+            }
+            Piece::FixEntity(e) => {
+                let entity = lookup.lookup(e)?;
+                for (j, at) in entity.points().iter().enumerate() {
+                    out.push(fixed_point(e, j, *at));
+                }
+                if let crate::Entity::Circle { radius, .. } = entity {
+                    out.push(Piece::General {
+                        residual: Arc::new(crate::constraints::radius::RadiusValue::new(*radius)),
+                        slots: vec![Slot::Radius(e)],
+                        check: None,
+                    });
+                }
+            }
+            Piece::Eliminate { fallback, .. } => out.push(*fallback),
+            other => out.push(other),
+        }
+    }
+    Ok(out)
+}

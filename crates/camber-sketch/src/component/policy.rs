@@ -61,7 +61,8 @@ impl ComponentProblem {
     /// One solve on the path the component calls for, with the tangent orientations checked;
     /// the problem holds the result.
     pub(crate) fn solve_once(&mut self, options: &Options) -> Result<SolveReport> {
-        let report = if self.nonlinear.is_some() {
+        // Priorities need the selection's fallback to the tiers, affine or not.
+        let report = if self.nonlinear.is_some() || self.problem.has_priorities() {
             camber_solve::solve(&mut self.problem, options)?
         } else {
             match solve_linear(&mut self.problem, options) {

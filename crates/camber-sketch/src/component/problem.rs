@@ -40,6 +40,16 @@ pub struct EntityFreedom {
     pub scalars: Vec<usize>,
 }
 
+/// A free parameter of a constraint (a contact parameter, say) that can still change with the
+/// component's constraints held (to first order): the contact can slide.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+pub struct ParameterFreedom {
+    /// The constraint owning the parameter.
+    pub constraint: ConstraintId,
+    /// Which of its free parameters (0 for the first).
+    pub parameter: usize,
+}
+
 #[derive(Debug, Clone)]
 struct EntityBlocks {
     points: Vec<BlockId>,
@@ -335,11 +345,13 @@ fn reads_other_free(piece: &Piece) -> bool {
 }
 
 /// Builds the problem of `component` from its constraints' pieces, with the rows pinning
-/// `pin` (if any) at its current position last, owned by [`DRAG_CONSTRAINT`].
+/// `pin` (if any) at its current position last, owned by [`DRAG_CONSTRAINT`]. The coincidences
+/// of `relaxable` constraints (a priority above 0) stay rows: a merge could not give way.
 pub(crate) fn build(
     lookup: &dyn EntityLookup,
     component: &Component,
     compiled: &[(ConstraintId, super::piece::Pieces)],
+    relaxable: &[ConstraintId],
     pin: Option<PointRef>,
 ) -> Result<ComponentProblem> {
     let mut cp = ComponentProblem {
@@ -487,8 +499,13 @@ pub(crate) fn build(
     }
 
     // Coincident points: one set of unknowns per class instead of two rows per pair.
-    let lists: Vec<(ConstraintId, &[Piece])> =
-        compiled.iter().map(|(id, p)| (*id, p.as_slice())).collect();
+    let lists: Vec<(ConstraintId, &[Piece])> = compiled
+        .iter()
+        .map(|(id, p)| {
+            let pieces: &[Piece] = if relaxable.contains(id) { &[] } else { p };
+            (*id, pieces)
+        })
+        .collect();
     let merges = super::merge::plan(
         &lists,
         |e, j| cp.point_block(e, j),
@@ -627,6 +644,37 @@ impl ComponentProblem {
                     entity: *id,
                     points,
                     scalars,
+                });
+            }
+        }
+        Ok(out)
+    }
+
+    /// Which constraints' free parameters can still change, given the free columns of the DOF
+    /// analysis (as [`ComponentProblem::freedom`] for entities), in constraint order.
+    ///
+    /// # Errors
+    /// Building the reduced map fails (it does not once the problem was analysed).
+    pub(crate) fn parameter_freedom(
+        &self,
+        free_columns: &[usize],
+    ) -> Result<Vec<ParameterFreedom>> {
+        let map = self.problem.reduced_map()?;
+        let mut out = Vec::new();
+        let mut seen: Vec<ConstraintId> = Vec::new();
+        for (c, b) in &self.free {
+            let parameter = seen.iter().filter(|o| *o == c).count();
+            seen.push(*c);
+            let u = self.problem.unknown(*b, 0)?.index();
+            if map
+                .row(u)
+                .0
+                .iter()
+                .any(|(col, a)| *a != 0.0 && free_columns.contains(col))
+            {
+                out.push(ParameterFreedom {
+                    constraint: *c,
+                    parameter,
                 });
             }
         }

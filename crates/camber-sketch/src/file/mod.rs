@@ -16,7 +16,8 @@
 //!
 //! Each constraint kind's file form is its own struct's serde form under its tag
 //! ([`crate::constraints`]): the fields are named as in Rust, so a new kind needs nothing here.
-//! Entities have a file form of their own (private here).
+//! Entities have a file form of their own (private here). Any constraint may carry
+//! `"priority": P` (0–255; absent means 0, required): see [`Sketch::set_priority`].
 //!
 //! Loading ([`from_json`], [`from_json_with`]) runs in three stages, each reporting its own
 //! failures: JSON syntax and numbers (`1e999` is out of range, so no non-finite value gets in);
@@ -32,6 +33,7 @@
 use std::collections::BTreeMap;
 use std::sync::Arc;
 
+use camber_solve::Priority;
 use serde_json::Value;
 
 use crate::constraints::custom::{Arg, Custom};
@@ -293,12 +295,22 @@ pub fn from_json_with(
                 source,
             })?;
     }
-    for (i, value) in raw.constraints.into_iter().enumerate() {
+    for (i, mut value) in raw.constraints.into_iter().enumerate() {
+        let priority = load_priority(i, &mut value)?;
         let (id, constraint) = load_constraint(i, value, registry)?;
         let kind = constraint.tag().to_owned();
         sketch
             .add_constraint_with_id(ConstraintId(id), constraint)
-            .map_err(|source| FileError::Constraint { id, kind, source })?;
+            .map_err(|source| FileError::Constraint {
+                id,
+                kind: kind.clone(),
+                source,
+            })?;
+        if priority > 0 {
+            sketch
+                .set_priority(ConstraintId(id), priority)
+                .map_err(|source| FileError::Constraint { id, kind, source })?;
+        }
     }
     Ok(sketch)
 }
@@ -420,6 +432,25 @@ fn load_entity(i: usize, mut value: Value) -> std::result::Result<RawEntity, Fil
     })
 }
 
+/// A constraint's optional `"priority"` (0–255, 0 when absent), taken out of its object.
+fn load_priority(i: usize, value: &mut Value) -> std::result::Result<Priority, FileError> {
+    let Value::Object(map) = value else {
+        return Ok(0);
+    };
+    match map.remove("priority") {
+        None => Ok(0),
+        Some(v) => v
+            .as_u64()
+            .and_then(|p| Priority::try_from(p).ok())
+            .ok_or_else(|| FileError::Shape {
+                path: format!("constraints[{i}].priority"),
+                message: format!(
+                    "expected a priority tier, an integer from 0 (required) to 255, found {v}"
+                ),
+            }),
+    }
+}
+
 /// One constraint of a file: its id, and the constraint in its kind's form (a custom one
 /// decoded through the registry). `i` is its place in the file, for error paths.
 fn load_constraint(
@@ -532,9 +563,14 @@ pub fn to_json(sketch: &Sketch) -> std::result::Result<String, FileError> {
         let body = c.save().map_err(|e| FileError::Syntax {
             message: e.to_string(),
         })?;
-        // {"id": N, "kind": …, …}: the kind's own form behind the id.
+        // {"id": N, "priority": P, "kind": …, …}: the kind's own form behind the id (and the
+        // priority, when it is not the default 0).
+        let priority = match sketch.priority(id) {
+            0 => String::new(),
+            p => format!("\"priority\":{p},"),
+        };
         constraints.push(format!(
-            "{{\"id\":{},{}",
+            "{{\"id\":{},{priority}{}",
             id.0,
             body.trim_start_matches('{')
         ));
