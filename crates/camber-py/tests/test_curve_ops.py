@@ -272,3 +272,18 @@ def test_bad_input_raises_camber_errors_with_the_value():
         c.parameter_at_length(100.0)
     with pytest.raises(camber.GeometryError):
         camber.interpolate([[0, 0], [0, 0], [1, 1]])  # coincident data points
+
+
+def test_nurbs_knot_removal_and_natural_extension_stay_on_the_circle():
+    arc = camber.NurbsCurve.circular_arc([0, 0], 2.0, 0.0, 1.2)
+    busy = arc.insert_knot(0.3, 1)
+    back, removed, bound = busy.remove_knot(0.3, 1, 1e-9)
+    assert removed == 1 and bound < 1e-9
+    assert len(back.control_points) == len(arc.control_points)
+    u = np.linspace(*arc.domain, 40)
+    np.testing.assert_allclose(back.evaluate(u), arc.evaluate(u), atol=1e-9)
+    # The rational piece continued past its end is the same conic: still radius 2.
+    a, b = arc.domain
+    longer = arc.extrapolated("end", b + 0.2 * (b - a))
+    radii = np.linalg.norm(longer.evaluate(np.linspace(*longer.domain, 60)), axis=1)
+    np.testing.assert_allclose(radii, 2.0, atol=1e-10)
