@@ -287,3 +287,27 @@ def test_nurbs_knot_removal_and_natural_extension_stay_on_the_circle():
     longer = arc.extrapolated("end", b + 0.2 * (b - a))
     radii = np.linalg.norm(longer.evaluate(np.linspace(*longer.domain, 60)), axis=1)
     np.testing.assert_allclose(radii, 2.0, atol=1e-10)
+
+
+def test_long_operations_release_the_gil():
+    import threading
+
+    t = np.linspace(0, 40 * np.pi, 20_000)
+    wave = np.column_stack([t, np.sin(t)])
+    started, done = threading.Event(), threading.Event()
+    result = {}
+
+    def work():
+        started.set()
+        result["fit"] = camber.fit_to_tolerance(wave, 3, 1e-7)  # about half a second
+        done.set()
+
+    worker = threading.Thread(target=work)
+    worker.start()
+    started.wait()
+    ticks = 0
+    while not done.is_set():
+        ticks += 1  # Python runs here only while the fit has let the GIL go
+    worker.join()
+    assert result["fit"][2] <= 1e-7
+    assert ticks > 1000
