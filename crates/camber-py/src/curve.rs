@@ -130,7 +130,7 @@ where
 }
 
 /// A scalar function of u over many parameters (curvatures).
-fn scalar_map(
+pub(crate) fn scalar_map(
     py: Python<'_>,
     u: &Bound<'_, PyAny>,
     f: impl Fn(f64) -> Result<f64, camber_geom::Error> + Send + Sync,
@@ -383,6 +383,85 @@ impl Curve {
             py.detach(|| distance_to_circle(c, &circle))
                 .map_err(geometry)?,
         )
+    }
+
+    /// The arc length over the whole domain, to an absolute `tolerance` (length units;
+    /// adaptive Gauss–Legendre quadrature split at the breakpoints).
+    #[pyo3(signature = (tolerance = 1e-10))]
+    fn arc_length(&self, py: Python<'_>, tolerance: f64) -> PyResult<f64> {
+        crate::curve_ops::length(py, &self.inner, None, tolerance)
+    }
+
+    /// The arc length between the parameters u0 ≤ u1.
+    #[pyo3(signature = (u0, u1, tolerance = 1e-10))]
+    fn arc_length_between(
+        &self,
+        py: Python<'_>,
+        u0: f64,
+        u1: f64,
+        tolerance: f64,
+    ) -> PyResult<f64> {
+        crate::curve_ops::length(py, &self.inner, Some((u0, u1)), tolerance)
+    }
+
+    /// The parameter at arc length `s` from the start (0 ≤ s ≤ length), solved to
+    /// `tolerance` in length: a float or an array for an array of lengths.
+    #[pyo3(signature = (s, tolerance = 1e-10))]
+    fn parameter_at_length(
+        &self,
+        py: Python<'_>,
+        s: &Bound<'_, PyAny>,
+        tolerance: f64,
+    ) -> PyResult<Py<PyAny>> {
+        crate::curve_ops::parameter_at_length(py, &self.inner, s, tolerance)
+    }
+
+    /// The arc-length parameterization u(s) within `tolerance` (length units), as an
+    /// `ArcLengthMap` (fast to evaluate at many lengths).
+    #[pyo3(signature = (tolerance = 1e-8))]
+    fn arc_length_map(
+        &self,
+        py: Python<'_>,
+        tolerance: f64,
+    ) -> PyResult<crate::curve_ops::ArcLengthMap> {
+        crate::curve_ops::arc_length_map(py, &self.inner, tolerance)
+    }
+
+    /// Every intersection with another curve of the same dimension, in order along this one:
+    /// a list of dicts {parameter_a, parameter_b, point_a, point_b, distance, tangential}
+    /// (a tangential one is a touch). Points closer than `tolerance` coincide; raises
+    /// `GeometryError` when the curves overlap along a stretch (more than `max_candidates`
+    /// candidate pairs).
+    #[pyo3(signature = (other, tolerance = 1e-9, max_candidates = 20_000))]
+    fn intersect_curve<'py>(
+        &self,
+        py: Python<'py>,
+        other: PyRef<'py, Curve>,
+        tolerance: f64,
+        max_candidates: usize,
+    ) -> PyResult<Vec<Bound<'py, pyo3::types::PyDict>>> {
+        crate::curve_ops::intersect(py, &self.inner, &other.inner, tolerance, max_candidates)
+    }
+
+    /// The closest pair of points of this curve and another of the same dimension: a dict
+    /// {parameter_a, parameter_b, point_a, point_b, distance, tangential}.
+    #[pyo3(signature = (other, tolerance = 1e-9, max_candidates = 20_000))]
+    fn distance_to_curve<'py>(
+        &self,
+        py: Python<'py>,
+        other: PyRef<'py, Curve>,
+        tolerance: f64,
+        max_candidates: usize,
+    ) -> PyResult<Bound<'py, pyo3::types::PyDict>> {
+        crate::curve_ops::distance(py, &self.inner, &other.inner, tolerance, max_candidates)
+    }
+
+    /// The offset of a planar curve at signed `distance` (positive to the left of the
+    /// direction of travel), approximated by a cubic B-spline on [0, 1] within `tolerance`:
+    /// (BSplineCurve, max_error).
+    #[pyo3(signature = (distance, tolerance = 1e-6))]
+    fn offset(&self, py: Python<'_>, distance: f64, tolerance: f64) -> PyResult<(Py<PyAny>, f64)> {
+        crate::curve_ops::offset(py, &self.inner, distance, tolerance)
     }
 
     /// The same curve traversed backwards, of the same kind.

@@ -1,6 +1,7 @@
 //! The four curve classes (subclasses of `Curve`): construction from numpy arrays, their
 //! properties, and each kind's operations (split, knot insertion, refinement, degree
-//! elevation, reparameterization, conversions). Every operation returns a new curve.
+//! elevation, reparameterization, conversions, extension, knot removal, degree reduction).
+//! Every operation returns a new curve.
 
 use camber_geom::{BSplineCurve, BezierCurve, HermiteCurve, KnotVector, NurbsCurve};
 use nalgebra::Point;
@@ -11,6 +12,7 @@ use serde::de::DeserializeOwned;
 
 use crate::arrays::{columns, points, points_array, vector};
 use crate::curve::{AnyCurve, Curve};
+use crate::curve_ops::{continuity as ext_continuity, curve_end};
 use crate::errors::{geometry, input};
 
 /// The Python class name of a curve's kind.
@@ -182,6 +184,58 @@ impl BezierCurve_ {
         }
     }
 
+    /// The natural extension: the same polynomial pieces continued (or cut back) so that the
+    /// domain reaches `t` at `end` (`"start"` or `"end"`); C(u) is unchanged on the old domain.
+    fn extrapolated(slf: PyRef<'_, Self>, end: &str, t: f64) -> PyResult<Py<PyAny>> {
+        let py = slf.py();
+        let end = curve_end(end)?;
+        by_dim!(&slf.as_super().inner, Bezier2, Bezier3, c =>
+            wrap(py, same!(c.extrapolated(end, t).map_err(geometry)?)))
+    }
+
+    /// The curve extended at `end` (`"start"` or `"end"`) by an arc of `length` (length
+    /// units): `"G1"` a straight piece along the end tangent, `"G2"` the end piece continued
+    /// naturally (found by arc length).
+    /// The result is a B-spline.
+    #[pyo3(signature = (end, length, continuity = "G2"))]
+    fn extended_by_length(
+        slf: PyRef<'_, Self>,
+        end: &str,
+        length: f64,
+        continuity: &str,
+    ) -> PyResult<Py<PyAny>> {
+        let py = slf.py();
+        let (end, how) = (curve_end(end)?, ext_continuity(continuity)?);
+        match &slf.as_super().inner {
+            AnyCurve::Bezier2(c) => wrap(
+                py,
+                AnyCurve::BSpline2(
+                    py.detach(|| c.extended_by_length(end, length, how))
+                        .map_err(geometry)?,
+                ),
+            ),
+            AnyCurve::Bezier3(c) => wrap(
+                py,
+                AnyCurve::BSpline3(
+                    py.detach(|| c.extended_by_length(end, length, how))
+                        .map_err(geometry)?,
+                ),
+            ),
+            _ => Err(input("internal: curve of another kind")),
+        }
+    }
+
+    /// The best curve of one degree less (least squares on the control points): (curve,
+    /// error_bound), error_bound bounding max_u |C(u) − C̃(u)| (0 up to rounding when the
+    /// curve was degree-elevated).
+    fn reduce_degree(slf: PyRef<'_, Self>) -> PyResult<(Py<PyAny>, f64)> {
+        let py = slf.py();
+        by_dim!(&slf.as_super().inner, Bezier2, Bezier3, c => {
+            let r = c.reduce_degree().map_err(geometry)?;
+            Ok((wrap(py, same!(r.curve))?, r.error_bound))
+        })
+    }
+
     /// The same cubic as a Hermite curve (end points and end tangents).
     fn to_hermite(slf: PyRef<'_, Self>) -> PyResult<Py<PyAny>> {
         let py = slf.py();
@@ -327,6 +381,73 @@ impl BSplineCurve_ {
     fn clamped(slf: PyRef<'_, Self>) -> PyResult<Py<PyAny>> {
         let py = slf.py();
         by_dim!(&slf.as_super().inner, BSpline2, BSpline3, c => wrap(py, same!(c.clamped())))
+    }
+
+    /// The natural extension: the same polynomial pieces continued (or cut back) so that the
+    /// domain reaches `t` at `end` (`"start"` or `"end"`); C(u) is unchanged on the old domain.
+    fn extrapolated(slf: PyRef<'_, Self>, end: &str, t: f64) -> PyResult<Py<PyAny>> {
+        let py = slf.py();
+        let end = curve_end(end)?;
+        by_dim!(&slf.as_super().inner, BSpline2, BSpline3, c =>
+            wrap(py, same!(c.extrapolated(end, t).map_err(geometry)?)))
+    }
+
+    /// The curve extended at `end` (`"start"` or `"end"`) by an arc of `length` (length
+    /// units): `"G1"` a straight piece along the end tangent, `"G2"` the end piece continued
+    /// naturally (found by arc length).
+    #[pyo3(signature = (end, length, continuity = "G2"))]
+    fn extended_by_length(
+        slf: PyRef<'_, Self>,
+        end: &str,
+        length: f64,
+        continuity: &str,
+    ) -> PyResult<Py<PyAny>> {
+        let py = slf.py();
+        let (end, how) = (curve_end(end)?, ext_continuity(continuity)?);
+        by_dim!(&slf.as_super().inner, BSpline2, BSpline3, c => wrap(
+            py,
+            same!(py.detach(|| c.extended_by_length(end, length, how)).map_err(geometry)?)
+        ))
+    }
+
+    /// Removes the knot u up to `times` times while the curve moves by at most `tolerance`
+    /// (length units): (curve, removed, error_bound); removed is 0 when no removal fits.
+    #[pyo3(signature = (u, times = 1, tolerance = 1e-9))]
+    fn remove_knot(
+        slf: PyRef<'_, Self>,
+        u: f64,
+        times: usize,
+        tolerance: f64,
+    ) -> PyResult<(Py<PyAny>, usize, f64)> {
+        let py = slf.py();
+        by_dim!(&slf.as_super().inner, BSpline2, BSpline3, c => {
+            let r = py.detach(|| c.remove_knot(u, times, tolerance)).map_err(geometry)?;
+            Ok((wrap(py, same!(r.curve))?, r.removed, r.error_bound))
+        })
+    }
+
+    /// The curve of one degree less, its pieces reduced and its knots removed as far as the
+    /// original continuity and `tolerance` (length units) allow: (curve, error_bound). The
+    /// bound holds everywhere; it exceeds the tolerance only when the pieces themselves
+    /// cannot be reduced within it (check it).
+    #[pyo3(signature = (tolerance = 1e-9))]
+    fn reduce_degree(slf: PyRef<'_, Self>, tolerance: f64) -> PyResult<(Py<PyAny>, f64)> {
+        let py = slf.py();
+        by_dim!(&slf.as_super().inner, BSpline2, BSpline3, c => {
+            let r = py.detach(|| c.reduce_degree(tolerance)).map_err(geometry)?;
+            Ok((wrap(py, same!(r.curve))?, r.error_bound))
+        })
+    }
+
+    /// Removes every removable interior knot while the curve moves by at most `tolerance`
+    /// in all: (curve, removed, error_bound).
+    #[pyo3(signature = (tolerance = 1e-9))]
+    fn remove_knots(slf: PyRef<'_, Self>, tolerance: f64) -> PyResult<(Py<PyAny>, usize, f64)> {
+        let py = slf.py();
+        by_dim!(&slf.as_super().inner, BSpline2, BSpline3, c => {
+            let r = py.detach(|| c.remove_knots(tolerance)).map_err(geometry)?;
+            Ok((wrap(py, same!(r.curve))?, r.removed, r.error_bound))
+        })
     }
 
     /// The Bézier pieces between distinct knots: a list of (a, b, BezierCurve).
@@ -491,6 +612,62 @@ impl NurbsCurve_ {
     fn clamped(slf: PyRef<'_, Self>) -> PyResult<Py<PyAny>> {
         let py = slf.py();
         by_dim!(&slf.as_super().inner, Nurbs2, Nurbs3, c => wrap(py, same!(c.clamped())))
+    }
+
+    /// The natural extension: the same polynomial pieces continued (or cut back) so that the
+    /// domain reaches `t` at `end` (`"start"` or `"end"`); C(u) is unchanged on the old domain.
+    fn extrapolated(slf: PyRef<'_, Self>, end: &str, t: f64) -> PyResult<Py<PyAny>> {
+        let py = slf.py();
+        let end = curve_end(end)?;
+        by_dim!(&slf.as_super().inner, Nurbs2, Nurbs3, c =>
+            wrap(py, same!(c.extrapolated(end, t).map_err(geometry)?)))
+    }
+
+    /// The curve extended at `end` (`"start"` or `"end"`) by an arc of `length` (length
+    /// units): `"G1"` a straight piece along the end tangent, `"G2"` the end piece continued
+    /// naturally (found by arc length).
+    #[pyo3(signature = (end, length, continuity = "G2"))]
+    fn extended_by_length(
+        slf: PyRef<'_, Self>,
+        end: &str,
+        length: f64,
+        continuity: &str,
+    ) -> PyResult<Py<PyAny>> {
+        let py = slf.py();
+        let (end, how) = (curve_end(end)?, ext_continuity(continuity)?);
+        by_dim!(&slf.as_super().inner, Nurbs2, Nurbs3, c => wrap(
+            py,
+            same!(py.detach(|| c.extended_by_length(end, length, how)).map_err(geometry)?)
+        ))
+    }
+
+    /// Removes the knot u up to `times` times while the curve moves by at most `tolerance`
+    /// (length units): (curve, removed, error_bound); removed is 0 when no removal fits.
+    #[pyo3(signature = (u, times = 1, tolerance = 1e-9))]
+    fn remove_knot(
+        slf: PyRef<'_, Self>,
+        u: f64,
+        times: usize,
+        tolerance: f64,
+    ) -> PyResult<(Py<PyAny>, usize, f64)> {
+        let py = slf.py();
+        by_dim!(&slf.as_super().inner, Nurbs2, Nurbs3, c => {
+            let r = py.detach(|| c.remove_knot(u, times, tolerance)).map_err(geometry)?;
+            Ok((wrap(py, same!(r.curve))?, r.removed, r.error_bound))
+        })
+    }
+
+    /// The curve of one degree less, its pieces reduced and its knots removed as far as the
+    /// original continuity and `tolerance` (length units) allow: (curve, error_bound). The
+    /// bound holds everywhere; it exceeds the tolerance only when the pieces themselves
+    /// cannot be reduced within it (check it).
+    #[pyo3(signature = (tolerance = 1e-9))]
+    fn reduce_degree(slf: PyRef<'_, Self>, tolerance: f64) -> PyResult<(Py<PyAny>, f64)> {
+        let py = slf.py();
+        by_dim!(&slf.as_super().inner, Nurbs2, Nurbs3, c => {
+            let r = py.detach(|| c.reduce_degree(tolerance)).map_err(geometry)?;
+            Ok((wrap(py, same!(r.curve))?, r.error_bound))
+        })
     }
 
     /// The rational Bézier pieces between distinct knots: a list of (a, b, NurbsCurve).

@@ -26,7 +26,7 @@
 use std::any::TypeId;
 use std::sync::Mutex;
 
-use camber_sketch::{Arg, Custom};
+use camber_sketch::{Arg, ArgKind, Args, Custom, CustomResidual};
 use camber_solve::scalar::{cst, re};
 use camber_solve::{Residual, Scalar};
 use num_dual::{Dual64, DualSVec64};
@@ -250,8 +250,8 @@ impl Residual for PyResidual {
 }
 
 /// One argument of a custom constraint from Python: an int (a point entity) or its file form
-/// (`{"point": ref}`, `{"radius": circle}`, `{"free_of": [constraint, index]}`, `{"param":
-/// start}`).
+/// (`{"point": ref}`, `{"radius": circle}`, `{"curve": curve}`, `{"free_of": [constraint,
+/// index]}`, `{"param": start}`).
 fn arg(obj: &Bound<'_, PyAny>) -> PyResult<Arg> {
     if let Ok(id) = obj.extract::<u64>() {
         return Ok(Arg::Point(camber_sketch::PointRef::Point(
@@ -262,7 +262,36 @@ fn arg(obj: &Bound<'_, PyAny>) -> PyResult<Arg> {
         .map_err(|e| errors::SketchError::new_err(format!("invalid custom argument: {e}")))
 }
 
-/// A custom constraint calling `func` (see the module documentation).
+/// The custom residual of a constraint: the Python function over every block its arguments
+/// read, in order (a curve argument reads all its control points, x then y of each).
+#[derive(Debug)]
+struct PyCustom {
+    residual: PyResidual,
+    kinds: Vec<ArgKind>,
+}
+
+impl CustomResidual for PyCustom {
+    fn name(&self) -> &str {
+        &self.residual.name
+    }
+    fn dim(&self) -> usize {
+        self.residual.dim
+    }
+    fn arg_kinds(&self) -> Vec<ArgKind> {
+        self.kinds.clone()
+    }
+    fn eval<T: Scalar>(&self, args: &Args<'_, T>, out: &mut [T]) {
+        Residual::eval(&self.residual, args.blocks(), out);
+    }
+    fn is_affine(&self) -> bool {
+        self.residual.affine
+    }
+}
+
+/// A custom constraint calling `func` (see the module documentation). `func` receives the
+/// values of every argument in order, flattened: a point gives x, y; a radius, a free
+/// parameter or an own parameter one number; a curve (`{"curve": id}`) the coordinates of all
+/// its control points (x₀, y₀, x₁, y₁, …), its degree, knots and weights staying data.
 pub fn custom(
     func: Py<PyAny>,
     args: &[Bound<'_, PyAny>],
@@ -271,24 +300,22 @@ pub fn custom(
     affine: bool,
 ) -> PyResult<Custom> {
     let args: Vec<Arg> = args.iter().map(arg).collect::<PyResult<_>>()?;
-    let sizes = args
+    let kinds: Vec<ArgKind> = args.iter().map(Arg::kind).collect();
+    let sizes = kinds
         .iter()
-        .map(|a| match a {
-            Arg::Point(_) => Ok(2),
-            Arg::Radius(_) | Arg::FreeOf(..) | Arg::Param(_) => Ok(1),
-            Arg::Curve(_) => Err(errors::SketchError::new_err(
-                "custom constraints from Python read points and numbers (pass a curve's control points)",
-            )),
-        })
-        .collect::<PyResult<Vec<usize>>>()?;
-    Ok(Custom::plain(
-        PyResidual {
-            func,
-            name,
-            dim,
-            sizes,
-            affine,
-            cache: Mutex::new(None),
+        .map(|k| if *k == ArgKind::Point { 2 } else { 1 })
+        .collect();
+    Ok(Custom::with_args(
+        PyCustom {
+            residual: PyResidual {
+                func,
+                name,
+                dim,
+                sizes,
+                affine,
+                cache: Mutex::new(None),
+            },
+            kinds,
         },
         args,
     ))

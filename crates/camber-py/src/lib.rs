@@ -23,6 +23,7 @@ pub mod arrays;
 pub mod batch;
 pub mod curve;
 pub mod curve_kinds;
+pub mod curve_ops;
 pub mod custom;
 pub mod errors;
 pub mod json;
@@ -36,6 +37,7 @@ use pyo3::prelude::*;
 fn camber_native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     errors::register(m)?;
     curve_kinds::register(m)?;
+    curve_ops::register(m)?;
     sketch::register(m)?;
     m.add_function(wrap_pyfunction!(batch::solve_many, m)?)?;
     m.add_function(wrap_pyfunction!(eval_loop_seconds, m)?)?;

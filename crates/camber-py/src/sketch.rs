@@ -240,8 +240,10 @@ impl Sketch {
     /// Adds a custom constraint whose residual is the Python function `residual(x)`; returns
     /// its id. `args` lists what it reads, in order: an int (a point entity) or a file form
     /// (`{"point": ref}` / `{"control": [curve, i]}` wrapped as `{"point": {...}}`,
-    /// `{"radius": circle}`, `{"free_of": [constraint, index]}`, `{"param": start}`); `x` is
-    /// their values flattened (a point gives two). `residual` returns `dim` numbers and is
+    /// `{"radius": circle}`, `{"curve": curve}`, `{"free_of": [constraint, index]}`, `{"param":
+    /// start}`); `x` is their values flattened (a point gives two, a curve all its control
+    /// points' coordinates, x₀, y₀, x₁, …; see `camber.custom.curve_point` to evaluate it
+    /// inside the residual). `residual` returns `dim` numbers and is
     /// differentiated exactly with num-dual's dual numbers (see `camber.custom`). Declare
     /// `affine=True` only for a residual affine in its arguments: its component may then take
     /// the one-step linear path.

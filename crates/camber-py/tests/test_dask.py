@@ -5,7 +5,7 @@ import pytest
 
 distributed = pytest.importorskip("dask.distributed")
 
-from camber.sweep import diffuser_variants, solve_variant  # noqa: E402
+from camber.sweep import diffuser_variants, solve_chunk, solve_variant  # noqa: E402
 
 
 def test_sweep_on_a_local_cluster_matches_local_solves(sketches):
@@ -16,6 +16,9 @@ def test_sweep_on_a_local_cluster_matches_local_solves(sketches):
     ) as cluster, distributed.Client(cluster) as client:
         futures = client.map(solve_variant, [base] * len(variants), variants)
         rows = client.gather(futures)
+        # The chunked form of the docs (tasks of several variants) gives the same rows.
+        chunks = [variants[i : i + 5] for i in range(0, len(variants), 5)]
+        chunked = [r for part in client.gather(client.map(solve_chunk, [base] * 3, chunks)) for r in part]
     assert len(rows) == 12
     assert len({r["worker_pid"] for r in rows}) >= 1
     local = [solve_variant(base, v) for v in variants]
@@ -25,3 +28,7 @@ def test_sweep_on_a_local_cluster_matches_local_solves(sketches):
             assert got["max_residual"] < 1e-6
             assert got["contact_u"] == pytest.approx(want["contact_u"], abs=1e-9)
     assert sum(r["ok"] for r in rows) >= 10
+    for got, want in zip(chunked, rows):
+        assert got["ok"] == want["ok"]
+        if got["ok"]:
+            assert got["contact_u"] == pytest.approx(want["contact_u"], abs=1e-9)

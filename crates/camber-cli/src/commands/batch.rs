@@ -5,6 +5,11 @@
 //! `{"file": name, "ok": true, "report": {…}}` or `{"file": name, "ok": false, "error": "…"}`,
 //! printed in name order once all are done. The command fails (after printing every line) when
 //! any file failed.
+//!
+//! Everything a file costs runs on the pool: reading, parsing, solving, writing the solved
+//! sketch and turning its report into the JSON text of its line (a report lists every
+//! constraint's residual, tens of kilobytes for a large sketch); the calling thread only writes
+//! the finished lines.
 
 use std::path::{Path, PathBuf};
 
@@ -39,8 +44,9 @@ pub fn sketch_files(dir: &Path) -> Result<Vec<PathBuf>> {
     Ok(files)
 }
 
-/// Loads, solves (every component) and optionally writes one file: its JSON line.
-fn solve_one(path: &Path, output: Option<&Path>) -> Value {
+/// Loads, solves (every component) and optionally writes one file: whether it solved, and
+/// its JSON line as text.
+fn solve_one(path: &Path, output: Option<&Path>) -> (bool, String) {
     let name = path
         .file_name()
         .map(|n| n.to_string_lossy().into_owned())
@@ -54,10 +60,14 @@ fn solve_one(path: &Path, output: Option<&Path>) -> Value {
         }
         Ok(report)
     });
-    match outcome {
-        Ok(report) => json!({"file": name, "ok": true, "report": report}),
-        Err(e) => json!({"file": name, "ok": false, "error": format!("{e:#}")}),
-    }
+    let (ok, line): (bool, Value) = match outcome {
+        Ok(report) => (true, json!({"file": name, "ok": true, "report": report})),
+        Err(e) => (
+            false,
+            json!({"file": name, "ok": false, "error": format!("{e:#}")}),
+        ),
+    };
+    (ok, line.to_string())
 }
 
 /// Solves every file of the directory on `--jobs` threads and prints one line per file.
@@ -75,14 +85,11 @@ pub fn run(args: &BatchArgs) -> Result<()> {
         .build()
         .map_err(|e| anyhow!("cannot start {} threads: {e}", args.jobs.unwrap_or(0)))?;
     let output = args.output.as_deref();
-    let lines: Vec<Value> =
+    let lines: Vec<(bool, String)> =
         pool.install(|| files.par_iter().map(|f| solve_one(f, output)).collect());
-    let failed = lines
-        .iter()
-        .filter(|l| l["ok"] != Value::Bool(true))
-        .count();
-    for line in &lines {
-        crate::print_stdout(&line.to_string())?;
+    let failed = lines.iter().filter(|(ok, _)| !ok).count();
+    for (_, line) in &lines {
+        crate::print_stdout(line)?;
     }
     if failed > 0 {
         bail!("{failed} of {} sketch files failed", lines.len());

@@ -3,10 +3,13 @@
 Curves (Bézier, B-spline, NURBS, Hermite) from numpy arrays with vectorised evaluation,
 sketches with every constraint kind, solve reports with per-constraint residuals, the DOF
 analysis, drag sessions, iterative displacement, custom constraints differentiated exactly
-with dual numbers, and batch solving in parallel. See docs/python.md.
+with dual numbers, and batch solving in parallel. Curve operations: arc length and the
+arc-length map, extension, fitting (interpolate, approximate, fit_to_tolerance), knot
+removal, degree reduction, curve-curve intersection and distance, offsets. See docs/python.md.
 """
 
 from camber._native import (
+    ArcLengthMap,
     BezierCurve,
     BSplineCurve,
     CamberError,
@@ -20,13 +23,17 @@ from camber._native import (
     SketchError,
     SolveError,
     SurfaceError,
+    approximate,
     creased_face_case,
     deform_case_to_g1,
+    fit_to_tolerance,
+    interpolate,
     solve_many,
 )
 from camber.reports import SolveReport
 
 __all__ = [
+    "ArcLengthMap",
     "BezierCurve",
     "BSplineCurve",
     "CamberError",
@@ -41,7 +48,10 @@ __all__ = [
     "SolveError",
     "SolveReport",
     "SurfaceError",
+    "approximate",
     "creased_face_case",
     "deform_case_to_g1",
+    "fit_to_tolerance",
+    "interpolate",
     "solve_many",
 ]

@@ -63,3 +63,10 @@ def solve_variant(base_json, variant):
     row["contact_u"] = sketch.constraint(8)["u"]["free"]
     row["elapsed"] = report.elapsed
     return row
+
+
+def solve_chunk(base_json, variants):
+    """Solves a list of variants one after the other (one task of a chunked sweep: the task
+    engine's cost per task is then paid once per chunk, not once per variant); returns their
+    rows in order."""
+    return [solve_variant(base_json, v) for v in variants]

@@ -1,0 +1,390 @@
+//! The curve operations beyond evaluation, as plain functions the classes call: arc length
+//! and the arc-length map, curve–curve intersection and distance, offsets, fitting
+//! (interpolation, least squares, fitting to a tolerance), and the parsing of their option
+//! words. Every long loop runs with the GIL released; every library error becomes a
+//! `GeometryError` with the library's message.
+
+use camber_geom::arc_length::{self, ArcLengthMap as GeomArcLengthMap};
+use camber_geom::extend::{CurveEnd, ExtensionContinuity};
+use camber_geom::fit::{self, Fit, ParameterMethod};
+use camber_geom::queries::{
+    curve_distance, intersect_curves, BezierPieces, CurveCurveOptions, CurvePairPoint,
+};
+use numpy::{AllowTypeChange, PyArray1, PyArrayLike2};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+use crate::arrays::{columns, vector};
+use crate::curve::AnyCurve;
+use crate::curve_kinds::wrap;
+use crate::errors::{geometry, input};
+
+/// `"start"` or `"end"`.
+pub fn curve_end(word: &str) -> PyResult<CurveEnd> {
+    match word.to_ascii_lowercase().as_str() {
+        "start" => Ok(CurveEnd::Start),
+        "end" => Ok(CurveEnd::End),
+        _ => Err(input(format!(
+            "end: expected \"start\" or \"end\", found {word:?}"
+        ))),
+    }
+}
+
+/// `"G1"` (a straight piece along the end tangent) or `"G2"` (the end piece continued).
+pub fn continuity(word: &str) -> PyResult<ExtensionContinuity> {
+    match word.to_ascii_uppercase().as_str() {
+        "G1" => Ok(ExtensionContinuity::G1),
+        "G2" => Ok(ExtensionContinuity::G2),
+        _ => Err(input(format!(
+            "continuity: expected \"G1\" or \"G2\", found {word:?}"
+        ))),
+    }
+}
+
+/// `"uniform"`, `"chord_length"` or `"centripetal"`.
+fn parameter_method(word: &str) -> PyResult<ParameterMethod> {
+    match word.to_ascii_lowercase().replace('-', "_").as_str() {
+        "uniform" => Ok(ParameterMethod::Uniform),
+        "chord_length" | "chord" => Ok(ParameterMethod::ChordLength),
+        "centripetal" => Ok(ParameterMethod::Centripetal),
+        _ => Err(input(format!(
+            "method: expected \"uniform\", \"chord_length\" or \"centripetal\", found {word:?}"
+        ))),
+    }
+}
+
+/// The arc length between u0 and u1 (the whole domain when both are None).
+pub fn length(
+    py: Python<'_>,
+    c: &AnyCurve,
+    span: Option<(f64, f64)>,
+    tolerance: f64,
+) -> PyResult<f64> {
+    py.detach(|| {
+        crate::curve::each!(c, c => {
+            let (a, b) = span.unwrap_or_else(|| camber_geom::ParametricCurve::domain(c));
+            arc_length::arc_length_between(c, a, b, tolerance).map(|r| r.length)
+        })
+    })
+    .map_err(geometry)
+}
+
+/// The parameter at arc length s from the start, for one s or an array.
+pub fn parameter_at_length(
+    py: Python<'_>,
+    c: &AnyCurve,
+    s: &Bound<'_, PyAny>,
+    tolerance: f64,
+) -> PyResult<Py<PyAny>> {
+    crate::curve::scalar_map(
+        py,
+        s,
+        |s| crate::curve::each!(c, c => arc_length::parameter_at_length(c, s, tolerance)),
+    )
+}
+
+/// The arc-length parameterization of a curve, u(s), as a piecewise cubic interpolant of
+/// the exact map whose measured error is within the tolerance it was made with:
+/// `curve.arc_length_map(1e-8)`. `map.parameter(s)` takes a float or an array of arc lengths,
+/// so `curve.evaluate(map.parameter(np.linspace(0, map.length, n)))` gives n points evenly
+/// spaced along the curve.
+#[pyclass(name = "ArcLengthMap", frozen, module = "camber._native")]
+#[derive(Debug, Clone)]
+pub struct ArcLengthMap {
+    inner: GeomArcLengthMap<f64>,
+}
+
+#[pymethods]
+impl ArcLengthMap {
+    /// The total length of the curve.
+    #[getter]
+    fn length(&self) -> f64 {
+        self.inner.length()
+    }
+
+    /// The largest |L(u(s)) − s| measured (length units).
+    #[getter]
+    fn max_error(&self) -> f64 {
+        self.inner.max_error()
+    }
+
+    /// The number of interpolation nodes.
+    #[getter]
+    fn node_count(&self) -> usize {
+        self.inner.node_count()
+    }
+
+    /// The parameter u(s) for arc lengths s (clamped to [0, length]): a float or an array.
+    fn parameter(&self, py: Python<'_>, s: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
+        let map = &self.inner;
+        crate::curve::scalar_map(py, s, |s| Ok(map.parameter(s)))
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "<ArcLengthMap length {} with {} nodes, error {:.1e}>",
+            self.inner.length(),
+            self.inner.node_count(),
+            self.inner.max_error()
+        )
+    }
+}
+
+/// The arc-length map of a curve within `tolerance`.
+pub fn arc_length_map(py: Python<'_>, c: &AnyCurve, tolerance: f64) -> PyResult<ArcLengthMap> {
+    let inner = py
+        .detach(|| crate::curve::each!(c, c => arc_length::arc_length_map(c, tolerance)))
+        .map_err(geometry)?;
+    Ok(ArcLengthMap { inner })
+}
+
+/// The curve as Bézier pieces in the plane, if planar.
+fn pieces2(c: &AnyCurve) -> Option<&(dyn BezierPieces<2> + Sync)> {
+    Some(match c {
+        AnyCurve::Bezier2(c) => c,
+        AnyCurve::BSpline2(c) => c,
+        AnyCurve::Nurbs2(c) => c,
+        AnyCurve::Hermite2(c) => c,
+        _ => return None,
+    })
+}
+
+/// The curve as Bézier pieces in space, if spatial.
+fn pieces3(c: &AnyCurve) -> Option<&(dyn BezierPieces<3> + Sync)> {
+    Some(match c {
+        AnyCurve::Bezier3(c) => c,
+        AnyCurve::BSpline3(c) => c,
+        AnyCurve::Nurbs3(c) => c,
+        AnyCurve::Hermite3(c) => c,
+        _ => return None,
+    })
+}
+
+/// A pair of points of two curves as a dict.
+fn pair_dict<'py, const D: usize>(
+    py: Python<'py>,
+    p: &CurvePairPoint<D>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("parameter_a", p.parameter_a)?;
+    d.set_item("parameter_b", p.parameter_b)?;
+    d.set_item(
+        "point_a",
+        PyArray1::from_slice(py, p.point_a.coords.as_slice()),
+    )?;
+    d.set_item(
+        "point_b",
+        PyArray1::from_slice(py, p.point_b.coords.as_slice()),
+    )?;
+    d.set_item("distance", p.distance)?;
+    d.set_item("tangential", p.tangential)?;
+    Ok(d)
+}
+
+fn options(tolerance: f64, max_candidates: usize) -> CurveCurveOptions {
+    CurveCurveOptions::default()
+        .with_tolerance(tolerance)
+        .with_max_candidates(max_candidates)
+}
+
+fn same_dimension(a: &AnyCurve, b: &AnyCurve, what: &str) -> PyResult<()> {
+    if a.dim() == b.dim() {
+        Ok(())
+    } else {
+        Err(input(format!(
+            "{what}: the curves must have the same dimension (found {} and {})",
+            a.dim(),
+            b.dim()
+        )))
+    }
+}
+
+/// Every intersection of two curves of the same dimension, in order along `a`.
+pub fn intersect<'py>(
+    py: Python<'py>,
+    a: &AnyCurve,
+    b: &AnyCurve,
+    tolerance: f64,
+    max_candidates: usize,
+) -> PyResult<Vec<Bound<'py, PyDict>>> {
+    same_dimension(a, b, "intersect_curve")?;
+    let opts = options(tolerance, max_candidates);
+    match (pieces2(a), pieces2(b), pieces3(a), pieces3(b)) {
+        (Some(a), Some(b), _, _) => py
+            .detach(|| intersect_curves(a, b, &opts))
+            .map_err(geometry)?
+            .iter()
+            .map(|p| pair_dict(py, p))
+            .collect(),
+        (_, _, Some(a), Some(b)) => py
+            .detach(|| intersect_curves(a, b, &opts))
+            .map_err(geometry)?
+            .iter()
+            .map(|p| pair_dict(py, p))
+            .collect(),
+        _ => Err(input("intersect_curve: curves of different dimensions")),
+    }
+}
+
+/// The closest pair of points of two curves of the same dimension.
+pub fn distance<'py>(
+    py: Python<'py>,
+    a: &AnyCurve,
+    b: &AnyCurve,
+    tolerance: f64,
+    max_candidates: usize,
+) -> PyResult<Bound<'py, PyDict>> {
+    same_dimension(a, b, "distance_to_curve")?;
+    let opts = options(tolerance, max_candidates);
+    match (pieces2(a), pieces2(b), pieces3(a), pieces3(b)) {
+        (Some(a), Some(b), _, _) => pair_dict(
+            py,
+            &py.detach(|| curve_distance(a, b, &opts))
+                .map_err(geometry)?,
+        ),
+        (_, _, Some(a), Some(b)) => pair_dict(
+            py,
+            &py.detach(|| curve_distance(a, b, &opts))
+                .map_err(geometry)?,
+        ),
+        _ => Err(input("distance_to_curve: curves of different dimensions")),
+    }
+}
+
+/// The offset of a planar curve at a signed distance (positive to the left): a cubic
+/// B-spline on [0, 1] and the largest deviation measured.
+pub fn offset(
+    py: Python<'_>,
+    c: &AnyCurve,
+    distance: f64,
+    tolerance: f64,
+) -> PyResult<(Py<PyAny>, f64)> {
+    let planar = crate::curve::planar(c, "offset")?;
+    let found = py
+        .detach(|| camber_geom::offset::offset(planar, distance, tolerance))
+        .map_err(geometry)?;
+    Ok((wrap(py, AnyCurve::BSpline2(found.curve))?, found.max_error))
+}
+
+/// A fit as (curve, parameters of the data points, largest error at the data points).
+fn fit_tuple<const D: usize>(
+    py: Python<'_>,
+    f: Fit<f64, D>,
+    make: fn(camber_geom::BSplineCurve<f64, D>) -> AnyCurve,
+) -> PyResult<(Py<PyAny>, Py<PyAny>, f64)> {
+    Ok((
+        wrap(py, make(f.curve))?,
+        PyArray1::from_vec(py, f.parameters).into_any().unbind(),
+        f.max_error,
+    ))
+}
+
+/// The B-spline of `degree` through every data point (global interpolation), with the data
+/// points' parameters by `method` (`"uniform"`, `"chord_length"`, `"centripetal"`) and,
+/// optionally, the end derivatives `end_derivatives = (d0, d1)` (per unit of the [0, 1]
+/// parameter). Returns (curve, parameters, max_error).
+#[pyfunction]
+#[pyo3(signature = (points, degree = 3, method = "chord_length", end_derivatives = None))]
+pub fn interpolate(
+    py: Python<'_>,
+    points: PyArrayLike2<'_, f64, AllowTypeChange>,
+    degree: usize,
+    method: &str,
+    end_derivatives: Option<(Vec<f64>, Vec<f64>)>,
+) -> PyResult<(Py<PyAny>, Py<PyAny>, f64)> {
+    let method = parameter_method(method)?;
+    match columns(&points) {
+        3 => {
+            let pts = crate::arrays::points::<3>(&points, "points")?;
+            let ends = end_derivatives
+                .map(|(a, b)| Ok::<_, PyErr>((vector::<3>(&a, "d0")?, vector::<3>(&b, "d1")?)))
+                .transpose()?;
+            let f = py
+                .detach(|| fit::interpolate(&pts, degree, method, ends))
+                .map_err(geometry)?;
+            fit_tuple(py, f, AnyCurve::BSpline3)
+        }
+        _ => {
+            let pts = crate::arrays::points::<2>(&points, "points")?;
+            let ends = end_derivatives
+                .map(|(a, b)| Ok::<_, PyErr>((vector::<2>(&a, "d0")?, vector::<2>(&b, "d1")?)))
+                .transpose()?;
+            let f = py
+                .detach(|| fit::interpolate(&pts, degree, method, ends))
+                .map_err(geometry)?;
+            fit_tuple(py, f, AnyCurve::BSpline2)
+        }
+    }
+}
+
+/// The least-squares B-spline of `degree` with `control_points` control points through the
+/// data points, its ends on the first and last data points when `fixed_ends`. Returns (curve,
+/// parameters, max_error).
+#[pyfunction]
+#[pyo3(signature = (points, degree, control_points, method = "chord_length", fixed_ends = true))]
+pub fn approximate(
+    py: Python<'_>,
+    points: PyArrayLike2<'_, f64, AllowTypeChange>,
+    degree: usize,
+    control_points: usize,
+    method: &str,
+    fixed_ends: bool,
+) -> PyResult<(Py<PyAny>, Py<PyAny>, f64)> {
+    let method = parameter_method(method)?;
+    match columns(&points) {
+        3 => {
+            let pts = crate::arrays::points::<3>(&points, "points")?;
+            let f = py
+                .detach(|| fit::approximate(&pts, degree, control_points, method, fixed_ends))
+                .map_err(geometry)?;
+            fit_tuple(py, f, AnyCurve::BSpline3)
+        }
+        _ => {
+            let pts = crate::arrays::points::<2>(&points, "points")?;
+            let f = py
+                .detach(|| fit::approximate(&pts, degree, control_points, method, fixed_ends))
+                .map_err(geometry)?;
+            fit_tuple(py, f, AnyCurve::BSpline2)
+        }
+    }
+}
+
+/// The B-spline of `degree` with the fewest control points (by increasing count) whose
+/// largest error at the data points is within `tolerance`. Returns (curve, parameters,
+/// max_error).
+#[pyfunction]
+#[pyo3(signature = (points, degree, tolerance, method = "chord_length"))]
+pub fn fit_to_tolerance(
+    py: Python<'_>,
+    points: PyArrayLike2<'_, f64, AllowTypeChange>,
+    degree: usize,
+    tolerance: f64,
+    method: &str,
+) -> PyResult<(Py<PyAny>, Py<PyAny>, f64)> {
+    let method = parameter_method(method)?;
+    match columns(&points) {
+        3 => {
+            let pts = crate::arrays::points::<3>(&points, "points")?;
+            let f = py
+                .detach(|| fit::fit_to_tolerance(&pts, degree, tolerance, method))
+                .map_err(geometry)?;
+            fit_tuple(py, f, AnyCurve::BSpline3)
+        }
+        _ => {
+            let pts = crate::arrays::points::<2>(&points, "points")?;
+            let f = py
+                .detach(|| fit::fit_to_tolerance(&pts, degree, tolerance, method))
+                .map_err(geometry)?;
+            fit_tuple(py, f, AnyCurve::BSpline2)
+        }
+    }
+}
+
+/// Adds the classes and functions of this module.
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<ArcLengthMap>()?;
+    m.add_function(wrap_pyfunction!(interpolate, m)?)?;
+    m.add_function(wrap_pyfunction!(approximate, m)?)?;
+    m.add_function(wrap_pyfunction!(fit_to_tolerance, m)?)?;
+    Ok(())
+}
