@@ -374,9 +374,12 @@ where
         if near_parallel {
             if let Some((s2, t2)) = refine_touch(a, b, s, t)? {
                 let touch = pair_point(a, b, s2, t2)?;
-                // Keep the sharper location only if it is still a contact.
+                // Keep the sharper location only if it is still a contact. At a touch both
+                // gaps are rounding (the minimisation's error e leaves a gap of κe²/2), so the
+                // sharp one may be the larger by a few ulps of the curves' size.
+                let rounding = 64.0 * f64::EPSILON * size;
                 if touch.distance <= opts.tolerance
-                    && touch.distance <= hit.distance.max(1e-300) * 10.0
+                    && touch.distance <= (hit.distance * 10.0).max(rounding)
                 {
                     hit = touch;
                 }
@@ -387,7 +390,21 @@ where
             .find(|h| (h.point_a - hit.point_a).norm() <= merge)
         {
             Some(h) => {
-                if hit.distance < h.distance {
+                // The closer of two seeds' answers, and between gaps equal to rounding the one
+                // with the more parallel tangents (a touch located sharply).
+                let rounding = 64.0 * f64::EPSILON * size;
+                let sine = |p: &CurvePairPoint<D>| -> Result<f64> {
+                    Ok(sine_between(
+                        &a.derivative(p.parameter_a)?,
+                        &b.derivative(p.parameter_b)?,
+                    ))
+                };
+                let better = if (hit.distance - h.distance).abs() <= rounding {
+                    sine(&hit)? < sine(h)?
+                } else {
+                    hit.distance < h.distance
+                };
+                if better {
                     *h = hit;
                 }
             }
