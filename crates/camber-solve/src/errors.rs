@@ -118,6 +118,10 @@ pub enum Error {
         tried: String,
         /// Each constraint's largest |g| where the least-squares search stopped.
         residuals: Vec<crate::report::ConstraintResidual>,
+        /// Where it stopped: the reduced unknowns, in the order of the problem's
+        /// [`crate::ReducedMap`]. The problem keeps its values; a caller who wants the
+        /// compromise applies it with `problem.apply_reduced(&problem.reduced_map()?, &z)`.
+        best_effort: Vec<f64>,
     },
     /// Consistent but dependent rows while the options forbid dropping them.
     #[error("redundant constraints: {constraints:?}")]

@@ -106,6 +106,7 @@ pub(crate) fn solve(problem: &mut Problem, options: &Options) -> Result<SolveRep
                 }
             } else {
                 Error::NotSolved {
+                    best_effort: search.z.clone(),
                     tried: format!(
                         "the required constraints alone: Levenberg–Marquardt ({} iterations) \
                          stopped short of a least-squares point",

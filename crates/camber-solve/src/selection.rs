@@ -528,6 +528,7 @@ fn solve_whole(problem: &mut Problem, options: &Options) -> Result<SolveReport> 
         return Err(Error::Conflicting { constraints: named });
     }
     Err(Error::NotSolved {
+        best_effort: z_lm,
         tried: format!(
             "{} → Levenberg–Marquardt ({} iterations) stopped short of a least-squares point",
             notes.join("; "),

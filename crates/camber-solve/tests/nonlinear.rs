@@ -527,15 +527,31 @@ fn a_solve_that_merely_failed_is_not_called_conflicting() {
     let mut p = meeting();
     let before = p.values().to_vec();
     match solve(&mut p, &starved) {
-        Err(Error::NotSolved { tried, residuals }) => {
+        Err(Error::NotSolved {
+            tried,
+            residuals,
+            best_effort,
+        }) => {
             assert!(tried.contains("Levenberg"), "{tried}");
             let named: Vec<ConstraintId> = residuals.iter().map(|r| r.constraint).collect();
             assert_eq!(named, vec![ConstraintId(1), ConstraintId(2)]);
             assert!(residuals.iter().all(|r| r.max_abs > 1e-3), "{residuals:?}");
+            assert_eq!(p.values(), &before[..]);
+            // The best-effort state is offered, not written: applied, it has the residuals
+            // the error reports.
+            let map = p.reduced_map().unwrap();
+            p.apply_reduced(&map, &best_effort).unwrap();
+            let mut g = vec![0.0; 2];
+            p.evaluate_at(p.values(), &mut g).unwrap();
+            for (gi, r) in g.iter().zip(&residuals) {
+                assert!(
+                    (gi.abs() - r.max_abs).abs() < 1e-12,
+                    "{g:?} vs {residuals:?}"
+                );
+            }
         }
         other => panic!("expected NotSolved, got {other:?}"),
     }
-    assert_eq!(p.values(), &before[..]);
     let mut q = meeting();
     let solved = solve(&mut q, &Options::default()).unwrap();
     assert_eq!(
