@@ -22,7 +22,7 @@
 //!
 //! min ½‖J_t·Δ + g_t‖² + ½λ‖Δ‖²_W  subject to  J_H·Δ = −(g_H − τ_H),
 //!
-//! by the projected conjugate gradients of Newton's method ([`crate::projected_cg`]) with
+//! by the projected conjugate gradients of Newton's method (module `projected_cg`) with
 //! K = W + J_tᵀ·J_t/λ and c = J_tᵀ·g_t/λ (the same minimiser, scaled so that the projection's
 //! metric is W), over an independent subset of the held rows (consistent dependent rows add
 //! nothing; the sparse rank analysis picks the subset at every iterate). The trial point is
