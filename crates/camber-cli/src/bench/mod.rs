@@ -63,11 +63,15 @@ pub enum Workload {
     /// W5b: one ladder of cells (the rectangles' constraints in one component).
     #[value(alias = "w5b", alias = "W5B")]
     W5b,
+    /// A: the DOF analysis (what `camber check` runs) of the W3 chain of N segments and of a
+    /// chain of 10·N points held by distances.
+    #[value(alias = "a", alias = "analysis")]
+    A,
 }
 
 impl Workload {
     /// Every workload, in table order.
-    pub const ALL: [Workload; 7] = [
+    pub const ALL: [Workload; 8] = [
         Workload::W1,
         Workload::W2,
         Workload::W3,
@@ -75,9 +79,10 @@ impl Workload {
         Workload::W4,
         Workload::W5,
         Workload::W5b,
+        Workload::A,
     ];
 
-    /// "W1", "W2", "W3", "W3a", "W4", "W5", "W5b".
+    /// "W1", "W2", "W3", "W3a", "W4", "W5", "W5b", "A".
     pub fn name(self) -> &'static str {
         match self {
             Workload::W1 => "W1",
@@ -87,6 +92,7 @@ impl Workload {
             Workload::W4 => "W4",
             Workload::W5 => "W5",
             Workload::W5b => "W5b",
+            Workload::A => "A",
         }
     }
 
@@ -192,6 +198,13 @@ impl Plan {
                     .map(|&s| self.chain_repeats(s))
                     .sum(),
                 Workload::W4 => self.w4_repeats,
+                Workload::A => {
+                    2 * self
+                        .chain_sizes
+                        .iter()
+                        .map(|&s| self.chain_repeats(s))
+                        .sum::<usize>()
+                }
             };
         }
         n as u64
@@ -291,6 +304,7 @@ pub fn run(plan: &Plan, bar: &ProgressBar) -> Result<Vec<Row>> {
             Workload::W4 => rows.push(runners::w4(plan, bar)?),
             Workload::W5 => rows.extend(runners::rectangles(plan, false, bar)?),
             Workload::W5b => rows.extend(runners::rectangles(plan, true, bar)?),
+            Workload::A => rows.extend(runners::analysis(plan, bar)?),
         }
     }
     Ok(rows)

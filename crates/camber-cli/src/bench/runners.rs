@@ -253,3 +253,68 @@ pub(super) fn rectangles(plan: &Plan, ladder: bool, bar: &ProgressBar) -> Result
     }
     Ok(rows)
 }
+
+/// Whether the analysis of the W3 chain of `n` segments is right. Its 8n unknowns lose 4 to the
+/// pinned ends and 2(n − 1) to the merged joints, leaving 6n − 2; the rows are the n − 1 joint
+/// directions and the n chords, all independent: DOF 4n − 1 in one component, nothing
+/// redundant or conflicting.
+fn w3_analysis_valid(analyses: &[camber_sketch::ComponentAnalysis], n: usize) -> bool {
+    match analyses {
+        [a] => {
+            let d = &a.analysis;
+            d.free_unknowns == 6 * n - 2
+                && d.dof == 4 * n - 1
+                && d.redundant.is_empty()
+                && d.partly_redundant.is_empty()
+                && d.conflicting.is_empty()
+        }
+        _ => false,
+    }
+}
+
+/// A: the DOF analysis (`Sketch::analyze`, as `camber check` runs it) of the W3 chain of N
+/// segments and of the chain of 10·N points held by distances, one analysis timed per repeat,
+/// each checked against the DOF its construction gives ([`w3_analysis_valid`],
+/// `camber_workloads::point_chain_valid`), with the growth exponent between sizes.
+pub(super) fn analysis(plan: &Plan, bar: &ProgressBar) -> Result<Vec<Row>> {
+    let mut rows: Vec<Row> = Vec::new();
+    for (label, scale) in [("W3", 1), ("points", 10)] {
+        let mut last: Option<(usize, f64)> = None;
+        for &n in &plan.chain_sizes {
+            let size = scale * n;
+            bar.set_message(format!("A {label} N={size}"));
+            let sketch = if scale == 1 {
+                wl::w3_chain(n)?.0
+            } else {
+                wl::point_chain(size)?
+            };
+            let (mut times, mut valid, mut failed) = (Vec::<Duration>::new(), 0, 0);
+            for _ in 0..plan.chain_repeats(n) {
+                let t0 = Instant::now();
+                let outcome = sketch.analyze();
+                times.push(t0.elapsed());
+                bar.inc(1);
+                match outcome {
+                    Ok(analyses) => {
+                        let ok = if scale == 1 {
+                            w3_analysis_valid(&analyses, n)
+                        } else {
+                            wl::point_chain_valid(&analyses, size)
+                        };
+                        valid += usize::from(ok);
+                    }
+                    Err(_) => failed += 1,
+                }
+            }
+            let mut r = row(Workload::A, format!("{label} N={size}"), &times, valid);
+            r.size = Some(size);
+            r.failed = failed;
+            if let Some((m, t)) = last {
+                r.growth = Some((r.median_s / t).ln() / (size as f64 / m as f64).ln());
+            }
+            last = Some((size, r.median_s));
+            rows.push(r);
+        }
+    }
+    Ok(rows)
+}
