@@ -77,9 +77,44 @@ pub fn describe_error(sketch: &Sketch, e: &Error) -> String {
             "{} would flip its tangent orientation (signed dot {dot:.3e})",
             describe_constraint(sketch, *constraint)
         ),
+        Error::Solve(camber_solve::Error::NotSolved {
+            tried, residuals, ..
+        }) => {
+            // Every constraint left above 1e-9, largest first, by id and kind.
+            let mut above: Vec<_> = residuals
+                .iter()
+                .filter(|r| r.max_abs > 1e-9 || r.max_abs.is_nan())
+                .collect();
+            above.sort_by(|a, b| b.max_abs.total_cmp(&a.max_abs));
+            let mut named: Vec<String> = above
+                .iter()
+                .take(NOT_SOLVED_LISTED)
+                .map(|r| {
+                    format!(
+                        "{} |g| = {:.3e}",
+                        describe_constraint(sketch, r.constraint),
+                        r.max_abs
+                    )
+                })
+                .collect();
+            if above.len() > NOT_SOLVED_LISTED {
+                named.push(format!("and {} more", above.len() - NOT_SOLVED_LISTED));
+            }
+            format!(
+                "not solved (nothing proves a conflict): {tried}; residual per constraint: {}",
+                if named.is_empty() {
+                    "none above 1e-9".to_owned()
+                } else {
+                    named.join(", ")
+                }
+            )
+        }
         other => other.to_string(),
     }
 }
+
+/// Constraints named one by one in a "not solved" message (the rest are counted).
+const NOT_SOLVED_LISTED: usize = 20;
 
 /// The solver of a report in the words the reports print (the JSON names): `dense_min_norm`,
 /// `sparse_min_norm`, `newton`, `slsqp`, `levenberg_marquardt`, and `none (nothing to solve)`
@@ -120,5 +155,36 @@ pub fn describe_entities(ids: &[camber_sketch::EntityId]) -> String {
             format!("{} entities: {a}, {b}, {c}, …, {last}", list.len())
         }
         _ => format!("entities {}", list.join(", ")),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use camber_solve::{ConstraintId, ConstraintResidual};
+
+    #[test]
+    fn not_solved_lists_every_constraint_left_above_tolerance_by_kind() {
+        let s = parse(
+            r#"{"version": 1,
+              "entities": [{"id": 0, "kind": "point", "at": [0, 0]}, {"id": 1, "kind": "point", "at": [1, 0]}],
+              "constraints": [{"id": 2, "kind": "distance", "a": {"point": 0}, "b": {"point": 1}, "distance": 2},
+                              {"id": 3, "kind": "horizontal", "of": {"a": {"point": 0}, "b": {"point": 1}}}]}"#,
+        )
+        .unwrap();
+        let residual = |c: u64, g: f64| ConstraintResidual {
+            constraint: ConstraintId(c),
+            max_abs: g,
+        };
+        let e = Error::Solve(camber_solve::Error::NotSolved {
+            tried: "Newton failed".to_owned(),
+            residuals: vec![residual(3, 1e-3), residual(2, 0.5)],
+            best_effort: vec![],
+        });
+        let text = describe_error(&s, &e);
+        assert!(
+            text.starts_with("not solved (nothing proves a conflict): Newton failed; residual per constraint: constraint 2 (distance) |g| = 5.000e-1, constraint 3 (horizontal) |g| = 1.000e-3"),
+            "{text}"
+        );
     }
 }
