@@ -16,7 +16,7 @@ use crate::curve::{check_parameter, check_points, ParametricCurve};
 use crate::errors::{Error, Result};
 use crate::knot_ops::ControlNet;
 use crate::knots::KnotVector;
-use crate::scalar::{from_usize, Scalar};
+use crate::scalar::{from_usize, re, Scalar};
 use crate::serde_support::{points_from_raw, points_to_raw, RawPoint};
 
 /// Scratch for up to (INLINE_DEGREE + 1)² basis values on the stack.
@@ -281,6 +281,20 @@ impl<T: Scalar, const D: usize> BSplineCurve<T, D> {
             knots,
             control_points,
         }
+    }
+
+    /// [`BSplineCurve::reversed`], refused with [`Error::ReparamNotRepresentable`] (the domain)
+    /// when the reflected knots cannot stay distinct in f64
+    /// ([`KnotVector::reverses_faithfully`]).
+    pub fn try_reversed(&self) -> Result<Self> {
+        if !self.knots.reverses_faithfully() {
+            let (a, b) = self.domain();
+            return Err(Error::ReparamNotRepresentable {
+                start: re(a),
+                end: re(b),
+            });
+        }
+        Ok(self.reversed())
     }
 
     /// The same curve on the domain [a, b] (a < b): the result at a + (b − a)·s equals this

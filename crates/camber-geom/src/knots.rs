@@ -302,6 +302,27 @@ impl<T: Scalar> KnotVector<T> {
         }
     }
 
+    /// Whether [`KnotVector::reversed`] keeps every pair of distinct knots distinct. In f64 it
+    /// need not: a knot within rounding of one end (3·10⁻¹⁹ in [0, 1]) lands exactly on the
+    /// other end, where it would repeat that end's knot once too often.
+    ///
+    /// ```
+    /// use camber_geom::KnotVector;
+    /// let fine = KnotVector::try_new(vec![0.0, 0.0, 0.0, 0.3, 1.0, 1.0, 1.0])?;
+    /// assert!(fine.reverses_faithfully());
+    /// let tight = KnotVector::try_new(vec![0.0, 0.0, 0.0, 3e-19, 0.3, 1.0, 1.0, 1.0])?;
+    /// assert!(!tight.reverses_faithfully());
+    /// # Ok::<(), camber_geom::Error>(())
+    /// ```
+    pub fn reverses_faithfully(&self) -> bool {
+        let reversed = self.reversed();
+        self.knots
+            .windows(2)
+            .rev()
+            .zip(reversed.knots.windows(2))
+            .all(|(o, n)| (o[0] < o[1]) == (n[0] < n[1]))
+    }
+
     /// The knot vector mapped affinely so that the domain of `degree` becomes [a, b].
     pub fn reparameterized(&self, degree: usize, a: T, b: T) -> Result<Self> {
         check_interval(a, b)?;

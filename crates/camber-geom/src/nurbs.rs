@@ -334,6 +334,20 @@ impl<T: Scalar, const D: usize> NurbsCurve<T, D> {
         Self::from_homogeneous_unchecked(net.degree, net.knots, &net.coords)
     }
 
+    /// [`NurbsCurve::reversed`], refused with [`Error::ReparamNotRepresentable`] (the domain)
+    /// when the reflected knots cannot stay distinct in f64
+    /// ([`KnotVector::reverses_faithfully`]).
+    pub fn try_reversed(&self) -> Result<Self> {
+        if !self.knots().reverses_faithfully() {
+            let (a, b) = self.domain();
+            return Err(Error::ReparamNotRepresentable {
+                start: re(a),
+                end: re(b),
+            });
+        }
+        Ok(self.reversed())
+    }
+
     /// The same curve with its domain mapped affinely onto [a, b]: C_r(u) = C(φ(u)) with φ the
     /// increasing affine map from [a, b] onto the old domain. Fails with
     /// [`Error::InvalidInterval`] unless a < b (both finite).

@@ -160,8 +160,8 @@ impl Op {
             },
             (Op::Reverse { .. }, c) => vec![match c {
                 Bezier(c) => Bezier(c.reversed()),
-                BSpline(c) => BSpline(c.reversed()),
-                Nurbs(c) => Nurbs(c.reversed()),
+                BSpline(c) => BSpline(c.try_reversed()?),
+                Nurbs(c) => Nurbs(c.try_reversed()?),
                 Hermite(c) => Hermite(c.reversed()),
             }],
             (Op::Reparam { to: (a, b), .. }, c) => match c {
