@@ -18,7 +18,8 @@
 //!   stays readable.
 //!
 //! The work per input is bounded here (input size, entity and constraint counts, degrees,
-//! repeat counts), so that one input cannot take the fuzzer's time.
+//! repeat counts, the evaluations a solve may spend), so that one input cannot take the
+//! fuzzer's time.
 
 use std::path::PathBuf;
 
@@ -35,6 +36,12 @@ pub const MAX_INPUT: usize = 64 * 1024;
 
 /// The largest sketch solved: entities plus constraints.
 pub const MAX_SKETCH_ITEMS: usize = 64;
+
+/// The derivative evaluations one sketch solve may spend
+/// ([`camber_solve::NonlinearOptions::max_evaluations`]): a tenth of the library's default,
+/// so that a sketch that cannot be solved fails within the fuzzer's time even under
+/// AddressSanitizer.
+pub const SKETCH_SOLVE_EVALUATIONS: usize = 1_000;
 
 /// The most requests one editor script sends.
 pub const MAX_REQUESTS: usize = 48;
@@ -58,6 +65,11 @@ pub fn sketch(data: &[u8]) {
     if s.entities().count() + s.constraints().count() > MAX_SKETCH_ITEMS {
         return;
     }
+    let mut options = s.options().clone();
+    options.nonlinear = options
+        .nonlinear
+        .with_max_evaluations(Some(SKETCH_SOLVE_EVALUATIONS));
+    s.set_options(options);
     let saved = reloads(&s, "the loaded sketch");
     let _ = s.warnings();
     let _ = check::check(&s);

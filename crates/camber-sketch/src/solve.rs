@@ -104,6 +104,24 @@ impl Sketch {
         SolveReport,
         Vec<(crate::ids::EntityId, crate::entity::Entity)>,
     )> {
+        // One evaluation budget for the whole attempt: the given start, its active-set rounds
+        // and every other start share it, so a sketch that cannot be solved fails in bounded
+        // time however many starts it has.
+        cp.problem.start_budget(options.nonlinear.max_evaluations);
+        let outcome = self.solve_from_each_start(cp, options);
+        cp.problem.end_budget();
+        outcome
+    }
+
+    /// The body of [`Sketch::solve_with_starts`], inside its budget.
+    fn solve_from_each_start(
+        &self,
+        cp: &mut crate::component::ComponentProblem,
+        options: &camber_solve::Options,
+    ) -> Result<(
+        SolveReport,
+        Vec<(crate::ids::EntityId, crate::entity::Entity)>,
+    )> {
         let first = match policy::solve(cp, self, options, Start::Cold) {
             Ok(solved) => return Ok(solved),
             Err(e) => e,
@@ -112,6 +130,9 @@ impl Sketch {
         let others = starts::contact_starts(cp, self)?;
         let count = others.len();
         for (k, start) in others.into_iter().enumerate() {
+            if cp.problem.budget_spent() {
+                break;
+            }
             cp.problem.restore(&initial);
             for (block, u) in &start {
                 cp.problem.set_block_values(*block, &[*u])?;

@@ -100,7 +100,7 @@ pub enum Error {
         name: String,
     },
     /// Dependent constraint rows whose right-hand sides contradict the independent rows.
-    #[error("conflicting constraints: {constraints:?}")]
+    #[error("conflicting constraints: {}", constraint_list(constraints))]
     Conflicting {
         /// The constraints owning an inconsistent dependent row, in row order.
         constraints: Vec<ConstraintId>,
@@ -123,8 +123,17 @@ pub enum Error {
         /// compromise applies it with `problem.apply_reduced(&problem.reduced_map()?, &z)`.
         best_effort: Vec<f64>,
     },
+    /// The solve spent every evaluation its budget allowed
+    /// ([`crate::NonlinearOptions::max_evaluations`], [`crate::Problem::start_budget`]).
+    /// The solve paths take it as their end; a caller sees it inside [`Error::NotSolved`]'s
+    /// account of what was tried, or alone from a path run outside the selection.
+    #[error("the budget of {evaluations} evaluations is spent")]
+    BudgetSpent {
+        /// The evaluations the budget allowed.
+        evaluations: usize,
+    },
     /// Consistent but dependent rows while the options forbid dropping them.
-    #[error("redundant constraints: {constraints:?}")]
+    #[error("redundant constraints: {}", constraint_list(constraints))]
     Redundant {
         /// The constraints owning a consistent dependent row, in row order.
         constraints: Vec<ConstraintId>,
@@ -148,7 +157,7 @@ pub enum Error {
         value: f64,
     },
     /// After the solve some residuals are still above the tolerance; nothing was written back.
-    #[error("constraints not satisfied after the solve (constraint, max |g|): {failed:?}")]
+    #[error("constraints not satisfied after the solve: {}", failed_list(failed))]
     NotSatisfied {
         /// Each failing constraint with its largest absolute residual.
         failed: Vec<(ConstraintId, f64)>,
@@ -248,6 +257,25 @@ pub enum Error {
 pub type Result<T> = std::result::Result<T, Error>;
 
 /// The constraints above 1e-9 in `residuals`, largest first, at most five, as text.
+/// "4, 7 and 9": constraint numbers in plain words.
+fn constraint_list(constraints: &[ConstraintId]) -> String {
+    let ids: Vec<String> = constraints.iter().map(|c| c.0.to_string()).collect();
+    match ids.split_last() {
+        None => "none".to_owned(),
+        Some((last, [])) => last.clone(),
+        Some((last, rest)) => format!("{} and {last}", rest.join(", ")),
+    }
+}
+
+/// "constraint 4 |g| = 2.350e0, constraint 5 |g| = …".
+fn failed_list(failed: &[(ConstraintId, f64)]) -> String {
+    failed
+        .iter()
+        .map(|(c, g)| format!("{c} |g| = {g:.3e}"))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
 fn worst_residuals(residuals: &[crate::report::ConstraintResidual]) -> String {
     let mut worst: Vec<&crate::report::ConstraintResidual> = residuals
         .iter()

@@ -103,6 +103,18 @@ impl Evaluator {
     /// g(x(z)) into `g` and the nonzero entries of J_z = J_x·A as triplets (row, column,
     /// value), kept inside the evaluator ([`Evaluator::triplets`]).
     pub(crate) fn linearize(&mut self, problem: &Problem, z: &[f64], g: &mut [f64]) -> Result<()> {
+        problem.budget.charge()?;
+        self.linearize_for_report(problem, z, g)
+    }
+
+    /// [`Evaluator::linearize`] without charging the evaluation budget: for the account a
+    /// solve gives of where it stopped, which a spent budget must not prevent.
+    pub(crate) fn linearize_for_report(
+        &mut self,
+        problem: &Problem,
+        z: &[f64],
+        g: &mut [f64],
+    ) -> Result<()> {
         check_len("residual rows", self.rows(), g.len())?;
         self.map.expand(z, &mut self.x)?;
         self.triplets.clear();
@@ -154,6 +166,7 @@ impl Evaluator {
         lambda: &[f64],
     ) -> Result<Option<SparseMatrix>> {
         check_len("multipliers", self.rows(), lambda.len())?;
+        problem.budget.charge()?;
         self.map.expand(z, &mut self.x)?;
         self.hess_triplets.clear();
         let mut row0 = 0;

@@ -94,7 +94,17 @@ pub struct NonlinearOptions {
     pub soft: bool,
     /// The ε of the soft mode (relative weight of staying near the start).
     pub soft_epsilon: f64,
+    /// The most derivative evaluations (of the Jacobian or of a Hessian) one solve may spend
+    /// over every path it tries ([`crate::Problem::start_budget`]); `None` leaves each path's
+    /// own limits only. Evaluations of the residuals alone are not counted: each path bounds
+    /// them per derivative evaluation (its line search). Most solves that succeed spend a few
+    /// dozen, hard ones from far starts a few thousand; the default,
+    /// [`DEFAULT_MAX_EVALUATIONS`], bounds what a failing one costs.
+    pub max_evaluations: Option<usize>,
 }
+
+/// The default [`NonlinearOptions::max_evaluations`].
+pub const DEFAULT_MAX_EVALUATIONS: usize = 10_000;
 
 impl Default for NonlinearOptions {
     fn default() -> Self {
@@ -108,6 +118,7 @@ impl Default for NonlinearOptions {
             force: None,
             soft: false,
             soft_epsilon: 1e-8,
+            max_evaluations: Some(DEFAULT_MAX_EVALUATIONS),
         }
     }
 }
@@ -146,6 +157,12 @@ impl NonlinearOptions {
     /// Sets [`NonlinearOptions::objective`].
     pub fn with_objective(mut self, objective: Objective) -> Self {
         self.objective = objective;
+        self
+    }
+
+    /// Sets [`NonlinearOptions::max_evaluations`].
+    pub fn with_max_evaluations(mut self, n: Option<usize>) -> Self {
+        self.max_evaluations = n;
         self
     }
 

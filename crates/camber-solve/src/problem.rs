@@ -12,6 +12,7 @@
 
 use smallvec::SmallVec;
 
+use crate::budget::Budget;
 use crate::errors::{Error, Result};
 use crate::ids::{AuxId, BlockId, ConstraintId, ResidualId, UnknownId, Var};
 use crate::residual::{DynResidual, Residual};
@@ -80,6 +81,8 @@ pub struct Problem {
     pub(crate) aux_weights: Vec<f64>,
     pub(crate) aux_bounds: Vec<(f64, f64)>,
     pub(crate) residuals: Vec<ResidualBlock>,
+    /// The evaluations a solve may still spend ([`Problem::start_budget`]).
+    pub(crate) budget: Budget,
 }
 
 /// # Construction
@@ -239,6 +242,64 @@ impl Problem {
 pub struct ProblemState {
     values: Vec<f64>,
     aux_values: Vec<f64>,
+}
+
+/// # The evaluation budget
+///
+/// A failing solve tries every path in turn (Newton, SLSQP, Levenberg–Marquardt, a moved
+/// start); a caller that runs the whole cascade several times (from other starts, in
+/// active-set rounds) shares one budget between the runs by starting it around them. Each
+/// derivative evaluation (the Jacobian, or a Hessian) costs one unit; once the budget is
+/// spent, the paths stop and the solve reports [`Error::NotSolved`].
+///
+/// ```
+/// use camber_solve::{scalar::cst, ConstraintId, Options, Problem, Residual, Scalar};
+///
+/// /// |p|² = 1: the point lies on the unit circle.
+/// #[derive(Debug)]
+/// struct OnUnitCircle;
+/// impl Residual for OnUnitCircle {
+///     fn name(&self) -> &str { "on unit circle" }
+///     fn dim(&self) -> usize { 1 }
+///     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+///         out[0] = x[0][0] * x[0][0] + x[0][1] * x[0][1] - cst(1.0);
+///     }
+/// }
+///
+/// let mut p = Problem::new();
+/// let b = p.add_block(&[3.0, 0.5])?;
+/// p.add_residual(OnUnitCircle, &[b], ConstraintId(1))?;
+/// p.start_budget(Some(2));
+/// let options = Options::default();
+/// assert!(camber_solve::solve(&mut p, &options).is_err(), "two evaluations are not enough");
+/// assert_eq!(p.values(), &[3.0, 0.5], "a failed solve leaves the problem as it was");
+/// p.end_budget();
+/// camber_solve::solve(&mut p, &options)?;
+/// assert!(p.evaluations_spent() > 2);
+/// # Ok::<(), camber_solve::Error>(())
+/// ```
+impl Problem {
+    /// Starts a budget of `limit` evaluations (`None`: counted, never refused), shared by every
+    /// solve of this problem until [`Problem::end_budget`]. While it runs, a solve does not
+    /// start its own ([`crate::NonlinearOptions::max_evaluations`]).
+    pub fn start_budget(&mut self, limit: Option<usize>) {
+        self.budget.start(limit);
+    }
+
+    /// Ends the running budget.
+    pub fn end_budget(&mut self) {
+        self.budget.end();
+    }
+
+    /// Derivative evaluations spent since the budget last started.
+    pub fn evaluations_spent(&self) -> usize {
+        self.budget.spent()
+    }
+
+    /// Whether a budget runs and every evaluation it allowed is spent.
+    pub fn budget_spent(&self) -> bool {
+        self.budget.exhausted()
+    }
 }
 
 /// # Editing rows and states

@@ -331,16 +331,29 @@ fn soft_path(
 /// is not built; the errors of the forced solver otherwise. The problem's values are unchanged
 /// on every error.
 pub fn solve(problem: &mut Problem, options: &Options) -> Result<SolveReport> {
-    match solve_whole(problem, options) {
-        Err(Error::Conflicting { .. } | Error::NotSolved { .. })
+    // A budget started by the caller spans its several solves; otherwise this one has its own.
+    let own_budget = !problem.budget.running();
+    if own_budget {
+        problem.start_budget(options.nonlinear.max_evaluations);
+    }
+    let outcome = match solve_whole(problem, options) {
+        Err(e @ (Error::Conflicting { .. } | Error::NotSolved { .. }))
             if problem.has_priorities()
                 && options.nonlinear.force.is_none()
                 && !options.nonlinear.soft =>
         {
-            crate::priority::solve(problem, options)
+            // The tiers cannot be met on a spent budget: the whole set's failure stands.
+            match crate::priority::solve(problem, options) {
+                Err(Error::BudgetSpent { .. }) => Err(e),
+                tiers => tiers,
+            }
         }
         outcome => outcome,
+    };
+    if own_budget {
+        problem.end_budget();
     }
+    outcome
 }
 
 /// [`solve`] for the whole set of constraints, priorities aside.
@@ -485,12 +498,20 @@ fn solve_whole(problem: &mut Problem, options: &Options) -> Result<SolveReport> 
     // A singular start (J rank deficient on a nonlinear problem) may be a symmetric point
     // that no method leaves (x = 0 where two curves touch by design): once more by Newton
     // from a start moved slightly along the independent rows, toward the start.
-    if !start.full_rank {
+    if !start.full_rank && !problem.budget.exhausted() {
         if let Some(basis) = start.basis.as_deref() {
             let mut ev_moved = Evaluator::new(problem)?;
-            if let Some(z1) =
-                crate::accidental::moved_along(problem, &mut ev_moved, &start.z0, basis, options)?
-            {
+            let moved = match crate::accidental::moved_along(
+                problem,
+                &mut ev_moved,
+                &start.z0,
+                basis,
+                options,
+            ) {
+                Err(Error::BudgetSpent { .. }) => None,
+                moved => moved?,
+            };
+            if let Some(z1) = moved {
                 if let Ok((iterations, _, residuals, z)) =
                     newton_path(problem, options, &mut ws, &z1, &start.z0, None)
                 {
@@ -514,7 +535,7 @@ fn solve_whole(problem: &mut Problem, options: &Options) -> Result<SolveReport> 
         return soft_path(problem, options, &start, &notes.join("; "));
     }
     let mut g = vec![0.0; ev.rows()];
-    ev.linearize(problem, &z_lm, &mut g)?;
+    ev.linearize_for_report(problem, &z_lm, &mut g)?;
     let residuals = ev.per_constraint(&g);
     if !start.conflicting.is_empty() || at_least_squares_point(&ev.jacobian(&[])?, &g)? {
         let mut named = start.conflicting.clone();
@@ -527,10 +548,16 @@ fn solve_whole(problem: &mut Problem, options: &Options) -> Result<SolveReport> 
         }
         return Err(Error::Conflicting { constraints: named });
     }
+    let budget = match problem.budget.limit() {
+        Some(limit) if problem.budget.exhausted() => {
+            format!(" (the budget of {limit} evaluations is spent)")
+        }
+        _ => String::new(),
+    };
     Err(Error::NotSolved {
         best_effort: z_lm,
         tried: format!(
-            "{} → Levenberg–Marquardt ({} iterations) stopped short of a least-squares point",
+            "{} → Levenberg–Marquardt ({} iterations) stopped short of a least-squares point{budget}",
             notes.join("; "),
             lm.iterations
         ),

@@ -75,7 +75,8 @@ fn stage(
     let mut lambda = 1e-3;
     let mut s = cost(problem, ev, z, reference, epsilon, &mut g);
     let mut iterations = 0;
-    while iterations < max_iterations {
+    // A spent evaluation budget ends the run where it is, as the iteration limit does.
+    while iterations < max_iterations && !problem.budget.exhausted() {
         iterations += 1;
         ev.linearize(problem, z, &mut g)?;
         let j = ev.jacobian(&[])?;
