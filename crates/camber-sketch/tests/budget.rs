@@ -3,6 +3,8 @@
 //! sketch that cannot be solved fails in bounded work, honestly and without changing the
 //! sketch.
 
+#![allow(clippy::unwrap_used)] // a failed unwrap is a failed test
+
 use camber_sketch::file::{from_json, to_json};
 
 /// A fuzzer's find: a B-spline with a C1 join, contacts at free parameters, an arc length and
