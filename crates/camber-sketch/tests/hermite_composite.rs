@@ -441,6 +441,30 @@ fn the_bundled_example_solves_to_valid_geometry() {
     assert!(t1.x.abs() < 1e-9 && t1.y < 0.0);
 }
 
+/// The bundled example's DOF by hand: 24 free unknowns (the composite's 3 free nodes and 5
+/// tangents, its first node fixed: 16; the Hermite's start point and two tangents, its end held
+/// by the point-at-parameter: 6; the two contact parameters: 2) less 9 independent rows (2 per
+/// contact, 2 for the join's position, 1 for each side's tangent along (2, 1), 1 for the end
+/// tangent) is 15. The solve needs an active row of honest contact, an inequality, which takes
+/// no dimension from the solution set: the solve report once counted it (DOF 14).
+#[test]
+fn the_bundled_example_reports_the_same_dof_solved_and_checked() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../examples/sketches/hermite_composite.json");
+    let mut s = from_json(&std::fs::read_to_string(path).unwrap()).unwrap();
+    let before = s.analyze().unwrap();
+    assert_eq!(before.len(), 1);
+    assert_eq!(before[0].analysis.free_unknowns, 24);
+    assert_eq!(before[0].analysis.rank, 9);
+    assert_eq!(before[0].analysis.dof, 15);
+    let report = s.solve().unwrap();
+    let solved = &report.components[0].report;
+    assert!(solved.reason.contains("active row"), "{}", solved.reason);
+    assert_eq!((solved.rank, solved.dof), (9, 15), "{solved:?}");
+    let after = s.analyze().unwrap();
+    assert_eq!((after[0].analysis.rank, after[0].analysis.dof), (9, 15));
+}
+
 /// The curve passes through the point at its own free parameter s: C(s) − P = 0.
 #[derive(Debug)]
 struct Through;
