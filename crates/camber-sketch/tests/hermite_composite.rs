@@ -518,3 +518,119 @@ fn a_custom_constraint_reads_a_composite_curve() {
     let on = s.entity(c).unwrap().as_curve().unwrap().point(u).unwrap();
     assert_relative_eq!(on, Point2::new(3.0, 2.0), epsilon = 1e-9);
 }
+
+/// A sketch with the start and end tangencies in the given form (`"row"` or `"elimination"`).
+fn with_form(template: &str, form: &str) -> Sketch {
+    from_json(&template.replace("FORM", form)).unwrap()
+}
+
+/// The elimination form of the end tangencies on a Hermite curve: its end tangents are
+/// themselves unknowns, T = t·d with t ≥ 0. Ends fixed and the midpoint pinned determine the
+/// curve: C(½) = (p0 + p1)/2 + (t0 − t1)/8 = (2, 0) + ((α, 0) − (0, −β))/8 = (2.5, 1) gives
+/// α = 4, β = 8. Row and elimination forms land on that one solution.
+#[test]
+fn hermite_end_tangents_eliminate_like_their_rows() {
+    let template = r#"{"version": 1,
+      "entities": [{"id": 0, "kind": "hermite", "p0": [0, 0], "p1": [4, 0],
+                    "t0": [3, 1], "t1": [1, -3]}],
+      "constraints": [
+        {"id": 1, "kind": "fixed", "target": {"point": {"start": 0}}},
+        {"id": 2, "kind": "fixed", "target": {"point": {"end": 0}}},
+        {"id": 3, "kind": "start_tangent", "curve": 0, "direction": [1, 0], "sense": "agree", "form": "FORM"},
+        {"id": 4, "kind": "end_tangent", "curve": 0, "direction": [0, -1], "sense": "agree", "form": "FORM"},
+        {"id": 5, "kind": "point_at_parameter", "curve": 0, "u": 0.5, "target": {"at": [2.5, 1]}}
+      ]}"#;
+    let mut solved = Vec::new();
+    for form in ["row", "elimination"] {
+        let mut s = with_form(template, form);
+        let before = s.analyze().unwrap();
+        assert_eq!(
+            before[0].analysis.dof, 0,
+            "{form}: {:?}",
+            before[0].analysis
+        );
+        // Rows: two tangent unknowns each; eliminated: one length each.
+        let unknowns = if form == "row" { 4 } else { 2 };
+        assert_eq!(before[0].analysis.free_unknowns, unknowns, "{form}");
+        let report = s.solve().unwrap();
+        assert!(max_residual(&report) < 1e-9, "{form}: {report:?}");
+        assert_eq!(report.components[0].report.dof, 0, "{form}");
+        let blocks = match s.entity(EntityId(0)).unwrap() {
+            Entity::Hermite(c) => c.blocks().to_vec(),
+            other => panic!("{other:?}"),
+        };
+        assert_relative_eq!(blocks[2], Point2::new(4.0, 0.0), epsilon = 1e-9);
+        assert_relative_eq!(blocks[3], Point2::new(0.0, -8.0), epsilon = 1e-9);
+        solved.push(blocks);
+    }
+    for (a, b) in solved[0].iter().zip(&solved[1]) {
+        assert_relative_eq!(a, b, epsilon = 1e-9);
+    }
+}
+
+/// The same on a composite of two segments with a smooth join: nodes fixed, start tangent
+/// along (1, 1), end tangent along (1, −1), C(½) = (N₀ + N₁)/2 + (a₀ − t₁)/8 and
+/// C(3/2) = (N₁ + N₂)/2 + (t₁ − b₂)/8 pinned: a₀ = (2, 2), t₁ = (2, 0), b₂ = (3, −3) give
+/// (1, 0.75) and (2.875, 0.875), and the four equations in α, β and t₁ have only that solution.
+#[test]
+fn composite_end_tangents_eliminate_like_their_rows() {
+    let template = r#"{"version": 1,
+      "entities": [{"id": 0, "kind": "composite", "nodes": [[0, 0], [2, 1], [4, 0]],
+                    "tangents": [[1, 0.3], [1, 1], [2, 0]], "joins": ["smooth"]}],
+      "constraints": [
+        {"id": 1, "kind": "fixed", "target": {"point": {"control": [0, 0]}}},
+        {"id": 2, "kind": "fixed", "target": {"point": {"control": [0, 1]}}},
+        {"id": 3, "kind": "fixed", "target": {"point": {"control": [0, 2]}}},
+        {"id": 4, "kind": "start_tangent", "curve": 0, "direction": [1, 1], "sense": "agree", "form": "FORM"},
+        {"id": 5, "kind": "end_tangent", "curve": 0, "direction": [1, -1], "sense": "agree", "form": "FORM"},
+        {"id": 6, "kind": "point_at_parameter", "curve": 0, "u": 0.5, "target": {"at": [1, 0.75]}},
+        {"id": 7, "kind": "point_at_parameter", "curve": 0, "u": 1.5, "target": {"at": [2.875, 0.875]}}
+      ]}"#;
+    let expected = [
+        Point2::new(2.0, 2.0),
+        Point2::new(2.0, 0.0),
+        Point2::new(3.0, -3.0),
+    ];
+    let mut solved = Vec::new();
+    for form in ["row", "elimination"] {
+        let mut s = with_form(template, form);
+        let report = s.solve().unwrap();
+        assert!(max_residual(&report) < 1e-9, "{form}: {report:?}");
+        assert_eq!(report.components[0].report.dof, 0, "{form}");
+        let blocks = match s.entity(EntityId(0)).unwrap() {
+            Entity::Composite(c) => c.blocks().to_vec(),
+            other => panic!("{other:?}"),
+        };
+        for (got, want) in blocks[3..].iter().zip(&expected) {
+            assert_relative_eq!(got, want, epsilon = 1e-9);
+        }
+        solved.push(blocks);
+    }
+    for (a, b) in solved[0].iter().zip(&solved[1]) {
+        assert_relative_eq!(a, b, epsilon = 1e-9);
+    }
+}
+
+/// The bundled example (nonlinear: contacts with a line and a circle, a G1 join) with its
+/// Hermite end tangent in elimination form: it solves, the end tangent points down as asked,
+/// and the DOF is the row form's (the elimination trades one unknown for one row).
+#[test]
+fn the_bundled_example_solves_with_an_eliminated_end_tangent() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../examples/sketches/hermite_composite.json");
+    let text = std::fs::read_to_string(path).unwrap();
+    assert!(text.contains(r#""form":"row""#));
+    let mut dof = Vec::new();
+    for form in ["row", "elimination"] {
+        let mut s =
+            from_json(&text.replace(r#""form":"row""#, &format!(r#""form":"{form}""#))).unwrap();
+        let report = s.solve().unwrap();
+        assert!(max_residual(&report) < 1e-9, "{form}: {report:?}");
+        let hermite = s.entity(EntityId(1)).unwrap();
+        let (p1, t1) = hermite.point_tangent(1.0).unwrap();
+        assert_relative_eq!(p1, Point2::new(9.0, 0.5), epsilon = 1e-9);
+        assert!(t1.x.abs() < 1e-9 && t1.y < 0.0, "{form}: {t1}");
+        dof.push(report.components[0].report.dof);
+    }
+    assert_eq!(dof[0], dof[1]);
+}
