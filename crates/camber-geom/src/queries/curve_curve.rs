@@ -31,7 +31,7 @@ use std::collections::BinaryHeap;
 use nalgebra::{Point, SVector};
 
 use super::closest_point;
-use super::pieces::{BezierPieces, RationalPiece};
+use super::pieces::{segment_segment_distance, BezierPieces, RationalPiece};
 use crate::curve::ParametricCurve;
 use crate::errors::{Error, Result};
 
@@ -137,6 +137,17 @@ fn box_distance<const D: usize>(
         d2 += gap * gap;
     }
     d2.sqrt()
+}
+
+/// A lower bound on the distance between two pieces: the larger of their boxes' distance and
+/// their chords' distance less both flatnesses. Near a closest pair the second is the sharper
+/// (its error shrinks with the square of the pieces' length), so few leaf pairs survive it.
+fn lower_bound<const D: usize>(x: &RationalPiece<D>, y: &RationalPiece<D>) -> f64 {
+    let by_box = box_distance(&x.bounding_box(), &y.bounding_box());
+    let (xa, xb, fx) = x.chord_and_flatness();
+    let (ya, yb, fy) = y.chord_and_flatness();
+    let by_chord = segment_segment_distance((&xa, &xb), (&ya, &yb)) - fx - fy;
+    by_box.max(by_chord)
 }
 
 fn diagonal<const D: usize>((lo, hi): &(SVector<f64, D>, SVector<f64, D>)) -> f64 {
@@ -361,10 +372,10 @@ where
         if inside(x.start, x.end) {
             continue;
         }
-        let (bx, by) = (x.bounding_box(), y.bounding_box());
-        if box_distance(&bx, &by) > grow {
+        if lower_bound(&x, &y) > grow {
             continue;
         }
+        let (bx, by) = (x.bounding_box(), y.bounding_box());
         let (dx, dy) = (diagonal(&bx), diagonal(&by));
         if dx <= leaf && dy <= leaf {
             seeds.push((0.5 * (x.start + x.end), 0.5 * (y.start + y.end)));
@@ -518,7 +529,7 @@ where
     let mut heap = BinaryHeap::new();
     for x in &pa {
         for y in &pb {
-            let lower = box_distance(&x.bounding_box(), &y.bounding_box());
+            let lower = lower_bound(x, y);
             heap.push(Candidate {
                 lower,
                 a: x.clone(),
@@ -568,7 +579,7 @@ where
             [(x.clone(), l), (x, r)]
         };
         for (cx, cy) in children {
-            let lower = box_distance(&cx.bounding_box(), &cy.bounding_box());
+            let lower = lower_bound(&cx, &cy);
             if lower < best.distance - opts.tolerance {
                 heap.push(Candidate {
                     lower,

@@ -92,6 +92,20 @@ impl<const D: usize> RationalPiece<D> {
         (lo - grow, hi + grow)
     }
 
+    /// The chord from the first to the last control point and how far the curve may lie from
+    /// it over [start, end]: the largest distance of a control point from the chord segment,
+    /// plus the [`slack`](Self::slack). The piece lies in the convex hull of its control points,
+    /// so every point of it is within that distance of the chord. For a short piece the
+    /// distance shrinks like the square of its length (where a box shrinks only linearly).
+    pub fn chord_and_flatness(&self) -> (SVector<f64, D>, SVector<f64, D>, f64) {
+        let (a, b) = self.end_points();
+        let flat = self
+            .points()
+            .map(|p| point_segment_distance(&p, &a, &b))
+            .fold(0.0, f64::max);
+        (a, b, flat + self.slack)
+    }
+
     /// The first and last control points, which lie on the curve.
     pub fn end_points(&self) -> (SVector<f64, D>, SVector<f64, D>) {
         let mut it = self.points();
@@ -140,6 +154,60 @@ impl<const D: usize> RationalPiece<D> {
             },
         )
     }
+}
+
+/// The distance from `p` to the segment from `a` to `b`.
+pub(crate) fn point_segment_distance<const D: usize>(
+    p: &SVector<f64, D>,
+    a: &SVector<f64, D>,
+    b: &SVector<f64, D>,
+) -> f64 {
+    let d = b - a;
+    let len2 = d.norm_squared();
+    let t = if len2 > 0.0 {
+        ((p - a).dot(&d) / len2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    (a + d * t - p).norm()
+}
+
+/// The distance between the segments p1q1 and p2q2 (their closest pair: the unconstrained
+/// minimiser of |p1 + s·d1 − p2 − t·d2|² clamped to the unit square, one parameter at a time).
+pub(crate) fn segment_segment_distance<const D: usize>(
+    (p1, q1): (&SVector<f64, D>, &SVector<f64, D>),
+    (p2, q2): (&SVector<f64, D>, &SVector<f64, D>),
+) -> f64 {
+    let (d1, d2, r) = (q1 - p1, q2 - p2, p1 - p2);
+    let (a, e, f) = (d1.norm_squared(), d2.norm_squared(), d2.dot(&r));
+    let tiny = f64::MIN_POSITIVE;
+    let (s, t) = if a <= tiny && e <= tiny {
+        (0.0, 0.0)
+    } else if a <= tiny {
+        (0.0, (f / e).clamp(0.0, 1.0))
+    } else {
+        let c = d1.dot(&r);
+        if e <= tiny {
+            ((-c / a).clamp(0.0, 1.0), 0.0)
+        } else {
+            let b = d1.dot(&d2);
+            let denom = a * e - b * b;
+            let s = if denom > 0.0 {
+                ((b * f - c * e) / denom).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            let t = (b * s + f) / e;
+            if t < 0.0 {
+                ((-c / a).clamp(0.0, 1.0), 0.0)
+            } else if t > 1.0 {
+                (((b - c) / a).clamp(0.0, 1.0), 1.0)
+            } else {
+                (s, t)
+            }
+        }
+    };
+    (p1 + d1 * s - p2 - d2 * t).norm()
 }
 
 /// Curves that can be cut into rational Bézier pieces: every [`ParametricCurve`] over `f64`,
@@ -461,6 +529,30 @@ mod tests {
         assert_eq!(rp[0], Vector2::new(1.0, 1.0));
         assert_eq!(rp[2], Vector2::new(2.0, 0.0));
         assert!((l.end - 1.0).abs() < 1e-15 && (r.start - 1.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn segment_distances_by_hand() {
+        let v = |x: f64, y: f64| Vector2::new(x, y);
+        // Crossing: 0. Parallel, 1 apart, overlapping: 1. Skew ends: (1, 0)–(2, 1) is √2.
+        let d =
+            segment_segment_distance((&v(0.0, 0.0), &v(2.0, 2.0)), (&v(0.0, 2.0), &v(2.0, 0.0)));
+        assert!(d.abs() < 1e-15);
+        let d =
+            segment_segment_distance((&v(0.0, 0.0), &v(2.0, 0.0)), (&v(1.0, 1.0), &v(3.0, 1.0)));
+        assert!((d - 1.0).abs() < 1e-15);
+        let d =
+            segment_segment_distance((&v(0.0, 0.0), &v(1.0, 0.0)), (&v(2.0, 1.0), &v(2.0, 3.0)));
+        assert!((d - 2.0_f64.sqrt()).abs() < 1e-15);
+        // A point (degenerate segment) against a segment.
+        let d =
+            segment_segment_distance((&v(0.5, 2.0), &v(0.5, 2.0)), (&v(0.0, 0.0), &v(1.0, 0.0)));
+        assert!((d - 2.0).abs() < 1e-15);
+        assert!(
+            (point_segment_distance(&v(3.0, 4.0), &v(0.0, 0.0), &v(0.0, 1.0)) - 4.242640687119285)
+                .abs()
+                < 1e-12
+        );
     }
 
     #[test]
