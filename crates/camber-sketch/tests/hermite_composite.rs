@@ -634,3 +634,67 @@ fn the_bundled_example_solves_with_an_eliminated_end_tangent() {
     }
     assert_eq!(dof[0], dof[1]);
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// Random determined Hermite curves: ends fixed, end tangent directions d0, d1 and the
+    /// midpoint C(½) = (p0 + p1)/2 + (α·d0 − β·d1)/8 pinned, α, β > 0 (unique when d0 and d1
+    /// are not parallel). Row and elimination forms both recover α·d0 and β·d1.
+    #[test]
+    fn eliminated_hermite_tangents_match_the_rows(
+        ends in prop::array::uniform4(-3.0..3.0_f64),
+        angles in prop::array::uniform2(0.0..std::f64::consts::TAU),
+        lengths in prop::array::uniform2(0.5..4.0_f64),
+    ) {
+        let (d0, d1) = (
+            Vector2::new(angles[0].cos(), angles[0].sin()),
+            Vector2::new(angles[1].cos(), angles[1].sin()),
+        );
+        prop_assume!((d0.x * d1.y - d0.y * d1.x).abs() > 0.2);
+        let (p0, p1) = (Point2::new(ends[0], ends[1]), Point2::new(ends[2], ends[3]));
+        prop_assume!((p1 - p0).norm() > 0.5);
+        let (t0, t1) = (d0 * lengths[0], d1 * lengths[1]);
+        let mid = Point2::from((p0.coords + p1.coords) / 2.0 + (t0 - t1) / 8.0);
+        let mut solved = Vec::new();
+        for form in [TangentForm::Row, TangentForm::Elimination] {
+            // Start from tangents turned 20° off and of other lengths.
+            let turn = nalgebra::Rotation2::new(0.35);
+            let mut s = Sketch::new();
+            let h = s
+                .add_entity(Entity::Hermite(
+                    HermiteChain::single(p0, p1, turn * t0 * 1.3, turn * t1 * 0.8).unwrap(),
+                ))
+                .unwrap();
+            for j in [0, 1] {
+                s.add_constraint(camber_sketch::constraints::fixed::Fixed::point(
+                    PointRef::Control(h, j),
+                ))
+                .unwrap();
+            }
+            s.add_constraint(StartTangent { curve: h, direction: d0, sense: Sense::Agree, form })
+                .unwrap();
+            s.add_constraint(camber_sketch::constraints::end_tangent::EndTangent {
+                curve: h,
+                direction: d1,
+                sense: Sense::Agree,
+                form,
+            })
+            .unwrap();
+            s.add_constraint(PointAtParameter { curve: h, u: 0.5, target: Target::At(mid) })
+                .unwrap();
+            let report = s.solve().unwrap();
+            prop_assert!(max_residual(&report) < 1e-9);
+            let blocks = match s.entity(h).unwrap() {
+                Entity::Hermite(c) => c.blocks().to_vec(),
+                _ => unreachable!(),
+            };
+            prop_assert!((blocks[2].coords - t0).norm() < 1e-8, "{:?}: {:?} vs {}", form, blocks, t0);
+            prop_assert!((blocks[3].coords - t1).norm() < 1e-8, "{:?}: {:?} vs {}", form, blocks, t1);
+            solved.push(blocks);
+        }
+        for (a, b) in solved[0].iter().zip(&solved[1]) {
+            prop_assert!((a - b).norm() < 1e-8);
+        }
+    }
+}
