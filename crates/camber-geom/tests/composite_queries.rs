@@ -251,6 +251,59 @@ fn distance_from_a_parabola_to_a_facing_circle() {
     assert!((full.distance - near.distance).abs() < 1e-12);
 }
 
+/// (u, |u − 0.4|) on [0, 1]: a kink the curve does not report as a breakpoint (and that no
+/// halving of [0, 1] lands on).
+struct Vee;
+
+impl ParametricCurve<f64, 2> for Vee {
+    fn domain(&self) -> (f64, f64) {
+        (0.0, 1.0)
+    }
+
+    fn derivatives_into(&self, u: f64, out: &mut [SVector<f64, 2>]) -> Result<()> {
+        check_parameter(u, (0.0, 1.0))?;
+        let sign = if u < 0.4 { -1.0 } else { 1.0 };
+        for (k, o) in out.iter_mut().enumerate() {
+            *o = match k {
+                0 => SVector::from([u, (u - 0.4).abs()]),
+                1 => SVector::from([1.0, sign]),
+                _ => SVector::zeros(),
+            };
+        }
+        Ok(())
+    }
+}
+
+/// The sampled enclosure halves around an unreported kink until its slack is small, so the
+/// kinked piece of a composite is still found where it crosses: y = 0.2 meets (u, |u − 0.4|) at
+/// u = 0.2 and 0.6, the chain's second piece, so s = 1.2 and 1.6.
+#[test]
+fn an_unreported_kink_is_enclosed() {
+    let pieces = sampled_pieces(&Vee).unwrap();
+    assert!(pieces.len() > 2);
+    let around: Vec<_> = pieces
+        .iter()
+        .filter(|q| q.start < 0.5 && q.end > 0.5)
+        .collect();
+    assert!(around.iter().all(|q| q.end - q.start < 1e-3), "{around:?}");
+    // The kink's point lies in the box of a piece around it.
+    assert!(around.iter().any(|q| {
+        let (lo, hi) = q.bounding_box();
+        lo.x <= 0.4 && 0.4 <= hi.x && lo.y <= 0.0 && 0.0 <= hi.y
+    }));
+    let chain: CompositeCurve2<f64> = CompositeCurve::try_new(vec![
+        Box::new(bezier(&[(-1.0, 1.5), (0.0, 0.4)])),
+        Box::new(Vee),
+    ])
+    .unwrap();
+    let level = bezier(&[(-2.0, 0.2), (2.0, 0.2)]);
+    let hits = intersect_curves(&chain, &level, &opts()).unwrap();
+    check_hits(&chain, &level, &hits);
+    assert_eq!(hits.len(), 2, "{hits:?}");
+    assert!((hits[0].parameter_a - 1.2).abs() < 1e-12);
+    assert!((hits[1].parameter_a - 1.6).abs() < 1e-12);
+}
+
 fn coord() -> impl Strategy<Value = f64> {
     -2.0..2.0_f64
 }
