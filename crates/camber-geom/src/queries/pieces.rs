@@ -299,8 +299,11 @@ where
 /// error as the piece's [`slack`](RationalPiece::slack).
 ///
 /// The enclosure is as good as the samples: the interpolation error of a smooth curve is
-/// O(h⁴) and varies slowly over a short piece, so 7 samples see its size; a curve with an
-/// unreported kink or jump is halved to 2⁻²⁰ of the span and keeps the error there as slack.
+/// O(h⁴) and varies slowly over a short piece, so 7 samples see its size. Around a kink the
+/// curve does not report, the samples see an error of the order of the piece's length, so the
+/// pieces there are halved until they are about as short as the accuracy asked (the tests
+/// check such an enclosure densely); a jump is halved to 2⁻²⁰ of the span and its measured gap
+/// kept as slack, which is as good as the samples that straddle it.
 ///
 /// ```
 /// use camber_geom::queries::{sampled_pieces, RationalPiece};
