@@ -1,5 +1,6 @@
 //! Cost of the curve toolkit's searches and fits: curve–curve intersection and distance
-//! (cubic Bézier pairs and 10-point cubic B-splines crossing several times), and
+//! (cubic Bézier pairs, 10-point cubic B-splines crossing several times, a composite curve of a
+//! Bézier, a NURBS arc and a B-spline against a B-spline, a parabola facing a NURBS circle), and
 //! interpolation, least squares and fitting to a tolerance through 100 and 1000 points.
 
 // Fixed, valid inputs: a panic is the right way for a benchmark to fail.
@@ -7,7 +8,9 @@
 
 use camber_geom::fit::{approximate, fit_to_tolerance, interpolate, ParameterMethod};
 use camber_geom::queries::{curve_distance, intersect_curves, CurveCurveOptions};
-use camber_geom::{BSplineCurve2, BezierCurve2, KnotVector};
+use camber_geom::{
+    BSplineCurve2, BezierCurve2, CompositeCurve, CompositeCurve2, KnotVector, NurbsCurve2,
+};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use nalgebra::Point2;
 use std::hint::black_box;
@@ -21,6 +24,72 @@ fn wave(amplitude: f64, k: f64, shift: f64) -> BSplineCurve2<f64> {
         })
         .collect();
     BSplineCurve2::try_new(3, KnotVector::clamped_uniform(3, 10).unwrap(), points).unwrap()
+}
+
+/// A cubic Bézier from (0, 0) to (3, 0), the quarter circle about (3, 1) up to (4, 1) (NURBS) and
+/// a wave from (4, 1) (B-spline): three kinds under one parameter [0, 3].
+fn composite() -> CompositeCurve2<f64> {
+    let w = std::f64::consts::FRAC_1_SQRT_2;
+    let arc = NurbsCurve2::try_new(
+        2,
+        KnotVector::try_new(vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0]).unwrap(),
+        vec![
+            Point2::new(3.0, 0.0),
+            Point2::new(4.0, 0.0),
+            Point2::new(4.0, 1.0),
+        ],
+        vec![1.0, w, 1.0],
+    )
+    .unwrap();
+    let tail = wave(0.2, 12.0, 0.0);
+    let tail = BSplineCurve2::try_new(
+        3,
+        tail.knots().clone(),
+        tail.control_points()
+            .iter()
+            .map(|p| Point2::new(p.x + 4.0, p.y + 1.0))
+            .collect(),
+    )
+    .unwrap();
+    CompositeCurve::try_new(vec![
+        Box::new(
+            BezierCurve2::try_new(vec![
+                Point2::new(0.0, 0.0),
+                Point2::new(1.0, 3.0),
+                Point2::new(2.0, -3.0),
+                Point2::new(3.0, 0.0),
+            ])
+            .unwrap(),
+        ),
+        Box::new(arc),
+        Box::new(tail),
+    ])
+    .unwrap()
+}
+
+/// The full circle about `c` of radius `r` as a rational quadratic NURBS of nine points.
+fn circle(c: (f64, f64), r: f64) -> NurbsCurve2<f64> {
+    let w = std::f64::consts::FRAC_1_SQRT_2;
+    let dirs = [
+        (1.0, 0.0),
+        (1.0, 1.0),
+        (0.0, 1.0),
+        (-1.0, 1.0),
+        (-1.0, 0.0),
+        (-1.0, -1.0),
+        (0.0, -1.0),
+        (1.0, -1.0),
+        (1.0, 0.0),
+    ];
+    let points = dirs
+        .iter()
+        .map(|&(x, y)| Point2::new(c.0 + r * x, c.1 + r * y))
+        .collect();
+    let weights = (0..9).map(|i| if i % 2 == 0 { 1.0 } else { w }).collect();
+    let knots = vec![
+        0.0, 0.0, 0.0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1.0, 1.0, 1.0,
+    ];
+    NurbsCurve2::try_new(2, KnotVector::try_new(knots).unwrap(), points, weights).unwrap()
 }
 
 fn bench_intersection(c: &mut Criterion) {
@@ -51,9 +120,39 @@ fn bench_intersection(c: &mut Criterion) {
         BenchmarkId::new("bspline_waves", format!("{hits}_hits")),
         |bench| bench.iter(|| intersect_curves(black_box(&s), black_box(&t), &opts).unwrap()),
     );
+    let chain = composite();
+    let across = BSplineCurve2::try_new(
+        3,
+        KnotVector::clamped_uniform(3, 10).unwrap(),
+        (0..10)
+            .map(|i| {
+                let x = 5.0 * f64::from(i) / 9.0;
+                Point2::new(x, 0.8 * (3.0 * x).sin() + 0.5)
+            })
+            .collect(),
+    )
+    .unwrap();
+    let hits = intersect_curves(&chain, &across, &opts).unwrap().len();
+    group.bench_function(
+        BenchmarkId::new("composite_vs_bspline", format!("{hits}_hits")),
+        |bench| {
+            bench.iter(|| intersect_curves(black_box(&chain), black_box(&across), &opts).unwrap())
+        },
+    );
     group.finish();
 
     let mut group = c.benchmark_group("distance");
+    // The closest stretches nearly parallel: the case the boxes alone could not settle.
+    let parabola = BezierCurve2::try_new(vec![
+        Point2::new(1.0, 1.0),
+        Point2::new(1.5, 1.0),
+        Point2::new(2.0, 2.0),
+    ])
+    .unwrap();
+    let round = circle((3.0, 0.0), 0.5);
+    group.bench_function("parabola_facing_circle", |bench| {
+        bench.iter(|| curve_distance(black_box(&parabola), black_box(&round), &opts).unwrap())
+    });
     let apart = wave(0.2, 12.0, 0.0);
     let lifted = BSplineCurve2::try_new(
         3,

@@ -389,6 +389,11 @@ fn weighted_sum<'a, T: Scalar, const D: usize>(
 }
 
 impl<T: Scalar, const D: usize> ParametricCurve<T, D> for BezierCurve<T, D> {
+    /// The curve itself, one piece on [0, 1].
+    fn bezier_enclosure(&self) -> Result<Option<Vec<crate::queries::RationalPiece<D>>>> {
+        Ok(Some(crate::queries::pieces::bezier_form(self)))
+    }
+
     /// Always [0, 1].
     fn domain(&self) -> (T, T) {
         (T::zero(), T::one())

@@ -437,6 +437,11 @@ impl<T: Scalar, const D: usize> BSplineCurve<T, D> {
 }
 
 impl<T: Scalar, const D: usize> ParametricCurve<T, D> for BSplineCurve<T, D> {
+    /// Its Bézier segments, one per non-empty knot span.
+    fn bezier_enclosure(&self) -> Result<Option<Vec<crate::queries::RationalPiece<D>>>> {
+        Ok(Some(crate::queries::pieces::bspline_form(self)))
+    }
+
     fn domain(&self) -> (T, T) {
         self.knots.domain(self.degree)
     }

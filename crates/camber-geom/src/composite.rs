@@ -13,7 +13,9 @@ use nalgebra::SVector;
 
 use crate::curve::{check_interval, check_parameter, ParametricCurve};
 use crate::errors::{Error, Result};
-use crate::queries::{curvature_from_derivatives, curvature_vector_from_derivatives};
+use crate::queries::{
+    curvature_from_derivatives, curvature_vector_from_derivatives, sampled_pieces, RationalPiece,
+};
 use crate::scalar::{cst, from_usize, re, Scalar};
 
 /// An ordered chain of curves C_0, …, C_{n−1} evaluated as one curve on s ∈ [0, n].
@@ -144,6 +146,36 @@ impl<T: Scalar, const D: usize> CompositeCurve<T, D> {
 }
 
 impl<T: Scalar, const D: usize> ParametricCurve<T, D> for CompositeCurve<T, D> {
+    /// Each piece's own pieces (exact where the piece has a Bézier form, sampled with
+    /// [`sampled_pieces`] where not), moved onto the piece's global interval [i, i + 1].
+    fn bezier_enclosure(&self) -> Result<Option<Vec<RationalPiece<D>>>> {
+        let mut out = Vec::new();
+        for (i, piece) in self.pieces.iter().enumerate() {
+            let local = match piece.bezier_enclosure()? {
+                Some(local) => local,
+                None => sampled_pieces(piece.as_ref())?,
+            };
+            let (a, b) = piece.domain();
+            let (a, b) = (re(a), re(b));
+            let offset = i as f64;
+            // Exact at the joints: a maps to i and b to i + 1.
+            let global = |u: f64| {
+                if u <= a {
+                    offset
+                } else if u >= b {
+                    offset + 1.0
+                } else {
+                    offset + (u - a) / (b - a)
+                }
+            };
+            out.extend(local.into_iter().map(|p| {
+                let (s, e) = (global(p.start), global(p.end));
+                p.reparameterized(s, e)
+            }));
+        }
+        Ok(Some(out))
+    }
+
     /// The global domain [0, n].
     fn domain(&self) -> (T, T) {
         (T::zero(), from_usize(self.pieces.len()))

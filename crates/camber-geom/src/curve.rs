@@ -7,6 +7,7 @@
 use nalgebra::{Point, SVector};
 
 use crate::errors::{Error, Result};
+use crate::queries::RationalPiece;
 use crate::scalar::{re, Scalar};
 
 /// A parametric curve C: [a, b] → R^D, differentiable to any order inside its pieces.
@@ -37,6 +38,16 @@ pub trait ParametricCurve<T: Scalar, const D: usize> {
     fn breakpoints(&self) -> Vec<T> {
         let (a, b) = self.domain();
         vec![a, b]
+    }
+
+    /// The curve's real part as rational Bézier pieces in parameter order covering the domain,
+    /// each within its [`slack`](RationalPiece::slack) of the curve on its parameter interval;
+    /// this is what the curve–curve queries subdivide. `Ok(None)` (the default) when the curve
+    /// has no such form; the queries then enclose it by sampling
+    /// ([`sampled_pieces`](crate::queries::sampled_pieces)). Bézier, B-spline, NURBS, Hermite,
+    /// segment and circle give their exact form (slack 0), a composite curve its pieces' forms.
+    fn bezier_enclosure(&self) -> Result<Option<Vec<RationalPiece<D>>>> {
+        Ok(None)
     }
 
     /// The point C(u).

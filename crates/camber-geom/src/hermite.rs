@@ -472,6 +472,11 @@ impl<T: Scalar, const D: usize> HermiteCurve<T, D> {
 }
 
 impl<T: Scalar, const D: usize> ParametricCurve<T, D> for HermiteCurve<T, D> {
+    /// Its cubic Bézier form on [0, 1].
+    fn bezier_enclosure(&self) -> Result<Option<Vec<crate::queries::RationalPiece<D>>>> {
+        Ok(crate::queries::pieces::hermite_form(self))
+    }
+
     /// Always [0, 1].
     fn domain(&self) -> (T, T) {
         (T::zero(), T::one())

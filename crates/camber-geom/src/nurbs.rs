@@ -455,6 +455,11 @@ impl<T: Scalar> NurbsCurve<T, 2> {
 }
 
 impl<T: Scalar, const D: usize> ParametricCurve<T, D> for NurbsCurve<T, D> {
+    /// Its rational Bézier segments, one per non-empty knot span.
+    fn bezier_enclosure(&self) -> Result<Option<Vec<crate::queries::RationalPiece<D>>>> {
+        Ok(Some(crate::queries::pieces::nurbs_form(self)))
+    }
+
     fn domain(&self) -> (T, T) {
         self.knots.domain(self.degree)
     }

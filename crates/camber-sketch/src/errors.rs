@@ -88,7 +88,8 @@ pub enum Error {
         max: f64,
     },
     /// The elimination form of an end tangency needs the first (or last) two control points to
-    /// span the end tangent: a curve clamped at that end (degree ≥ 1).
+    /// span the end tangent: a curve clamped at that end (degree ≥ 1). Hermite and composite
+    /// curves never give this error: their end tangent is itself a block of unknowns.
     #[error("{entity} is not clamped at its {end} end; use the row form of the tangency")]
     NotClampedEnd {
         /// The curve.

@@ -48,7 +48,7 @@
 //! ```
 
 use camber_geom::curve::check_parameter;
-use camber_geom::queries::{BezierPieces, RationalPiece};
+use camber_geom::queries::RationalPiece;
 use camber_geom::{BezierCurve2, HermiteCurve2, KnotVector, ParametricCurve};
 use nalgebra::{Point2, SVector, Vector2};
 use serde::{Deserialize, Serialize};
@@ -399,20 +399,22 @@ impl HermiteChain {
     }
 }
 
-/// The chain's segments as cubic Bézier pieces on [i, i + 1], so that the kernel's curve–curve
-/// intersection and distance ([`camber_geom::queries::intersect_curves`],
-/// [`camber_geom::queries::curve_distance`]) take Hermite and composite entities and report
-/// parameters on the chain's own domain [0, n].
-impl BezierPieces<2> for HermiteChain {
-    fn bezier_pieces(&self) -> Vec<RationalPiece<2>> {
-        let q = self.bezier_points();
-        (0..self.segment_count())
-            .map(|i| RationalPiece::new(i as f64, (i + 1) as f64, &q[3 * i..=3 * i + 3], &[1.0; 4]))
-            .collect()
-    }
-}
-
 impl ParametricCurve<f64, 2> for HermiteChain {
+    /// The chain's segments as cubic Bézier pieces on [i, i + 1], so that the kernel's
+    /// curve–curve intersection and distance ([`camber_geom::queries::intersect_curves`],
+    /// [`camber_geom::queries::curve_distance`]) cut the chain exactly and report parameters on
+    /// its own domain [0, n].
+    fn bezier_enclosure(&self) -> camber_geom::Result<Option<Vec<RationalPiece<2>>>> {
+        let q = self.bezier_points();
+        Ok(Some(
+            (0..self.segment_count())
+                .map(|i| {
+                    RationalPiece::new(i as f64, (i + 1) as f64, &q[3 * i..=3 * i + 3], &[1.0; 4])
+                })
+                .collect(),
+        ))
+    }
+
     /// [0, n].
     fn domain(&self) -> (f64, f64) {
         (0.0, self.segment_count() as f64)

@@ -441,6 +441,30 @@ fn the_bundled_example_solves_to_valid_geometry() {
     assert!(t1.x.abs() < 1e-9 && t1.y < 0.0);
 }
 
+/// The bundled example's DOF by hand: 24 free unknowns (the composite's 3 free nodes and 5
+/// tangents, its first node fixed: 16; the Hermite's start point and two tangents, its end held
+/// by the point-at-parameter: 6; the two contact parameters: 2) less 9 independent rows (2 per
+/// contact, 2 for the join's position, 1 for each side's tangent along (2, 1), 1 for the end
+/// tangent) is 15. The solve needs an active row of honest contact, an inequality, which takes
+/// no dimension from the solution set: the solve report once counted it (DOF 14).
+#[test]
+fn the_bundled_example_reports_the_same_dof_solved_and_checked() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../examples/sketches/hermite_composite.json");
+    let mut s = from_json(&std::fs::read_to_string(path).unwrap()).unwrap();
+    let before = s.analyze().unwrap();
+    assert_eq!(before.len(), 1);
+    assert_eq!(before[0].analysis.free_unknowns, 24);
+    assert_eq!(before[0].analysis.rank, 9);
+    assert_eq!(before[0].analysis.dof, 15);
+    let report = s.solve().unwrap();
+    let solved = &report.components[0].report;
+    assert!(solved.reason.contains("active row"), "{}", solved.reason);
+    assert_eq!((solved.rank, solved.dof), (9, 15), "{solved:?}");
+    let after = s.analyze().unwrap();
+    assert_eq!((after[0].analysis.rank, after[0].analysis.dof), (9, 15));
+}
+
 /// The curve passes through the point at its own free parameter s: C(s) − P = 0.
 #[derive(Debug)]
 struct Through;
@@ -493,4 +517,184 @@ fn a_custom_constraint_reads_a_composite_curve() {
     // Checked through the kernel's evaluation of the solved entity, not the residual.
     let on = s.entity(c).unwrap().as_curve().unwrap().point(u).unwrap();
     assert_relative_eq!(on, Point2::new(3.0, 2.0), epsilon = 1e-9);
+}
+
+/// A sketch with the start and end tangencies in the given form (`"row"` or `"elimination"`).
+fn with_form(template: &str, form: &str) -> Sketch {
+    from_json(&template.replace("FORM", form)).unwrap()
+}
+
+/// The elimination form of the end tangencies on a Hermite curve: its end tangents are
+/// themselves unknowns, T = t·d with t ≥ 0. Ends fixed and the midpoint pinned determine the
+/// curve: C(½) = (p0 + p1)/2 + (t0 − t1)/8 = (2, 0) + ((α, 0) − (0, −β))/8 = (2.5, 1) gives
+/// α = 4, β = 8. Row and elimination forms land on that one solution.
+#[test]
+fn hermite_end_tangents_eliminate_like_their_rows() {
+    let template = r#"{"version": 1,
+      "entities": [{"id": 0, "kind": "hermite", "p0": [0, 0], "p1": [4, 0],
+                    "t0": [3, 1], "t1": [1, -3]}],
+      "constraints": [
+        {"id": 1, "kind": "fixed", "target": {"point": {"start": 0}}},
+        {"id": 2, "kind": "fixed", "target": {"point": {"end": 0}}},
+        {"id": 3, "kind": "start_tangent", "curve": 0, "direction": [1, 0], "sense": "agree", "form": "FORM"},
+        {"id": 4, "kind": "end_tangent", "curve": 0, "direction": [0, -1], "sense": "agree", "form": "FORM"},
+        {"id": 5, "kind": "point_at_parameter", "curve": 0, "u": 0.5, "target": {"at": [2.5, 1]}}
+      ]}"#;
+    let mut solved = Vec::new();
+    for form in ["row", "elimination"] {
+        let mut s = with_form(template, form);
+        let before = s.analyze().unwrap();
+        assert_eq!(
+            before[0].analysis.dof, 0,
+            "{form}: {:?}",
+            before[0].analysis
+        );
+        // Rows: two tangent unknowns each; eliminated: one length each.
+        let unknowns = if form == "row" { 4 } else { 2 };
+        assert_eq!(before[0].analysis.free_unknowns, unknowns, "{form}");
+        let report = s.solve().unwrap();
+        assert!(max_residual(&report) < 1e-9, "{form}: {report:?}");
+        assert_eq!(report.components[0].report.dof, 0, "{form}");
+        let blocks = match s.entity(EntityId(0)).unwrap() {
+            Entity::Hermite(c) => c.blocks().to_vec(),
+            other => panic!("{other:?}"),
+        };
+        assert_relative_eq!(blocks[2], Point2::new(4.0, 0.0), epsilon = 1e-9);
+        assert_relative_eq!(blocks[3], Point2::new(0.0, -8.0), epsilon = 1e-9);
+        solved.push(blocks);
+    }
+    for (a, b) in solved[0].iter().zip(&solved[1]) {
+        assert_relative_eq!(a, b, epsilon = 1e-9);
+    }
+}
+
+/// The same on a composite of two segments with a smooth join: nodes fixed, start tangent
+/// along (1, 1), end tangent along (1, −1), C(½) = (N₀ + N₁)/2 + (a₀ − t₁)/8 and
+/// C(3/2) = (N₁ + N₂)/2 + (t₁ − b₂)/8 pinned: a₀ = (2, 2), t₁ = (2, 0), b₂ = (3, −3) give
+/// (1, 0.75) and (2.875, 0.875), and the four equations in α, β and t₁ have only that solution.
+#[test]
+fn composite_end_tangents_eliminate_like_their_rows() {
+    let template = r#"{"version": 1,
+      "entities": [{"id": 0, "kind": "composite", "nodes": [[0, 0], [2, 1], [4, 0]],
+                    "tangents": [[1, 0.3], [1, 1], [2, 0]], "joins": ["smooth"]}],
+      "constraints": [
+        {"id": 1, "kind": "fixed", "target": {"point": {"control": [0, 0]}}},
+        {"id": 2, "kind": "fixed", "target": {"point": {"control": [0, 1]}}},
+        {"id": 3, "kind": "fixed", "target": {"point": {"control": [0, 2]}}},
+        {"id": 4, "kind": "start_tangent", "curve": 0, "direction": [1, 1], "sense": "agree", "form": "FORM"},
+        {"id": 5, "kind": "end_tangent", "curve": 0, "direction": [1, -1], "sense": "agree", "form": "FORM"},
+        {"id": 6, "kind": "point_at_parameter", "curve": 0, "u": 0.5, "target": {"at": [1, 0.75]}},
+        {"id": 7, "kind": "point_at_parameter", "curve": 0, "u": 1.5, "target": {"at": [2.875, 0.875]}}
+      ]}"#;
+    let expected = [
+        Point2::new(2.0, 2.0),
+        Point2::new(2.0, 0.0),
+        Point2::new(3.0, -3.0),
+    ];
+    let mut solved = Vec::new();
+    for form in ["row", "elimination"] {
+        let mut s = with_form(template, form);
+        let report = s.solve().unwrap();
+        assert!(max_residual(&report) < 1e-9, "{form}: {report:?}");
+        assert_eq!(report.components[0].report.dof, 0, "{form}");
+        let blocks = match s.entity(EntityId(0)).unwrap() {
+            Entity::Composite(c) => c.blocks().to_vec(),
+            other => panic!("{other:?}"),
+        };
+        for (got, want) in blocks[3..].iter().zip(&expected) {
+            assert_relative_eq!(got, want, epsilon = 1e-9);
+        }
+        solved.push(blocks);
+    }
+    for (a, b) in solved[0].iter().zip(&solved[1]) {
+        assert_relative_eq!(a, b, epsilon = 1e-9);
+    }
+}
+
+/// The bundled example (nonlinear: contacts with a line and a circle, a G1 join) with its
+/// Hermite end tangent in elimination form: it solves, the end tangent points down as asked,
+/// and the DOF is the row form's (the elimination trades one unknown for one row).
+#[test]
+fn the_bundled_example_solves_with_an_eliminated_end_tangent() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../examples/sketches/hermite_composite.json");
+    let text = std::fs::read_to_string(path).unwrap();
+    assert!(text.contains(r#""form":"row""#));
+    let mut dof = Vec::new();
+    for form in ["row", "elimination"] {
+        let mut s =
+            from_json(&text.replace(r#""form":"row""#, &format!(r#""form":"{form}""#))).unwrap();
+        let report = s.solve().unwrap();
+        assert!(max_residual(&report) < 1e-9, "{form}: {report:?}");
+        let hermite = s.entity(EntityId(1)).unwrap();
+        let (p1, t1) = hermite.point_tangent(1.0).unwrap();
+        assert_relative_eq!(p1, Point2::new(9.0, 0.5), epsilon = 1e-9);
+        assert!(t1.x.abs() < 1e-9 && t1.y < 0.0, "{form}: {t1}");
+        dof.push(report.components[0].report.dof);
+    }
+    assert_eq!(dof[0], dof[1]);
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// Random determined Hermite curves: ends fixed, end tangent directions d0, d1 and the
+    /// midpoint C(½) = (p0 + p1)/2 + (α·d0 − β·d1)/8 pinned, α, β > 0 (unique when d0 and d1
+    /// are not parallel). Row and elimination forms both recover α·d0 and β·d1.
+    #[test]
+    fn eliminated_hermite_tangents_match_the_rows(
+        ends in prop::array::uniform4(-3.0..3.0_f64),
+        angles in prop::array::uniform2(0.0..std::f64::consts::TAU),
+        lengths in prop::array::uniform2(0.5..4.0_f64),
+    ) {
+        let (d0, d1) = (
+            Vector2::new(angles[0].cos(), angles[0].sin()),
+            Vector2::new(angles[1].cos(), angles[1].sin()),
+        );
+        prop_assume!((d0.x * d1.y - d0.y * d1.x).abs() > 0.2);
+        let (p0, p1) = (Point2::new(ends[0], ends[1]), Point2::new(ends[2], ends[3]));
+        prop_assume!((p1 - p0).norm() > 0.5);
+        let (t0, t1) = (d0 * lengths[0], d1 * lengths[1]);
+        let mid = Point2::from((p0.coords + p1.coords) / 2.0 + (t0 - t1) / 8.0);
+        let mut solved = Vec::new();
+        for form in [TangentForm::Row, TangentForm::Elimination] {
+            // Start from tangents turned 20° off and of other lengths.
+            let turn = nalgebra::Rotation2::new(0.35);
+            let mut s = Sketch::new();
+            let h = s
+                .add_entity(Entity::Hermite(
+                    HermiteChain::single(p0, p1, turn * t0 * 1.3, turn * t1 * 0.8).unwrap(),
+                ))
+                .unwrap();
+            for j in [0, 1] {
+                s.add_constraint(camber_sketch::constraints::fixed::Fixed::point(
+                    PointRef::Control(h, j),
+                ))
+                .unwrap();
+            }
+            s.add_constraint(StartTangent { curve: h, direction: d0, sense: Sense::Agree, form })
+                .unwrap();
+            s.add_constraint(camber_sketch::constraints::end_tangent::EndTangent {
+                curve: h,
+                direction: d1,
+                sense: Sense::Agree,
+                form,
+            })
+            .unwrap();
+            s.add_constraint(PointAtParameter { curve: h, u: 0.5, target: Target::At(mid) })
+                .unwrap();
+            let report = s.solve().unwrap();
+            prop_assert!(max_residual(&report) < 1e-9);
+            let blocks = match s.entity(h).unwrap() {
+                Entity::Hermite(c) => c.blocks().to_vec(),
+                _ => unreachable!(),
+            };
+            prop_assert!((blocks[2].coords - t0).norm() < 1e-8, "{:?}: {:?} vs {}", form, blocks, t0);
+            prop_assert!((blocks[3].coords - t1).norm() < 1e-8, "{:?}: {:?} vs {}", form, blocks, t1);
+            solved.push(blocks);
+        }
+        for (a, b) in solved[0].iter().zip(&solved[1]) {
+            prop_assert!((a - b).norm() < 1e-8);
+        }
+    }
 }

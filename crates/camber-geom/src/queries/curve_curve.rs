@@ -31,7 +31,7 @@ use std::collections::BinaryHeap;
 use nalgebra::{Point, SVector};
 
 use super::closest_point;
-use super::pieces::{BezierPieces, RationalPiece};
+use super::pieces::{segment_segment_distance, BezierPieces, RationalPiece};
 use crate::curve::ParametricCurve;
 use crate::errors::{Error, Result};
 
@@ -139,6 +139,17 @@ fn box_distance<const D: usize>(
     d2.sqrt()
 }
 
+/// A lower bound on the distance between two pieces: the larger of their boxes' distance and
+/// their chords' distance less both flatnesses. Near a closest pair the second is the sharper
+/// (its error shrinks with the square of the pieces' length), so few leaf pairs survive it.
+fn lower_bound<const D: usize>(x: &RationalPiece<D>, y: &RationalPiece<D>) -> f64 {
+    let by_box = box_distance(&x.bounding_box(), &y.bounding_box());
+    let (xa, xb, fx) = x.chord_and_flatness();
+    let (ya, yb, fy) = y.chord_and_flatness();
+    let by_chord = segment_segment_distance((&xa, &xb), (&ya, &yb)) - fx - fy;
+    by_box.max(by_chord)
+}
+
 fn diagonal<const D: usize>((lo, hi): &(SVector<f64, D>, SVector<f64, D>)) -> f64 {
     (hi - lo).norm()
 }
@@ -222,6 +233,32 @@ where
     Ok((s, t))
 }
 
+/// Newton on ½|C(u) − p|² from `u`, inside the curve's domain: the foot of `p` near `u`.
+fn foot<const D: usize, C>(curve: &C, p: &Point<f64, D>, mut u: f64) -> Result<f64>
+where
+    C: ParametricCurve<f64, D> + ?Sized,
+{
+    let (lo, hi) = curve.domain();
+    for _ in 0..50 {
+        let [c, d, dd] = curve.second_order(u)?;
+        let w = c - p.coords;
+        let g = w.dot(&d);
+        let h = d.norm_squared() + w.dot(&dd);
+        // Away from the foot the Hessian may be negative: fall back to a Gauss–Newton step.
+        let h = if h > 0.0 { h } else { d.norm_squared() };
+        if h <= 0.0 || !h.is_finite() {
+            break;
+        }
+        let next = (u - g / h).clamp(lo, hi);
+        let moved = (next - u).abs() / (hi - lo);
+        u = next;
+        if moved < 1e-16 {
+            break;
+        }
+    }
+    Ok(u)
+}
+
 /// In the plane, a tangential contact solves G = (A′ × B′, (A − B)·B′) = 0 — parallel tangents
 /// and B's foot point — whose Jacobian [[A″ × B′, A′ × B″], [A′·B′, (A − B)·B″ − |B′|²]] is
 /// regular when the curvatures differ (its determinant is −λ²|B′|⁵(κ_B − κ_A) at the contact,
@@ -299,8 +336,8 @@ pub fn intersect_curves<const D: usize, A, B>(
     opts: &CurveCurveOptions,
 ) -> Result<Vec<CurvePairPoint<D>>>
 where
-    A: BezierPieces<D> + ?Sized,
-    B: BezierPieces<D> + ?Sized,
+    A: ParametricCurve<f64, D> + ?Sized,
+    B: ParametricCurve<f64, D> + ?Sized,
 {
     intersect_excluding(a, b, opts, &[])
 }
@@ -315,11 +352,11 @@ pub(super) fn intersect_excluding<const D: usize, A, B>(
     excluded: &[(f64, f64)],
 ) -> Result<Vec<CurvePairPoint<D>>>
 where
-    A: BezierPieces<D> + ?Sized,
-    B: BezierPieces<D> + ?Sized,
+    A: ParametricCurve<f64, D> + ?Sized,
+    B: ParametricCurve<f64, D> + ?Sized,
 {
     opts.check()?;
-    let (pa, pb) = (a.bezier_pieces(), b.bezier_pieces());
+    let (pa, pb) = (a.bezier_pieces()?, b.bezier_pieces()?);
     let inside = |lo: f64, hi: f64| excluded.iter().any(|(x, y)| lo >= *x && hi <= *y);
     let size = extent(&pa).max(extent(&pb)).max(opts.tolerance);
     let leaf = 1e-3 * size;
@@ -335,10 +372,10 @@ where
         if inside(x.start, x.end) {
             continue;
         }
-        let (bx, by) = (x.bounding_box(), y.bounding_box());
-        if box_distance(&bx, &by) > grow {
+        if lower_bound(&x, &y) > grow {
             continue;
         }
+        let (bx, by) = (x.bounding_box(), y.bounding_box());
         let (dx, dy) = (diagonal(&bx), diagonal(&by));
         if dx <= leaf && dy <= leaf {
             seeds.push((0.5 * (x.start + x.end), 0.5 * (y.start + y.end)));
@@ -464,11 +501,11 @@ pub fn curve_distance<const D: usize, A, B>(
     opts: &CurveCurveOptions,
 ) -> Result<CurvePairPoint<D>>
 where
-    A: BezierPieces<D> + ?Sized,
-    B: BezierPieces<D> + ?Sized,
+    A: ParametricCurve<f64, D> + ?Sized,
+    B: ParametricCurve<f64, D> + ?Sized,
 {
     opts.check()?;
-    let (pa, pb) = (a.bezier_pieces(), b.bezier_pieces());
+    let (pa, pb) = (a.bezier_pieces()?, b.bezier_pieces()?);
     let size = extent(&pa).max(extent(&pb)).max(opts.tolerance);
     let leaf = 1e-3 * size;
     let ((a0, a1), (b0, b1)) = (a.domain(), b.domain());
@@ -492,7 +529,7 @@ where
     let mut heap = BinaryHeap::new();
     for x in &pa {
         for y in &pb {
-            let lower = box_distance(&x.bounding_box(), &y.bounding_box());
+            let lower = lower_bound(x, y);
             heap.push(Candidate {
                 lower,
                 a: x.clone(),
@@ -517,6 +554,18 @@ where
             leaves += 1;
             let (s, t) = refine(a, b, 0.5 * (xa + xb), 0.5 * (ya + yb))?;
             consider(pair_point(a, b, s, t)?, &mut best);
+            // A closest pair at a piece end (a corner of a composite, a domain end) is not a
+            // stationary point of the distance, so the joint Newton iteration may stop short
+            // of it: hold each piece end fixed and find its foot on the other curve.
+            let (ym, xm) = (0.5 * (ya + yb), 0.5 * (xa + xb));
+            for s in [xa, xb] {
+                let t = foot(b, &a.point(s)?, ym)?;
+                consider(pair_point(a, b, s, t)?, &mut best);
+            }
+            for t in [ya, yb] {
+                let s = foot(a, &b.point(t)?, xm)?;
+                consider(pair_point(a, b, s, t)?, &mut best);
+            }
             if leaves >= opts.max_candidates {
                 break;
             }
@@ -530,7 +579,7 @@ where
             [(x.clone(), l), (x, r)]
         };
         for (cx, cy) in children {
-            let lower = box_distance(&cx.bounding_box(), &cy.bounding_box());
+            let lower = lower_bound(&cx, &cy);
             if lower < best.distance - opts.tolerance {
                 heap.push(Candidate {
                     lower,

@@ -56,7 +56,7 @@ mod curve_curve;
 mod distance;
 mod intersect;
 mod overlap;
-mod pieces;
+pub(crate) mod pieces;
 
 pub use closest::{closest_point, closest_point_with};
 pub use curvature::{
@@ -70,7 +70,7 @@ pub use distance::{
 };
 pub use intersect::{intersect_circle, intersect_circle_with, intersect_line, intersect_line_with};
 pub use overlap::{intersect_curves_with_overlaps, CurveIntersections, Overlap};
-pub use pieces::{BezierPieces, RationalPiece};
+pub use pieces::{sampled_pieces, BezierPieces, RationalPiece};
 
 use nalgebra::{Point, Point2, SVector};
 

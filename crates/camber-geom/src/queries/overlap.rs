@@ -20,6 +20,7 @@ use nalgebra::Point;
 use super::closest_point;
 use super::curve_curve::{extent, intersect_excluding, CurveCurveOptions, CurvePairPoint};
 use super::pieces::BezierPieces;
+use crate::curve::ParametricCurve;
 use crate::errors::Result;
 
 /// Samples per Bézier piece of `a` when looking for overlaps (the pieces' ends included).
@@ -73,12 +74,12 @@ pub fn intersect_curves_with_overlaps<const D: usize, A, B>(
     opts: &CurveCurveOptions,
 ) -> Result<CurveIntersections<D>>
 where
-    A: BezierPieces<D> + ?Sized,
-    B: BezierPieces<D> + ?Sized,
+    A: ParametricCurve<f64, D> + ?Sized,
+    B: ParametricCurve<f64, D> + ?Sized,
 {
     opts.check()?;
-    let pieces = a.bezier_pieces();
-    let size = extent(&pieces).max(extent(&b.bezier_pieces()));
+    let pieces = a.bezier_pieces()?;
+    let size = extent(&pieces).max(extent(&b.bezier_pieces()?));
     // On `b`: within the tolerance, or within what rounding leaves of the closest point.
     let near = opts.tolerance.max(1e-12 * size);
     let on = |s: f64| -> Result<bool> {

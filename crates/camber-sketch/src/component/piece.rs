@@ -77,12 +77,13 @@ pub(crate) enum Piece {
         slots: Vec<Slot>,
         check: Option<Arc<dyn SolvedCheck>>,
     },
-    /// P_target = P_base + t·direction with t > 0 a new unknown; `fallback` is the row form
-    /// used when the target cannot be eliminated.
+    /// P_target = P_base + t·direction with t > 0 a new unknown (P_target = t·direction when
+    /// there is no base: a Hermite or composite end tangent, which is itself an unknown block);
+    /// `fallback` is the row form used when the target cannot be eliminated.
     Eliminate {
         curve: EntityId,
         target: usize,
-        base: usize,
+        base: Option<usize>,
         direction: [f64; 2],
         fallback: Box<Piece>,
     },

@@ -139,12 +139,35 @@ pub(crate) fn solve(
     let initial = cp.problem.state();
     let base_rows = cp.problem.num_residuals();
     let outcome = active_set(cp, before, options, start, base_rows, &initial);
+    let active = cp.problem.num_residuals().saturating_sub(base_rows);
     // The active rows are taken back either way: they belong to this solve only.
     cp.problem.truncate_residuals(base_rows);
+    let outcome = match outcome {
+        Ok((report, solved)) if active > 0 => {
+            equality_dof(cp, options, report).map(|report| (report, solved))
+        }
+        other => other,
+    };
     if outcome.is_err() {
         cp.problem.restore(&initial);
     }
     outcome
+}
+
+/// The report's rank and DOF counted on the constraints' own rows at the solution. The active
+/// rows of honest contact are inequalities (the curve on its side of the target): binding, they
+/// keep the solution on one side of a boundary but take no dimension from the set of solutions,
+/// and the solver, which saw them as rows, counted them in its rank. `camber check` and
+/// [`crate::Sketch::analyze`] count without them, and so does the report now.
+fn equality_dof(
+    cp: &ComponentProblem,
+    options: &Options,
+    mut report: SolveReport,
+) -> Result<SolveReport> {
+    let analysis = cp.problem.analyze(options)?;
+    report.rank = analysis.rank;
+    report.dof = analysis.dof;
+    Ok(report)
 }
 
 fn active_set(

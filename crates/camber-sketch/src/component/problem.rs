@@ -423,26 +423,34 @@ pub(crate) fn build(
             else {
                 continue;
             };
-            let (tb, bb) = (
-                cp.point_block(*curve, *target)?,
-                cp.point_block(*curve, *base)?,
-            );
+            let tb = cp.point_block(*curve, *target)?;
+            let bb = match base {
+                Some(base) => Some(cp.point_block(*curve, *base)?),
+                None => None,
+            };
             let usable = !fixed.contains(&tb)
                 && !targets.contains(&tb)
                 && !bases.contains(&tb)
-                && !targets.contains(&bb);
+                && bb.is_none_or(|bb| !targets.contains(&bb));
             if !usable {
                 rows.push((*id, (**fallback).clone()));
                 continue;
             }
             let p = &cp.problem;
             let (tx, ty) = (p.unknown(tb, 0)?, p.unknown(tb, 1)?);
-            let (bx, by) = (p.unknown(bb, 0)?, p.unknown(bb, 1)?);
-            let (pt, pb) = (p.values()[tx.index()..=ty.index()].to_vec(), {
-                p.values()[bx.index()..=by.index()].to_vec()
-            });
+            let pt = p.values()[tx.index()..=ty.index()].to_vec();
+            let pb = match bb {
+                Some(bb) => {
+                    let (bx, by) = (p.unknown(bb, 0)?, p.unknown(bb, 1)?);
+                    Some(([bx, by], p.values()[bx.index()..=by.index()].to_vec()))
+                }
+                None => None,
+            };
             let d = direction;
-            let (ex, ey) = (pt[0] - pb[0], pt[1] - pb[1]);
+            let (ex, ey) = match &pb {
+                Some((_, v)) => (pt[0] - v[0], pt[1] - v[1]),
+                None => (pt[0], pt[1]),
+            };
             let dd = d[0] * d[0] + d[1] * d[1];
             let proj = (ex * d[0] + ey * d[1]) / dd;
             // Start on the ray: the projection when it is ahead, else the same distance.
@@ -451,12 +459,24 @@ pub(crate) fn build(
             } else {
                 (ex * ex + ey * ey).sqrt() / dd.sqrt()
             };
-            let t = cp.problem.eliminate(&[tx, ty], &[bx, by], d, t0)?;
+            let t = match &pb {
+                Some((b, _)) => cp.problem.eliminate(&[tx, ty], b, d, t0)?,
+                None => {
+                    // The target is a tangent vector: T = t·direction.
+                    let t = cp.problem.add_aux(t0)?;
+                    for (u, dk) in [(tx, d[0]), (ty, d[1])] {
+                        cp.problem.substitute(u, &[(Var::Aux(t), dk)], 0.0)?;
+                    }
+                    t
+                }
+            };
             cp.problem.set_bounds(Var::Aux(t), 0.0, f64::INFINITY)?;
             targets.insert(tb);
-            bases.insert(bb);
             let mut terms = ETerms::new();
-            terms.push((*curve, *base, -1.0));
+            if let (Some(bb), Some(base)) = (bb, base) {
+                bases.insert(bb);
+                terms.push((*curve, *base, -1.0));
+            }
             terms.push((*curve, *target, 1.0));
             let check = cp.orientation(*id, &terms, *d)?;
             cp.orientations.push(check);

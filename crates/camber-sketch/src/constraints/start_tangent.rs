@@ -80,6 +80,22 @@ pub(crate) fn end_tangency(
         TangentForm::Row => cx.push(row),
         TangentForm::Elimination => {
             let e = cx.entity(curve)?;
+            if let crate::entity::Entity::Hermite(chain) | crate::entity::Entity::Composite(chain) = e {
+                // The end tangent is itself a block of unknowns: T = t·s·d directly, t ≥ 0.
+                let target = if at_end {
+                    chain.blocks().len() - 1
+                } else {
+                    chain.node_count()
+                };
+                cx.push(Piece::Eliminate {
+                    curve,
+                    target,
+                    base: None,
+                    direction: orient,
+                    fallback: Box::new(row),
+                });
+                return Ok(());
+            }
             if !e.is_clamped(at_end) {
                 return Err(Error::NotClampedEnd {
                     entity: curve,
@@ -96,7 +112,7 @@ pub(crate) fn end_tangency(
             cx.push(Piece::Eliminate {
                 curve,
                 target,
-                base,
+                base: Some(base),
                 direction,
                 fallback: Box::new(row),
             });
