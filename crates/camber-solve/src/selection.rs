@@ -63,11 +63,7 @@ impl Start {
         let dense_analysis = m.saturating_mul(n) <= options.dense_analysis_max_entries;
         // Every row independent by the analysis' own test: its answer is known (rank m,
         // nothing redundant or conflicting) without the singular values.
-        let certified = dense_analysis
-            && m > 0
-            && m <= n
-            && m.saturating_mul(n) <= analysis::DENSE_ANALYSIS_MAX_ENTRIES
-            && certainly_full_row_rank(&lin.jacobian.to_dense(), options.rank_tolerance);
+        let certified = dense_analysis && certainly_full_row_rank_of(&lin, options.rank_tolerance);
         let analysis: Option<DofAnalysis> = if dense_analysis && !certified {
             Some(analysis::analyze(
                 &lin,
@@ -159,6 +155,20 @@ impl Start {
         r.status = Status::AlreadySatisfied;
         Ok(r)
     }
+}
+
+/// [`certainly_full_row_rank`] for the Jacobian of a linearization, when it is small enough
+/// for the dense analysis (m·n ≤ [`analysis::DENSE_ANALYSIS_MAX_ENTRIES`]) and has no more
+/// rows than unknowns; `false` otherwise (the caller then runs the analysis).
+pub(crate) fn certainly_full_row_rank_of(
+    lin: &crate::reduced::Linearization,
+    rank_tolerance: f64,
+) -> bool {
+    let (m, n) = (lin.jacobian.nrows(), lin.jacobian.ncols());
+    m > 0
+        && m <= n
+        && m.saturating_mul(n) <= analysis::DENSE_ANALYSIS_MAX_ENTRIES
+        && certainly_full_row_rank(&lin.jacobian.to_dense(), rank_tolerance)
 }
 
 /// Whether J (m ≤ n rows, m > 0) certainly passes the dense analysis' rank test with every
