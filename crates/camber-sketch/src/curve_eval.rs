@@ -27,7 +27,9 @@
 //! coefficient of block j is Σᵣ N⁽ᵏ⁾ᵣ(u)·Mᵣⱼ — still constants, so those constraints stay
 //! affine.
 
-use camber_geom::basis::{basis_function_derivatives_at, rational_basis_derivatives};
+use camber_geom::basis::{
+    basis_function_derivatives_at, rational_basis_derivatives, INLINE_DEGREE,
+};
 use camber_geom::KnotVector;
 use camber_solve::scalar::{cst, re};
 use camber_solve::Scalar;
@@ -296,10 +298,60 @@ impl CurveBasis {
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn point(&self, points: &[&[f64]], u: f64) -> [f64; 2] {
-        match &self.fixed {
-            Some(_) => self.eval(points, u).0,
-            None => self.derivatives::<f64, 1>(points, u)[0],
+        if self.fixed.is_some() {
+            return self.eval(points, u).0;
         }
+        let p = self.degree;
+        if p > INLINE_DEGREE
+            || points.len() < self.blocks
+            || self.count == 0
+            || self.knots.len() < self.count + p + 1
+        {
+            return self.derivatives::<f64, 1>(points, u)[0];
+        }
+        // The values alone (The NURBS Book A2.2) into a stack row: the same arithmetic as the
+        // first row of `basis_rows`, without the derivative table or a returned buffer (this
+        // is the inner loop of the clearance scan).
+        let (a, b) = self.domain();
+        let u = if u < a {
+            a
+        } else if u > b {
+            b
+        } else {
+            u
+        };
+        let span = self.knots.find_span(p, u);
+        let first = span - p;
+        let mut n = [0.0; INLINE_DEGREE + 1];
+        self.knots.basis_functions(span, u, p, &mut n[..=p]);
+        if let Some(weights) = self.weights.as_deref().and_then(|w| w.get(first..=span)) {
+            let mut total = 0.0;
+            for (nj, wj) in n.iter_mut().zip(weights) {
+                *nj *= *wj;
+                total += *nj;
+            }
+            let inv = 1.0 / total;
+            for nj in &mut n[..=p] {
+                *nj *= inv;
+            }
+        }
+        let mut c = [0.0; 2];
+        for (r, nr) in n[..=p].iter().enumerate() {
+            let q = match self.map.as_deref() {
+                Some(map) => {
+                    let mut q = [0.0; 2];
+                    for (j, m) in map.get(first + r).into_iter().flatten() {
+                        q[0] += m * points[*j][0];
+                        q[1] += m * points[*j][1];
+                    }
+                    q
+                }
+                None => [points[first + r][0], points[first + r][1]],
+            };
+            c[0] += nr * q[0];
+            c[1] += nr * q[1];
+        }
+        c
     }
 
     /// The parametric domain [u_p, u_{n}] (n = number of control points).
@@ -513,6 +565,43 @@ mod tests {
                 }
             }
         }
+        Ok(())
+    }
+
+    /// The point-only evaluation of the clearance scan equals C of the full evaluation for a
+    /// composite curve (control points mapped from nodes and tangents), inside and beyond the
+    /// domain (clamped).
+    #[test]
+    fn the_point_alone_agrees_with_the_full_evaluation_through_the_map(
+    ) -> Result<(), Box<dyn std::error::Error>> {
+        use crate::hermite_chain::{HermiteChain, Join};
+        use nalgebra::Vector2;
+        let nodes = vec![
+            Point2::new(0.0, 0.0),
+            Point2::new(1.0, 1.0),
+            Point2::new(2.5, 0.5),
+        ];
+        let tangents = vec![
+            Vector2::new(1.0, 2.0),
+            Vector2::new(1.5, -0.5),
+            Vector2::new(0.5, -1.0),
+        ];
+        let chain = HermiteChain::try_new(nodes, tangents, vec![Join::Smooth])?;
+        let e = Entity::Composite(chain);
+        let basis = CurveBasis::of(&e).ok_or("curve")?;
+        let raw: Vec<[f64; 2]> = e.points().iter().map(|p| [p.x, p.y]).collect();
+        let refs: Vec<&[f64]> = raw.iter().map(|b| &b[..]).collect();
+        let (a, b) = basis.domain();
+        for u in [a - 0.5, a, 0.3, 1.0, 1.7, b, b + 1.0] {
+            let full = basis.eval::<f64>(&refs, u).0;
+            let alone = basis.point(&refs, u);
+            assert_relative_eq!(alone[0], full[0], epsilon = 1e-14);
+            assert_relative_eq!(alone[1], full[1], epsilon = 1e-14);
+        }
+        // The curve passes through its middle node at u = 1.
+        let mid = basis.point(&refs, 1.0);
+        assert_relative_eq!(mid[0], 1.0, epsilon = 1e-14);
+        assert_relative_eq!(mid[1], 1.0, epsilon = 1e-14);
         Ok(())
     }
 

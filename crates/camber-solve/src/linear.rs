@@ -77,8 +77,13 @@ pub fn solve_linear(problem: &mut Problem, options: &Options) -> Result<SolveRep
     let lin = problem.linearize()?;
     let (m, n) = (lin.g.len(), lin.map.len());
 
-    let (rank, dof, redundant, rows) = if m.saturating_mul(n) <= options.dense_analysis_max_entries
+    let dense_analysis = m.saturating_mul(n) <= options.dense_analysis_max_entries;
+    let (rank, dof, redundant, rows) = if dense_analysis
+        && crate::selection::certainly_full_row_rank_of(&lin, options.rank_tolerance)
     {
+        // Every row independent by the analysis' own test: its answer is known.
+        (m, n - m, Vec::new(), (0..m).collect())
+    } else if dense_analysis {
         let a = analysis::analyze(&lin, options.rank_tolerance, options.tolerance)?;
         if !a.conflicting.is_empty() {
             return Err(Error::Conflicting {

@@ -60,16 +60,19 @@ impl Start {
         options.nonlinear.validate()?;
         let lin = problem.linearize()?;
         let (m, n) = (lin.g.len(), lin.map.len());
-        let analysis: Option<DofAnalysis> =
-            if m.saturating_mul(n) <= options.dense_analysis_max_entries {
-                Some(analysis::analyze(
-                    &lin,
-                    options.rank_tolerance,
-                    options.tolerance,
-                )?)
-            } else {
-                None
-            };
+        let dense_analysis = m.saturating_mul(n) <= options.dense_analysis_max_entries;
+        // Every row independent by the analysis' own test: its answer is known (rank m,
+        // nothing redundant or conflicting) without the singular values.
+        let certified = dense_analysis && certainly_full_row_rank_of(&lin, options.rank_tolerance);
+        let analysis: Option<DofAnalysis> = if dense_analysis && !certified {
+            Some(analysis::analyze(
+                &lin,
+                options.rank_tolerance,
+                options.tolerance,
+            )?)
+        } else {
+            None
+        };
         let satisfied = lin.g.iter().all(|v| v.abs() <= options.tolerance);
         let pending = lin
             .x
@@ -102,7 +105,7 @@ impl Start {
                 redundant: Vec::new(),
                 conflicting: Vec::new(),
                 independent: None,
-                basis: None,
+                basis: certified.then(|| (0..m).collect()),
                 affine: lin.affine,
                 full_rank: true,
             },
@@ -152,6 +155,55 @@ impl Start {
         r.status = Status::AlreadySatisfied;
         Ok(r)
     }
+}
+
+/// [`certainly_full_row_rank`] for the Jacobian of a linearization, when it is small enough
+/// for the dense analysis (m·n ≤ [`analysis::DENSE_ANALYSIS_MAX_ENTRIES`]) and has no more
+/// rows than unknowns; `false` otherwise (the caller then runs the analysis).
+pub(crate) fn certainly_full_row_rank_of(
+    lin: &crate::reduced::Linearization,
+    rank_tolerance: f64,
+) -> bool {
+    let (m, n) = (lin.jacobian.nrows(), lin.jacobian.ncols());
+    m > 0
+        && m <= n
+        && m.saturating_mul(n) <= analysis::DENSE_ANALYSIS_MAX_ENTRIES
+        && certainly_full_row_rank(&lin.jacobian.to_dense(), rank_tolerance)
+}
+
+/// Whether J (m ≤ n rows, m > 0) certainly passes the dense analysis' rank test with every
+/// row independent: all singular values above `rank_tolerance`·σ_max.
+///
+/// With JJᵀ = LLᵀ (Cholesky), the singular values of L are those of J, and
+/// σ_min(L) = 1/‖L⁻¹‖₂ ≥ 1/‖L⁻¹‖_F while σ_max(J) ≤ ‖J‖_F, so
+/// 1/‖L⁻¹‖_F ≥ c·‖J‖_F proves σ_min ≥ c·σ_max. The margin c = max(10⁻⁵, 10³·tolerance) covers
+/// the rounding of forming and factoring JJᵀ (relative error about m·ε in λ_min = σ_min², far
+/// below c² = 10⁻¹⁰), so a certified J has the analysis' rank m and, every row being at least
+/// σ_min from the span of the others, no dependent row. This costs m²·n/2 + m³/2 flops
+/// against the singular value decomposition's much larger constant; a J that is not certified
+/// (ill-conditioned, rank deficient, or Cholesky failing) goes through the full analysis.
+fn certainly_full_row_rank(j: &nalgebra::DMatrix<f64>, rank_tolerance: f64) -> bool {
+    let (m, n) = j.shape();
+    if m == 0 || m > n {
+        return false;
+    }
+    let frobenius = j.norm();
+    if !(frobenius.is_finite() && frobenius > 0.0) {
+        return false;
+    }
+    let margin = (1e3 * rank_tolerance).max(1e-5);
+    let gram = j * j.transpose();
+    let Some(chol) = nalgebra::linalg::Cholesky::new(gram) else {
+        return false;
+    };
+    let mut inverse = nalgebra::DMatrix::<f64>::identity(m, m);
+    if !chol.l_dirty().solve_lower_triangular_mut(&mut inverse) {
+        return false;
+    }
+    // Only the lower triangle of the factor is L (the upper one holds leftovers), and the
+    // lower-triangular solve reads only that part.
+    let inverse_norm = inverse.norm();
+    inverse_norm.is_finite() && 1.0 / inverse_norm >= margin * frobenius
 }
 
 /// Re-evaluates every residual at z and writes z back only if all are within tolerance and
@@ -715,4 +767,67 @@ pub fn solve_newton_from(
         priorities: Vec::new(),
         elapsed: clock.elapsed(),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::certainly_full_row_rank;
+    use nalgebra::DMatrix;
+    use proptest::prelude::*;
+
+    #[test]
+    fn a_well_conditioned_jacobian_is_certified() {
+        // x₁ − x₀, y₁ − y₀ and a row in the first point alone.
+        let j = DMatrix::from_row_slice(
+            3,
+            4,
+            &[1.0, 0.0, -1.0, 0.0, 0.0, 1.0, 0.0, -1.0, 2.0, 0.5, 0.0, 0.0],
+        );
+        assert!(certainly_full_row_rank(&j, 1e-10));
+    }
+
+    #[test]
+    fn dependent_or_nearly_dependent_rows_are_not_certified() {
+        let duplicate = DMatrix::from_row_slice(2, 3, &[1.0, 2.0, 3.0, 1.0, 2.0, 3.0]);
+        assert!(!certainly_full_row_rank(&duplicate, 1e-10));
+        // σ_min/σ_max about 1e-9: above the rank tolerance, but inside the margin, so the full
+        // analysis decides.
+        let near = DMatrix::from_row_slice(2, 2, &[1.0, 0.0, 1.0, 1e-9]);
+        assert!(!certainly_full_row_rank(&near, 1e-10));
+        let zero = DMatrix::<f64>::zeros(2, 3);
+        assert!(!certainly_full_row_rank(&zero, 1e-10));
+        // More rows than unknowns can never have full row rank.
+        let tall = DMatrix::from_row_slice(3, 2, &[1.0, 0.0, 0.0, 1.0, 1.0, 1.0]);
+        assert!(!certainly_full_row_rank(&tall, 1e-10));
+    }
+
+    proptest! {
+        /// Whenever the certificate holds, the singular values agree: every one above the
+        /// margin times σ_max (so the analysis' rank test finds rank m).
+        #[test]
+        fn a_certified_matrix_has_full_rank_by_its_singular_values(
+            entries in proptest::collection::vec(-1.0f64..1.0, 24),
+            m in 1usize..=4,
+            squash in 0usize..4,
+        ) {
+            let n = 6;
+            let mut j = DMatrix::from_row_slice(4, n, &entries).rows(0, m).into_owned();
+            // Make the last row nearly a copy of the first for some cases.
+            if squash > 0 && m > 1 {
+                let first = j.row(0).into_owned();
+                let eps = 10f64.powi(-3 * squash as i32);
+                let last = &first + j.row(m - 1) * eps;
+                j.set_row(m - 1, &last);
+            }
+            let sigma = j.clone().singular_values();
+            let max = sigma.max();
+            let min = sigma.min();
+            if certainly_full_row_rank(&j, 1e-10) {
+                prop_assert!(min >= 0.999e-5 * max, "σ = {sigma}");
+            }
+            if min < 1e-6 * max {
+                prop_assert!(!certainly_full_row_rank(&j, 1e-10));
+            }
+        }
+    }
 }
