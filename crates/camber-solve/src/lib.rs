@@ -67,6 +67,7 @@ pub mod report;
 pub mod residual;
 pub mod scalar;
 pub mod sparse;
+pub mod structure;
 #[cfg(feature = "testing")]
 pub mod testing;
 
