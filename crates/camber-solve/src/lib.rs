@@ -51,6 +51,7 @@
 mod accidental;
 pub mod analysis;
 pub mod autodiff;
+mod block_analysis;
 pub mod errors;
 pub mod hessian;
 pub mod ids;
