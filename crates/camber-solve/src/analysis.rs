@@ -21,6 +21,11 @@
 //! side is the least-squares residual it adds, zero (within `residual_tolerance`) for a
 //! redundant row. The rank is the number of independent rows. Work and storage follow the
 //! fill of the triangular factor: linear in the length of chains and ladders.
+//!
+//! Block by block ([`analyze`]): the same verdicts, with the numeric tests run only inside the
+//! diagonal blocks of J's Dulmage–Mendelsohn form and inside the pieces of rows they couple (see
+//! [`crate::structure`] and the `block_analysis` module); [`DofAnalysis::structure`] reports
+//! the decomposition.
 
 use nalgebra::{DMatrix, DVector};
 
