@@ -531,11 +531,10 @@ impl StructureSummary {
         let d = &blocks.structure;
         let over_determined_rows = d.rows_in(Part::OverDetermined);
         let mut over_determined_constraints: Vec<ConstraintId> = Vec::new();
+        let mut seen = std::collections::HashSet::new();
         for r in &over_determined_rows {
             if let Some(owner) = row_owner.get(*r) {
-                if over_determined_constraints.last() != Some(owner)
-                    && !over_determined_constraints.contains(owner)
-                {
+                if seen.insert(*owner) {
                     over_determined_constraints.push(*owner);
                 }
             }
