@@ -28,6 +28,8 @@
 //! gap. So a rank verdict could differ from the whole-matrix SVD only for a singular value
 //! within that fraction of the threshold.
 
+use std::borrow::Cow;
+
 use nalgebra::DVector;
 
 use crate::analysis::{
@@ -108,13 +110,17 @@ pub(crate) fn largest_singular_value(j: &SparseMatrix) -> f64 {
 }
 
 /// The rows `rows` of J restricted to the columns `columns` (renumbered in that order), with
-/// `local` a scratch map of J's columns, all `usize::MAX` on entry and on exit.
-fn restrict(
-    j: &SparseMatrix,
+/// `local` a scratch map of J's columns, all `usize::MAX` on entry and on exit. J itself when
+/// they are all its rows and columns (a component that is one block).
+fn restrict<'a>(
+    j: &'a SparseMatrix,
     rows: &[usize],
     columns: &[usize],
     local: &mut [usize],
-) -> Result<SparseMatrix> {
+) -> Result<Cow<'a, SparseMatrix>> {
+    if rows.len() == j.nrows() && columns.len() == j.ncols() {
+        return Ok(Cow::Borrowed(j));
+    }
     for (k, c) in columns.iter().enumerate() {
         local[*c] = k;
     }
@@ -130,7 +136,7 @@ fn restrict(
     for c in columns {
         local[*c] = usize::MAX;
     }
-    SparseMatrix::try_from_triplets(rows.len(), columns.len(), &triplets)
+    SparseMatrix::try_from_triplets(rows.len(), columns.len(), &triplets).map(Cow::Owned)
 }
 
 /// Runs `kernel` on a restricted matrix with the whole component's threshold.

@@ -15,7 +15,7 @@ pub struct CheckArgs {
     pub input: PathBuf,
     /// Print JSON instead of text: `{"components": [{"component": {"entities",
     /// "constraints"}, "analysis": {"free_unknowns", "rank", "dof", "redundant",
-    /// "conflicting"}}], "warnings": [...]}`.
+    /// "conflicting", "structure"}}], "warnings": [...]}`.
     #[arg(long)]
     pub json: bool,
 }
