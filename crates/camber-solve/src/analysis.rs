@@ -154,6 +154,7 @@ pub fn analyze_rows(
 }
 
 /// The verdicts of one run of a rank kernel over some rows.
+#[derive(Clone)]
 pub(crate) struct KernelRows {
     /// The numerical rank (SVD count for the dense kernel, independent rows for the sparse).
     pub rank: usize,

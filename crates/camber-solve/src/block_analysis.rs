@@ -181,15 +181,20 @@ pub(crate) fn analyze_blocks(
 
     // Clear or coupled, first to last.
     let mut coupled = vec![false; blocks.len()];
+    // The verdicts of a failed diagonal test: those of its piece when the block is one alone.
+    let mut failed: Vec<Option<KernelRows>> = vec![None; blocks.len()];
     for (id, b) in blocks.iter().enumerate() {
         if b.part == Part::OverDetermined {
             coupled[id] = true;
         }
         if !coupled[id] && !b.rows.is_empty() {
             let diagonal = restrict(j, &b.rows, &b.columns, &mut local)?;
-            let gb = vec![0.0; b.rows.len()];
-            let verdict = run(kernel, &diagonal, &gb, threshold, scale, 0.0);
+            let gb: Vec<f64> = b.rows.iter().map(|r| g[*r]).collect();
+            let verdict = run(kernel, &diagonal, &gb, threshold, scale, residual_tolerance);
             coupled[id] = !verdict.dependent.is_empty();
+            if coupled[id] {
+                failed[id] = Some(verdict);
+            }
         }
         if coupled[id] {
             for r in &b.rows {
@@ -225,6 +230,8 @@ pub(crate) fn analyze_blocks(
     }
     let mut piece_of_root = vec![usize::MAX; blocks.len()];
     let mut pieces: Vec<Piece> = Vec::new();
+    // The blocks of each piece: how many, and the first.
+    let mut members: Vec<(usize, usize)> = Vec::new();
     for (id, b) in blocks.iter().enumerate() {
         if !coupled[id] {
             continue;
@@ -236,8 +243,11 @@ pub(crate) fn analyze_blocks(
                 rows: Vec::new(),
                 columns: Vec::new(),
             });
+            members.push((0, id));
         }
-        let p = &mut pieces[piece_of_root[r]];
+        let k = piece_of_root[r];
+        members[k].0 += 1;
+        let p = &mut pieces[k];
         p.rows.extend(&b.rows);
         p.columns.extend(&b.columns);
     }
@@ -251,12 +261,19 @@ pub(crate) fn analyze_blocks(
         }
     }
     let mut dependent: Vec<DependentRow> = Vec::new();
-    for p in &mut pieces {
+    for (p, (count, first)) in pieces.iter_mut().zip(&members) {
         p.rows.sort_unstable();
         p.columns.sort_unstable();
-        let sub = restrict(j, &p.rows, &p.columns, &mut local)?;
-        let gp: Vec<f64> = p.rows.iter().map(|r| g[*r]).collect();
-        let verdict = run(kernel, &sub, &gp, threshold, scale, residual_tolerance);
+        // A piece of one block whose diagonal test failed: the same matrix, already analysed
+        // (its rows read only its own columns, else the piece would hold more blocks).
+        let verdict = match failed[*first].take() {
+            Some(verdict) if *count == 1 => verdict,
+            _ => {
+                let sub = restrict(j, &p.rows, &p.columns, &mut local)?;
+                let gp: Vec<f64> = p.rows.iter().map(|r| g[*r]).collect();
+                run(kernel, &sub, &gp, threshold, scale, residual_tolerance)
+            }
+        };
         rank += verdict.rank;
         independent.extend(verdict.independent.iter().map(|k| p.rows[*k]));
         dependent.extend(verdict.dependent.into_iter().map(|d| DependentRow {
