@@ -14,13 +14,13 @@
 //!    the independent rows by minimum-norm Newton corrections (a dependence implied by the
 //!    constraints, such as a point on two lines through the same two constrained points, keeps
 //!    holding there, while a tangency by design does not);
-//! 3. the rows are analysed again at z₁. A row dependent at z₀ but not at z₁ is *accidental*:
+//! 3. the rows are analysed again at z₁ (block by block, as at z₀). A row dependent at z₀ but not at z₁ is *accidental*:
 //!    its constraint is reported as singular here, neither redundant nor conflicting, and the
 //!    rank and DOF become those at z₁ (the generic ones).
 //!
 //! Affine problems are skipped: their Jacobian is the same everywhere.
 
-use crate::analysis::{analyze_rows, analyze_rows_sparse, DofAnalysis, DENSE_ANALYSIS_MAX_ENTRIES};
+use crate::analysis::{analyze_rows_by_blocks, DofAnalysis};
 use crate::errors::Result;
 use crate::evaluator::{max_abs, Evaluator};
 use crate::ids::ConstraintId;
@@ -90,11 +90,7 @@ pub(crate) fn reclassify(
     // 3. The rows at z₁.
     ev.linearize(problem, &z, &mut g)?;
     let j: SparseMatrix = ev.jacobian(&[])?;
-    let nearby = if j.nrows().saturating_mul(n) <= DENSE_ANALYSIS_MAX_ENTRIES {
-        analyze_rows(&j.to_dense(), &g, options.rank_tolerance, f64::INFINITY)?
-    } else {
-        analyze_rows_sparse(&j, &g, options.rank_tolerance, f64::INFINITY)?
-    };
+    let nearby = analyze_rows_by_blocks(&j, &g, options.rank_tolerance, f64::INFINITY, true)?.rows;
     if nearby.rank <= analysis.rank {
         return Ok(analysis);
     }

@@ -21,14 +21,21 @@
 //! side is the least-squares residual it adds, zero (within `residual_tolerance`) for a
 //! redundant row. The rank is the number of independent rows. Work and storage follow the
 //! fill of the triangular factor: linear in the length of chains and ladders.
+//!
+//! Block by block ([`analyze`]): the same verdicts, with the numeric tests run only inside the
+//! diagonal blocks of J's Dulmage–Mendelsohn form and inside the pieces of rows they couple (see
+//! [`crate::structure`] and the `block_analysis` module); [`DofAnalysis::structure`] reports
+//! the decomposition.
 
 use nalgebra::{DMatrix, DVector};
 
+use crate::block_analysis::{analyze_blocks, BlockAnalysis, Kernel};
 use crate::errors::Result;
 use crate::ids::ConstraintId;
 use crate::min_norm::MinNormFactorization;
 use crate::reduced::Linearization;
 use crate::sparse::{check_len, SparseMatrix};
+use crate::structure::Part;
 
 /// A row found to depend on the rows before it.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
@@ -126,28 +133,89 @@ pub fn analyze_rows(
 ) -> Result<RowAnalysis> {
     let (m, n) = j.shape();
     check_len("residual rows", m, g.len())?;
-    let sigma = if m == 0 || n == 0 {
-        DVector::zeros(0)
+    let sigma_max = if m == 0 || n == 0 {
+        0.0
     } else {
-        j.clone().singular_values()
+        j.clone()
+            .singular_values()
+            .iter()
+            .copied()
+            .fold(0.0, f64::max)
     };
-    let sigma_max = sigma.iter().copied().fold(0.0, f64::max);
-    let threshold = rank_tolerance * sigma_max;
-    let rank = sigma
-        .iter()
-        .filter(|s| **s > threshold && **s > 0.0)
-        .count();
+    let dense = dense_rows(j, g, rank_tolerance * sigma_max, residual_tolerance);
+    let free_columns = dense_free_columns(j, &dense.independent);
+    Ok(RowAnalysis {
+        rank: dense.rank,
+        scale: sigma_max,
+        independent: dense.independent,
+        dependent: dense.dependent,
+        free_columns,
+    })
+}
 
-    // Orthonormal basis q_k of the accepted rows, with h_k carrying g through the same
-    // combinations.
-    let mut basis: Vec<(DVector<f64>, f64)> = Vec::new();
+/// The verdicts of one run of a rank kernel over some rows.
+#[derive(Clone)]
+pub(crate) struct KernelRows {
+    /// The numerical rank (SVD count for the dense kernel, independent rows for the sparse).
+    pub rank: usize,
+    /// Rows kept, in order.
+    pub independent: Vec<usize>,
+    /// Rows dependent on earlier rows, in order.
+    pub dependent: Vec<DependentRow>,
+}
+
+/// The dense kernel: rank by the singular values above `threshold`, dependent rows by
+/// Gram–Schmidt in row order against the same threshold (see the module documentation).
+pub(crate) fn dense_rows(
+    j: &DMatrix<f64>,
+    g: &[f64],
+    threshold: f64,
+    residual_tolerance: f64,
+) -> KernelRows {
+    let (m, n) = j.shape();
+    let rank = if m == 0 || n == 0 {
+        0
+    } else {
+        j.clone()
+            .singular_values()
+            .iter()
+            .filter(|s| **s > threshold && **s > 0.0)
+            .count()
+    };
+    let mut basis = GramSchmidt::default();
     let mut independent = Vec::new();
     let mut dependent = Vec::new();
     for (i, gi) in g.iter().enumerate() {
-        let mut v: DVector<f64> = j.row(i).transpose();
-        let mut h = *gi;
+        match basis.insert(j.row(i).transpose(), *gi, threshold) {
+            None => independent.push(i),
+            Some(h) => dependent.push(DependentRow {
+                row: i,
+                mismatch: h.abs(),
+                consistent: h.abs() <= residual_tolerance,
+            }),
+        }
+    }
+    KernelRows {
+        rank,
+        independent,
+        dependent,
+    }
+}
+
+/// An orthonormal basis q_k of accepted rows, with h_k carrying the right-hand side through
+/// the same combinations.
+#[derive(Default)]
+struct GramSchmidt {
+    basis: Vec<(DVector<f64>, f64)>,
+}
+
+impl GramSchmidt {
+    /// Orthogonalizes v (twice, for stability) against the basis: `None` when what is left
+    /// exceeds `threshold` (it joins the basis), else the leftover right-hand side.
+    fn insert(&mut self, mut v: DVector<f64>, h: f64, threshold: f64) -> Option<f64> {
+        let mut h = h;
         for _ in 0..2 {
-            for (q, hq) in &basis {
+            for (q, hq) in &self.basis {
                 let c = q.dot(&v);
                 v.axpy(-c, q, 1.0);
                 h -= c * hq;
@@ -155,24 +223,28 @@ pub fn analyze_rows(
         }
         let norm = v.norm();
         if norm > threshold && norm > 0.0 {
-            basis.push((v / norm, h / norm));
-            independent.push(i);
+            self.basis.push((v / norm, h / norm));
+            None
         } else {
-            dependent.push(DependentRow {
-                row: i,
-                mismatch: h.abs(),
-                consistent: h.abs() <= residual_tolerance,
-            });
+            Some(h)
         }
     }
-    // Null vectors: random vectors with their components along the accepted rows removed
-    // (twice, for stability).
+}
+
+/// The free columns of the dense J given its independent rows: random vectors with their
+/// components along those rows removed (Gram–Schmidt, twice).
+pub(crate) fn dense_free_columns(j: &DMatrix<f64>, independent: &[usize]) -> Vec<usize> {
+    let n = j.ncols();
+    let mut basis = GramSchmidt::default();
+    for i in independent {
+        basis.insert(j.row(*i).transpose(), 0.0, 0.0);
+    }
     let vectors: Vec<Vec<f64>> = [1_u64, 2]
         .iter()
         .map(|seed| {
             let mut v = DVector::from_vec(draws(*seed, n));
             for _ in 0..2 {
-                for (q, _) in &basis {
+                for (q, _) in &basis.basis {
                     let c = q.dot(&v);
                     v.axpy(-c, q, 1.0);
                 }
@@ -180,13 +252,7 @@ pub fn analyze_rows(
             v.as_slice().to_vec()
         })
         .collect();
-    Ok(RowAnalysis {
-        rank,
-        scale: sigma_max,
-        independent,
-        dependent,
-        free_columns: free_columns_of(&vectors, n),
-    })
+    free_columns_of(&vectors, n)
 }
 
 /// Above this many entries of J (rows × unknowns), [`analyze`] runs the sparse analysis.
@@ -214,16 +280,39 @@ pub fn analyze_rows_sparse(
     rank_tolerance: f64,
     residual_tolerance: f64,
 ) -> Result<RowAnalysis> {
-    let (m, n) = (j.nrows(), j.ncols());
-    check_len("residual rows", m, g.len())?;
-    let scale = (0..m)
+    check_len("residual rows", j.nrows(), g.len())?;
+    let scale = largest_row_norm(j);
+    let sparse = sparse_rows(j, g, rank_tolerance * scale, scale, residual_tolerance);
+    let free_columns = sparse_free_columns(j, &sparse.independent)?;
+    Ok(RowAnalysis {
+        rank: sparse.rank,
+        scale,
+        independent: sparse.independent,
+        dependent: sparse.dependent,
+        free_columns,
+    })
+}
+
+/// The largest row norm of J: the scale of the sparse kernel's tolerances.
+pub(crate) fn largest_row_norm(j: &SparseMatrix) -> f64 {
+    (0..j.nrows())
         .map(|i| j.row(i).1.iter().map(|v| v * v).sum::<f64>().sqrt())
-        .fold(0.0, f64::max);
-    let threshold = rank_tolerance * scale;
+        .fold(0.0, f64::max)
+}
+
+/// The sparse kernel: dependent rows in row order by the row-by-row Givens QR against
+/// `threshold`; entries below ε·`scale` are dropped as rounding.
+pub(crate) fn sparse_rows(
+    j: &SparseMatrix,
+    g: &[f64],
+    threshold: f64,
+    scale: f64,
+    residual_tolerance: f64,
+) -> KernelRows {
     // Entries this small are rounding left by a rotation: dropped, so they neither become
     // pivots nor grow the fill.
     let negligible = f64::EPSILON * scale;
-    let mut factor = GivensRows::new(n);
+    let mut factor = GivensRows::new(j.ncols());
     let mut independent = Vec::new();
     let mut dependent = Vec::new();
     for (i, gi) in g.iter().enumerate() {
@@ -238,13 +327,25 @@ pub fn analyze_rows_sparse(
             }),
         }
     }
-    // Null vectors: random vectors projected onto the null space of the independent rows by
-    // their minimum-norm factorization (sparse Cholesky of J·Jᵀ), which, unlike back
-    // substitution in R, does not amplify along chains.
+    KernelRows {
+        rank: independent.len(),
+        independent,
+        dependent,
+    }
+}
+
+/// The free columns of J given its independent rows: random vectors projected onto the null
+/// space of those rows by their minimum-norm factorization (sparse Cholesky of J·Jᵀ), which,
+/// unlike back substitution in R, does not amplify along chains.
+///
+/// # Errors
+/// Factorization errors.
+pub(crate) fn sparse_free_columns(j: &SparseMatrix, independent: &[usize]) -> Result<Vec<usize>> {
+    let n = j.ncols();
     let vectors: Vec<Vec<f64>> = if independent.is_empty() {
         [1_u64, 2].iter().map(|seed| draws(*seed, n)).collect()
     } else {
-        let kept = j.select_rows(&independent);
+        let kept = j.select_rows(independent);
         let mut projection = MinNormFactorization::try_sparse(&kept, &vec![1.0; n])?;
         let mut multipliers = vec![0.0; independent.len()];
         [1_u64, 2]
@@ -256,13 +357,7 @@ pub fn analyze_rows_sparse(
             })
             .collect::<Result<_>>()?
     };
-    Ok(RowAnalysis {
-        rank: independent.len(),
-        scale,
-        independent,
-        dependent,
-        free_columns: free_columns_of(&vectors, n),
-    })
+    Ok(free_columns_of(&vectors, n))
 }
 
 /// The upper-triangular factor R of the rows accepted so far, one sparse row per pivot
@@ -397,6 +492,72 @@ pub struct DofAnalysis {
     pub depends_on: Vec<Dependency>,
     /// The row-level result.
     pub rows: RowAnalysis,
+    /// What the sparsity pattern of J says before any value is looked at.
+    pub structure: StructureSummary,
+}
+
+/// The structural facts of a DOF analysis: the Dulmage–Mendelsohn decomposition of J's pattern
+/// (see [`crate::structure`]) and where the numeric rank tests ran.
+#[derive(Debug, Clone, Default, PartialEq, Eq, serde::Serialize)]
+pub struct StructureSummary {
+    /// The size of a maximum matching of rows to unknowns: the largest rank any values could
+    /// give J with this pattern (the numerical rank is at most this).
+    pub structural_rank: usize,
+    /// The rows of the over-determined part (more rows than the unknowns they read), in
+    /// increasing order: every dependent row that is dependent by structure alone is here.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub over_determined_rows: Vec<usize>,
+    /// The constraints owning those rows (each once, in row order).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub over_determined_constraints: Vec<ConstraintId>,
+    /// The reduced unknowns of the under-determined part (more unknowns than the rows that read
+    /// them), in increasing order: free whatever the values.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub under_determined_unknowns: Vec<usize>,
+    /// Rows (and unknowns) of the well-determined, square part.
+    pub well_determined_rows: usize,
+    /// Irreducible blocks of the square part.
+    pub square_blocks: usize,
+    /// Rows of the largest of them.
+    pub largest_square_block: usize,
+    /// Rows whose rank test ran in a coupled piece (see [`analyze`]); the others were settled
+    /// by the full rank of their diagonal blocks.
+    pub coupled_rows: usize,
+    /// Rows of the largest coupled piece.
+    pub largest_coupled_piece: usize,
+}
+
+impl StructureSummary {
+    fn of(blocks: &BlockAnalysis, row_owner: &[ConstraintId]) -> Self {
+        let d = &blocks.structure;
+        let over_determined_rows = d.rows_in(Part::OverDetermined);
+        let mut over_determined_constraints: Vec<ConstraintId> = Vec::new();
+        let mut seen = std::collections::HashSet::new();
+        for r in &over_determined_rows {
+            if let Some(owner) = row_owner.get(*r) {
+                if seen.insert(*owner) {
+                    over_determined_constraints.push(*owner);
+                }
+            }
+        }
+        let square = d.blocks.iter().filter(|b| b.part == Part::WellDetermined);
+        Self {
+            structural_rank: d.matching.size(),
+            over_determined_rows,
+            over_determined_constraints,
+            under_determined_unknowns: d.columns_in(Part::UnderDetermined),
+            well_determined_rows: square.clone().map(|b| b.rows.len()).sum(),
+            square_blocks: square.clone().count(),
+            largest_square_block: square.map(|b| b.rows.len()).max().unwrap_or(0),
+            coupled_rows: blocks.pieces.iter().map(|p| p.rows.len()).sum(),
+            largest_coupled_piece: blocks
+                .pieces
+                .iter()
+                .map(|p| p.rows.len())
+                .max()
+                .unwrap_or(0),
+        }
+    }
 }
 
 /// Which constraints a constraint's dependent rows are combinations of.
@@ -415,21 +576,20 @@ pub const DEPENDENCY_NAMING_MAX_ROWS: usize = 1000;
 /// The constraints each named constraint's dependent rows depend on: for a dependent row i,
 /// the multipliers y of the projection of row_iᵀ onto the span of the independent rows (the
 /// minimum-norm factorization's y = (J_A·J_Aᵀ)⁻¹·J_A·row_iᵀ, so row_i ≈ yᵀ·J_A); the owners of
-/// the rows with |y_k| above 10⁻⁸·max |y|.
+/// the rows with |y_k| above 10⁻⁸·max |y|. A dependent row is a combination of the independent
+/// rows of its coupled piece alone (see [`analyze`]), so each piece is factored on its own.
 fn dependencies(
     lin: &Linearization,
-    rows: &RowAnalysis,
+    blocks: &BlockAnalysis,
     named: &[ConstraintId],
 ) -> Result<Vec<Dependency>> {
+    let rows = &blocks.rows;
     if named.is_empty()
         || rows.dependent.len() > DEPENDENCY_NAMING_MAX_ROWS
         || rows.independent.is_empty()
     {
         return Ok(Vec::new());
     }
-    let n = lin.jacobian.ncols();
-    let independent = lin.jacobian.select_rows(&rows.independent);
-    let mut f = MinNormFactorization::try_auto(&independent, &vec![1.0; n], 2000)?;
     let mut out: Vec<Dependency> = named
         .iter()
         .map(|c| Dependency {
@@ -437,30 +597,84 @@ fn dependencies(
             on: Vec::new(),
         })
         .collect();
-    let (mut v, mut projected) = (vec![0.0; n], vec![0.0; n]);
-    let mut y = vec![0.0; rows.independent.len()];
+    let m = lin.jacobian.nrows();
+    let mut is_independent = vec![false; m];
+    for i in &rows.independent {
+        is_independent[*i] = true;
+    }
+    let mut is_dependent = vec![false; m];
     for d in &rows.dependent {
-        let Some(owner) = lin.row_owner.get(d.row) else {
+        is_dependent[d.row] = true;
+    }
+    let mut local = vec![usize::MAX; lin.jacobian.ncols()];
+    for piece in &blocks.pieces {
+        let named_here: Vec<usize> = piece
+            .rows
+            .iter()
+            .copied()
+            .filter(|r| {
+                is_dependent[*r]
+                    && lin
+                        .row_owner
+                        .get(*r)
+                        .is_some_and(|o| out.iter().any(|e| e.constraint == *o))
+            })
+            .collect();
+        let kept: Vec<usize> = piece
+            .rows
+            .iter()
+            .copied()
+            .filter(|r| is_independent[*r])
+            .collect();
+        if named_here.is_empty() || kept.is_empty() {
             continue;
-        };
-        let Some(entry) = out.iter_mut().find(|e| e.constraint == *owner) else {
-            continue;
-        };
-        v.fill(0.0);
-        let (cols, vals) = lin.jacobian.row(d.row);
-        for (c, x) in cols.iter().zip(vals) {
-            v[*c] = *x;
         }
-        f.project(&v, &mut projected, &mut y)?;
-        let top = y.iter().fold(0.0_f64, |m, x| m.max(x.abs()));
-        for (k, yk) in y.iter().enumerate() {
-            if yk.abs() > 1e-8 * top {
-                if let Some(o) = lin.row_owner.get(rows.independent[k]) {
-                    if o != owner && !entry.on.contains(o) {
-                        entry.on.push(*o);
+        let n = piece.columns.len();
+        for (k, c) in piece.columns.iter().enumerate() {
+            local[*c] = k;
+        }
+        let restricted = |r: usize| -> Vec<(usize, usize, f64)> {
+            let (cols, vals) = lin.jacobian.row(r);
+            cols.iter()
+                .zip(vals)
+                .filter(|(c, _)| local[**c] != usize::MAX)
+                .map(|(c, v)| (0, local[*c], *v))
+                .collect()
+        };
+        let triplets: Vec<(usize, usize, f64)> = kept
+            .iter()
+            .enumerate()
+            .flat_map(|(k, r)| restricted(*r).into_iter().map(move |(_, c, v)| (k, c, v)))
+            .collect();
+        let independent = SparseMatrix::try_from_triplets(kept.len(), n, &triplets)?;
+        let mut f = MinNormFactorization::try_auto(&independent, &vec![1.0; n], 2000)?;
+        let (mut v, mut projected) = (vec![0.0; n], vec![0.0; n]);
+        let mut y = vec![0.0; kept.len()];
+        for r in named_here {
+            let Some(owner) = lin.row_owner.get(r) else {
+                continue;
+            };
+            let Some(entry) = out.iter_mut().find(|e| e.constraint == *owner) else {
+                continue;
+            };
+            v.fill(0.0);
+            for (_, c, x) in restricted(r) {
+                v[c] = x;
+            }
+            f.project(&v, &mut projected, &mut y)?;
+            let top = y.iter().fold(0.0_f64, |m, x| m.max(x.abs()));
+            for (k, yk) in y.iter().enumerate() {
+                if yk.abs() > 1e-8 * top {
+                    if let Some(o) = lin.row_owner.get(kept[k]) {
+                        if o != owner && !entry.on.contains(o) {
+                            entry.on.push(*o);
+                        }
                     }
                 }
             }
+        }
+        for c in &piece.columns {
+            local[*c] = usize::MAX;
         }
     }
     for e in &mut out {
@@ -469,8 +683,50 @@ fn dependencies(
     Ok(out)
 }
 
+/// The kernel for a matrix of `entries` rows × unknowns: dense up to
+/// [`DENSE_ANALYSIS_MAX_ENTRIES`], sparse above.
+fn kernel_for(entries: usize) -> Kernel {
+    if entries <= DENSE_ANALYSIS_MAX_ENTRIES {
+        Kernel::Dense
+    } else {
+        Kernel::Sparse
+    }
+}
+
+/// [`analyze_rows`] (up to [`DENSE_ANALYSIS_MAX_ENTRIES`] entries of J) or
+/// [`analyze_rows_sparse`] run block by block on the Dulmage–Mendelsohn form of J: the same
+/// verdicts, with numeric work only inside diagonal blocks and coupled pieces (see the
+/// `block_analysis` module). The decomposition is reported in [`DofAnalysis::structure`].
+///
+/// # Errors
+/// As [`analyze_rows`]; factorization errors of the free-column projection.
+pub(crate) fn analyze_rows_by_blocks(
+    j: &SparseMatrix,
+    g: &[f64],
+    rank_tolerance: f64,
+    residual_tolerance: f64,
+    free_columns: bool,
+) -> Result<BlockAnalysis> {
+    let kernel = kernel_for(j.nrows().saturating_mul(j.ncols()));
+    analyze_blocks(
+        j,
+        g,
+        rank_tolerance,
+        residual_tolerance,
+        kernel,
+        free_columns,
+    )
+}
+
 /// Runs [`analyze_rows`] (up to [`DENSE_ANALYSIS_MAX_ENTRIES`] entries of J) or
-/// [`analyze_rows_sparse`] on a linearization and names the constraints.
+/// [`analyze_rows_sparse`] on a linearization, block by block on the Dulmage–Mendelsohn form
+/// of J's pattern, and names the constraints.
+///
+/// The blocks are tested first to last: a block whose rows, restricted to its own columns,
+/// have full rank, and whose columns no earlier coupled block reads, holds only independent
+/// rows. The over-determined part, rank-deficient blocks and every block they read form the
+/// coupled pieces, each analysed alone; a dependent row is a combination of rows of its own
+/// piece.
 ///
 /// # Errors
 /// As [`analyze_rows`].
@@ -479,17 +735,14 @@ pub fn analyze(
     rank_tolerance: f64,
     residual_tolerance: f64,
 ) -> Result<DofAnalysis> {
-    let (m, n) = (lin.jacobian.nrows(), lin.jacobian.ncols());
-    let rows = if m.saturating_mul(n) <= DENSE_ANALYSIS_MAX_ENTRIES {
-        analyze_rows(
-            &lin.jacobian.to_dense(),
-            &lin.g,
-            rank_tolerance,
-            residual_tolerance,
-        )?
-    } else {
-        analyze_rows_sparse(&lin.jacobian, &lin.g, rank_tolerance, residual_tolerance)?
-    };
+    let blocks = analyze_rows_by_blocks(
+        &lin.jacobian,
+        &lin.g,
+        rank_tolerance,
+        residual_tolerance,
+        true,
+    )?;
+    let rows = &blocks.rows;
     let mut redundant = Vec::new();
     let mut conflicting = Vec::new();
     for d in &rows.dependent {
@@ -507,7 +760,7 @@ pub fn analyze(
     // A constraint with one inconsistent row is conflicting, even where its other rows are
     // merely redundant: never both.
     redundant.retain(|c| !conflicting.contains(c));
-    let partly_redundant = needed(lin, &rows, &redundant, rank_tolerance, residual_tolerance)?;
+    let partly_redundant = needed(lin, rows, &redundant, rank_tolerance, residual_tolerance)?;
     redundant.retain(|c| !partly_redundant.contains(c));
     let named: Vec<ConstraintId> = redundant
         .iter()
@@ -515,7 +768,7 @@ pub fn analyze(
         .chain(&conflicting)
         .copied()
         .collect();
-    let depends_on = dependencies(lin, &rows, &named)?;
+    let depends_on = dependencies(lin, &blocks, &named)?;
     let free_unknowns = lin.map.len();
     Ok(DofAnalysis {
         free_unknowns,
@@ -526,7 +779,8 @@ pub fn analyze(
         conflicting,
         accidental: Vec::new(),
         depends_on,
-        rows,
+        structure: StructureSummary::of(&blocks, &lin.row_owner),
+        rows: blocks.rows,
     })
 }
 
@@ -550,11 +804,9 @@ fn needed(
         let others: Vec<usize> = (0..lin.g.len()).filter(|i| !owned(i)).collect();
         let j = lin.jacobian.select_rows(&others);
         let g: Vec<f64> = others.iter().map(|i| lin.g[*i]).collect();
-        let rank = if others.len().saturating_mul(j.ncols()) <= DENSE_ANALYSIS_MAX_ENTRIES {
-            analyze_rows(&j.to_dense(), &g, rank_tolerance, residual_tolerance)?.rank
-        } else {
-            analyze_rows_sparse(&j, &g, rank_tolerance, residual_tolerance)?.rank
-        };
+        let rank = analyze_rows_by_blocks(&j, &g, rank_tolerance, residual_tolerance, false)?
+            .rows
+            .rank;
         if rank < rows.rank {
             out.push(*c);
         }

@@ -51,6 +51,7 @@
 mod accidental;
 pub mod analysis;
 pub mod autodiff;
+mod block_analysis;
 mod budget;
 pub mod errors;
 pub mod hessian;
@@ -68,6 +69,7 @@ pub mod report;
 pub mod residual;
 pub mod scalar;
 pub mod sparse;
+pub mod structure;
 #[cfg(feature = "testing")]
 pub mod testing;
 

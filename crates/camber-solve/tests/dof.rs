@@ -128,3 +128,28 @@ fn a_dependent_constraint_names_the_constraints_it_depends_on() {
     assert_eq!(on(3), vec![ConstraintId(1), ConstraintId(2)]);
     assert_eq!(on(4), vec![ConstraintId(1)]);
 }
+
+#[test]
+fn structure_names_the_over_determined_constraints() {
+    let (mut p, a, b) = two_points();
+    // p_x = 1 twice (over-determined by structure), p_y + q_x + q_y = 3 (under-determined).
+    p.add_residual(row(&[1.0, 0.0], 1.0), &[a], ConstraintId(1))
+        .unwrap();
+    p.add_residual(row(&[1.0, 0.0], 1.0), &[a], ConstraintId(2))
+        .unwrap();
+    p.add_residual(row(&[0.0, 1.0, 1.0, 1.0], 3.0), &[a, b], ConstraintId(3))
+        .unwrap();
+    let d = p.analyze(&Options::default()).unwrap();
+    assert_eq!(d.redundant, vec![ConstraintId(2)]);
+    let s = &d.structure;
+    assert_eq!(s.structural_rank, 2);
+    assert_eq!(s.over_determined_rows, vec![0, 1]);
+    assert_eq!(
+        s.over_determined_constraints,
+        vec![ConstraintId(1), ConstraintId(2)]
+    );
+    assert_eq!(s.under_determined_unknowns, vec![1, 2, 3]);
+    assert_eq!((s.well_determined_rows, s.square_blocks), (0, 0));
+    // Only the two rows on p_x needed a numeric test together.
+    assert_eq!((s.coupled_rows, s.largest_coupled_piece), (2, 2));
+}

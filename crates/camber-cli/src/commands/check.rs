@@ -15,13 +15,14 @@ pub struct CheckArgs {
     pub input: PathBuf,
     /// Print JSON instead of text: `{"components": [{"component": {"entities",
     /// "constraints"}, "analysis": {"free_unknowns", "rank", "dof", "redundant",
-    /// "conflicting"}}], "warnings": [...]}`.
+    /// "conflicting", "structure"}}], "warnings": [...]}`.
     #[arg(long)]
     pub json: bool,
 }
 
-/// Prints, per component, the free unknowns, the rank, the free DOF and the redundant and
-/// conflicting constraints by id and kind, then the sketch's warnings. Conflicts are
+/// Prints, per component, the free unknowns, the rank, the free DOF, the redundant and
+/// conflicting constraints by id and kind, what can move and the structural summary (the
+/// Dulmage–Mendelsohn parts of the Jacobian's pattern), then the sketch's warnings. Conflicts are
 /// reported, not treated as a failure: the exit code is 0 when the file loads and its analysis
 /// runs, 2 otherwise.
 pub fn run(args: &CheckArgs) -> Result<()> {
@@ -115,6 +116,76 @@ fn describe_freedom(sketch: &Sketch, analysis: &camber_sketch::ComponentAnalysis
         .join("; ")
 }
 
+/// At most this many over-determined constraints are named in the structure line.
+const STRUCTURE_NAMES: usize = 8;
+
+/// The structural summary of a component in one line: `structural rank 6; over-determined:
+/// 2 rows (constraint 3 (distance), constraint 5 (distance)); under-determined: 1 unknown;
+/// square: 4 blocks, largest 2 rows; rank tests on 2 coupled rows, largest piece 2`.
+///
+/// ```
+/// use camber_cli::{commands::check, sketch_file};
+/// // Both points fixed (eliminated from the unknowns): the distance row reads no unknown left,
+/// // so it is over-determined by structure alone.
+/// let s = sketch_file::parse(r#"{"version": 1,
+///   "entities": [{"id": 0, "kind": "point", "at": [0, 0]}, {"id": 1, "kind": "point", "at": [1, 0]}],
+///   "constraints": [{"id": 2, "kind": "fixed", "target": {"point": {"point": 0}}},
+///                   {"id": 3, "kind": "fixed", "target": {"point": {"point": 1}}},
+///                   {"id": 4, "kind": "distance", "a": {"point": 0}, "b": {"point": 1}, "distance": 2}]}"#)?;
+/// let text = check::check(&s)?;
+/// assert!(text.contains("structure: structural rank 0; over-determined: 1 row (constraint 4 (distance))"), "{text}");
+/// assert!(text.contains("rank tests on 1 coupled row, largest piece 1"), "{text}");
+/// # Ok::<(), anyhow::Error>(())
+/// ```
+fn describe_structure(sketch: &Sketch, d: &camber_solve::DofAnalysis) -> String {
+    let s = &d.structure;
+    let plural = |k: usize, one: &str, many: &str| {
+        if k == 1 {
+            format!("{k} {one}")
+        } else {
+            format!("{k} {many}")
+        }
+    };
+    let over = if s.over_determined_rows.is_empty() {
+        "none".to_owned()
+    } else {
+        let named = &s.over_determined_constraints;
+        let mut list = describe_constraints(sketch, &named[..named.len().min(STRUCTURE_NAMES)]);
+        if named.len() > STRUCTURE_NAMES {
+            list.push_str(&format!(" and {} more", named.len() - STRUCTURE_NAMES));
+        }
+        format!(
+            "{} ({list})",
+            plural(s.over_determined_rows.len(), "row", "rows")
+        )
+    };
+    let under = match s.under_determined_unknowns.len() {
+        0 => "none".to_owned(),
+        k => plural(k, "unknown", "unknowns"),
+    };
+    let coupled = if s.coupled_rows == 0 {
+        "none coupled (every block settled alone)".to_owned()
+    } else {
+        format!(
+            "on {}, largest piece {}",
+            plural(s.coupled_rows, "coupled row", "coupled rows"),
+            s.largest_coupled_piece
+        )
+    };
+    let square = match s.square_blocks {
+        0 => "none".to_owned(),
+        k => format!(
+            "{}, largest {}",
+            plural(k, "block", "blocks"),
+            plural(s.largest_square_block, "row", "rows")
+        ),
+    };
+    format!(
+        "structural rank {}; over-determined: {over}; under-determined: {under}; square: {square}; rank tests {coupled}",
+        s.structural_rank,
+    )
+}
+
 /// The report of [`run`].
 ///
 /// ```
@@ -126,6 +197,8 @@ fn describe_freedom(sketch: &Sketch, analysis: &camber_sketch::ComponentAnalysis
 /// let text = check::check(&s)?;
 /// assert!(text.contains("DOF 4"), "{text}");
 /// assert!(text.contains("free: entity 0 (Bézier curve): points 1, 2"), "{text}");
+/// // The fixed ends leave the unknowns; no row reads the two inner points.
+/// assert!(text.contains("structure: structural rank 0; over-determined: none; under-determined: 4 unknowns"), "{text}");
 /// # Ok::<(), anyhow::Error>(())
 /// ```
 pub fn check(sketch: &Sketch) -> Result<String> {
@@ -172,6 +245,7 @@ pub fn check(sketch: &Sketch) -> Result<String> {
             ));
         }
         lines.push(format!("  free: {}", describe_freedom(sketch, a)));
+        lines.push(format!("  structure: {}", describe_structure(sketch, d)));
     }
     if lines.is_empty() {
         lines.push("empty sketch".to_owned());
