@@ -407,6 +407,14 @@ impl GivensRows {
                 return self.dependent(w, h);
             };
             let Some((r, hr)) = self.rows[k].take() else {
+                if wk.abs() <= threshold {
+                    // A leading entry within the rank tolerance is zero at that tolerance (the
+                    // rounding a chain of rotations leaves where an exact combination cancels):
+                    // as a pivot it would make every later rotation against it amplify
+                    // rounding, and accept a dependent row. The row goes on to its next entry.
+                    w.remove(0);
+                    continue;
+                }
                 let norm = w.iter().map(|(_, v)| v * v).sum::<f64>().sqrt();
                 if norm > threshold && norm > 0.0 {
                     self.rows[k] = Some((w, h));
