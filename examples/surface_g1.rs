@@ -13,7 +13,15 @@ use std::path::{Path, PathBuf};
 use camber::surface::examples::{crease_pair, DeformationCase};
 use camber::surface::{deform_to_g1, DeformOptions, EdgeReport};
 
-fn run() -> Result<(), Box<dyn Error>> {
+/// Where the plot goes without an argument: the system's temporary folder, never the source tree
+/// or the build's target folder (wherever CARGO_TARGET_DIR points).
+pub(crate) fn default_plot_path() -> PathBuf {
+    std::env::temp_dir().join("surface_g1.svg")
+}
+
+/// Deforms the case, prints the report and writes the plot to `out` (creating its folder);
+/// returns the file written, if the report has an edge to plot.
+pub(crate) fn run(out: &Path) -> Result<Option<PathBuf>, Box<dyn Error>> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let case_path = root.join("examples/data/surface_crease10.json");
     let case: DeformationCase = if case_path.exists() {
@@ -49,20 +57,17 @@ fn run() -> Result<(), Box<dyn Error>> {
         report.knots_inserted,
         deformed.counts()
     );
-    let out = std::env::args().nth(1).map_or_else(
-        || std::env::temp_dir().join("surface_g1.svg"),
-        PathBuf::from,
-    );
-    if let Some(edge) = report.edges.first() {
-        // Wherever the build puts its target folder (CARGO_TARGET_DIR), the plot's folder
-        // exists: the temporary folder, or the one given, created if needed.
-        if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
-            std::fs::create_dir_all(dir)?;
-        }
-        std::fs::write(&out, plot(edge))?;
-        println!("plot written to {}", out.display());
+    let Some(edge) = report.edges.first() else {
+        return Ok(None);
+    };
+    // Wherever the build puts its target folder (CARGO_TARGET_DIR), the plot's folder exists:
+    // the temporary folder, or the one given, created if needed.
+    if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir)?;
     }
-    Ok(())
+    std::fs::write(out, plot(edge))?;
+    println!("plot written to {}", out.display());
+    Ok(Some(out.to_path_buf()))
 }
 
 /// A small SVG: angle (degrees, linear) against the edge parameter, before in red, after in blue.
@@ -115,7 +120,10 @@ fn plot(e: &EdgeReport) -> String {
 }
 
 fn main() {
-    if let Err(e) = run() {
+    let out = std::env::args()
+        .nth(1)
+        .map_or_else(default_plot_path, PathBuf::from);
+    if let Err(e) = run(&out) {
         eprintln!("error: {e}");
         std::process::exit(1);
     }

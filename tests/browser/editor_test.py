@@ -3,6 +3,7 @@
 
 Starts `camber edit` on a copy of the bundled blade section, opens the page in headless
 Chromium (Python playwright driving the system's /usr/bin/chromium; no browser is downloaded),
+checks that the side panel's residual follows a drag before the mouse is released,
 drags a control point with real mouse events, and checks through the editor's HTTP API that
 every constraint still holds (the editor's own residuals, and the G1 joins and fixed points
 recomputed here from the points), after solving the blade with the Solve button (it is not
@@ -131,6 +132,15 @@ def check_constraints(state, sketch_file, original):
             raise Failure(f"the test does not know constraint kind {c['kind']}")
 
 
+def panel_residuals(page):
+    """The text of every component's residual line in the side panel."""
+    return page.evaluate(
+        """() => [...document.querySelectorAll('#components p')]
+            .filter((p) => p.querySelector('.label')?.textContent.startsWith('residual'))
+            .map((p) => p.lastChild.textContent)"""
+    )
+
+
 def handle(page, entity, index):
     return page.locator(f'#layer-points circle[data-entity="{entity}"][data-index="{index}"]')
 
@@ -199,6 +209,37 @@ def main():
             shown = page.locator("#layer-points circle.determined").count()
             check(determined > 0, "the blade has fixed points, so some handles are determined")
             check(shown == determined, f"{shown} handles drawn as determined, the analysis says {determined}")
+
+            # 1c. During a drag the panel shows the residual of the geometry being drawn, not the
+            # number from before the drag: the blade is not solved as shipped (its trailing-edge
+            # join is open), and the first move closes it. Escape then cancels the drag.
+            stale = panel_residuals(page)
+            check(len(stale) == 1 and "e-" in stale[0], f"the panel's residual before the drag: {stale}")
+            check(float(stale[0].split()[0]) > 1e-6, f"the blade should start unsolved: {stale}")
+            box = handle(page, 0, 2).bounding_box()
+            check(box is not None, "no handle for point 2 of entity 0")
+            x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+            page.mouse.move(x, y)
+            page.mouse.down()
+            live = stale
+            deadline = time.monotonic() + 10
+            k = 0
+            while live == stale and time.monotonic() < deadline:
+                k += 1
+                page.mouse.move(x + 2 * k, y - k)
+                page.wait_for_timeout(50)
+                live = panel_residuals(page)
+            check(editor.state()["dragging"] is not None, "the drag ended before the mouse was released")
+            check(live != stale and live[0].endswith("(now)"), f"the panel kept {stale} during the drag: {live}")
+            check(float(live[0].split()[0]) <= RESIDUAL_TOLERANCE, f"the residual during the drag: {live}")
+            page.keyboard.press("Escape")
+            page.mouse.up()
+            deadline = time.monotonic() + 10
+            while editor.state()["dragging"] is not None and time.monotonic() < deadline:
+                page.wait_for_timeout(50)
+            cancelled = editor.state()
+            check(cancelled["dragging"] is None and not cancelled["report"], f"Escape did not cancel: {cancelled['report']}")
+            check(points(cancelled) == loaded, "a cancelled drag changed the sketch")
 
             # 2. The bundled blade is not solved as shipped: Solve (the button) solves it, and
             # the fixed points stay where the file has them.

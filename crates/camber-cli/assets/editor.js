@@ -291,13 +291,14 @@ function renderPanel() {
   comps.replaceChildren();
   state.components.forEach((c, k) => {
     const a = c.analysis;
-    // The residual was measured before the drag; while this component is dragged it would be
-    // stale, so the panel says so instead of showing the old number.
+    // While this component is dragged, the residual before the drag would be stale: each move
+    // answer carries the residual of the geometry it draws, shown here until the next one.
     const dragged = drag && drag.started && c.entities.includes(drag.entity);
-    const unsolved = !dragged && c.residual > 1e-9;
-    const residual = dragged
-      ? "updated when the drag ends"
-      : `${sci(c.residual)}${c.worst && unsolved ? ` at ${c.worst.id} (${c.worst.kind})` : ""}`;
+    const now = dragged ? drag.residual : c;
+    const unsolved = now !== null && now.residual > 1e-9;
+    const residual = now === null
+      ? "updated at the first move"
+      : `${sci(now.residual)}${now.worst && unsolved ? ` at ${now.worst.id} (${now.worst.kind})` : ""}${dragged ? " (now)" : ""}`;
     comps.appendChild(block(`${k + 1}. entities ${ids(c.entities)}${c.nonlinear ? " (nonlinear)" : ""}`, [
       ["DOF", a ? `${a.dof} (${a.free_unknowns} free unknowns, rank ${a.rank})` : "not analysed"],
       ["free", a ? freeText(a.free, a.free_parameters) : "–"],
@@ -336,7 +337,7 @@ function takeState(s, keepView) {
 // ---- dragging ------------------------------------------------------------------------------
 
 async function startDrag(entity, index, pointerId, at) {
-  drag = { entity, index, pointerId, started: false, busy: true, next: at, end: null, updates: 0 };
+  drag = { entity, index, pointerId, started: false, busy: true, next: at, end: null, updates: 0, residual: null };
   canvas.setPointerCapture(pointerId);
   drawEntity(entities.get(entity));
   let r = await api("POST", "/api/drag/start", { entity, index });
@@ -374,6 +375,8 @@ async function pump() {
     if (r.ok) {
       d.updates += 1;
       takeScene(r.data, false);
+      d.residual = { residual: r.data.residual, worst: r.data.worst };
+      renderPanel();
       setStatus(`update ${r.data.update_us.toFixed(1)} µs in the solver, ${r.data.handler_us.toFixed(0)} µs in the handler, ${ms.toFixed(1)} ms round trip`);
     } else {
       setStatus(r.data.error, true);

@@ -772,3 +772,124 @@ fn a_hermite_tangent_is_dragged_by_its_handle() {
     let committed = ed.sketch().entity(EntityId(1)).unwrap();
     assert!((committed.handle(3).unwrap() - target).norm() < 1e-9);
 }
+
+/// Each constraint's max |g| in the component of `entity`, computed afresh from `sketch` (the
+/// component's own problem, no drag session involved).
+fn fresh_residuals(sketch: &Sketch, entity: u64) -> std::collections::BTreeMap<u64, f64> {
+    let cp = sketch.component_problem(EntityId(entity)).unwrap();
+    let lin = cp.problem().linearize().unwrap();
+    let mut out = std::collections::BTreeMap::new();
+    for (owner, g) in lin.row_owner.iter().zip(&lin.g) {
+        let slot = out.entry(owner.0).or_insert(0.0_f64);
+        *slot = slot.max(g.abs());
+    }
+    out
+}
+
+/// The residuals a drag/move answer carries, checked against `fresh` (largest, its owner, each
+/// constraint).
+fn assert_move_residuals(moved: &Value, fresh: &std::collections::BTreeMap<u64, f64>) {
+    let sent: std::collections::BTreeMap<u64, f64> = moved["constraint_residuals"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| (c["id"].as_u64().unwrap(), c["residual"].as_f64().unwrap()))
+        .collect();
+    assert_eq!(
+        sent.keys().collect::<Vec<_>>(),
+        fresh.keys().collect::<Vec<_>>()
+    );
+    for (id, r) in &sent {
+        assert!(
+            (r - fresh[id]).abs() <= 1e-12,
+            "constraint {id}: {r} vs {}",
+            fresh[id]
+        );
+    }
+    let largest = fresh.values().fold(0.0_f64, |m, r| m.max(*r));
+    let residual = moved["residual"].as_f64().unwrap();
+    assert!(
+        (residual - largest).abs() <= 1e-12,
+        "{residual} vs {largest}"
+    );
+    if largest > 0.0 {
+        let worst = moved["worst"]["id"].as_u64().unwrap();
+        assert!(
+            sent[&worst].to_bits() == residual.to_bits(),
+            "worst {worst}"
+        );
+    }
+}
+
+#[test]
+fn every_move_answer_carries_the_residuals_of_the_geometry_it_draws() {
+    let dir = tempfile::tempdir().unwrap();
+    // Affine path: the blade starts with its trailing-edge join open (residual > 1e-4); the
+    // first move closes it, and its answer must say so, not repeat the number from before.
+    let mut ed = editor("blade_section.json", &dir.path().join("blade.json"));
+    let before = state(&mut ed)["components"][0]["residual"]
+        .as_f64()
+        .unwrap();
+    assert!(before > 1e-4);
+    assert_eq!(
+        post(&mut ed, "/api/drag/start", json!({"entity": 1, "index": 2})).0,
+        200
+    );
+    let mut client = ed.sketch().clone();
+    let p = client.point(PointRef::Control(EntityId(1), 2)).unwrap();
+    let mut last = Value::Null;
+    for k in 1..=4 {
+        let target = p + Vector2::new(0.002 * f64::from(k), -0.001 * f64::from(k));
+        let (status, moved) = post(
+            &mut ed,
+            "/api/drag/move",
+            json!({"to": [target.x, target.y]}),
+        );
+        assert_eq!(status, 200, "{moved}");
+        apply(&mut client, &moved);
+        assert_move_residuals(&moved, &fresh_residuals(&client, 1));
+        assert!(moved["residual"].as_f64().unwrap() < 1e-9, "{moved}");
+        last = moved;
+    }
+    // Ending commits the same state: the panel's component residual is the last answer's.
+    let (status, ended) = post(&mut ed, "/api/drag/end", json!({}));
+    assert_eq!(status, 200, "{ended}");
+    assert_move_residuals(&last, &fresh_residuals(ed.sketch(), 1));
+    let committed = ended["components"][0]["residual"].as_f64().unwrap();
+    assert!((committed - last["residual"].as_f64().unwrap()).abs() <= 1e-12);
+
+    // Nonlinear path with free contact parameters (the diffuser's tangencies): the answer's
+    // residuals are those of the sketch the drag commits, parameters included.
+    let mut ed = editor("diffuser.json", &dir.path().join("diffuser.json"));
+    assert_eq!(post(&mut ed, "/api/solve", json!({})).0, 200);
+    assert_eq!(
+        post(&mut ed, "/api/drag/start", json!({"entity": 0, "index": 3})).0,
+        200
+    );
+    let p = ed
+        .sketch()
+        .point(PointRef::Control(EntityId(0), 3))
+        .unwrap();
+    let mut last = Value::Null;
+    for k in 1..=3 {
+        let target = p + Vector2::new(0.001 * f64::from(k), 0.003 * f64::from(k));
+        let (status, moved) = post(
+            &mut ed,
+            "/api/drag/move",
+            json!({"to": [target.x, target.y]}),
+        );
+        assert_eq!(status, 200, "{moved}");
+        last = moved;
+    }
+    // The three tangencies have rows (the fixed circles are bound, not residual rows).
+    assert_eq!(
+        last["constraint_residuals"].as_array().unwrap().len(),
+        3,
+        "{last}"
+    );
+    let (status, ended) = post(&mut ed, "/api/drag/end", json!({}));
+    assert_eq!(status, 200, "{ended}");
+    assert_move_residuals(&last, &fresh_residuals(ed.sketch(), 0));
+    let committed = ended["components"][0]["residual"].as_f64().unwrap();
+    assert!((committed - last["residual"].as_f64().unwrap()).abs() <= 1e-12);
+}

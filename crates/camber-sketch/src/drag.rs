@@ -152,6 +152,8 @@ pub struct NonlinearDrag {
     freedom: Freedom,
     /// The residual rows of the problem without the pin row.
     base_rows: usize,
+    /// The constraint owning each of those rows.
+    row_owner: Vec<camber_solve::ConstraintId>,
     /// Whether the component has constraints with priorities: the cursor is then a wish
     /// below every tier (pin rows of the lowest priority, never a fixed block), so no
     /// constraint gives way to it.
@@ -403,6 +405,7 @@ impl Sketch {
         }
         let freedom = nonlinear_freedom(&cp, block, &self.solve_options())?;
         let base_rows = cp.problem.num_residuals();
+        let row_owner = cp.problem.linearize()?.row_owner;
         let wish = cp.problem.has_priorities();
         if freedom == Freedom::Free && !wish {
             cp.problem.fix_block(block)?;
@@ -423,6 +426,7 @@ impl Sketch {
             options: self.solve_options(),
             freedom,
             base_rows,
+            row_owner,
             wish,
         }))
     }
@@ -702,6 +706,53 @@ impl DragSession {
     pub fn free_parameters(&self) -> Result<Vec<(camber_solve::ConstraintId, usize, f64)>> {
         let c = self.common();
         c.cp.free_at(&c.x)
+    }
+
+    /// How far each constraint of the dragged component is from satisfied at the session's
+    /// current state: (constraint, max |g| over its rows), by increasing constraint id. The
+    /// dragged point's own pin rows are left out. After [`DragSession::finish`] the committed
+    /// sketch has the same residuals.
+    ///
+    /// # Errors
+    /// A residual that cannot be evaluated (not for a state an update accepted).
+    ///
+    /// ```
+    /// use camber_sketch::constraints::{Fixed, PointAtParameter};
+    /// use camber_sketch::{PointRef, Sketch, Target};
+    /// use camber_geom::BezierCurve2;
+    /// use nalgebra::Point2;
+    /// let mut s = Sketch::new();
+    /// let c = s.add_bezier(BezierCurve2::try_new(vec![
+    ///     Point2::new(0.0, 0.0), Point2::new(1.0, 2.0), Point2::new(2.0, 0.0),
+    /// ])?)?;
+    /// s.add_constraint(Fixed::point(PointRef::Start(c)))?; // a binding, no residual row
+    /// let mid = s.add_constraint(PointAtParameter { curve: c, u: 0.5, target: Target::At(Point2::new(1.0, 1.0)) })?;
+    /// let mut drag = s.drag(PointRef::Control(c, 2))?;
+    /// drag.update(Point2::new(2.0, 1.0))?;
+    /// let residuals = drag.residuals()?;
+    /// assert_eq!(residuals.len(), 1);
+    /// assert_eq!(residuals[0].0, mid);
+    /// assert!(residuals[0].1 < 1e-12);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn residuals(&self) -> Result<Vec<(crate::ids::ConstraintId, f64)>> {
+        let c = self.common();
+        let owners = match self {
+            DragSession::Affine(d) => &d.row_owner,
+            DragSession::Nonlinear(d) => &d.row_owner,
+        };
+        let problem = c.cp.problem();
+        let mut g = vec![0.0; problem.num_rows()];
+        problem.evaluate_at(&c.x, &mut g)?;
+        let mut worst: BTreeMap<crate::ids::ConstraintId, f64> = BTreeMap::new();
+        for (owner, v) in owners.iter().zip(&g) {
+            if *owner == DRAG_CONSTRAINT {
+                continue;
+            }
+            let slot = worst.entry(*owner).or_insert(0.0);
+            *slot = slot.max(v.abs());
+        }
+        Ok(worst.into_iter().collect())
     }
 
     /// The current location of a point of the dragged component.

@@ -46,8 +46,9 @@ use serde::Serialize;
 use crate::scene::View;
 use crate::sketch_file::{self, describe_error};
 use wire::{
-    AnalysisJson, ComponentJson, ComponentReportJson, ConstraintRef, DragMove, DragStart,
-    DraggedJson, ErrorJson, MoveJson, ReportJson, SavedJson, SceneJson, StateJson,
+    AnalysisJson, ComponentJson, ComponentReportJson, ConstraintRef, ConstraintResidualJson,
+    DragMove, DragStart, DraggedJson, ErrorJson, MoveJson, ReportJson, SavedJson, SceneJson,
+    StateJson,
 };
 
 /// The page, its script and its style sheet, built into the binary.
@@ -461,10 +462,32 @@ impl EditorState {
         drag.current.extend(moved);
         let view = View::with_overrides(&self.sketch, &drag.current);
         let scene = SceneJson::of(&view, &self.conflicting, |id| changed.contains(&id))?;
+        // The residuals at the new state, so the panel never shows the ones from before the
+        // drag. The largest wins; on a tie the smaller constraint id.
+        let residuals = drag
+            .session
+            .residuals()
+            .map_err(|err| Failure::new(500, describe_error(&self.sketch, &err)))?;
+        let worst = residuals.iter().filter(|(_, r)| *r > 0.0).fold(
+            None,
+            |best: Option<(ConstraintId, f64)>, (id, r)| match best {
+                Some((_, b)) if b >= *r => best,
+                _ => Some((*id, *r)),
+            },
+        );
         Ok(Response::json(
             200,
             &MoveJson {
                 scene,
+                residual: worst.map_or(0.0, |w| w.1),
+                worst: worst.map(|(id, _)| ConstraintRef::of(&self.sketch, id)),
+                constraint_residuals: residuals
+                    .iter()
+                    .map(|(id, r)| ConstraintResidualJson {
+                        id: id.0,
+                        residual: *r,
+                    })
+                    .collect(),
                 update_us: update_time.as_secs_f64() * 1e6,
                 handler_us: start.elapsed().as_secs_f64() * 1e6,
             },

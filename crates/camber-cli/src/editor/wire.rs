@@ -291,17 +291,34 @@ pub struct StateJson {
 }
 
 /// The answer to a successful `POST /api/drag/move`: the entities that moved and the glyphs
-/// of the constraints reading them, and the update's own time.
+/// of the constraints reading them, the dragged component's residuals now, and the update's
+/// own time.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct MoveJson {
     /// Changed entities and their glyphs.
     #[serde(flatten)]
     pub scene: SceneJson,
+    /// max |g| over the dragged component's constraint rows at the drag's current state
+    /// (what the component's `residual` becomes if the drag ends here).
+    pub residual: f64,
+    /// The constraint with that largest residual, if any residual is non-zero.
+    pub worst: Option<ConstraintRef>,
+    /// Each constraint of the dragged component with its max |g| now, by increasing id.
+    pub constraint_residuals: Vec<ConstraintResidualJson>,
     /// Time of `DragSession::update`, in microseconds.
     pub update_us: f64,
     /// Time in the handler up to this answer: parsing the body, the update, rebuilding and
     /// sampling the moved entities, their glyphs (not writing this JSON), in microseconds.
     pub handler_us: f64,
+}
+
+/// One constraint's residual during a drag.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ConstraintResidualJson {
+    /// The constraint id.
+    pub id: u64,
+    /// max |g| over its rows.
+    pub residual: f64,
 }
 
 /// `POST /api/save`: where the sketch went, and the state (now saved).
