@@ -224,7 +224,9 @@ def main():
             live = stale
             deadline = time.monotonic() + 10
             k = 0
-            while live == stale and time.monotonic() < deadline:
+            # The panel first says "updated at the first move" (the drag has started, its first
+            # answer is on the way), then the live figure.
+            while not (live and live[0].endswith("(now)")) and time.monotonic() < deadline:
                 k += 1
                 page.mouse.move(x + 2 * k, y - k)
                 page.wait_for_timeout(50)

@@ -337,7 +337,7 @@ function takeState(s, keepView) {
 // ---- dragging ------------------------------------------------------------------------------
 
 async function startDrag(entity, index, pointerId, at) {
-  drag = { entity, index, pointerId, started: false, busy: true, next: at, end: null, updates: 0, residual: null };
+  drag = { entity, index, pointerId, started: false, busy: true, next: at, end: null, updates: 0, residual: null, saveAfter: false };
   canvas.setPointerCapture(pointerId);
   drawEntity(entities.get(entity));
   let r = await api("POST", "/api/drag/start", { entity, index });
@@ -394,6 +394,7 @@ async function pump() {
       setStatus(r.data.error, true);
       await reload(true);
     }
+    if (d.saveAfter) await save();
   }
 }
 
@@ -483,7 +484,12 @@ async function action(path) {
 }
 
 async function save() {
-  if (drag) return;
+  // A save asked for during a drag (Ctrl+S right after the mouse is released, before the
+  // drag's end is answered) runs once the drag has ended, on the geometry it leaves.
+  if (drag) {
+    drag.saveAfter = true;
+    return;
+  }
   const r = await api("POST", "/api/save");
   if (r.ok) {
     takeState(r.data.state, true);
