@@ -5,10 +5,9 @@
 //! SLSQP evaluations), but a failing solve runs them all in turn, and a sketch runs that cascade
 //! again from each contact start and in each active-set round. With expensive residuals (an
 //! arc length is a quadrature over the curve) the product reached seconds. The budget counts
-//! what all of them share: one unit per derivative evaluation (the Jacobian, or a Hessian),
-//! whatever path asks for it. Evaluations of the residuals alone are not counted: they cost a
-//! fraction of a derivative evaluation (no dual numbers), and every path bounds how many it
-//! makes per derivative evaluation (its line search). The count is deterministic (no clock), so a
+//! what all of them share: one unit per evaluation of the residuals, of their Jacobian or of a
+//! Hessian, whatever path asks for it (SLSQP's own evaluations and every line-search trial
+//! included: a budget of derivative evaluations alone let SLSQP's value evaluations run on). The count is deterministic (no clock), so a
 //! solve that runs out does so at the same point on every machine.
 
 use std::sync::atomic::{AtomicUsize, Ordering};

@@ -96,6 +96,19 @@ impl Evaluator {
 
     /// g(x(z)) into `g` (m entries).
     pub(crate) fn residuals(&mut self, problem: &Problem, z: &[f64], g: &mut [f64]) -> Result<()> {
+        problem.budget.charge()?;
+        self.map.expand(z, &mut self.x)?;
+        problem.evaluate_at(&self.x, g)
+    }
+
+    /// [`Evaluator::residuals`] without charging the evaluation budget: for the account a
+    /// solve gives of where it stopped, which a spent budget must not prevent.
+    pub(crate) fn residuals_for_report(
+        &mut self,
+        problem: &Problem,
+        z: &[f64],
+        g: &mut [f64],
+    ) -> Result<()> {
         self.map.expand(z, &mut self.x)?;
         problem.evaluate_at(&self.x, g)
     }

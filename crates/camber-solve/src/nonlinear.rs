@@ -94,17 +94,17 @@ pub struct NonlinearOptions {
     pub soft: bool,
     /// The ε of the soft mode (relative weight of staying near the start).
     pub soft_epsilon: f64,
-    /// The most derivative evaluations (of the Jacobian or of a Hessian) one solve may spend
-    /// over every path it tries ([`crate::Problem::start_budget`]); `None` leaves each path's
-    /// own limits only. Evaluations of the residuals alone are not counted: each path bounds
-    /// them per derivative evaluation (its line search). Most solves that succeed spend a few
-    /// dozen, hard ones from far starts a few thousand; the default,
-    /// [`DEFAULT_MAX_EVALUATIONS`], bounds what a failing one costs.
+    /// The most evaluations (of the residuals, their Jacobian or a Hessian, each counting one)
+    /// one solve may spend over every path it tries ([`crate::Problem::start_budget`]); `None`
+    /// leaves each path's own limits only. Most solves that succeed spend a few dozen to a few
+    /// hundred, hard ones from far starts up to a few tens of thousands (a contact found only
+    /// from a later contact start); the default, [`DEFAULT_MAX_EVALUATIONS`], bounds what a
+    /// failing one costs.
     pub max_evaluations: Option<usize>,
 }
 
 /// The default [`NonlinearOptions::max_evaluations`].
-pub const DEFAULT_MAX_EVALUATIONS: usize = 10_000;
+pub const DEFAULT_MAX_EVALUATIONS: usize = 50_000;
 
 impl Default for NonlinearOptions {
     fn default() -> Self {

@@ -249,8 +249,8 @@ pub struct ProblemState {
 /// A failing solve tries every path in turn (Newton, SLSQP, Levenberg–Marquardt, a moved
 /// start); a caller that runs the whole cascade several times (from other starts, in
 /// active-set rounds) shares one budget between the runs by starting it around them. Each
-/// derivative evaluation (the Jacobian, or a Hessian) costs one unit; once the budget is
-/// spent, the paths stop and the solve reports [`Error::NotSolved`].
+/// evaluation of the residuals, their Jacobian or a Hessian costs one unit; once the budget
+/// is spent, the paths stop and the solve reports [`Error::NotSolved`].
 ///
 /// ```
 /// use camber_solve::{scalar::cst, ConstraintId, Options, Problem, Residual, Scalar};
@@ -291,7 +291,7 @@ impl Problem {
         self.budget.end();
     }
 
-    /// Derivative evaluations spent since the budget last started.
+    /// Evaluations spent since the budget last started.
     pub fn evaluations_spent(&self) -> usize {
         self.budget.spent()
     }

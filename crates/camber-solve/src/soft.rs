@@ -172,7 +172,7 @@ pub(crate) fn run(
         cost = c;
     }
     let mut g = vec![0.0; ev.rows()];
-    ev.residuals(problem, &z, &mut g)?;
+    ev.residuals_for_report(problem, &z, &mut g)?;
     Ok((
         z,
         LmRun {
