@@ -52,6 +52,12 @@ pub struct SketchReport {
     pub tolerance: f64,
 }
 
+/// A component's solve report and the entities it moved, with their new values.
+type Solved = (
+    SolveReport,
+    Vec<(crate::ids::EntityId, crate::entity::Entity)>,
+);
+
 impl SketchReport {
     /// The constraints left above tolerance because the whole set could not be met: those of
     /// a priority above 0 that gave way ([`Sketch::set_priority`]), in component order. Empty
@@ -100,10 +106,7 @@ impl Sketch {
         &self,
         cp: &mut crate::component::ComponentProblem,
         options: &camber_solve::Options,
-    ) -> Result<(
-        SolveReport,
-        Vec<(crate::ids::EntityId, crate::entity::Entity)>,
-    )> {
+    ) -> Result<Solved> {
         // One evaluation budget for the whole attempt: the given start, its active-set rounds
         // and every other start share it, so a sketch that cannot be solved fails in bounded
         // time however many starts it has.
@@ -118,10 +121,7 @@ impl Sketch {
         &self,
         cp: &mut crate::component::ComponentProblem,
         options: &camber_solve::Options,
-    ) -> Result<(
-        SolveReport,
-        Vec<(crate::ids::EntityId, crate::entity::Entity)>,
-    )> {
+    ) -> Result<Solved> {
         let first = match policy::solve(cp, self, options, Start::Cold) {
             Ok(solved) => return Ok(solved),
             Err(e) => e,
