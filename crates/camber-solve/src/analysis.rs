@@ -50,6 +50,18 @@ pub struct DependentRow {
     pub consistent: bool,
 }
 
+impl DependentRow {
+    /// Row `row` left with right-hand side `h` after the rows it depends on: consistent when
+    /// |h| is within `residual_tolerance`.
+    fn with_mismatch(row: usize, h: f64, residual_tolerance: f64) -> Self {
+        Self {
+            row,
+            mismatch: h.abs(),
+            consistent: h.abs() <= residual_tolerance,
+        }
+    }
+}
+
 /// The outcome of [`analyze_rows`].
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct RowAnalysis {
@@ -188,11 +200,7 @@ pub(crate) fn dense_rows(
     for (i, gi) in g.iter().enumerate() {
         match basis.insert(j.row(i).transpose(), *gi, threshold) {
             None => independent.push(i),
-            Some(h) => dependent.push(DependentRow {
-                row: i,
-                mismatch: h.abs(),
-                consistent: h.abs() <= residual_tolerance,
-            }),
+            Some(h) => dependent.push(DependentRow::with_mismatch(i, h, residual_tolerance)),
         }
     }
     KernelRows {
@@ -320,11 +328,7 @@ pub(crate) fn sparse_rows(
         let row = cols.iter().copied().zip(vals.iter().copied());
         match factor.insert(row, *gi, threshold, negligible) {
             None => independent.push(i),
-            Some(h) => dependent.push(DependentRow {
-                row: i,
-                mismatch: h.abs(),
-                consistent: h.abs() <= residual_tolerance,
-            }),
+            Some(h) => dependent.push(DependentRow::with_mismatch(i, h, residual_tolerance)),
         }
     }
     KernelRows {
