@@ -12,13 +12,10 @@
 //! ever formed. Small systems use nalgebra's dense Cholesky; large ones faer's sparse Cholesky
 //! (with a fill-reducing ordering) of the sparse M.
 
-use faer::linalg::solvers::Solve;
-use faer::sparse::linalg::solvers::Llt;
-use faer::MatMut;
 use nalgebra::{Cholesky, DMatrix, DVector, Dyn};
 
 use crate::errors::{Error, Result};
-use crate::normal::NormalCache;
+use crate::normal::{NormalCache, NormalFactor};
 use crate::sparse::{check_len, SparseMatrix};
 
 /// A factorization of J·W⁻¹·Jᵀ, reusable for any number of right-hand sides (dragging: J and W
@@ -54,7 +51,7 @@ enum Backend {
     },
     Sparse {
         j: SparseMatrix,
-        llt: Llt<usize, f64>,
+        llt: NormalFactor,
         y: Vec<f64>,
     },
 }
@@ -193,8 +190,7 @@ impl MinNormFactorization {
             }
             Backend::Sparse { j, llt, y } => {
                 y.copy_from_slice(g);
-                let m = y.len();
-                llt.solve_in_place(MatMut::from_column_major_slice_mut(y.as_mut_slice(), m, 1));
+                llt.solve_in_place(y);
                 dz.fill(0.0);
                 for (i, yi) in y.iter().enumerate() {
                     let (cols, vals) = j.row(i);
