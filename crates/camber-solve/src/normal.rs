@@ -114,17 +114,7 @@ impl Pattern {
                 }
             }
         }
-        positions.sort_unstable();
-        positions.dedup();
-        let mut m_col_ptr = vec![0_usize; m + 1];
-        let mut m_row_idx = Vec::with_capacity(positions.len());
-        for &(col, row) in &positions {
-            m_col_ptr[col + 1] += 1;
-            m_row_idx.push(row);
-        }
-        for c in 0..m {
-            m_col_ptr[c + 1] += m_col_ptr[c];
-        }
+        let (m_col_ptr, m_row_idx) = crate::sparse::compress(m, &positions);
         let slot = |row: usize, col: usize| -> usize {
             let rows = &m_row_idx[m_col_ptr[col]..m_col_ptr[col + 1]];
             m_col_ptr[col] + rows.binary_search(&row).unwrap_or(0)
