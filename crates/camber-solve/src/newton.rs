@@ -207,7 +207,27 @@ pub(crate) fn run(
     let mut primed = ws.primed.take().filter(|(z, g)| {
         g.len() == m && z.len() == n && z.iter().zip(&ws.z).all(|(a, b)| a.to_bits() == b.to_bits())
     });
+    // The LU of the last accepted square step: a chord step with it shows a point that
+    // already meets the rows to be stationary without linearizing and factorizing it again.
+    let mut chord: Option<SquareLu> = None;
     for iteration in 0..settings.max_iterations {
+        if let Some(mut lu) = chord.take() {
+            // `gs_trial` holds the rows at the accepted point, now `z`. With an empty null
+            // space there is nothing to pull back: stationary is g = 0 up to the step
+            // tolerance, which −J⁻¹·g with the previous J shows as well as with the new one
+            // (their difference is of the order of the step times |g|).
+            let met = max_abs(&ws.gs_trial);
+            if met <= inner_tol && ws.gs_trial.len() == lu.order() {
+                lu.step(&ws.gs_trial, &mut ws.soc);
+                if max_abs(&ws.soc) <= settings.step_tolerance * (1.0 + max_abs(&ws.z)) {
+                    return Ok(NewtonRun {
+                        iterations: iteration,
+                        max_residual: met,
+                        stationary: true,
+                    });
+                }
+            }
+        }
         match primed.take() {
             Some((_, g)) => {
                 problem.budget.charge()?;
@@ -324,6 +344,9 @@ pub(crate) fn run(
             *l += alpha * (t - *l);
         }
         std::mem::swap(&mut ws.z, &mut ws.z_trial);
+        if let Factors::Square(lu) = factorization {
+            chord = Some(lu);
+        }
     }
     // Out of iterations: accept a point that meets the residuals, flagged as not stationary.
     ev.residuals(problem, &ws.z, &mut ws.g)?;

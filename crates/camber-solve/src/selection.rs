@@ -211,7 +211,15 @@ fn certainly_full_row_rank(j: &nalgebra::DMatrix<f64>, rank_tolerance: f64) -> b
         return false;
     }
     let margin = (1e3 * rank_tolerance).max(1e-5);
-    let gram = j * j.transpose();
+    // J·Jᵀ by its lower triangle and symmetry (a general product costs more at these sizes).
+    let mut gram = nalgebra::DMatrix::<f64>::zeros(m, m);
+    for a in 0..m {
+        for b in 0..=a {
+            let v = j.row(a).dot(&j.row(b));
+            gram[(a, b)] = v;
+            gram[(b, a)] = v;
+        }
+    }
     let Some(chol) = nalgebra::linalg::Cholesky::new(gram) else {
         return false;
     };
