@@ -97,6 +97,7 @@ pub mod selection;
 #[cfg(feature = "nlopt")]
 pub(crate) mod slsqp;
 pub(crate) mod soft;
+pub(crate) mod square;
 pub use newton::NewtonWorkspace;
 pub use nonlinear::{NonlinearOptions, SolverChoice};
 pub use objective::{Objective, UserObjective};
