@@ -66,11 +66,20 @@ impl MinNormFactorization {
     pub fn try_dense(j: &SparseMatrix, weights: &[f64]) -> Result<Self> {
         let inv_w = inverse_weights(j, weights)?;
         let jd = j.to_dense();
-        let mut scaled = jd.clone();
-        for (k, mut col) in scaled.column_iter_mut().enumerate() {
-            col *= inv_w[k];
+        // J·W⁻¹·Jᵀ by its lower triangle and symmetry: at these sizes a plain loop beats the
+        // general matrix product (which also needed a scaled copy of J).
+        let rows = jd.nrows();
+        let mut m = DMatrix::<f64>::zeros(rows, rows);
+        for a in 0..rows {
+            for b in 0..=a {
+                let mut sum = 0.0;
+                for (k, w) in inv_w.iter().enumerate() {
+                    sum += jd[(a, k)] * w * jd[(b, k)];
+                }
+                m[(a, b)] = sum;
+                m[(b, a)] = sum;
+            }
         }
-        let m = &scaled * jd.transpose();
         let chol = Cholesky::new(m).ok_or(Error::RankDeficient { rows: j.nrows() })?;
         Ok(Self::assemble(
             inv_w,
