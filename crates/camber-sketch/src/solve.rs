@@ -264,11 +264,13 @@ struct ComponentOutcome {
     free: Vec<(camber_solve::ConstraintId, usize, f64)>,
 }
 
-/// Fewer constraints than this in all the components to solve are solved one after another:
-/// handing work to rayon's pool costs some microseconds of wake-up per thread, more than a
-/// solve this small would save (an interactive solve is usually one or two small dirty
-/// components, and its latency must not grow).
-const PARALLEL_MIN_CONSTRAINTS: usize = 64;
+/// Fewer constraints than this in all the components to solve are solved one after another.
+/// The caller waits while rayon's pool does the work, so a parallel solve costs the wake-up
+/// of the pool's threads: tens of microseconds on an idle machine, but a scheduler slice
+/// (milliseconds) when other processes hold the cores. 512 constraints of small components
+/// take about a millisecond one after another (W5 with 47 rectangles), where the threads
+/// surely pay; an interactive solve, one or two small dirty components, never waits for them.
+const PARALLEL_MIN_CONSTRAINTS: usize = 512;
 
 /// Whether the components are solved on rayon's pool: more than one component, more than one
 /// thread to run on, and at least [`PARALLEL_MIN_CONSTRAINTS`] constraints in all.
@@ -343,19 +345,19 @@ mod tests {
 
     #[test]
     fn parallel_and_sequential_solves_agree_exactly() {
-        let base = rectangles(40, &[]);
+        let base = rectangles(50, &[]);
         assert!(solves_in_parallel(&base.components()) || rayon::current_num_threads() == 1);
         let (mut seq, mut par) = (base.clone(), base.clone());
         let comps = base.components();
         let rs = seq.solve_components_in(comps.clone(), false).unwrap();
         let rp = par.solve_components_in(comps, true).unwrap();
-        assert_eq!(rs.components.len(), 40);
+        assert_eq!(rs.components.len(), 50);
         assert_eq!(untimed(rs), untimed(rp));
         // Bit for bit the same sketch, dirty marks included.
         assert_eq!(to_json(&seq).unwrap(), to_json(&par).unwrap());
         assert_eq!(seq.dirty().count(), 0);
         assert_eq!(par.dirty().count(), 0);
-        for k in 0..40 {
+        for k in 0..50 {
             let line = seq.components()[k].entities[0];
             let (a, b) = (
                 par.point(PointRef::Start(line)).unwrap(),
@@ -389,13 +391,13 @@ mod tests {
     #[test]
     fn small_sketches_stay_sequential() {
         assert!(!solves_in_parallel(&rectangles(1, &[]).components()));
-        // 3 rectangles: 33 constraints, below the threshold.
-        assert!(!solves_in_parallel(&rectangles(3, &[]).components()));
-        let many = rectangles(8, &[]).components();
+        // 46 rectangles: 506 constraints, below the threshold.
+        assert!(!solves_in_parallel(&rectangles(46, &[]).components()));
+        let many = rectangles(47, &[]).components();
         assert_eq!(
             solves_in_parallel(&many),
             rayon::current_num_threads() > 1,
-            "88 constraints in 8 components"
+            "517 constraints in 47 components"
         );
     }
 }
