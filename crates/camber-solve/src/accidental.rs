@@ -20,6 +20,8 @@
 //!
 //! Affine problems are skipped: their Jacobian is the same everywhere.
 
+use std::collections::HashSet;
+
 use crate::analysis::{analyze_rows_by_blocks, DofAnalysis};
 use crate::errors::Result;
 use crate::evaluator::{max_abs, Evaluator};
@@ -94,15 +96,16 @@ pub(crate) fn reclassify(
     if nearby.rank <= analysis.rank {
         return Ok(analysis);
     }
-    let still: Vec<ConstraintId> = nearby
+    let still: HashSet<ConstraintId> = nearby
         .dependent
         .iter()
         .filter_map(|d| lin.row_owner.get(d.row).copied())
         .collect();
     let mut accidental = Vec::new();
+    let mut seen = HashSet::new();
     for d in &analysis.rows.dependent {
         if let Some(owner) = lin.row_owner.get(d.row) {
-            if !still.contains(owner) && !accidental.contains(owner) {
+            if !still.contains(owner) && seen.insert(*owner) {
                 accidental.push(*owner);
             }
         }
@@ -112,11 +115,11 @@ pub(crate) fn reclassify(
         &mut analysis.partly_redundant,
         &mut analysis.conflicting,
     ] {
-        list.retain(|c| !accidental.contains(c));
+        list.retain(|c| !seen.contains(c));
     }
     analysis
         .depends_on
-        .retain(|d| !accidental.contains(&d.constraint));
+        .retain(|d| !seen.contains(&d.constraint));
     analysis.accidental = accidental;
     analysis.rank = nearby.rank;
     analysis.dof = analysis.free_unknowns.saturating_sub(nearby.rank);

@@ -29,6 +29,8 @@
 //! their unknowns, and the null-space projection runs only on the others, piece by piece (the
 //! `free_columns` module).
 
+use std::collections::HashSet;
+
 use nalgebra::{DMatrix, DVector};
 
 use crate::block_analysis::{analyze_blocks, BlockAnalysis, Kernel};
@@ -821,25 +823,33 @@ pub fn analyze(
         true,
     )?;
     let rows = &blocks.rows;
-    let mut redundant = Vec::new();
-    let mut conflicting = Vec::new();
+    // Each list in the order of its first dependent row, without repeats (sets, so that a
+    // sketch with many dependent rows is not quadratic).
+    let (mut redundant, mut conflicting) = (Vec::new(), Vec::new());
+    let (mut in_redundant, mut in_conflicting) = (HashSet::new(), HashSet::new());
     for d in &rows.dependent {
-        let list = if d.consistent {
-            &mut redundant
+        let (list, set) = if d.consistent {
+            (&mut redundant, &mut in_redundant)
         } else {
-            &mut conflicting
+            (&mut conflicting, &mut in_conflicting)
         };
         if let Some(owner) = lin.row_owner.get(d.row) {
-            if !list.contains(owner) {
+            if set.insert(*owner) {
                 list.push(*owner);
             }
         }
     }
     // A constraint with one inconsistent row is conflicting, even where its other rows are
     // merely redundant: never both.
-    redundant.retain(|c| !conflicting.contains(c));
-    let partly_redundant = needed(lin, rows, &redundant, rank_tolerance, residual_tolerance)?;
-    redundant.retain(|c| !partly_redundant.contains(c));
+    redundant.retain(|c| !in_conflicting.contains(c));
+    let partly_redundant = needed(
+        (&lin.jacobian, &lin.g, &lin.row_owner),
+        &blocks,
+        &redundant,
+        residual_tolerance,
+    )?;
+    let needed_set: HashSet<ConstraintId> = partly_redundant.iter().copied().collect();
+    redundant.retain(|c| !needed_set.contains(c));
     let named: Vec<ConstraintId> = redundant
         .iter()
         .chain(&partly_redundant)
@@ -864,29 +874,56 @@ pub fn analyze(
 
 /// The constraints of `candidates` (each with a consistent dependent row) that cannot be
 /// deleted: J without their rows has a lower rank. A candidate all of whose rows were found
-/// dependent is deletable at once (each depends on accepted rows of other constraints); one
-/// with an accepted row is tested by the rank of J without it.
+/// dependent is deletable at once (each depends on accepted rows of other constraints). One
+/// with an accepted row in a clear block cannot be deleted (a clear row is independent of all
+/// the others). Any other is tested on the coupled pieces its accepted rows lie in: the rank of
+/// J without its rows drops exactly when that of one of those pieces does
+/// ([`BlockAnalysis::piece_rank_drops_without`]), so no test runs on the whole component.
 fn needed(
-    lin: &Linearization,
-    rows: &RowAnalysis,
+    (j, g, row_owner): (&SparseMatrix, &[f64], &[ConstraintId]),
+    blocks: &BlockAnalysis,
     candidates: &[ConstraintId],
-    rank_tolerance: f64,
     residual_tolerance: f64,
 ) -> Result<Vec<ConstraintId>> {
+    if candidates.is_empty() {
+        return Ok(Vec::new());
+    }
+    let m = g.len();
+    let wanted: HashSet<ConstraintId> = candidates.iter().copied().collect();
+    let mut rows_of: std::collections::HashMap<ConstraintId, Vec<usize>> =
+        std::collections::HashMap::new();
+    for (r, owner) in row_owner.iter().enumerate() {
+        if wanted.contains(owner) {
+            rows_of.entry(*owner).or_default().push(r);
+        }
+    }
+    let mut independent = vec![false; m];
+    for r in &blocks.rows.independent {
+        independent[*r] = true;
+    }
+    let piece_of_row = blocks.piece_of_rows(m);
     let mut out = Vec::new();
     for c in candidates {
-        let owned = |i: &usize| lin.row_owner.get(*i) == Some(c);
-        if !rows.independent.iter().any(owned) {
+        let own = rows_of.get(c).map_or(&[][..], Vec::as_slice);
+        let mut touched: Vec<usize> = own
+            .iter()
+            .filter(|r| independent[**r])
+            .map(|r| piece_of_row[*r])
+            .collect();
+        if touched.is_empty() {
             continue;
         }
-        let others: Vec<usize> = (0..lin.g.len()).filter(|i| !owned(i)).collect();
-        let j = lin.jacobian.select_rows(&others);
-        let g: Vec<f64> = others.iter().map(|i| lin.g[*i]).collect();
-        let rank = analyze_rows_by_blocks(&j, &g, rank_tolerance, residual_tolerance, false)?
-            .rows
-            .rank;
-        if rank < rows.rank {
+        if touched.contains(&usize::MAX) {
             out.push(*c);
+            continue;
+        }
+        touched.sort_unstable();
+        touched.dedup();
+        for piece in touched {
+            if blocks.piece_rank_drops_without(j, g, piece, own, residual_tolerance)? {
+                out.push(*c);
+                break;
+            }
         }
     }
     Ok(out)
@@ -900,6 +937,50 @@ mod tests {
 
     /// Rows that are random small-integer rows or integer combinations of earlier ones, with a
     /// right-hand side consistent with a point z (g = J·z), except where `break_row` shifts it.
+    /// Sparse rows (two adjacent columns at a random place, small integers), copies of an
+    /// earlier row and sums of two, with g = J·z except where one row is shifted: several
+    /// pieces and clear blocks.
+    fn sparse_dependent_system() -> impl Strategy<Value = (SparseMatrix, Vec<f64>)> {
+        (3usize..12, 3usize..16, any::<u64>()).prop_map(|(n, m, seed)| {
+            let mut state = seed | 1;
+            let mut next = move |k: u64| {
+                state ^= state << 13;
+                state ^= state >> 7;
+                state ^= state << 17;
+                state % k
+            };
+            let mut j = DMatrix::<f64>::zeros(m, n);
+            for i in 0..m {
+                match next(4) {
+                    0 if i > 0 => {
+                        let k = next(i as u64) as usize;
+                        let row = j.row(k).into_owned();
+                        j.row_mut(i).copy_from(&row);
+                    }
+                    1 if i > 1 => {
+                        let (a, b) = (next(i as u64) as usize, next(i as u64) as usize);
+                        let row = j.row(a) + j.row(b);
+                        j.row_mut(i).copy_from(&row);
+                    }
+                    _ => {
+                        let c = next(n as u64 - 1) as usize;
+                        j[(i, c)] = next(5) as f64 - 2.0;
+                        j[(i, c + 1)] = next(5) as f64 - 2.0;
+                    }
+                }
+            }
+            let z: Vec<f64> = (0..n).map(|_| next(9) as f64 * 0.25 - 1.0).collect();
+            let mut g: Vec<f64> = (0..m)
+                .map(|i| (0..n).map(|c| j[(i, c)] * z[c]).sum())
+                .collect();
+            let broken = next(m as u64 + 3) as usize;
+            if broken < m {
+                g[broken] += 0.5;
+            }
+            (SparseMatrix::from_dense(&j), g)
+        })
+    }
+
     fn dependent_system() -> impl Strategy<Value = (DMatrix<f64>, Vec<f64>)> {
         (2usize..7, 3usize..9, any::<u64>()).prop_map(|(n, m, seed)| {
             let mut state = seed | 1;
@@ -948,6 +1029,51 @@ mod tests {
             let verdicts = |a: &RowAnalysis| a.dependent.iter().map(|d| (d.row, d.consistent)).collect::<Vec<_>>();
             prop_assert_eq!(verdicts(&sparse), verdicts(&dense));
             prop_assert_eq!(&sparse.free_columns, &dense.free_columns);
+        }
+
+        /// The constraints found needed piece by piece are those whose deletion lowers the
+        /// rank of the whole J (the whole-matrix test, run for every candidate), on sparse
+        /// systems of several pieces and clear blocks with rows grouped into constraints.
+        #[test]
+        fn needed_by_pieces_agrees_with_the_whole_matrix(
+            (j, g) in sparse_dependent_system(), grouping in any::<u64>(),
+        ) {
+            let m = j.nrows();
+            let mut state = grouping | 1;
+            let mut owner = 0u64;
+            let row_owner: Vec<ConstraintId> = (0..m)
+                .map(|_| {
+                    state ^= state << 13;
+                    state ^= state >> 7;
+                    state ^= state << 17;
+                    if state % 3 == 0 {
+                        owner += 1;
+                    }
+                    ConstraintId(owner)
+                })
+                .collect();
+            let blocks = analyze_rows_by_blocks(&j, &g, 1e-10, 1e-9, false).unwrap();
+            let mut candidates: Vec<ConstraintId> = Vec::new();
+            for d in blocks.rows.dependent.iter().filter(|d| d.consistent) {
+                if !candidates.contains(&row_owner[d.row]) {
+                    candidates.push(row_owner[d.row]);
+                }
+            }
+            let by_pieces = needed((&j, &g, &row_owner), &blocks, &candidates, 1e-9).unwrap();
+            let whole: Vec<ConstraintId> = candidates
+                .iter()
+                .copied()
+                .filter(|c| {
+                    let others: Vec<usize> = (0..m).filter(|i| row_owner[*i] != *c).collect();
+                    let gj: Vec<f64> = others.iter().map(|i| g[*i]).collect();
+                    let rank = analyze_rows_by_blocks(&j.select_rows(&others), &gj, 1e-10, 1e-9, false)
+                        .unwrap()
+                        .rows
+                        .rank;
+                    rank < blocks.rows.rank
+                })
+                .collect();
+            prop_assert_eq!(by_pieces, whole);
         }
     }
 

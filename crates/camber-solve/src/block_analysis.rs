@@ -56,6 +56,8 @@ pub(crate) struct Piece {
     pub rows: Vec<usize>,
     /// Its columns, increasing.
     pub columns: Vec<usize>,
+    /// The rank of its rows (the number found independent).
+    pub rank: usize,
 }
 
 /// The block-wise analysis: the row verdicts, the decomposition they were found on and the
@@ -71,6 +73,59 @@ pub(crate) struct BlockAnalysis {
     /// What the free-column projection ran on (all zero when it was not asked for, or when
     /// every unknown is determined by structure and full-rank blocks).
     pub free: FreeColumns,
+    /// The kernel, threshold and scale every rank test of the component ran with.
+    pub test: RankTest,
+}
+
+impl BlockAnalysis {
+    /// The piece of each of J's `m` rows; `usize::MAX` for a row of a clear block.
+    pub(crate) fn piece_of_rows(&self, m: usize) -> Vec<usize> {
+        let mut out = vec![usize::MAX; m];
+        for (k, p) in self.pieces.iter().enumerate() {
+            for r in &p.rows {
+                out[*r] = k;
+            }
+        }
+        out
+    }
+
+    /// Whether piece `piece` loses rank when the rows `removed` (increasing; rows of other
+    /// pieces are ignored) are deleted from it, tested with the component's kernel and
+    /// threshold. Pieces share no column and rows of clear blocks are independent of every
+    /// other row, so the rank of J without a set of rows drops exactly when that of some piece
+    /// does or when a clear row is among them.
+    ///
+    /// # Errors
+    /// Building the restricted matrix.
+    pub(crate) fn piece_rank_drops_without(
+        &self,
+        j: &SparseMatrix,
+        g: &[f64],
+        piece: usize,
+        removed: &[usize],
+        residual_tolerance: f64,
+    ) -> Result<bool> {
+        let p = &self.pieces[piece];
+        let kept: Vec<usize> = p
+            .rows
+            .iter()
+            .copied()
+            .filter(|r| removed.binary_search(r).is_err())
+            .collect();
+        let mut local = vec![usize::MAX; j.ncols()];
+        let sub = restrict(j, &kept, &p.columns, &mut local)?;
+        let gp: Vec<f64> = kept.iter().map(|r| g[*r]).collect();
+        let t = self.test;
+        let verdict = run(
+            t.kernel,
+            &sub,
+            &gp,
+            t.threshold,
+            t.scale,
+            residual_tolerance,
+        );
+        Ok(verdict.rank < p.rank)
+    }
 }
 
 /// Power iterations for σ_max at most.
@@ -213,13 +268,6 @@ pub(crate) fn analyze_blocks(
 
     // Coupled blocks joined into pieces by the columns their rows read (union–find).
     let mut parent: Vec<usize> = (0..blocks.len()).collect();
-    fn root(parent: &mut [usize], mut a: usize) -> usize {
-        while parent[a] != a {
-            parent[a] = parent[parent[a]];
-            a = parent[a];
-        }
-        a
-    }
     for (id, b) in blocks.iter().enumerate() {
         if !coupled[id] {
             continue;
@@ -227,8 +275,8 @@ pub(crate) fn analyze_blocks(
         for r in &b.rows {
             for c in j.row(*r).0 {
                 let (x, y) = (
-                    root(&mut parent, id),
-                    root(&mut parent, structure.column_block[*c]),
+                    free::root(&mut parent, id),
+                    free::root(&mut parent, structure.column_block[*c]),
                 );
                 parent[x] = y;
             }
@@ -242,12 +290,13 @@ pub(crate) fn analyze_blocks(
         if !coupled[id] {
             continue;
         }
-        let r = root(&mut parent, id);
+        let r = free::root(&mut parent, id);
         if piece_of_root[r] == usize::MAX {
             piece_of_root[r] = pieces.len();
             pieces.push(Piece {
                 rows: Vec::new(),
                 columns: Vec::new(),
+                rank: 0,
             });
             members.push((0, id));
         }
@@ -286,6 +335,7 @@ pub(crate) fn analyze_blocks(
             }
         };
         rank += verdict.rank;
+        p.rank = verdict.rank;
         independent.extend(verdict.independent.iter().map(|k| p.rows[*k]));
         dependent.extend(verdict.dependent.into_iter().map(|d| DependentRow {
             row: p.rows[d.row],
@@ -295,12 +345,12 @@ pub(crate) fn analyze_blocks(
     independent.sort_unstable();
     dependent.sort_unstable_by_key(|d| d.row);
 
+    let test = RankTest {
+        kernel,
+        threshold,
+        scale,
+    };
     let free = if free_columns {
-        let test = RankTest {
-            kernel,
-            threshold,
-            scale,
-        };
         free::by_blocks(j, &structure, &full_rank, &test)?
     } else {
         FreeColumns::default()
@@ -316,6 +366,7 @@ pub(crate) fn analyze_blocks(
         structure,
         pieces,
         free,
+        test,
     })
 }
 
@@ -529,7 +580,8 @@ mod tests {
             a.pieces,
             vec![Piece {
                 rows: vec![0, n],
-                columns: vec![0]
+                columns: vec![0],
+                rank: 1,
             }]
         );
         assert_eq!(verdicts(&a.rows), vec![(n, true)]);

@@ -68,6 +68,7 @@ pub(crate) struct FreeColumns {
 }
 
 /// The rank tests of the determination pass: the component's kernel and threshold.
+#[derive(Debug, Clone, Copy)]
 pub(crate) struct RankTest {
     /// The kernel of the component's row verdicts.
     pub kernel: Kernel,
@@ -78,7 +79,7 @@ pub(crate) struct RankTest {
 }
 
 /// Union–find root with path halving.
-fn root(parent: &mut [usize], mut a: usize) -> usize {
+pub(crate) fn root(parent: &mut [usize], mut a: usize) -> usize {
     while parent[a] != a {
         parent[a] = parent[parent[a]];
         a = parent[a];

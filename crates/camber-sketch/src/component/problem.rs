@@ -693,16 +693,18 @@ impl ComponentProblem {
     ) -> Result<Vec<ParameterFreedom>> {
         let map = self.problem.reduced_map()?;
         let mut out = Vec::new();
-        let mut seen: Vec<ConstraintId> = Vec::new();
+        let mut seen: FxHashMap<ConstraintId, usize> = FxHashMap::default();
         for (c, b) in &self.free {
-            let parameter = seen.iter().filter(|o| *o == c).count();
-            seen.push(*c);
+            let count = seen.entry(*c).or_insert(0);
+            let parameter = *count;
+            *count += 1;
             let u = self.problem.unknown(*b, 0)?.index();
+            // `free_columns` is increasing.
             if map
                 .row(u)
                 .0
                 .iter()
-                .any(|(col, a)| *a != 0.0 && free_columns.contains(col))
+                .any(|(col, a)| *a != 0.0 && free_columns.binary_search(col).is_ok())
             {
                 out.push(ParameterFreedom {
                     constraint: *c,
@@ -717,9 +719,11 @@ impl ComponentProblem {
     /// of each constraint.
     pub(crate) fn free_at(&self, x: &[f64]) -> Result<Vec<(ConstraintId, usize, f64)>> {
         let mut out: Vec<(ConstraintId, usize, f64)> = Vec::with_capacity(self.free.len());
+        let mut seen: FxHashMap<ConstraintId, usize> = FxHashMap::default();
         for (c, b) in &self.free {
-            let k = out.iter().filter(|(o, _, _)| o == c).count();
-            out.push((*c, k, x[self.problem.unknown(*b, 0)?.index()]));
+            let k = seen.entry(*c).or_insert(0);
+            out.push((*c, *k, x[self.problem.unknown(*b, 0)?.index()]));
+            *k += 1;
         }
         Ok(out)
     }
