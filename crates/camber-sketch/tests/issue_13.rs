@@ -503,3 +503,53 @@ fn issue_13_an_implied_constraint_stays_redundant_along_the_manifold() {
         b: PointRef::Point(p),
     };
 }
+
+/// Case 3 at scale: a chain of 1,000 cubics, each join a coincidence and a tangency at the same
+/// ends. Every tangency is partly redundant and none is redundant. Each candidate is tested on
+/// its own coupled piece, so this takes a fraction of a second in a debug build (testing each
+/// on the whole component took 42 s in release at 3,000 joins).
+#[test]
+fn issue_13_case_3_many_partly_redundant_joins() {
+    use camber_sketch::constraints::{Coincident, CurveCurveTangent};
+    let n = 1000;
+    let mut s = Sketch::new();
+    let curves: Vec<EntityId> = (0..n)
+        .map(|k| {
+            let x = 3.0 * k as f64;
+            cubic(
+                &mut s,
+                [(x, 0.0), (x + 1.0, 1.0), (x + 2.0, 0.5), (x + 3.0, 0.0)],
+            )
+        })
+        .collect();
+    s.add_constraint(Fixed::entity(curves[0])).unwrap();
+    let mut tangents = Vec::new();
+    for w in curves.windows(2) {
+        s.add_constraint(Coincident {
+            a: PointRef::End(w[0]),
+            b: PointRef::Start(w[1]),
+        })
+        .unwrap();
+        tangents.push(
+            s.add_constraint(CurveCurveTangent {
+                first: w[0],
+                u: Contact::At(1.0),
+                second: w[1],
+                v: Contact::At(0.0),
+                sense: Sense::Agree,
+            })
+            .unwrap(),
+        );
+    }
+    let analysis = &s.analyze().unwrap()[0].analysis;
+    assert!(analysis.redundant.is_empty(), "{:?}", analysis.redundant);
+    assert!(
+        analysis.conflicting.is_empty(),
+        "{:?}",
+        analysis.conflicting
+    );
+    let mut partly = analysis.partly_redundant.clone();
+    partly.sort_unstable();
+    assert_eq!(partly, tangents);
+    assert_eq!(analysis.rank, n - 1);
+}
