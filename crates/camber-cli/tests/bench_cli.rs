@@ -109,6 +109,33 @@ fn chains_report_growth_between_sizes() {
 }
 
 #[test]
+fn the_analysis_workload_checks_three_sketches() {
+    let v = bench_json(&["--quick", "--only", "A", "--sizes", "4,8"]);
+    let rows = rows(&v);
+    let cases: Vec<(&str, &str)> = rows
+        .iter()
+        .map(|r| (r["workload"].as_str().unwrap(), r["case"].as_str().unwrap()))
+        .collect();
+    assert_eq!(
+        cases,
+        [
+            ("A", "W3 N=4"),
+            ("A", "W3 N=8"),
+            ("A", "points N=40"),
+            ("A", "points N=80"),
+            ("A", "ladder N=4"),
+            ("A", "ladder N=8")
+        ]
+    );
+    // Every analysis has the DOF its construction gives; the ladder is fully constrained and
+    // settled by its blocks, with no free-unknown projection.
+    for r in rows {
+        assert_eq!(n(r, "samples"), 2, "{r}");
+        assert_eq!(n(r, "valid"), n(r, "samples"), "{r}");
+    }
+}
+
+#[test]
 fn w2_quick_counts_valid_results() {
     let v = bench_json(&["--quick", "--only", "W2"]);
     let rows = rows(&v);

@@ -34,7 +34,7 @@
 
 use nalgebra::{DMatrix, Point, SVector};
 
-use crate::banded::solve_banded;
+use crate::banded::BandedMatrix;
 use crate::bspline::BSplineCurve;
 use crate::curve::{check_points, ParametricCurve};
 use crate::errors::{Error, Result};
@@ -194,6 +194,10 @@ pub fn interpolate<T: Scalar, const D: usize>(
     interpolate_at(points, &parameters, degree, end_derivatives)
 }
 
+/// One row of an interpolation system: the first column and the values of the basis functions
+/// (or their derivatives) non-zero at its parameter, and its right-hand side.
+type CollocationRow<T, const D: usize> = ((usize, Vec<T>), SVector<T, D>);
+
 /// [`interpolate`] with given parameters (strictly increasing from 0 to 1).
 pub(crate) fn interpolate_at<T: Scalar, const D: usize>(
     points: &[Point<T, D>],
@@ -223,30 +227,37 @@ pub(crate) fn interpolate_at<T: Scalar, const D: usize>(
             (KnotVector::from_parameters(p, &augmented)?, m + 3)
         }
     };
-    let mut a = DMatrix::<T>::zeros(size, size);
-    let mut b = DMatrix::<T>::zeros(size, D);
-    let mut row = 0;
-    let mut put = |a: &mut DMatrix<T>, (first, values): (usize, Vec<T>), rhs: &SVector<T, D>| {
-        for (j, v) in values.into_iter().enumerate() {
-            a[(row, first + j)] = v;
-        }
-        for c in 0..D {
-            b[(row, c)] = rhs[c];
-        }
-        row += 1;
-    };
+    // The collocation rows (first column, values, right-hand side) in order, then the band
+    // they span: about the degree on each side of the diagonal.
+    let mut rows: Vec<CollocationRow<T, D>> = Vec::with_capacity(size);
     for (k, (q, &u)) in points.iter().zip(parameters).enumerate() {
         if let (Some((d0, _)), 1) = (&end_derivatives, k) {
-            put(&mut a, derivative_row(&knots, p, parameters[0]), d0);
+            rows.push((derivative_row(&knots, p, parameters[0]), *d0));
         }
         if let (Some((_, d1)), true) = (&end_derivatives, k == m) {
-            put(&mut a, derivative_row(&knots, p, parameters[m]), d1);
+            rows.push((derivative_row(&knots, p, parameters[m]), *d1));
         }
-        put(&mut a, basis_row(&knots, p, u), &q.coords);
+        rows.push((basis_row(&knots, p, u), q.coords));
     }
-    let solution = solve_banded(a, b).ok_or(Error::SingularSystem {
+    let (mut kl, mut ku) = (0, 0);
+    for (r, ((first, values), _)) in rows.iter().enumerate() {
+        kl = kl.max(r.saturating_sub(*first));
+        ku = ku.max((first + values.len()).saturating_sub(r + 1));
+    }
+    let mut a = BandedMatrix::<T>::zeros(size, kl, ku);
+    let mut b = DMatrix::<T>::zeros(size, D);
+    let singular = Error::SingularSystem {
         what: "interpolation",
-    })?;
+    };
+    for (r, ((first, values), rhs)) in rows.into_iter().enumerate() {
+        for (j, v) in values.into_iter().enumerate() {
+            a.set(r, first + j, v).ok_or(singular.clone())?;
+        }
+        for c in 0..D {
+            b[(r, c)] = rhs[c];
+        }
+    }
+    let solution = a.solve(b).ok_or(singular)?;
     let control = to_points(&solution, "interpolation")?;
     let curve = BSplineCurve::try_new(p, knots, control)?;
     let max_error = max_error(&curve, points, parameters)?;
@@ -329,6 +340,11 @@ fn spread_knots<T: Scalar>(
     KnotVector::new_unchecked(knots)
 }
 
+/// The largest least-squares system (unknown control points) solved by a dense SVD when its
+/// normal equations are singular (a span without data): 2,000 unknowns is a 32 MB copy and a
+/// few seconds; beyond that a singular system is reported instead.
+const DENSE_FALLBACK_MAX: usize = 2_000;
+
 /// Least squares on given knots through the normal equations (SVD when a span without data
 /// makes them singular: the minimum-norm solution is taken).
 fn least_squares<T: Scalar, const D: usize>(
@@ -362,7 +378,7 @@ fn least_squares<T: Scalar, const D: usize>(
         let size = unknowns.len();
         // Normal equations NᵀN x = Nᵀr, assembled row by row from the p + 1 non-zero basis
         // values (NᵀN is banded with half-width p).
-        let mut normal = DMatrix::<T>::zeros(size, size);
+        let mut normal = BandedMatrix::<T>::zeros(size, p, p);
         let mut rhs_all = DMatrix::<T>::zeros(size, D);
         for &k in &rows {
             let (start, values) = basis_row(&knots, p, parameters[k]);
@@ -380,23 +396,33 @@ fn least_squares<T: Scalar, const D: usize>(
             }
             for &(i, vi) in &active {
                 for &(j, vj) in &active {
-                    normal[(i, j)] += vi * vj;
+                    // |i − j| ≤ p: both basis functions are non-zero at one parameter.
+                    normal.add(i, j, vi * vj).ok_or(Error::SingularSystem {
+                        what: "least-squares",
+                    })?;
                 }
                 for c in 0..D {
                     rhs_all[(i, c)] += vi * rhs[c];
                 }
             }
         }
-        // Banded elimination first; a span without data makes NᵀN singular, and then the SVD's minimum-norm
-        // solution is taken.
-        let solution = match solve_banded(normal.clone(), rhs_all.clone()) {
+        // Banded elimination first; a span without data makes NᵀN singular, and then the
+        // SVD's minimum-norm solution is taken, on a dense copy, so only for systems of at
+        // most DENSE_FALLBACK_MAX unknowns (larger ones report the singular system).
+        let solution = match normal.clone().solve(rhs_all.clone()) {
             Some(x) if x.iter().all(|v| re(*v).is_finite()) => x,
-            _ => normal
+            _ if size <= DENSE_FALLBACK_MAX => normal
+                .to_dense()
                 .svd(true, true)
                 .solve(&rhs_all, cst::<T>(1e-13))
                 .map_err(|_| Error::SingularSystem {
                     what: "least-squares",
                 })?,
+            _ => {
+                return Err(Error::SingularSystem {
+                    what: "least-squares",
+                })
+            }
         };
         let solved = to_points::<T, D>(&solution, "least-squares")?;
         for (&i, q) in unknowns.iter().zip(solved) {

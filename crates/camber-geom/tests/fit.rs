@@ -81,6 +81,28 @@ fn end_derivatives_are_met() {
     assert!(fit.max_error < 1e-12);
 }
 
+/// Many points: the systems are assembled in band storage, so 20,000 points cost megabytes
+/// (dense storage would take 3.2 GB and an n² scan). The interpolant still passes through
+/// every point, and least squares on 2,000 control points stays within its data's spread.
+#[test]
+fn twenty_thousand_points_fit_in_band_storage() {
+    let pts: Vec<Point2<f64>> = (0..20_000)
+        .map(|k| {
+            let t = k as f64 / 19_999.0;
+            Point2::new(10.0 * t, (6.0 * t).sin() + 0.1 * (40.0 * t).cos())
+        })
+        .collect();
+    let fit = interpolate(&pts, 3, ParameterMethod::ChordLength, None).unwrap();
+    assert_eq!(fit.curve.control_points().len(), pts.len());
+    assert!(fit.max_error < 1e-9, "{}", fit.max_error);
+    for (q, &u) in pts.iter().zip(&fit.parameters).step_by(997) {
+        assert!((fit.curve.point(u).unwrap() - q).norm() < 1e-9);
+    }
+    let ls = approximate(&pts, 3, 2_000, ParameterMethod::ChordLength, true).unwrap();
+    assert_eq!(ls.curve.control_points().len(), 2_000);
+    assert!(ls.max_error < 1e-6, "{}", ls.max_error);
+}
+
 #[test]
 fn bad_data_is_typed() {
     let pts = [

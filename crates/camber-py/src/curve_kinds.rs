@@ -257,6 +257,133 @@ fn knot_vector(knots: Vec<f64>) -> PyResult<KnotVector<f64>> {
     KnotVector::try_new(knots).map_err(geometry)
 }
 
+/// The `#[pymethods]` of a knotted curve class (B-spline or NURBS): the class's own methods
+/// `$own`, then the degree, knot and shape operations the two kinds share, each run on the
+/// curve of variant `$v2` or `$v3` and returning a curve of the same class and dimension.
+macro_rules! knotted_curve_methods {
+    ($class:ident, $v2:ident, $v3:ident; $($own:tt)*) => {
+        #[pymethods]
+        impl $class {
+            $($own)*
+
+            /// The degree.
+            #[getter]
+            fn degree(slf: PyRef<'_, Self>) -> PyResult<usize> {
+                by_dim!(&slf.as_super().inner, $v2, $v3, c => Ok(c.degree()))
+            }
+
+            /// The knot vector.
+            #[getter]
+            fn knots<'py>(slf: PyRef<'py, Self>) -> PyResult<Bound<'py, PyArray1<f64>>> {
+                let py = slf.py();
+                by_dim!(&slf.as_super().inner, $v2, $v3, c =>
+                    Ok(PyArray1::from_slice(py, c.knots().as_slice())))
+            }
+
+            /// The same curve with the knot u inserted `times` times (Boehm).
+            #[pyo3(signature = (u, times = 1))]
+            fn insert_knot(slf: PyRef<'_, Self>, u: f64, times: usize) -> PyResult<Py<PyAny>> {
+                let py = slf.py();
+                by_dim!(&slf.as_super().inner, $v2, $v3, c =>
+                    wrap(py, same!(c.insert_knot(u, times).map_err(geometry)?)))
+            }
+
+            /// The same curve with every knot of `knots` inserted (knot refinement).
+            fn refine(slf: PyRef<'_, Self>, knots: Vec<f64>) -> PyResult<Py<PyAny>> {
+                let py = slf.py();
+                by_dim!(&slf.as_super().inner, $v2, $v3, c =>
+                    wrap(py, same!(c.refine(&knots).map_err(geometry)?)))
+            }
+
+            /// The two pieces on either side of u.
+            fn split(slf: PyRef<'_, Self>, u: f64) -> PyResult<(Py<PyAny>, Py<PyAny>)> {
+                let py = slf.py();
+                by_dim!(&slf.as_super().inner, $v2, $v3, c => {
+                    let (a, b) = c.split(u).map_err(geometry)?;
+                    pair(py, same!(a), same!(b))
+                })
+            }
+
+            /// The same curve with its degree raised `times` times.
+            #[pyo3(signature = (times = 1))]
+            fn elevate_degree(slf: PyRef<'_, Self>, times: usize) -> PyResult<Py<PyAny>> {
+                let py = slf.py();
+                by_dim!(&slf.as_super().inner, $v2, $v3, c =>
+                    wrap(py, same!(c.elevate_degree(times).map_err(geometry)?)))
+            }
+
+            /// The same curve on the domain [a, b] (affine change of parameter).
+            fn reparameterized(slf: PyRef<'_, Self>, a: f64, b: f64) -> PyResult<Py<PyAny>> {
+                let py = slf.py();
+                by_dim!(&slf.as_super().inner, $v2, $v3, c =>
+                    wrap(py, same!(c.reparameterized(a, b).map_err(geometry)?)))
+            }
+
+            /// The same curve with clamped ends (end knots of full multiplicity).
+            fn clamped(slf: PyRef<'_, Self>) -> PyResult<Py<PyAny>> {
+                let py = slf.py();
+                by_dim!(&slf.as_super().inner, $v2, $v3, c => wrap(py, same!(c.clamped())))
+            }
+
+            /// The natural extension: the same polynomial pieces continued (or cut back) so that the
+            /// domain reaches `t` at `end` (`"start"` or `"end"`); C(u) is unchanged on the old domain.
+            fn extrapolated(slf: PyRef<'_, Self>, end: &str, t: f64) -> PyResult<Py<PyAny>> {
+                let py = slf.py();
+                let end = curve_end(end)?;
+                by_dim!(&slf.as_super().inner, $v2, $v3, c =>
+                    wrap(py, same!(c.extrapolated(end, t).map_err(geometry)?)))
+            }
+
+            /// The curve extended at `end` (`"start"` or `"end"`) by an arc of `length` (length
+            /// units): `"G1"` a straight piece along the end tangent, `"G2"` the end piece continued
+            /// naturally (found by arc length).
+            #[pyo3(signature = (end, length, continuity = "G2"))]
+            fn extended_by_length(
+                slf: PyRef<'_, Self>,
+                end: &str,
+                length: f64,
+                continuity: &str,
+            ) -> PyResult<Py<PyAny>> {
+                let py = slf.py();
+                let (end, how) = (curve_end(end)?, ext_continuity(continuity)?);
+                by_dim!(&slf.as_super().inner, $v2, $v3, c => wrap(
+                    py,
+                    same!(py.detach(|| c.extended_by_length(end, length, how)).map_err(geometry)?)
+                ))
+            }
+
+            /// Removes the knot u up to `times` times while the curve moves by at most `tolerance`
+            /// (length units): (curve, removed, error_bound); removed is 0 when no removal fits.
+            #[pyo3(signature = (u, times = 1, tolerance = 1e-9))]
+            fn remove_knot(
+                slf: PyRef<'_, Self>,
+                u: f64,
+                times: usize,
+                tolerance: f64,
+            ) -> PyResult<(Py<PyAny>, usize, f64)> {
+                let py = slf.py();
+                by_dim!(&slf.as_super().inner, $v2, $v3, c => {
+                    let r = py.detach(|| c.remove_knot(u, times, tolerance)).map_err(geometry)?;
+                    Ok((wrap(py, same!(r.curve))?, r.removed, r.error_bound))
+                })
+            }
+
+            /// The curve of one degree less, its pieces reduced and its knots removed as far as the
+            /// original continuity and `tolerance` (length units) allow: (curve, error_bound). The
+            /// bound holds everywhere; it exceeds the tolerance only when the pieces themselves
+            /// cannot be reduced within it (check it).
+            #[pyo3(signature = (tolerance = 1e-9))]
+            fn reduce_degree(slf: PyRef<'_, Self>, tolerance: f64) -> PyResult<(Py<PyAny>, f64)> {
+                let py = slf.py();
+                by_dim!(&slf.as_super().inner, $v2, $v3, c => {
+                    let r = py.detach(|| c.reduce_degree(tolerance)).map_err(geometry)?;
+                    Ok((wrap(py, same!(r.curve))?, r.error_bound))
+                })
+            }
+        }
+    };
+}
+
 /// A B-spline curve: `BSplineCurve(degree, knots, control_points)`; the knot vector has
 /// control points + degree + 1 entries. `BSplineCurve.clamped(degree, control_points)` makes
 /// the clamped uniform knots on [0, 1].
@@ -265,8 +392,9 @@ fn knot_vector(knots: Vec<f64>) -> PyResult<KnotVector<f64>> {
 #[allow(non_camel_case_types)] // the Rust name differs from the library's struct; Python sees `BSplineCurve`
 pub struct BSplineCurve_;
 
-#[pymethods]
-impl BSplineCurve_ {
+knotted_curve_methods! {
+    BSplineCurve_, BSpline2, BSpline3;
+
     #[new]
     fn new(
         degree: usize,
@@ -324,121 +452,6 @@ impl BSplineCurve_ {
         control_points_of(slf.py(), &slf.as_super().inner)
     }
 
-    /// The degree.
-    #[getter]
-    fn degree(slf: PyRef<'_, Self>) -> PyResult<usize> {
-        by_dim!(&slf.as_super().inner, BSpline2, BSpline3, c => Ok(c.degree()))
-    }
-
-    /// The knot vector.
-    #[getter]
-    fn knots<'py>(slf: PyRef<'py, Self>) -> PyResult<Bound<'py, PyArray1<f64>>> {
-        let py = slf.py();
-        by_dim!(&slf.as_super().inner, BSpline2, BSpline3, c =>
-            Ok(PyArray1::from_slice(py, c.knots().as_slice())))
-    }
-
-    /// The same curve with the knot u inserted `times` times (Boehm).
-    #[pyo3(signature = (u, times = 1))]
-    fn insert_knot(slf: PyRef<'_, Self>, u: f64, times: usize) -> PyResult<Py<PyAny>> {
-        let py = slf.py();
-        by_dim!(&slf.as_super().inner, BSpline2, BSpline3, c =>
-            wrap(py, same!(c.insert_knot(u, times).map_err(geometry)?)))
-    }
-
-    /// The same curve with every knot of `knots` inserted (knot refinement).
-    fn refine(slf: PyRef<'_, Self>, knots: Vec<f64>) -> PyResult<Py<PyAny>> {
-        let py = slf.py();
-        by_dim!(&slf.as_super().inner, BSpline2, BSpline3, c =>
-            wrap(py, same!(c.refine(&knots).map_err(geometry)?)))
-    }
-
-    /// The two pieces on either side of u.
-    fn split(slf: PyRef<'_, Self>, u: f64) -> PyResult<(Py<PyAny>, Py<PyAny>)> {
-        let py = slf.py();
-        by_dim!(&slf.as_super().inner, BSpline2, BSpline3, c => {
-            let (a, b) = c.split(u).map_err(geometry)?;
-            pair(py, same!(a), same!(b))
-        })
-    }
-
-    /// The same curve with its degree raised `times` times.
-    #[pyo3(signature = (times = 1))]
-    fn elevate_degree(slf: PyRef<'_, Self>, times: usize) -> PyResult<Py<PyAny>> {
-        let py = slf.py();
-        by_dim!(&slf.as_super().inner, BSpline2, BSpline3, c =>
-            wrap(py, same!(c.elevate_degree(times).map_err(geometry)?)))
-    }
-
-    /// The same curve on the domain [a, b] (affine change of parameter).
-    fn reparameterized(slf: PyRef<'_, Self>, a: f64, b: f64) -> PyResult<Py<PyAny>> {
-        let py = slf.py();
-        by_dim!(&slf.as_super().inner, BSpline2, BSpline3, c =>
-            wrap(py, same!(c.reparameterized(a, b).map_err(geometry)?)))
-    }
-
-    /// The same curve with clamped ends (end knots of full multiplicity).
-    fn clamped(slf: PyRef<'_, Self>) -> PyResult<Py<PyAny>> {
-        let py = slf.py();
-        by_dim!(&slf.as_super().inner, BSpline2, BSpline3, c => wrap(py, same!(c.clamped())))
-    }
-
-    /// The natural extension: the same polynomial pieces continued (or cut back) so that the
-    /// domain reaches `t` at `end` (`"start"` or `"end"`); C(u) is unchanged on the old domain.
-    fn extrapolated(slf: PyRef<'_, Self>, end: &str, t: f64) -> PyResult<Py<PyAny>> {
-        let py = slf.py();
-        let end = curve_end(end)?;
-        by_dim!(&slf.as_super().inner, BSpline2, BSpline3, c =>
-            wrap(py, same!(c.extrapolated(end, t).map_err(geometry)?)))
-    }
-
-    /// The curve extended at `end` (`"start"` or `"end"`) by an arc of `length` (length
-    /// units): `"G1"` a straight piece along the end tangent, `"G2"` the end piece continued
-    /// naturally (found by arc length).
-    #[pyo3(signature = (end, length, continuity = "G2"))]
-    fn extended_by_length(
-        slf: PyRef<'_, Self>,
-        end: &str,
-        length: f64,
-        continuity: &str,
-    ) -> PyResult<Py<PyAny>> {
-        let py = slf.py();
-        let (end, how) = (curve_end(end)?, ext_continuity(continuity)?);
-        by_dim!(&slf.as_super().inner, BSpline2, BSpline3, c => wrap(
-            py,
-            same!(py.detach(|| c.extended_by_length(end, length, how)).map_err(geometry)?)
-        ))
-    }
-
-    /// Removes the knot u up to `times` times while the curve moves by at most `tolerance`
-    /// (length units): (curve, removed, error_bound); removed is 0 when no removal fits.
-    #[pyo3(signature = (u, times = 1, tolerance = 1e-9))]
-    fn remove_knot(
-        slf: PyRef<'_, Self>,
-        u: f64,
-        times: usize,
-        tolerance: f64,
-    ) -> PyResult<(Py<PyAny>, usize, f64)> {
-        let py = slf.py();
-        by_dim!(&slf.as_super().inner, BSpline2, BSpline3, c => {
-            let r = py.detach(|| c.remove_knot(u, times, tolerance)).map_err(geometry)?;
-            Ok((wrap(py, same!(r.curve))?, r.removed, r.error_bound))
-        })
-    }
-
-    /// The curve of one degree less, its pieces reduced and its knots removed as far as the
-    /// original continuity and `tolerance` (length units) allow: (curve, error_bound). The
-    /// bound holds everywhere; it exceeds the tolerance only when the pieces themselves
-    /// cannot be reduced within it (check it).
-    #[pyo3(signature = (tolerance = 1e-9))]
-    fn reduce_degree(slf: PyRef<'_, Self>, tolerance: f64) -> PyResult<(Py<PyAny>, f64)> {
-        let py = slf.py();
-        by_dim!(&slf.as_super().inner, BSpline2, BSpline3, c => {
-            let r = py.detach(|| c.reduce_degree(tolerance)).map_err(geometry)?;
-            Ok((wrap(py, same!(r.curve))?, r.error_bound))
-        })
-    }
-
     /// Removes every removable interior knot while the curve moves by at most `tolerance`
     /// in all: (curve, removed, error_bound).
     #[pyo3(signature = (tolerance = 1e-9))]
@@ -475,8 +488,9 @@ impl BSplineCurve_ {
 #[allow(non_camel_case_types)] // the Rust name differs from the library's struct; Python sees `NurbsCurve`
 pub struct NurbsCurve_;
 
-#[pymethods]
-impl NurbsCurve_ {
+knotted_curve_methods! {
+    NurbsCurve_, Nurbs2, Nurbs3;
+
     #[new]
     fn new(
         degree: usize,
@@ -542,20 +556,6 @@ impl NurbsCurve_ {
         control_points_of(slf.py(), &slf.as_super().inner)
     }
 
-    /// The degree.
-    #[getter]
-    fn degree(slf: PyRef<'_, Self>) -> PyResult<usize> {
-        by_dim!(&slf.as_super().inner, Nurbs2, Nurbs3, c => Ok(c.degree()))
-    }
-
-    /// The knot vector.
-    #[getter]
-    fn knots<'py>(slf: PyRef<'py, Self>) -> PyResult<Bound<'py, PyArray1<f64>>> {
-        let py = slf.py();
-        by_dim!(&slf.as_super().inner, Nurbs2, Nurbs3, c =>
-            Ok(PyArray1::from_slice(py, c.knots().as_slice())))
-    }
-
     /// The weights.
     #[getter]
     fn weights<'py>(slf: PyRef<'py, Self>) -> PyResult<Bound<'py, PyArray1<f64>>> {
@@ -567,107 +567,6 @@ impl NurbsCurve_ {
     /// Whether every weight is equal (the curve is a plain B-spline).
     fn is_polynomial(slf: PyRef<'_, Self>) -> PyResult<bool> {
         by_dim!(&slf.as_super().inner, Nurbs2, Nurbs3, c => Ok(c.is_polynomial()))
-    }
-
-    /// The same curve with the knot u inserted `times` times.
-    #[pyo3(signature = (u, times = 1))]
-    fn insert_knot(slf: PyRef<'_, Self>, u: f64, times: usize) -> PyResult<Py<PyAny>> {
-        let py = slf.py();
-        by_dim!(&slf.as_super().inner, Nurbs2, Nurbs3, c =>
-            wrap(py, same!(c.insert_knot(u, times).map_err(geometry)?)))
-    }
-
-    /// The same curve with every knot of `knots` inserted.
-    fn refine(slf: PyRef<'_, Self>, knots: Vec<f64>) -> PyResult<Py<PyAny>> {
-        let py = slf.py();
-        by_dim!(&slf.as_super().inner, Nurbs2, Nurbs3, c =>
-            wrap(py, same!(c.refine(&knots).map_err(geometry)?)))
-    }
-
-    /// The two pieces on either side of u.
-    fn split(slf: PyRef<'_, Self>, u: f64) -> PyResult<(Py<PyAny>, Py<PyAny>)> {
-        let py = slf.py();
-        by_dim!(&slf.as_super().inner, Nurbs2, Nurbs3, c => {
-            let (a, b) = c.split(u).map_err(geometry)?;
-            pair(py, same!(a), same!(b))
-        })
-    }
-
-    /// The same curve with its degree raised `times` times.
-    #[pyo3(signature = (times = 1))]
-    fn elevate_degree(slf: PyRef<'_, Self>, times: usize) -> PyResult<Py<PyAny>> {
-        let py = slf.py();
-        by_dim!(&slf.as_super().inner, Nurbs2, Nurbs3, c =>
-            wrap(py, same!(c.elevate_degree(times).map_err(geometry)?)))
-    }
-
-    /// The same curve on the domain [a, b].
-    fn reparameterized(slf: PyRef<'_, Self>, a: f64, b: f64) -> PyResult<Py<PyAny>> {
-        let py = slf.py();
-        by_dim!(&slf.as_super().inner, Nurbs2, Nurbs3, c =>
-            wrap(py, same!(c.reparameterized(a, b).map_err(geometry)?)))
-    }
-
-    /// The same curve with clamped ends.
-    fn clamped(slf: PyRef<'_, Self>) -> PyResult<Py<PyAny>> {
-        let py = slf.py();
-        by_dim!(&slf.as_super().inner, Nurbs2, Nurbs3, c => wrap(py, same!(c.clamped())))
-    }
-
-    /// The natural extension: the same polynomial pieces continued (or cut back) so that the
-    /// domain reaches `t` at `end` (`"start"` or `"end"`); C(u) is unchanged on the old domain.
-    fn extrapolated(slf: PyRef<'_, Self>, end: &str, t: f64) -> PyResult<Py<PyAny>> {
-        let py = slf.py();
-        let end = curve_end(end)?;
-        by_dim!(&slf.as_super().inner, Nurbs2, Nurbs3, c =>
-            wrap(py, same!(c.extrapolated(end, t).map_err(geometry)?)))
-    }
-
-    /// The curve extended at `end` (`"start"` or `"end"`) by an arc of `length` (length
-    /// units): `"G1"` a straight piece along the end tangent, `"G2"` the end piece continued
-    /// naturally (found by arc length).
-    #[pyo3(signature = (end, length, continuity = "G2"))]
-    fn extended_by_length(
-        slf: PyRef<'_, Self>,
-        end: &str,
-        length: f64,
-        continuity: &str,
-    ) -> PyResult<Py<PyAny>> {
-        let py = slf.py();
-        let (end, how) = (curve_end(end)?, ext_continuity(continuity)?);
-        by_dim!(&slf.as_super().inner, Nurbs2, Nurbs3, c => wrap(
-            py,
-            same!(py.detach(|| c.extended_by_length(end, length, how)).map_err(geometry)?)
-        ))
-    }
-
-    /// Removes the knot u up to `times` times while the curve moves by at most `tolerance`
-    /// (length units): (curve, removed, error_bound); removed is 0 when no removal fits.
-    #[pyo3(signature = (u, times = 1, tolerance = 1e-9))]
-    fn remove_knot(
-        slf: PyRef<'_, Self>,
-        u: f64,
-        times: usize,
-        tolerance: f64,
-    ) -> PyResult<(Py<PyAny>, usize, f64)> {
-        let py = slf.py();
-        by_dim!(&slf.as_super().inner, Nurbs2, Nurbs3, c => {
-            let r = py.detach(|| c.remove_knot(u, times, tolerance)).map_err(geometry)?;
-            Ok((wrap(py, same!(r.curve))?, r.removed, r.error_bound))
-        })
-    }
-
-    /// The curve of one degree less, its pieces reduced and its knots removed as far as the
-    /// original continuity and `tolerance` (length units) allow: (curve, error_bound). The
-    /// bound holds everywhere; it exceeds the tolerance only when the pieces themselves
-    /// cannot be reduced within it (check it).
-    #[pyo3(signature = (tolerance = 1e-9))]
-    fn reduce_degree(slf: PyRef<'_, Self>, tolerance: f64) -> PyResult<(Py<PyAny>, f64)> {
-        let py = slf.py();
-        by_dim!(&slf.as_super().inner, Nurbs2, Nurbs3, c => {
-            let r = py.detach(|| c.reduce_degree(tolerance)).map_err(geometry)?;
-            Ok((wrap(py, same!(r.curve))?, r.error_bound))
-        })
     }
 
     /// The rational Bézier pieces between distinct knots: a list of (a, b, NurbsCurve).

@@ -3,13 +3,14 @@
 //! W4 (10,000 independent components, one solve); and on the nonlinear path W2 `bspline7`
 //! and `2cubic` (three-circle tangency, one solve from each of 100 perturbed starts per δ, valid
 //! counts printed), a drag update on the solved diffuser, and W3 (the G1 chain with free joint
-//! directions and chord lengths, N = 1,000 and 10,000).
+//! directions and chord lengths, N = 1,000 and 10,000); and the DOF analysis of large
+//! components (the W3 chain, a 100,000-point chain, the fully constrained W5b ladder).
 #![allow(missing_docs)] // criterion's macros generate undocumented items
 
 use camber_sketch::{PointRef, Sketch, TangentForm};
 use camber_workloads::{
     blade, w1, w1_targets, w2_2cubic, w2_2cubic_perturbed, w2_2cubic_valid, w2_bspline7,
-    w2_perturbed, w2_valid, w3_chain, w3a_chain, w4,
+    w2_perturbed, w2_valid, w3_chain, w3a_chain, w4, w5b,
 };
 use criterion::{criterion_group, criterion_main, BatchSize, BenchmarkId, Criterion};
 use nalgebra::{Point2, Vector2};
@@ -174,7 +175,9 @@ fn bench_w3(c: &mut Criterion) {
 }
 
 /// The DOF analysis of large components (issue 13: `check` of W3 at N = 10,000 within 0.5 s,
-/// a 100,000-point distance chain within 5 s): the sparse analysis, no dense matrix.
+/// a 100,000-point distance chain within 5 s): the sparse analysis, no dense matrix; and of the
+/// fully constrained W5b ladder of 10,000 cells, settled by its blocks with no free-unknown
+/// projection.
 fn bench_analysis(c: &mut Criterion) {
     let mut group = c.benchmark_group("analyze");
     group.sample_size(10);
@@ -185,6 +188,10 @@ fn bench_analysis(c: &mut Criterion) {
     let chain = point_chain(100_000);
     group.bench_function("point_chain_100000", |b| {
         b.iter(|| black_box(chain.analyze().expect("analysis")))
+    });
+    let (ladder, _) = w5b(10_000).expect("valid ladder");
+    group.bench_function("w5b_ladder_10000", |b| {
+        b.iter(|| black_box(ladder.analyze().expect("analysis")))
     });
     group.finish();
 }

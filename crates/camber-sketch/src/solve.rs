@@ -151,9 +151,23 @@ impl Sketch {
         Err(first)
     }
 
+    /// Solves `comps` and, only when every one succeeds, writes all their results back. The
+    /// components are independent problems over disjoint entities, so they are built and solved
+    /// in parallel when there are enough of them to pay for it ([`solves_in_parallel`]), one
+    /// after another otherwise; both ways give the same reports in component order, the same
+    /// error (that of the first failing component in component order) and write nothing on an
+    /// error.
     fn solve_components(&mut self, comps: Vec<Component>) -> Result<SketchReport> {
-        let mut updates = Vec::new();
-        let mut clean = Vec::new();
+        let parallel = solves_in_parallel(&comps);
+        self.solve_components_in(comps, parallel)
+    }
+
+    /// [`Sketch::solve_components`] with the choice of parallel or sequential solves given.
+    fn solve_components_in(
+        &mut self,
+        comps: Vec<Component>,
+        parallel: bool,
+    ) -> Result<SketchReport> {
         // The options depend on the largest coordinate of the whole sketch: worked out once per
         // solve, not once per component (which made many components quadratic).
         let options = self.solve_options();
@@ -162,23 +176,226 @@ impl Sketch {
             tolerance: options.tolerance,
             ..SketchReport::default()
         };
+        let clean: Vec<crate::ids::EntityId> = comps
+            .iter()
+            .flat_map(|c| c.entities.iter().copied())
+            .collect();
+        let comps: Vec<Component> = comps
+            .into_iter()
+            .filter(|c| !c.constraints.is_empty())
+            .collect();
+        let outcomes = if parallel {
+            self.solve_each_in_parallel(comps, &options)?
+        } else {
+            comps
+                .into_iter()
+                .map(|comp| self.solve_component(comp, &options))
+                .collect::<Result<Vec<_>>>()?
+        };
+        let mut updates = Vec::new();
         let mut free = Vec::new();
-        for comp in comps {
-            clean.extend(comp.entities.iter().copied());
-            if comp.constraints.is_empty() {
-                continue;
-            }
-            let mut cp = self.build_component(&comp, None)?;
-            let (r, solved) = self.solve_with_starts(&mut cp, &options)?;
-            free.extend(cp.free_at(cp.problem().values())?);
-            updates.extend(solved);
-            report.components.push(ComponentReport {
-                component: comp,
-                report: r,
-            });
+        for outcome in outcomes {
+            updates.extend(outcome.updates);
+            free.extend(outcome.free);
+            report.components.push(outcome.report);
         }
         self.commit(updates, &clean);
         self.store_free(&free);
         Ok(report)
+    }
+
+    /// Builds and solves one component on its own problem; nothing is written to the sketch.
+    fn solve_component(
+        &self,
+        comp: Component,
+        options: &camber_solve::Options,
+    ) -> Result<ComponentOutcome> {
+        let mut cp = self.build_component(&comp, None)?;
+        let (r, updates) = self.solve_with_starts(&mut cp, options)?;
+        let free = cp.free_at(cp.problem().values())?;
+        Ok(ComponentOutcome {
+            report: ComponentReport {
+                component: comp,
+                report: r,
+            },
+            updates,
+            free,
+        })
+    }
+
+    /// [`Sketch::solve_component`] for every component on rayon's pool, the outcomes in
+    /// component order. The error is that of the first failing component in component order,
+    /// as one after another: a component after a known failure is skipped (its outcome could
+    /// not be used), one before it always runs.
+    fn solve_each_in_parallel(
+        &self,
+        comps: Vec<Component>,
+        options: &camber_solve::Options,
+    ) -> Result<Vec<ComponentOutcome>> {
+        use rayon::prelude::*;
+        use std::sync::atomic::{AtomicUsize, Ordering};
+        let first_failure = AtomicUsize::new(usize::MAX);
+        let outcomes: Vec<Option<Result<ComponentOutcome>>> = comps
+            .into_par_iter()
+            .enumerate()
+            .map(|(k, comp)| {
+                if k > first_failure.load(Ordering::Relaxed) {
+                    return None;
+                }
+                let outcome = self.solve_component(comp, options);
+                if outcome.is_err() {
+                    first_failure.fetch_min(k, Ordering::Relaxed);
+                }
+                Some(outcome)
+            })
+            .collect();
+        // Every component before the first failure ran, so the first error met in order is
+        // that failure; skipped components all come after it.
+        outcomes.into_iter().flatten().collect()
+    }
+}
+
+/// One solved component, not yet written: its report, the entities it moved with their new
+/// values, and the free parameters (constraint, index, value) to store.
+#[derive(Debug)]
+struct ComponentOutcome {
+    report: ComponentReport,
+    updates: Vec<(crate::ids::EntityId, crate::entity::Entity)>,
+    free: Vec<(camber_solve::ConstraintId, usize, f64)>,
+}
+
+/// Fewer constraints than this in all the components to solve are solved one after another:
+/// handing work to rayon's pool costs some microseconds of wake-up per thread, more than a
+/// solve this small would save (an interactive solve is usually one or two small dirty
+/// components, and its latency must not grow).
+const PARALLEL_MIN_CONSTRAINTS: usize = 64;
+
+/// Whether the components are solved on rayon's pool: more than one component, more than one
+/// thread to run on, and at least [`PARALLEL_MIN_CONSTRAINTS`] constraints in all.
+fn solves_in_parallel(comps: &[Component]) -> bool {
+    comps.iter().filter(|c| !c.constraints.is_empty()).count() > 1
+        && comps.iter().map(|c| c.constraints.len()).sum::<usize>() >= PARALLEL_MIN_CONSTRAINTS
+        && rayon::current_num_threads() > 1
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used)] // a failed unwrap is a failed test
+
+    use super::*;
+    use crate::constraints::{Coincident, Distance, Fixed, Horizontal, Vertical};
+    use crate::file::to_json;
+    use crate::{EntityId, PointRef};
+    use nalgebra::Point2;
+
+    /// `n` perturbed rectangles, each a component of four lines held by coincident corners,
+    /// horizontals, verticals, two side lengths and a fixed corner. Rectangle k's width is
+    /// 2 + k mod 3; those in `conflicting` get a second width that contradicts the first.
+    fn rectangles(n: usize, conflicting: &[usize]) -> Sketch {
+        let mut s = Sketch::new();
+        for k in 0..n {
+            let (x, y) = (10.0 * k as f64, 0.0);
+            let wobble = |i: usize| 0.05 * (((k * 7 + i * 3) % 11) as f64 / 11.0 - 0.5);
+            let corners = [
+                Point2::new(x + wobble(0), y + wobble(1)),
+                Point2::new(x + 2.0 + wobble(2), y + wobble(3)),
+                Point2::new(x + 2.0 + wobble(4), y + 1.0 + wobble(5)),
+                Point2::new(x + wobble(6), y + 1.0 + wobble(7)),
+            ];
+            let lines: Vec<EntityId> = (0..4)
+                .map(|i| s.add_line(corners[i], corners[(i + 1) % 4]).unwrap())
+                .collect();
+            for i in 0..4 {
+                s.add_constraint(Coincident {
+                    a: PointRef::End(lines[i]),
+                    b: PointRef::Start(lines[(i + 1) % 4]),
+                })
+                .unwrap();
+            }
+            s.add_constraint(Horizontal::line(lines[0])).unwrap();
+            s.add_constraint(Horizontal::line(lines[2])).unwrap();
+            s.add_constraint(Vertical::line(lines[1])).unwrap();
+            s.add_constraint(Vertical::line(lines[3])).unwrap();
+            let width = 2.0 + (k % 3) as f64;
+            let side = |line: EntityId, distance: f64| Distance {
+                a: PointRef::Start(line),
+                b: PointRef::End(line),
+                distance,
+            };
+            s.add_constraint(side(lines[0], width)).unwrap();
+            s.add_constraint(side(lines[1], 1.0)).unwrap();
+            if conflicting.contains(&k) {
+                s.add_constraint(side(lines[2], width + 1.0)).unwrap();
+            }
+            s.add_constraint(Fixed::point(PointRef::Start(lines[0])))
+                .unwrap();
+        }
+        s
+    }
+
+    /// A report with its timings zeroed (the only part that differs between two runs).
+    fn untimed(mut r: SketchReport) -> SketchReport {
+        for c in &mut r.components {
+            c.report.elapsed = std::time::Duration::ZERO;
+        }
+        r
+    }
+
+    #[test]
+    fn parallel_and_sequential_solves_agree_exactly() {
+        let base = rectangles(40, &[]);
+        assert!(solves_in_parallel(&base.components()) || rayon::current_num_threads() == 1);
+        let (mut seq, mut par) = (base.clone(), base.clone());
+        let comps = base.components();
+        let rs = seq.solve_components_in(comps.clone(), false).unwrap();
+        let rp = par.solve_components_in(comps, true).unwrap();
+        assert_eq!(rs.components.len(), 40);
+        assert_eq!(untimed(rs), untimed(rp));
+        // Bit for bit the same sketch, dirty marks included.
+        assert_eq!(to_json(&seq).unwrap(), to_json(&par).unwrap());
+        assert_eq!(seq.dirty().count(), 0);
+        assert_eq!(par.dirty().count(), 0);
+        for k in 0..40 {
+            let line = seq.components()[k].entities[0];
+            let (a, b) = (
+                par.point(PointRef::Start(line)).unwrap(),
+                par.point(PointRef::End(line)).unwrap(),
+            );
+            assert!(((b - a).norm() - (2.0 + (k % 3) as f64)).abs() < 1e-9);
+        }
+    }
+
+    #[test]
+    fn the_first_failing_component_in_order_is_the_error_and_nothing_is_written() {
+        // Components 5, 17 and 33 conflict; whichever thread finds one first, the error is
+        // component 5's, as one after another, and no component is written.
+        let base = rectangles(40, &[33, 17, 5]);
+        let comps = base.components();
+        let (mut seq, mut par) = (base.clone(), base.clone());
+        let es = seq.solve_components_in(comps.clone(), false).unwrap_err();
+        let ep = par.solve_components_in(comps, true).unwrap_err();
+        assert_eq!(es, ep);
+        let mut only_fifth = rectangles(6, &[5]);
+        let e5 = only_fifth.solve_all().unwrap_err();
+        // The same kind of failure on the same constraints, up to the ids of the components
+        // before it (rectangle 5 holds the same place in both sketches).
+        assert_eq!(e5, ep);
+        let before = to_json(&base).unwrap();
+        assert_eq!(to_json(&seq).unwrap(), before);
+        assert_eq!(to_json(&par).unwrap(), before);
+        assert_eq!(par.dirty().count(), base.dirty().count());
+    }
+
+    #[test]
+    fn small_sketches_stay_sequential() {
+        assert!(!solves_in_parallel(&rectangles(1, &[]).components()));
+        // 3 rectangles: 33 constraints, below the threshold.
+        assert!(!solves_in_parallel(&rectangles(3, &[]).components()));
+        let many = rectangles(8, &[]).components();
+        assert_eq!(
+            solves_in_parallel(&many),
+            rayon::current_num_threads() > 1,
+            "88 constraints in 8 components"
+        );
     }
 }

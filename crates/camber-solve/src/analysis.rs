@@ -25,7 +25,9 @@
 //! Block by block ([`analyze`]): the same verdicts, with the numeric tests run only inside the
 //! diagonal blocks of J's Dulmage–Mendelsohn form and inside the pieces of rows they couple (see
 //! [`crate::structure`] and the `block_analysis` module); [`DofAnalysis::structure`] reports
-//! the decomposition.
+//! the decomposition. The free columns come from the blocks too: full-rank blocks determine
+//! their unknowns, and the null-space projection runs only on the others, piece by piece (the
+//! `free_columns` module).
 
 use nalgebra::{DMatrix, DVector};
 
@@ -84,7 +86,7 @@ pub struct RowAnalysis {
 /// column is free when either has an entry above this fraction of its largest one (a
 /// determined column is exactly zero in every null vector, up to rounding), and a vector whose
 /// largest entry is below it is rounding left of a trivial null space.
-const FREE_COLUMN_TOLERANCE: f64 = 1e-8;
+pub(crate) const FREE_COLUMN_TOLERANCE: f64 = 1e-8;
 
 /// Uniform draws in ±[1, 2) from a fixed 64-bit LCG: the random combination of null vectors
 /// [`free_columns_of`] needs, reproducible from run to run.
@@ -109,7 +111,7 @@ pub(crate) fn random_draws(seed: u64, n: usize) -> Vec<f64> {
 
 /// The columns where one of the null vectors `vectors` is not negligible (see
 /// [`FREE_COLUMN_TOLERANCE`]).
-fn free_columns_of(vectors: &[Vec<f64>], n: usize) -> Vec<usize> {
+pub(crate) fn free_columns_of(vectors: &[Vec<f64>], n: usize) -> Vec<usize> {
     let mut free = vec![false; n];
     for v in vectors {
         let top = v.iter().fold(0.0_f64, |m, x| m.max(x.abs()));
@@ -241,7 +243,7 @@ impl GramSchmidt {
 
 /// The free columns of the dense J given its independent rows: random vectors with their
 /// components along those rows removed (Gram–Schmidt, twice).
-pub(crate) fn dense_free_columns(j: &DMatrix<f64>, independent: &[usize]) -> Vec<usize> {
+fn dense_free_columns(j: &DMatrix<f64>, independent: &[usize]) -> Vec<usize> {
     let n = j.ncols();
     let mut basis = GramSchmidt::default();
     for i in independent {
@@ -261,6 +263,57 @@ pub(crate) fn dense_free_columns(j: &DMatrix<f64>, independent: &[usize]) -> Vec
         })
         .collect();
     free_columns_of(&vectors, n)
+}
+
+/// Projects each of `vectors` (one entry per column of `j`) onto the null space of the rows
+/// of the dense `j` that Gram–Schmidt accepts in row order against `threshold` (the dense
+/// kernel's test): a row within `threshold` of the span of the rows before it is a combination
+/// of them and adds no condition.
+pub(crate) fn dense_null_projection(j: &DMatrix<f64>, threshold: f64, vectors: &mut [Vec<f64>]) {
+    let mut basis = GramSchmidt::default();
+    for i in 0..j.nrows() {
+        basis.insert(j.row(i).transpose(), 0.0, threshold);
+    }
+    for v in vectors {
+        let mut x = DVector::from_column_slice(v);
+        for _ in 0..2 {
+            for (q, _) in &basis.basis {
+                let c = q.dot(&x);
+                x.axpy(-c, q, 1.0);
+            }
+        }
+        v.copy_from_slice(x.as_slice());
+    }
+}
+
+/// [`dense_null_projection`] without a dense matrix: the rows the sparse kernel accepts in row
+/// order against `threshold` ([`sparse_rows`], `scale` its rounding scale), then each vector
+/// projected on their null space by their minimum-norm factorization (sparse Cholesky of
+/// J_A·J_Aᵀ).
+///
+/// # Errors
+/// Factorization errors.
+pub(crate) fn sparse_null_projection(
+    j: &SparseMatrix,
+    threshold: f64,
+    scale: f64,
+    vectors: &mut [Vec<f64>],
+) -> Result<()> {
+    let zeros = vec![0.0; j.nrows()];
+    let independent = sparse_rows(j, &zeros, threshold, scale, f64::INFINITY).independent;
+    if independent.is_empty() {
+        return Ok(());
+    }
+    let n = j.ncols();
+    let kept = j.select_rows(&independent);
+    let mut projection = MinNormFactorization::try_sparse(&kept, &vec![1.0; n])?;
+    let mut multipliers = vec![0.0; independent.len()];
+    let mut out = vec![0.0; n];
+    for v in vectors {
+        projection.project(v, &mut out, &mut multipliers)?;
+        v.copy_from_slice(&out);
+    }
+    Ok(())
 }
 
 /// Above this many entries of J (rows × unknowns), [`analyze`] runs the sparse analysis.
@@ -344,7 +397,7 @@ pub(crate) fn sparse_rows(
 ///
 /// # Errors
 /// Factorization errors.
-pub(crate) fn sparse_free_columns(j: &SparseMatrix, independent: &[usize]) -> Result<Vec<usize>> {
+fn sparse_free_columns(j: &SparseMatrix, independent: &[usize]) -> Result<Vec<usize>> {
     let n = j.ncols();
     let vectors: Vec<Vec<f64>> = if independent.is_empty() {
         [1_u64, 2].iter().map(|seed| draws(*seed, n)).collect()
@@ -537,6 +590,11 @@ pub struct StructureSummary {
     pub coupled_rows: usize,
     /// Rows of the largest coupled piece.
     pub largest_coupled_piece: usize,
+    /// Unknowns the free-unknown projection ran on: those that full-rank blocks do not
+    /// determine (see [`analyze`]). Zero for a fully constrained sketch: no projection ran.
+    pub projected_unknowns: usize,
+    /// Unknowns of the largest piece projected.
+    pub largest_projected_piece: usize,
 }
 
 impl StructureSummary {
@@ -568,6 +626,8 @@ impl StructureSummary {
                 .map(|p| p.rows.len())
                 .max()
                 .unwrap_or(0),
+            projected_unknowns: blocks.free.candidates,
+            largest_projected_piece: blocks.free.largest_piece,
         }
     }
 }
@@ -697,7 +757,7 @@ fn dependencies(
 
 /// The kernel for a matrix of `entries` rows × unknowns: dense up to
 /// [`DENSE_ANALYSIS_MAX_ENTRIES`], sparse above.
-fn kernel_for(entries: usize) -> Kernel {
+pub(crate) fn kernel_for(entries: usize) -> Kernel {
     if entries <= DENSE_ANALYSIS_MAX_ENTRIES {
         Kernel::Dense
     } else {
@@ -739,6 +799,12 @@ pub(crate) fn analyze_rows_by_blocks(
 /// rows. The over-determined part, rank-deficient blocks and every block they read form the
 /// coupled pieces, each analysed alone; a dependent row is a combination of rows of its own
 /// piece.
+///
+/// The free unknowns ([`RowAnalysis::free_columns`]) come from the blocks too, tested last to
+/// first: a square block of full rank whose rows read only determined unknowns outside it, and
+/// an over-determined block of full column rank, determine their unknowns. Random vectors are
+/// projected on the null space of the rows of the other blocks, restricted to the other
+/// unknowns, piece by piece; a fully constrained sketch projects nothing.
 ///
 /// # Errors
 /// As [`analyze_rows`].

@@ -33,10 +33,10 @@ use std::borrow::Cow;
 use nalgebra::DVector;
 
 use crate::analysis::{
-    dense_free_columns, dense_rows, largest_row_norm, random_draws, sparse_free_columns,
-    sparse_rows, DependentRow, KernelRows, RowAnalysis,
+    dense_rows, largest_row_norm, random_draws, sparse_rows, DependentRow, KernelRows, RowAnalysis,
 };
 use crate::errors::Result;
+use crate::free_columns::{self as free, FreeColumns, RankTest};
 use crate::sparse::{check_len, SparseMatrix};
 use crate::structure::{Decomposition, Part};
 
@@ -68,6 +68,9 @@ pub(crate) struct BlockAnalysis {
     pub structure: Decomposition,
     /// The coupled pieces, each analysed alone.
     pub pieces: Vec<Piece>,
+    /// What the free-column projection ran on (all zero when it was not asked for, or when
+    /// every unknown is determined by structure and full-rank blocks).
+    pub free: FreeColumns,
 }
 
 /// Power iterations for σ_max at most.
@@ -112,7 +115,7 @@ pub(crate) fn largest_singular_value(j: &SparseMatrix) -> f64 {
 /// The rows `rows` of J restricted to the columns `columns` (renumbered in that order), with
 /// `local` a scratch map of J's columns, all `usize::MAX` on entry and on exit. J itself when
 /// they are all its rows and columns (a component that is one block).
-fn restrict<'a>(
+pub(crate) fn restrict<'a>(
     j: &'a SparseMatrix,
     rows: &[usize],
     columns: &[usize],
@@ -140,7 +143,7 @@ fn restrict<'a>(
 }
 
 /// Runs `kernel` on a restricted matrix with the whole component's threshold.
-fn run(
+pub(crate) fn run(
     kernel: Kernel,
     j: &SparseMatrix,
     g: &[f64],
@@ -181,6 +184,8 @@ pub(crate) fn analyze_blocks(
 
     // Clear or coupled, first to last.
     let mut coupled = vec![false; blocks.len()];
+    // Whether a block's rows have full column rank on its own columns, where a test showed it.
+    let mut full_rank: Vec<Option<bool>> = vec![None; blocks.len()];
     // The verdicts of a failed diagonal test: those of its piece when the block is one alone.
     let mut failed: Vec<Option<KernelRows>> = vec![None; blocks.len()];
     for (id, b) in blocks.iter().enumerate() {
@@ -192,6 +197,7 @@ pub(crate) fn analyze_blocks(
             let gb: Vec<f64> = b.rows.iter().map(|r| g[*r]).collect();
             let verdict = run(kernel, &diagonal, &gb, threshold, scale, residual_tolerance);
             coupled[id] = !verdict.dependent.is_empty();
+            full_rank[id] = Some(verdict.independent.len() == b.columns.len());
             if coupled[id] {
                 failed[id] = Some(verdict);
             }
@@ -271,7 +277,12 @@ pub(crate) fn analyze_blocks(
             _ => {
                 let sub = restrict(j, &p.rows, &p.columns, &mut local)?;
                 let gp: Vec<f64> = p.rows.iter().map(|r| g[*r]).collect();
-                run(kernel, &sub, &gp, threshold, scale, residual_tolerance)
+                let verdict = run(kernel, &sub, &gp, threshold, scale, residual_tolerance);
+                if *count == 1 {
+                    // One block alone (an over-determined one): its own rank test.
+                    full_rank[*first] = Some(verdict.independent.len() == p.columns.len());
+                }
+                verdict
             }
         };
         rank += verdict.rank;
@@ -284,13 +295,15 @@ pub(crate) fn analyze_blocks(
     independent.sort_unstable();
     dependent.sort_unstable_by_key(|d| d.row);
 
-    let free = if !free_columns {
-        Vec::new()
+    let free = if free_columns {
+        let test = RankTest {
+            kernel,
+            threshold,
+            scale,
+        };
+        free::by_blocks(j, &structure, &full_rank, &test)?
     } else {
-        match kernel {
-            Kernel::Dense => dense_free_columns(&j.to_dense(), &independent),
-            Kernel::Sparse => sparse_free_columns(j, &independent)?,
-        }
+        FreeColumns::default()
     };
     Ok(BlockAnalysis {
         rows: RowAnalysis {
@@ -298,10 +311,11 @@ pub(crate) fn analyze_blocks(
             scale,
             independent,
             dependent,
-            free_columns: free,
+            free_columns: free.columns.clone(),
         },
         structure,
         pieces,
+        free,
     })
 }
 
@@ -309,6 +323,7 @@ pub(crate) fn analyze_blocks(
 mod tests {
     use super::*;
     use crate::analysis::{analyze_rows, analyze_rows_sparse};
+    use crate::free_columns::svd_free_columns;
     use proptest::prelude::*;
 
     /// Sparse rows (one to three small integers), integer combinations of one or two earlier
@@ -392,11 +407,14 @@ mod tests {
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(512))]
         /// Block by block, the dense kernel gives what it gives on the whole matrix (its SVD
-        /// rank, Gram–Schmidt rows and mismatches), and so does the sparse kernel, block by
-        /// block and on the whole matrix (see `the_whole_givens_no_longer_misses_a_conflict`).
+        /// rank, Gram–Schmidt rows and mismatches, free columns), and so does the sparse
+        /// kernel, block by block and on the whole matrix (see
+        /// `the_whole_givens_no_longer_misses_a_conflict`); the free columns are the SVD's.
         #[test]
         fn block_wise_agrees_with_whole((j, g) in sparse_system()) {
             let dense = analyze_rows(&j.to_dense(), &g, 1e-10, 1e-9).unwrap_or_else(|_| unreachable!());
+            // The free columns (by blocks and whole) are also those of the SVD's null space.
+            prop_assert_eq!(&dense.free_columns, &svd_free_columns(&j.to_dense()));
             let blocks = analyze_blocks(&j, &g, 1e-10, 1e-9, Kernel::Dense, true).unwrap_or_else(|_| unreachable!());
             assert_same_verdicts(&blocks.rows, &dense)?;
             prop_assert!(same_mismatches(&blocks.rows, &dense));

@@ -36,6 +36,11 @@ pub(crate) struct Evaluator {
     /// The compressed forms of J and H, rebuilt only when their patterns change.
     jac_asm: Assembler,
     hess_asm: Assembler,
+    /// The local Jacobians of the affine residuals (constant: taken at the first
+    /// linearization, then only the values are evaluated), end to end, and where each
+    /// residual's starts (`usize::MAX` until taken, and for residuals that are not affine).
+    affine_jac: Vec<f64>,
+    affine_at: Vec<usize>,
 }
 
 impl Evaluator {
@@ -74,6 +79,8 @@ impl Evaluator {
             hess_triplets: Vec::new(),
             jac_asm: Assembler::default(),
             hess_asm: Assembler::default(),
+            affine_jac: Vec::new(),
+            affine_at: vec![usize::MAX; problem.residuals.len()],
         })
     }
 
@@ -133,17 +140,37 @@ impl Evaluator {
         self.triplets.clear();
         let mut row0 = 0;
         let mut flags = 0;
-        for rb in &problem.residuals {
+        for (r, rb) in problem.residuals.iter().enumerate() {
             let dim = rb.residual.dim();
             let slices = problem.gather(&self.x, &rb.blocks);
             let ncols: usize = slices.iter().map(|s| s.len()).sum();
-            self.jac.clear();
-            self.jac.resize(dim * ncols, 0.0);
+            let size = dim * ncols;
             let out = &mut g[row0..row0 + dim];
             let moves = &self.block_moves[flags..flags + rb.blocks.len()];
             flags += rb.blocks.len();
-            rb.residual
-                .jacobian_active(&slices, moves, out, &mut self.jac)?;
+            let cached = self
+                .affine_at
+                .get(r)
+                .and_then(|at| self.affine_jac.get(*at..at.saturating_add(size)));
+            self.jac.clear();
+            match cached {
+                Some(cached) => {
+                    // Affine: the Jacobian is the one taken before, only the values change.
+                    self.jac.extend_from_slice(cached);
+                    rb.residual.values(&slices, out)?;
+                }
+                None => {
+                    self.jac.resize(size, 0.0);
+                    rb.residual
+                        .jacobian_active(&slices, moves, out, &mut self.jac)?;
+                    if rb.residual.is_affine() {
+                        if let Some(at) = self.affine_at.get_mut(r) {
+                            *at = self.affine_jac.len();
+                            self.affine_jac.extend_from_slice(&self.jac);
+                        }
+                    }
+                }
+            }
             check_residual(rb, out)?;
             let mut local = 0;
             for b in &rb.blocks {
@@ -238,8 +265,23 @@ impl Evaluator {
             .map(Some)
     }
 
+    /// x(z) of the last evaluation (all unknowns of the problem).
+    pub(crate) fn expanded(&self) -> &[f64] {
+        &self.x
+    }
+
+    /// J_z of the last [`Evaluator::linearize`] as a dense m × n matrix.
+    pub(crate) fn dense_jacobian(&self) -> nalgebra::DMatrix<f64> {
+        let mut j = nalgebra::DMatrix::zeros(self.rows(), self.cols());
+        for &(r, c, v) in &self.triplets {
+            if let Some(e) = j.get_mut((r, c)) {
+                *e += v;
+            }
+        }
+        j
+    }
+
     /// The triplets of the last [`Evaluator::linearize`].
-    #[cfg_attr(not(feature = "nlopt"), allow(dead_code))] // used by SLSQP only
     pub(crate) fn triplets(&self) -> &[(usize, usize, f64)] {
         &self.triplets
     }

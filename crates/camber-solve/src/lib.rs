@@ -54,6 +54,7 @@ pub mod autodiff;
 mod block_analysis;
 mod budget;
 pub mod errors;
+mod free_columns;
 pub mod hessian;
 pub mod ids;
 pub mod linear;
@@ -96,6 +97,7 @@ pub mod selection;
 #[cfg(feature = "nlopt")]
 pub(crate) mod slsqp;
 pub(crate) mod soft;
+pub(crate) mod square;
 pub use newton::NewtonWorkspace;
 pub use nonlinear::{NonlinearOptions, SolverChoice};
 pub use objective::{Objective, UserObjective};

@@ -12,13 +12,10 @@
 //! ever formed. Small systems use nalgebra's dense Cholesky; large ones faer's sparse Cholesky
 //! (with a fill-reducing ordering) of the sparse M.
 
-use faer::linalg::solvers::Solve;
-use faer::sparse::linalg::solvers::Llt;
-use faer::MatMut;
 use nalgebra::{Cholesky, DMatrix, DVector, Dyn};
 
 use crate::errors::{Error, Result};
-use crate::normal::NormalCache;
+use crate::normal::{NormalCache, NormalFactor};
 use crate::sparse::{check_len, SparseMatrix};
 
 /// A factorization of J·W⁻¹·Jᵀ, reusable for any number of right-hand sides (dragging: J and W
@@ -54,7 +51,7 @@ enum Backend {
     },
     Sparse {
         j: SparseMatrix,
-        llt: Llt<usize, f64>,
+        llt: NormalFactor,
         y: Vec<f64>,
     },
 }
@@ -69,11 +66,20 @@ impl MinNormFactorization {
     pub fn try_dense(j: &SparseMatrix, weights: &[f64]) -> Result<Self> {
         let inv_w = inverse_weights(j, weights)?;
         let jd = j.to_dense();
-        let mut scaled = jd.clone();
-        for (k, mut col) in scaled.column_iter_mut().enumerate() {
-            col *= inv_w[k];
+        // J·W⁻¹·Jᵀ by its lower triangle and symmetry: at these sizes a plain loop beats the
+        // general matrix product (which also needed a scaled copy of J).
+        let rows = jd.nrows();
+        let mut m = DMatrix::<f64>::zeros(rows, rows);
+        for a in 0..rows {
+            for b in 0..=a {
+                let mut sum = 0.0;
+                for (k, w) in inv_w.iter().enumerate() {
+                    sum += jd[(a, k)] * w * jd[(b, k)];
+                }
+                m[(a, b)] = sum;
+                m[(b, a)] = sum;
+            }
         }
-        let m = &scaled * jd.transpose();
         let chol = Cholesky::new(m).ok_or(Error::RankDeficient { rows: j.nrows() })?;
         Ok(Self::assemble(
             inv_w,
@@ -193,8 +199,7 @@ impl MinNormFactorization {
             }
             Backend::Sparse { j, llt, y } => {
                 y.copy_from_slice(g);
-                let m = y.len();
-                llt.solve_in_place(MatMut::from_column_major_slice_mut(y.as_mut_slice(), m, 1));
+                llt.solve_in_place(y);
                 dz.fill(0.0);
                 for (i, yi) in y.iter().enumerate() {
                     let (cols, vals) = j.row(i);

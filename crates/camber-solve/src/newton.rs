@@ -22,7 +22,8 @@
 //! takes the Gauss–Newton step with a backtracking search. Near the solution the second-order
 //! steps are accepted and the iteration count stops growing with the curvature. With as many
 //! independent rows as free unknowns the null space is empty and the second-order step is the
-//! Gauss–Newton step, so it is not formed.
+//! Gauss–Newton step, so it is not formed; the step −J⁻¹·g then comes from one LU of the square
+//! J (the `square` module) instead of the factorization of J·W⁻¹·Jᵀ and the projection.
 //!
 //! **Damping.** Steps are accepted by the merit φ(z) = ½‖z − z_ref‖²_W + μ‖g(z)‖₂ (an exact
 //! penalty; μ grows so that Δz is a descent direction and stays above ‖λ‖, as in Nocedal &
@@ -40,6 +41,7 @@ use crate::min_norm::MinNormFactorization;
 use crate::options::Options;
 use crate::problem::Problem;
 use crate::projected_cg::{self, CgOutcome, QpData, Start};
+use crate::square::SquareLu;
 
 /// Reusable buffers of the Newton iterations: a drag session keeps one and passes it to
 /// [`crate::solve_newton_from`] at every mouse event, so repeated solves of the same problem
@@ -70,12 +72,26 @@ pub struct NewtonWorkspace {
     cg: crate::projected_cg::CgWorkspace,
     /// The pattern work of the sparse factorizations (J keeps its pattern between iterations).
     normal: crate::normal::NormalCache,
+    /// The point z and residuals g at which the evaluator passed to the next run was just
+    /// linearized (by the selection's analysis): its first iteration takes them over.
+    primed: Option<(Vec<f64>, Vec<f64>)>,
 }
 
 impl NewtonWorkspace {
     /// An empty workspace (buffers grow on first use).
     pub fn new() -> Self {
         Self::default()
+    }
+
+    /// Tells the next [`run`] that its evaluator holds the linearization at `z` with the
+    /// residuals `g` (used when the run starts at exactly that z).
+    pub(crate) fn prime(&mut self, z: Vec<f64>, g: Vec<f64>) {
+        self.primed = Some((z, g));
+    }
+
+    /// Forgets a linearization handed over by [`NewtonWorkspace::prime`].
+    pub(crate) fn unprime(&mut self) {
+        self.primed = None;
     }
 }
 
@@ -187,66 +203,29 @@ pub(crate) fn run(
     let mut last_max: f64;
     // The longest Gauss–Newton step at which the second-order step is tried.
     let mut second_order_gate = f64::INFINITY;
+    // The linearization handed over by the caller, if it was taken at this very start.
+    let mut primed = ws.primed.take().filter(|(z, g)| {
+        g.len() == m && z.len() == n && z.iter().zip(&ws.z).all(|(a, b)| a.to_bits() == b.to_bits())
+    });
     for iteration in 0..settings.max_iterations {
-        ev.linearize(problem, &ws.z, &mut ws.g)?;
+        match primed.take() {
+            Some((_, g)) => {
+                problem.budget.charge()?;
+                ws.g.copy_from_slice(&g);
+            }
+            None => ev.linearize(problem, &ws.z, &mut ws.g)?,
+        }
         select(&ws.g, rows, &mut ws.gs);
         let gnorm = norm2(&ws.gs);
         last_max = max_abs(&ws.gs);
 
-        // The Gauss–Newton pull-back step, holding unknowns at a bound whose step points
-        // outward.
-        ws.drop.fill(false);
-        let mut factorization;
-        let mut pass = 0;
-        loop {
-            for (k, ck) in ws.c.iter_mut().enumerate() {
-                *ck = if ws.drop[k] {
-                    0.0
-                } else {
-                    weights[k] * (ws.z[k] - reference[k])
-                };
-            }
-            let full = ev.jacobian(&ws.drop)?;
-            let j = match rows {
-                Some(rows) => full.select_rows(rows),
-                None => full,
-            };
-            factorization = MinNormFactorization::try_auto_cached(
-                &j,
-                &weights,
-                options.dense_max_unknowns,
-                &mut ws.normal,
-            )?;
-            let data = QpData {
-                weights: &weights,
-                hessian: None,
-                gradient: &ws.c,
-                residuals: &ws.gs,
-                held: &ws.drop,
-                start: Start::Compute,
-                tolerance: CG_TOLERANCE,
-            };
-            projected_cg::solve(
-                &mut factorization,
-                &data,
-                &mut ws.cg,
-                &mut ws.step,
-                &mut ws.lambda_gn,
-            )?;
-            let mut changed = false;
-            for k in 0..n {
-                let outward = (ws.z[k] <= ev.lower[k] && ws.step[k] < 0.0)
-                    || (ws.z[k] >= ev.upper[k] && ws.step[k] > 0.0);
-                if outward && !ws.drop[k] {
-                    ws.drop[k] = true;
-                    changed = true;
-                }
-            }
-            pass += 1;
-            if !changed || pass > 3 {
-                break;
-            }
-        }
+        // The Gauss–Newton pull-back step: by one LU of J when it is square (no null space to
+        // pull back in), else by the minimum-norm factorization, holding unknowns at a bound
+        // whose step points outward.
+        let mut factorization = match square_step(ev, ws, &weights, reference, rows, options) {
+            Some(lu) => Factors::Square(lu),
+            None => Factors::MinNorm(min_norm_step(ev, ws, &weights, reference, rows, options)?),
+        };
 
         let zmax = max_abs(&ws.z);
         if last_max <= inner_tol && max_abs(&ws.step) <= settings.step_tolerance * (1.0 + zmax) {
@@ -267,11 +246,13 @@ pub(crate) fn run(
         // the Gauss–Newton step, and its Hessian and solve would be spent for nothing.
         let held = ws.drop.iter().filter(|d| **d).count();
         let null_space = n.saturating_sub(held).saturating_sub(used_rows) > 0;
-        if null_space
-            && iteration > 0
-            && gn_length <= second_order_gate
-            && ws.lambda.iter().any(|l| *l != 0.0)
-        {
+        if let (true, Factors::MinNorm(min_norm)) = (
+            null_space
+                && iteration > 0
+                && gn_length <= second_order_gate
+                && ws.lambda.iter().any(|l| *l != 0.0),
+            &mut factorization,
+        ) {
             spread(&ws.lambda, rows, &mut ws.lambda_full);
             if let Some(h) = ev.hessian(problem, &ws.z, &ws.lambda_full)? {
                 let data = QpData {
@@ -284,7 +265,7 @@ pub(crate) fn run(
                     tolerance: CG_TOLERANCE,
                 };
                 let outcome = projected_cg::solve(
-                    &mut factorization,
+                    min_norm,
                     &data,
                     &mut ws.cg,
                     &mut ws.step2,
@@ -299,7 +280,7 @@ pub(crate) fn run(
                         problem,
                         ev,
                         ws,
-                        &mut factorization,
+                        &mut Factors::Borrowed(min_norm),
                         gnorm,
                         SearchLength::FullOnly,
                     )?;
@@ -360,6 +341,134 @@ pub(crate) fn run(
             iterations: settings.max_iterations,
             max_residual: last_max,
         })
+    }
+}
+
+/// The factorization a Newton iteration solves its steps with.
+enum Factors<'a> {
+    /// Of J·W⁻¹·Jᵀ: the weighted minimum-norm steps.
+    MinNorm(MinNormFactorization),
+    /// The same, borrowed.
+    Borrowed(&'a mut MinNormFactorization),
+    /// The LU of a square J: the steps −J⁻¹·g.
+    Square(SquareLu),
+}
+
+impl Factors<'_> {
+    /// Δz = −J⁺·g (−J⁻¹·g when J is square).
+    fn solve(&mut self, g: &[f64], dz: &mut [f64]) -> Result<()> {
+        match self {
+            Factors::MinNorm(f) => f.solve(g, dz),
+            Factors::Borrowed(f) => f.solve(g, dz),
+            Factors::Square(lu) => {
+                crate::sparse::check_len("right-hand side", lu.order(), g.len())?;
+                crate::sparse::check_len("step", lu.order(), dz.len())?;
+                lu.step(g, dz);
+                Ok(())
+            }
+        }
+    }
+}
+
+/// Whether unknown k sits at a bound that the step pushes it through.
+fn outward(ev: &Evaluator, z: &[f64], step: &[f64], k: usize) -> bool {
+    (z[k] <= ev.lower[k] && step[k] < 0.0) || (z[k] >= ev.upper[k] && step[k] > 0.0)
+}
+
+/// The Gauss–Newton step of a square J (the rows used as many as the unknowns, within the
+/// dense size) by one LU of J ([`crate::square`]): Δ = −J⁻¹·g into `ws.step`, its multipliers
+/// λ = −J⁻ᵀ·(W·Δ + c) into `ws.lambda_gn`. `None`, leaving the step to
+/// [`min_norm_step`], when J is not square, the LU finds it singular, or the step pushes an
+/// unknown through a bound (which the minimum-norm path holds there).
+fn square_step(
+    ev: &Evaluator,
+    ws: &mut NewtonWorkspace,
+    weights: &[f64],
+    reference: &[f64],
+    rows: Option<&[usize]>,
+    options: &Options,
+) -> Option<SquareLu> {
+    let n = ev.cols();
+    if n > options.dense_max_unknowns || ws.gs.len() != n {
+        return None;
+    }
+    let mut lu = SquareLu::factorize(n, ev.triplets(), ev.rows(), rows)?;
+    lu.step(&ws.gs, &mut ws.step);
+    if (0..n).any(|k| outward(ev, &ws.z, &ws.step, k)) {
+        return None;
+    }
+    ws.drop.fill(false);
+    for k in 0..n {
+        ws.c[k] = weights[k] * (ws.z[k] - reference[k]);
+        ws.p2[k] = weights[k] * ws.step[k] + ws.c[k];
+    }
+    lu.solve_transpose(&ws.p2, &mut ws.lambda_gn);
+    for l in &mut ws.lambda_gn {
+        *l = -*l;
+    }
+    Some(lu)
+}
+
+/// The Gauss–Newton pull-back step d − J⁺·(g + J·d) by the minimum-norm factorization and
+/// projected conjugate gradients, into `ws.step` with its multipliers in `ws.lambda_gn`,
+/// holding unknowns at a bound whose step points outward (their columns dropped, `ws.drop`).
+fn min_norm_step(
+    ev: &mut Evaluator,
+    ws: &mut NewtonWorkspace,
+    weights: &[f64],
+    reference: &[f64],
+    rows: Option<&[usize]>,
+    options: &Options,
+) -> Result<MinNormFactorization> {
+    let n = ev.cols();
+    ws.drop.fill(false);
+    let mut pass = 0;
+    loop {
+        for (k, ck) in ws.c.iter_mut().enumerate() {
+            *ck = if ws.drop[k] {
+                0.0
+            } else {
+                weights[k] * (ws.z[k] - reference[k])
+            };
+        }
+        let full = ev.jacobian(&ws.drop)?;
+        let j = match rows {
+            Some(rows) => full.select_rows(rows),
+            None => full,
+        };
+        let mut factorization = MinNormFactorization::try_auto_cached(
+            &j,
+            weights,
+            options.dense_max_unknowns,
+            &mut ws.normal,
+        )?;
+        let data = QpData {
+            weights,
+            hessian: None,
+            gradient: &ws.c,
+            residuals: &ws.gs,
+            held: &ws.drop,
+            start: Start::Compute,
+            tolerance: CG_TOLERANCE,
+        };
+        projected_cg::solve(
+            &mut factorization,
+            &data,
+            &mut ws.cg,
+            &mut ws.step,
+            &mut ws.lambda_gn,
+        )?;
+        let mut changed = false;
+        for k in 0..n {
+            if outward(ev, &ws.z, &ws.step, k) && !ws.drop[k] {
+                ws.drop[k] = true;
+                changed = true;
+            }
+        }
+        pass += 1;
+        if !changed || pass > 3 {
+            return Ok(factorization);
+        }
     }
 }
 
@@ -430,7 +539,7 @@ impl Merit<'_> {
         problem: &Problem,
         ev: &mut Evaluator,
         ws: &mut NewtonWorkspace,
-        factorization: &mut MinNormFactorization,
+        factorization: &mut Factors<'_>,
         gnorm: f64,
         length: SearchLength,
     ) -> Result<Option<f64>> {

@@ -11,10 +11,21 @@
 //! M[i, j] = Σ_k J_ik·d_k·J_jk,
 //!
 //! and the numeric factorization. A J with another pattern rebuilds the cache.
+//!
+//! **Ordering.** The symbolic factorization first takes M in its own order, in which the rows
+//! of a chain or a ladder (numbered along it, as sketches number their constraints) give M a
+//! narrow band and little fill. Only when that order would fill L beyond
+//! [`NATURAL_FILL_LIMIT`] times M's own lower triangle is faer's approximate minimum degree
+//! ordering computed instead, which costs several times the rest of the symbolic work.
 
-use faer::sparse::linalg::solvers::{Llt, SymbolicLlt};
+use std::sync::Arc;
+
+use faer::dyn_stack::{MemBuffer, MemStack};
+use faer::sparse::linalg::cholesky::{
+    factorize_symbolic_cholesky, LltRef, SymbolicCholesky, SymmetricOrdering,
+};
 use faer::sparse::{SparseColMatRef, SymbolicSparseColMatRef};
-use faer::Side;
+use faer::{Conj, MatMut, Par, Side};
 
 use crate::errors::{Error, Result};
 use crate::sparse::SparseMatrix;
@@ -38,8 +49,49 @@ struct Pattern {
     /// value index a, value index b) with J's values a, b in column k.
     term_ptr: Vec<usize>,
     terms: Vec<(usize, usize, usize)>,
-    symbolic: SymbolicLlt<usize>,
+    symbolic: Arc<SymbolicCholesky<usize>>,
     values: Vec<f64>,
+}
+
+/// The order of M is kept when its factor L holds at most this many times the entries of M's
+/// lower triangle (a fill that no ordering could cut by much); above, the minimum degree
+/// ordering is computed.
+pub const NATURAL_FILL_LIMIT: usize = 2;
+
+/// A numeric Cholesky factor M = L·Lᵀ of J·D·Jᵀ: the symbolic factorization shared with the
+/// cache and the values of L, with the scratch its solves reuse.
+pub(crate) struct NormalFactor {
+    symbolic: Arc<SymbolicCholesky<usize>>,
+    values: Vec<f64>,
+    scratch: MemBuffer,
+}
+
+impl std::fmt::Debug for NormalFactor {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("NormalFactor")
+            .field("rows", &self.symbolic.nrows())
+            .field("factor_entries", &self.values.len())
+            .finish()
+    }
+}
+
+impl NormalFactor {
+    /// Overwrites `rhs` with M⁻¹·rhs (`rhs` has M's order).
+    pub(crate) fn solve_in_place(&mut self, rhs: &mut [f64]) {
+        let m = rhs.len();
+        LltRef::new(&self.symbolic, &self.values).solve_in_place_with_conj(
+            Conj::No,
+            MatMut::from_column_major_slice_mut(rhs, m, 1),
+            Par::Seq,
+            MemStack::new(&mut self.scratch),
+        );
+    }
+
+    /// Whether the factorization kept M's own order (no fill-reducing permutation).
+    #[cfg(test)]
+    fn natural_order(&self) -> bool {
+        self.symbolic.perm().is_none()
+    }
 }
 
 impl NormalCache {
@@ -53,7 +105,7 @@ impl NormalCache {
     ///
     /// # Errors
     /// [`Error::RankDeficient`] when M is not positive definite (J lacks full row rank).
-    pub(crate) fn factorize(&mut self, j: &SparseMatrix, inv_w: &[f64]) -> Result<Llt<usize, f64>> {
+    pub(crate) fn factorize(&mut self, j: &SparseMatrix, inv_w: &[f64]) -> Result<NormalFactor> {
         let (row_ptr, col_idx, values) = j.raw();
         let m = j.nrows();
         let fits = self.pattern.as_ref().is_some_and(|p| {
@@ -72,10 +124,29 @@ impl NormalCache {
                 p.values[slot] += values[a] * d * values[b];
             }
         }
-        let symbolic = SymbolicSparseColMatRef::new_checked(m, m, &p.m_col_ptr, None, &p.m_row_idx);
-        let mat = SparseColMatRef::new(symbolic, &p.values);
-        Llt::try_new_with_symbolic(p.symbolic.clone(), mat, Side::Lower)
-            .map_err(|_| Error::RankDeficient { rows: m })
+        let pattern = SymbolicSparseColMatRef::new_checked(m, m, &p.m_col_ptr, None, &p.m_row_idx);
+        let mat = SparseColMatRef::new(pattern, &p.values);
+        let mut values = vec![0.0; p.symbolic.len_val()];
+        p.symbolic
+            .factorize_numeric_llt::<f64>(
+                &mut values,
+                mat,
+                Side::Lower,
+                Default::default(),
+                Par::Seq,
+                MemStack::new(&mut MemBuffer::new(
+                    p.symbolic
+                        .factorize_numeric_llt_scratch::<f64>(Par::Seq, Default::default()),
+                )),
+                Default::default(),
+            )
+            .map_err(|_| Error::RankDeficient { rows: m })?;
+        let solve_scratch = p.symbolic.solve_in_place_scratch::<f64>(1, Par::Seq);
+        Ok(NormalFactor {
+            symbolic: Arc::clone(&p.symbolic),
+            values,
+            scratch: MemBuffer::new(solve_scratch),
+        })
     }
 }
 
@@ -114,17 +185,7 @@ impl Pattern {
                 }
             }
         }
-        positions.sort_unstable();
-        positions.dedup();
-        let mut m_col_ptr = vec![0_usize; m + 1];
-        let mut m_row_idx = Vec::with_capacity(positions.len());
-        for &(col, row) in &positions {
-            m_col_ptr[col + 1] += 1;
-            m_row_idx.push(row);
-        }
-        for c in 0..m {
-            m_col_ptr[c + 1] += m_col_ptr[c];
-        }
+        let (m_col_ptr, m_row_idx) = crate::sparse::compress(m, &positions);
         let slot = |row: usize, col: usize| -> usize {
             let rows = &m_row_idx[m_col_ptr[col]..m_col_ptr[col + 1]];
             m_col_ptr[col] + rows.binary_search(&row).unwrap_or(0)
@@ -141,9 +202,7 @@ impl Pattern {
             }
             term_ptr.push(terms.len());
         }
-        let symbolic_ref = SymbolicSparseColMatRef::new_checked(m, m, &m_col_ptr, None, &m_row_idx);
-        let symbolic = SymbolicLlt::try_new(symbolic_ref, Side::Lower)
-            .map_err(|_| Error::RankDeficient { rows: m })?;
+        let symbolic = Arc::new(symbolic_of(m, &m_col_ptr, &m_row_idx)?);
         let values = vec![0.0; m_row_idx.len()];
         Ok(Self {
             j_cols: n,
@@ -159,13 +218,86 @@ impl Pattern {
     }
 }
 
+/// The symbolic Cholesky factorization of M's pattern, given as its lower triangle in
+/// compressed columns (m × m): in M's own order when its factor has at most
+/// [`NATURAL_FILL_LIMIT`] times the entries of that triangle, after the approximate minimum
+/// degree ordering otherwise.
+fn symbolic_of(m: usize, col_ptr: &[usize], row_idx: &[usize]) -> Result<SymbolicCholesky<usize>> {
+    let rank_deficient = |_| Error::RankDeficient { rows: m };
+    // faer reads the pattern as given when it keeps the order, and then as the upper
+    // triangle whatever side is named: the upper triangle of the symmetric M is the transpose
+    // of the lower one.
+    let mut transposed = Vec::with_capacity(row_idx.len());
+    for j in 0..m {
+        for &i in &row_idx[col_ptr[j]..col_ptr[j + 1]] {
+            transposed.push((i, j));
+        }
+    }
+    let (upper_col_ptr, upper_row_idx) = crate::sparse::compress(m, &transposed);
+    let upper = SymbolicSparseColMatRef::new_checked(m, m, &upper_col_ptr, None, &upper_row_idx);
+    let natural = factorize_symbolic_cholesky(
+        upper,
+        Side::Upper,
+        SymmetricOrdering::Identity,
+        Default::default(),
+    )
+    .map_err(rank_deficient)?;
+    if natural.len_val() <= NATURAL_FILL_LIMIT.saturating_mul(row_idx.len()) {
+        return Ok(natural);
+    }
+    factorize_symbolic_cholesky(
+        upper,
+        Side::Upper,
+        SymmetricOrdering::Amd,
+        Default::default(),
+    )
+    .map_err(rank_deficient)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use approx::assert_relative_eq;
-    use faer::linalg::solvers::Solve;
-    use faer::MatMut;
     use nalgebra::DMatrix;
+
+    /// Factorizes J·D·Jᵀ through the cache and checks M·(M⁻¹·r) = r against the dense M for a
+    /// fixed right-hand side; returns the factor.
+    fn check_solve(cache: &mut NormalCache, jd: &DMatrix<f64>, inv_w: &[f64]) -> NormalFactor {
+        let j = SparseMatrix::from_dense(jd);
+        let mut factor = cache.factorize(&j, inv_w).unwrap();
+        let dense = jd
+            * DMatrix::from_diagonal(&nalgebra::DVector::from_column_slice(inv_w))
+            * jd.transpose();
+        let m = jd.nrows();
+        let rhs: Vec<f64> = (0..m).map(|i| ((i * 7) % 5) as f64 - 1.5).collect();
+        let mut y = rhs.clone();
+        factor.solve_in_place(&mut y);
+        let back = &dense * nalgebra::DVector::from_column_slice(&y);
+        for i in 0..m {
+            assert_relative_eq!(back[i], rhs[i], epsilon = 1e-10);
+        }
+        factor
+    }
+
+    #[test]
+    fn a_chain_keeps_its_order_and_an_arrow_is_reordered() {
+        // A chain: row i reads columns i and i + 1 (M tridiagonal, no fill in its own order).
+        let m = 40;
+        let mut chain = DMatrix::zeros(m, m + 1);
+        for i in 0..m {
+            chain[(i, i)] = 1.0 + i as f64 * 0.01;
+            chain[(i, i + 1)] = -1.0;
+        }
+        let inv_w: Vec<f64> = (0..=m).map(|k| 1.0 + (k % 3) as f64).collect();
+        assert!(check_solve(&mut NormalCache::new(), &chain, &inv_w).natural_order());
+        // An arrow: row 0 reads every column, so M's first column is full and, in its own
+        // order, L would be full too; the minimum degree ordering moves that row last.
+        let mut arrow = chain.clone();
+        for k in 0..=m {
+            arrow[(0, k)] = 0.5;
+        }
+        assert!(!check_solve(&mut NormalCache::new(), &arrow, &inv_w).natural_order());
+    }
 
     #[test]
     fn solves_like_the_dense_normal_matrix_and_reuses_its_pattern() {
@@ -181,19 +313,7 @@ mod tests {
         let inv_w = [1.0, 0.5, 2.0, 1.0, 0.25];
         let mut cache = NormalCache::new();
         for scale in [1.0, 2.0] {
-            let j = SparseMatrix::from_dense(&(&jd * scale));
-            let llt = cache.factorize(&j, &inv_w).unwrap();
-            let dense = &jd
-                * scale
-                * DMatrix::from_diagonal(&nalgebra::DVector::from_column_slice(&inv_w))
-                * (&jd * scale).transpose();
-            let rhs = [1.0, -2.0, 0.5];
-            let mut y = rhs;
-            llt.solve_in_place(MatMut::from_column_major_slice_mut(&mut y, 3, 1));
-            let back = &dense * nalgebra::DVector::from_column_slice(&y);
-            for i in 0..3 {
-                assert_relative_eq!(back[i], rhs[i], epsilon = 1e-12);
-            }
+            check_solve(&mut cache, &(&jd * scale), &inv_w);
         }
         // The second factorization reused the pattern built by the first.
         assert!(cache.pattern.is_some());

@@ -92,6 +92,28 @@ impl Problem {
         Self::default()
     }
 
+    /// Reserves room for `blocks` more parameter blocks holding `unknowns` more unknowns in
+    /// all, and `residuals` more residual blocks, so that building a problem of known size
+    /// grows its lists once.
+    ///
+    /// ```
+    /// use camber_solve::Problem;
+    /// let mut p = Problem::new();
+    /// p.reserve(2, 4, 1);
+    /// p.add_block(&[0.0, 1.0])?;
+    /// p.add_block(&[2.0, 3.0])?;
+    /// assert_eq!(p.values(), &[0.0, 1.0, 2.0, 3.0]);
+    /// # Ok::<(), camber_solve::Error>(())
+    /// ```
+    pub fn reserve(&mut self, blocks: usize, unknowns: usize, residuals: usize) {
+        self.blocks.reserve(blocks);
+        self.values.reserve(unknowns);
+        self.bindings.reserve(unknowns);
+        self.bounds.reserve(unknowns);
+        self.weights.reserve(unknowns);
+        self.residuals.reserve(residuals);
+    }
+
     /// Adds a parameter block with the given starting values (all free, unbounded, weight 1).
     ///
     /// # Errors

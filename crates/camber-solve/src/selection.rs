@@ -54,28 +54,40 @@ struct Start {
 }
 
 impl Start {
-    fn new(problem: &Problem, options: &Options) -> Result<(Self, bool)> {
+    /// The analysis at the problem's values, whether they already satisfy every residual,
+    /// and the evaluator with its linearization there (map, residuals, Jacobian), which Newton
+    /// takes over as its first iteration's instead of building and evaluating them again.
+    fn new(problem: &Problem, options: &Options) -> Result<(Self, bool, Primed)> {
         let clock = Instant::now();
         options.validate()?;
         options.nonlinear.validate()?;
-        let lin = problem.linearize()?;
-        let (m, n) = (lin.g.len(), lin.map.len());
+        let mut ev = Evaluator::new(problem)?;
+        let (m, n) = (ev.rows(), ev.cols());
+        let z0 = ev.map.z0().to_vec();
+        let mut g = vec![0.0; m];
+        // Not charged: Newton charges it as its first iteration's.
+        ev.linearize_for_report(problem, &z0, &mut g)?;
+        let affine = problem.residuals.iter().all(|rb| rb.residual.is_affine());
         let dense_analysis = m.saturating_mul(n) <= options.dense_analysis_max_entries;
         // Every row independent by the analysis' own test: its answer is known (rank m,
         // nothing redundant or conflicting) without the singular values.
-        let certified = dense_analysis && certainly_full_row_rank_of(&lin, options.rank_tolerance);
+        let certified = dense_analysis
+            && m > 0
+            && m <= n
+            && m.saturating_mul(n) <= analysis::DENSE_ANALYSIS_MAX_ENTRIES
+            && certainly_full_row_rank(&ev.dense_jacobian(), options.rank_tolerance);
         let analysis: Option<DofAnalysis> = if dense_analysis && !certified {
             Some(analysis::analyze(
-                &lin,
+                &problem.linearize()?,
                 options.rank_tolerance,
                 options.tolerance,
             )?)
         } else {
             None
         };
-        let satisfied = lin.g.iter().all(|v| v.abs() <= options.tolerance);
-        let pending = lin
-            .x
+        let satisfied = g.iter().all(|v| v.abs() <= options.tolerance);
+        let pending = ev
+            .expanded()
             .iter()
             .zip(problem.values())
             .any(|(a, b)| (a - b).abs() > 0.0);
@@ -92,13 +104,13 @@ impl Start {
                 redundant: a.redundant,
                 conflicting: a.conflicting,
                 clock,
-                z0: lin.map.z0().to_vec(),
+                z0: z0.clone(),
                 rows: m,
-                affine: lin.affine,
+                affine,
             },
             None => Self {
                 clock,
-                z0: lin.map.z0().to_vec(),
+                z0: z0.clone(),
                 rows: m,
                 rank: m.min(n),
                 dof: n.saturating_sub(m),
@@ -106,11 +118,11 @@ impl Start {
                 conflicting: Vec::new(),
                 independent: None,
                 basis: certified.then(|| (0..m).collect()),
-                affine: lin.affine,
+                affine,
                 full_rank: true,
             },
         };
-        Ok((start, satisfied && !pending))
+        Ok((start, satisfied && !pending, Primed { ev, z: z0, g }))
     }
 
     fn report(
@@ -155,6 +167,13 @@ impl Start {
         r.status = Status::AlreadySatisfied;
         Ok(r)
     }
+}
+
+/// An evaluator linearized at `z`, with the residuals `g` there.
+struct Primed {
+    ev: Evaluator,
+    z: Vec<f64>,
+    g: Vec<f64>,
 }
 
 /// [`certainly_full_row_rank`] for the Jacobian of a linearization, when it is small enough
@@ -237,10 +256,20 @@ fn newton_path(
     start: &[f64],
     reference: &[f64],
     rows: Option<&[usize]>,
+    primed: Option<Primed>,
 ) -> Result<(usize, bool, Vec<ConstraintResidual>, Vec<f64>)> {
-    // The map's constants follow the fixed values, so it is rebuilt at every call.
-    let mut ev = Evaluator::new(problem)?;
-    let run = newton::run(problem, &mut ev, ws, start, reference, rows, options)?;
+    // The map's constants follow the fixed values, so it is rebuilt at every call, unless the
+    // caller's evaluator was built (and linearized) just before on the same values.
+    let mut ev = match primed {
+        Some(p) => {
+            ws.prime(p.z, p.g);
+            p.ev
+        }
+        None => Evaluator::new(problem)?,
+    };
+    let run = newton::run(problem, &mut ev, ws, start, reference, rows, options);
+    ws.unprime();
+    let run = run?;
     let residuals = commit(problem, &mut ev, &ws.z, options)?;
     Ok((run.iterations, run.stationary, residuals, ws.z.clone()))
 }
@@ -410,7 +439,7 @@ pub fn solve(problem: &mut Problem, options: &Options) -> Result<SolveReport> {
 
 /// [`solve`] for the whole set of constraints, priorities aside.
 fn solve_whole(problem: &mut Problem, options: &Options) -> Result<SolveReport> {
-    let (start, satisfied) = Start::new(problem, options)?;
+    let (start, satisfied, primed) = Start::new(problem, options)?;
     if satisfied {
         return start.already_satisfied(problem);
     }
@@ -435,7 +464,15 @@ fn solve_whole(problem: &mut Problem, options: &Options) -> Result<SolveReport> 
     let mut ws = NewtonWorkspace::new();
     if start.full_rank || start.independent.is_some() {
         let rows = start.independent.as_deref();
-        match newton_path(problem, options, &mut ws, &start.z0, &start.z0, rows) {
+        match newton_path(
+            problem,
+            options,
+            &mut ws,
+            &start.z0,
+            &start.z0,
+            rows,
+            Some(primed),
+        ) {
             Ok((iterations, stationary, residuals, z)) => {
                 let reason =
                     format!(
@@ -510,7 +547,7 @@ fn solve_whole(problem: &mut Problem, options: &Options) -> Result<SolveReport> 
     )?;
     if lm.max_residual <= options.tolerance.sqrt() {
         if let Ok((iterations, _, residuals, z)) =
-            newton_path(problem, options, &mut ws, &z_lm, &start.z0, None)
+            newton_path(problem, options, &mut ws, &z_lm, &start.z0, None, None)
         {
             let reason = format!(
                 "{} → Levenberg–Marquardt ({} iterations) then Newton minimum norm",
@@ -565,7 +602,7 @@ fn solve_whole(problem: &mut Problem, options: &Options) -> Result<SolveReport> 
             };
             if let Some(z1) = moved {
                 if let Ok((iterations, _, residuals, z)) =
-                    newton_path(problem, options, &mut ws, &z1, &start.z0, None)
+                    newton_path(problem, options, &mut ws, &z1, &start.z0, None, None)
                 {
                     let reason = format!(
                         "{} → Newton minimum norm from a start moved off the singular one",
@@ -656,7 +693,7 @@ fn forced(
         SolverChoice::Newton => {
             let mut ws = NewtonWorkspace::new();
             let (iterations, _, residuals, z) =
-                newton_path(problem, options, &mut ws, &start.z0, &start.z0, None)?;
+                newton_path(problem, options, &mut ws, &start.z0, &start.z0, None, None)?;
             Ok(start.report(
                 SolverKind::Newton,
                 Selection::Forced,
@@ -742,7 +779,7 @@ pub fn solve_newton_from(
     options.nonlinear.validate()?;
     let z0 = problem.reduced_map()?.z0().to_vec();
     let (iterations, stationary, residuals, z) =
-        newton_path(problem, options, workspace, start, reference, None)?;
+        newton_path(problem, options, workspace, start, reference, None, None)?;
     let moved: Vec<f64> = z.iter().zip(&z0).map(|(a, b)| a - b).collect();
     let n = z.len();
     Ok(SolveReport {

@@ -316,17 +316,7 @@ impl Assembler {
             }
             self.keys.push((r, c));
         }
-        let mut positions = self.keys.clone();
-        positions.sort_unstable();
-        positions.dedup();
-        let mut row_ptr = vec![0_usize; nrows + 1];
-        for &(r, _) in &positions {
-            row_ptr[r + 1] += 1;
-        }
-        for i in 0..nrows {
-            row_ptr[i + 1] += row_ptr[i];
-        }
-        let col_idx: Vec<usize> = positions.iter().map(|p| p.1).collect();
+        let (row_ptr, col_idx) = compress(nrows, &self.keys);
         self.slots.clear();
         for &(r, c) in &self.keys {
             let cols = &col_idx[row_ptr[r]..row_ptr[r + 1]];
@@ -343,6 +333,48 @@ impl Assembler {
         });
         Ok(())
     }
+}
+
+/// The compressed-row pattern (row pointers, strictly increasing column indices per row) of
+/// the distinct positions among `positions` (row, column), every row below `nrows`. Positions
+/// are bucketed by row first (a counting sort) and only each row's short list is sorted, so
+/// the cost is about the number of positions, not that times its logarithm as for one sort of
+/// them all (the Jacobian and Hessian patterns of a large component hold 10⁵ and more).
+pub(crate) fn compress(nrows: usize, positions: &[(usize, usize)]) -> (Vec<usize>, Vec<usize>) {
+    let mut row_ptr = vec![0_usize; nrows + 1];
+    for &(r, _) in positions {
+        row_ptr[r + 1] += 1;
+    }
+    for i in 0..nrows {
+        row_ptr[i + 1] += row_ptr[i];
+    }
+    let mut next = row_ptr.clone();
+    let mut bucketed = vec![0_usize; positions.len()];
+    for &(r, c) in positions {
+        bucketed[next[r]] = c;
+        next[r] += 1;
+    }
+    // Sort and deduplicate each row in place, moving it down over the duplicates removed
+    // before it.
+    let mut col_idx = bucketed;
+    let mut write = 0;
+    let mut start = 0;
+    for i in 0..nrows {
+        let end = row_ptr[i + 1];
+        col_idx[start..end].sort_unstable();
+        let row_start = write;
+        for k in start..end {
+            let c = col_idx[k];
+            if write == row_start || col_idx[write - 1] != c {
+                col_idx[write] = c;
+                write += 1;
+            }
+        }
+        start = end;
+        row_ptr[i + 1] = write;
+    }
+    col_idx.truncate(write);
+    (row_ptr, col_idx)
 }
 
 /// Checks that a slice has the expected length.
@@ -408,6 +440,28 @@ mod tests {
                 found: 1
             })
         );
+    }
+
+    #[test]
+    fn compress_matches_one_sort_of_all_positions() {
+        // A deterministic scramble with duplicates, empty rows and rows of one entry.
+        let nrows = 37;
+        let positions: Vec<(usize, usize)> = (0..600_usize)
+            .map(|k| ((k * 7919) % 31 + (k % 3) * 2, (k * 104_729) % 23))
+            .collect();
+        let (row_ptr, col_idx) = compress(nrows, &positions);
+        let mut want = positions.clone();
+        want.sort_unstable();
+        want.dedup();
+        let mut got = Vec::new();
+        for r in 0..nrows {
+            for &c in &col_idx[row_ptr[r]..row_ptr[r + 1]] {
+                got.push((r, c));
+            }
+        }
+        assert_eq!(got, want);
+        assert_eq!(row_ptr.len(), nrows + 1);
+        assert_eq!(compress(3, &[]), (vec![0; 4], Vec::new()));
     }
 
     #[test]

@@ -63,8 +63,9 @@ pub enum Workload {
     /// W5b: one ladder of cells (the rectangles' constraints in one component).
     #[value(alias = "w5b", alias = "W5B")]
     W5b,
-    /// A: the DOF analysis (what `camber check` runs) of the W3 chain of N segments and of a
-    /// chain of 10·N points held by distances.
+    /// A: the DOF analysis (what `camber check` runs) of the W3 chain of N segments, of a
+    /// chain of 10·N points held by distances and of the fully constrained W5b ladder of N
+    /// cells.
     #[value(alias = "a", alias = "analysis")]
     A,
 }
@@ -199,7 +200,7 @@ impl Plan {
                     .sum(),
                 Workload::W4 => self.w4_repeats,
                 Workload::A => {
-                    2 * self
+                    3 * self
                         .chain_sizes
                         .iter()
                         .map(|&s| self.chain_repeats(s))

@@ -272,21 +272,59 @@ fn w3_analysis_valid(analyses: &[camber_sketch::ComponentAnalysis], n: usize) ->
     }
 }
 
+/// Whether the analysis of the W5b ladder of `n` cells is right: one component, fully
+/// constrained (DOF 0, nothing redundant, partly redundant or conflicting, no entity with
+/// anything free), and settled by its blocks: no unknown needed the free-unknown projection.
+fn ladder_analysis_valid(analyses: &[camber_sketch::ComponentAnalysis]) -> bool {
+    match analyses {
+        [a] => {
+            let d = &a.analysis;
+            d.dof == 0
+                && d.rank == d.free_unknowns
+                && d.redundant.is_empty()
+                && d.partly_redundant.is_empty()
+                && d.conflicting.is_empty()
+                && a.freedom.is_empty()
+                && d.structure.projected_unknowns == 0
+        }
+        _ => false,
+    }
+}
+
+/// The sketches of workload A.
+#[derive(Clone, Copy)]
+enum Analysed {
+    /// The W3 chain of N segments.
+    W3,
+    /// The chain of 10·N points held by distances.
+    Points,
+    /// The W5b ladder of N cells, fully constrained, from its perturbed start.
+    Ladder,
+}
+
 /// A: the DOF analysis (`Sketch::analyze`, as `camber check` runs it) of the W3 chain of N
-/// segments and of the chain of 10·N points held by distances, one analysis timed per repeat,
-/// each checked against the DOF its construction gives ([`w3_analysis_valid`],
-/// `camber_workloads::point_chain_valid`), with the growth exponent between sizes.
+/// segments, of the chain of 10·N points held by distances and of the W5b ladder of N cells,
+/// one analysis timed per repeat, each checked against the DOF its construction gives
+/// ([`w3_analysis_valid`], `camber_workloads::point_chain_valid`, [`ladder_analysis_valid`]),
+/// with the growth exponent between sizes.
 pub(super) fn analysis(plan: &Plan, bar: &ProgressBar) -> Result<Vec<Row>> {
     let mut rows: Vec<Row> = Vec::new();
-    for (label, scale) in [("W3", 1), ("points", 10)] {
+    for (label, sketch_kind) in [
+        ("W3", Analysed::W3),
+        ("points", Analysed::Points),
+        ("ladder", Analysed::Ladder),
+    ] {
         let mut last: Option<(usize, f64)> = None;
         for &n in &plan.chain_sizes {
-            let size = scale * n;
+            let size = match sketch_kind {
+                Analysed::Points => 10 * n,
+                Analysed::W3 | Analysed::Ladder => n,
+            };
             bar.set_message(format!("A {label} N={size}"));
-            let sketch = if scale == 1 {
-                wl::w3_chain(n)?.0
-            } else {
-                wl::point_chain(size)?
+            let sketch = match sketch_kind {
+                Analysed::W3 => wl::w3_chain(n)?.0,
+                Analysed::Points => wl::point_chain(size)?,
+                Analysed::Ladder => wl::w5b(n)?.0,
             };
             let (mut times, mut valid, mut failed) = (Vec::<Duration>::new(), 0, 0);
             for _ in 0..plan.chain_repeats(n) {
@@ -296,10 +334,10 @@ pub(super) fn analysis(plan: &Plan, bar: &ProgressBar) -> Result<Vec<Row>> {
                 bar.inc(1);
                 match outcome {
                     Ok(analyses) => {
-                        let ok = if scale == 1 {
-                            w3_analysis_valid(&analyses, n)
-                        } else {
-                            wl::point_chain_valid(&analyses, size)
+                        let ok = match sketch_kind {
+                            Analysed::W3 => w3_analysis_valid(&analyses, n),
+                            Analysed::Points => wl::point_chain_valid(&analyses, size),
+                            Analysed::Ladder => ladder_analysis_valid(&analyses),
                         };
                         valid += usize::from(ok);
                     }

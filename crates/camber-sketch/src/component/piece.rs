@@ -89,8 +89,11 @@ pub(crate) enum Piece {
     },
 }
 
-/// The pieces of one constraint (most kinds write one to three).
-pub(crate) type Pieces = SmallVec<[Piece; 3]>;
+/// The pieces of one constraint (most kinds write one to three). A `Vec`, not an inline
+/// array: a piece is a few hundred bytes, and the builder moves every constraint's list around
+/// (an inline list of three made each move a kilobyte copy and the component's list of lists
+/// one large allocation).
+pub(crate) type Pieces = Vec<Piece>;
 
 /// The basis of a curve entity and the slots of all its control points, in order.
 ///

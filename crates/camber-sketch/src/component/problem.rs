@@ -367,8 +367,18 @@ pub(crate) fn build(
         merged: FxHashMap::default(),
         merged_redundant: Vec::new(),
     };
+    let mut entities: SmallVec<[&Entity; 16]> = SmallVec::with_capacity(component.entities.len());
+    let (mut blocks_needed, mut unknowns_needed) = (0, 0);
     for id in &component.entities {
         let e = lookup.lookup(*id)?;
+        let (points, scalars) = (e.points().len(), e.scalars().len());
+        blocks_needed += points + scalars;
+        unknowns_needed += 2 * points + scalars;
+        entities.push(e);
+    }
+    cp.problem
+        .reserve(blocks_needed, unknowns_needed, compiled.len());
+    for (id, e) in component.entities.iter().zip(entities) {
         let mut blocks = EntityBlocks {
             points: Vec::with_capacity(e.points().len()),
             scalars: Vec::new(),

@@ -40,7 +40,8 @@ impl<'a> Compiler<'a> {
     pub(crate) fn new(lookup: &'a dyn EntityLookup) -> Self {
         Self {
             lookup,
-            pieces: Pieces::new(),
+            // Most kinds write one piece.
+            pieces: Pieces::with_capacity(1),
         }
     }
 
