@@ -11,6 +11,13 @@
 //! 3. z ← z + Δz, x = A·z + c, residuals re-evaluated, orientations checked;
 //! 4. the new state is kept only if every row is within tolerance and no tangent flipped.
 //!
+//! On a small component (J_z and the gain below with at most 4,096 entries each) steps 2 and 3
+//! are dense products worked out when the session starts: Δz = K·g with K's columns the
+//! refined steps for unit right-hand sides (the step is linear in g), and the rows
+//! g(z) = g(z₀) + J_z·(z − z₀) from the session's start z₀ (exact for affine rows, with the
+//! rounding of one product and no drift across updates). An update those products would refuse
+//! is redone by the factorization before it is refused.
+//!
 //! Each update starts from the current state of the session (the result of the previous
 //! update), so the displacement per mouse event is the minimum-norm one. Nothing allocates in
 //! an update on the dense backend (components of up to `dense_max_unknowns` reduced unknowns)
@@ -126,6 +133,8 @@ pub struct AffineDrag {
     freedom: Freedom,
     anchor: [f64; 2],
     tolerance: f64,
+    /// The update as one small affine map, for components small enough (see [`AffineGain`]).
+    gain: Option<AffineGain>,
     // Current state (pin rows of g relative to the anchor) and scratch.
     z: Vec<f64>,
     g: Vec<f64>,
@@ -134,6 +143,116 @@ pub struct AffineDrag {
     g_new: Vec<f64>,
     g_sel: Vec<f64>,
     dz: Vec<f64>,
+}
+
+/// The most entries of the dense matrices of an [`AffineGain`] (each of K and J_z).
+const GAIN_MAX_ENTRIES: usize = 4096;
+
+/// An affine update written out as dense products, for a small component.
+///
+/// The step is linear in the selected right-hand side: Δz = K·g_sel, where column j of K is the
+/// refined minimum-norm step for the unit right-hand side eⱼ (so every step stays in the range
+/// of W⁻¹Jᵀ, the minimum-norm one). The residuals are affine in z, so
+/// g(z) = g(z₀) + J_z·(z − z₀) with z₀ the state the session started from: no residual is
+/// evaluated through the problem and nothing drifts from one update to the next (the rounding
+/// is that of one product, as when the rows are evaluated). x = A·z + c comes from the map's
+/// terms flattened into one list. An update that this path would refuse is redone by the
+/// factorization (refined solve, rows evaluated) before it is refused.
+#[derive(Debug)]
+struct AffineGain {
+    /// K, n × k, column-major.
+    k: Vec<f64>,
+    /// J_z, m × n, row-major.
+    jacobian: Vec<f64>,
+    /// z₀ and g(z₀).
+    z0: Vec<f64>,
+    g0: Vec<f64>,
+    /// x = A·z + c: for unknown i, `x_terms[x_ptr[i]..x_ptr[i + 1]]` as (column, coefficient)
+    /// and `x_const[i]`.
+    x_ptr: Vec<usize>,
+    x_terms: Vec<(usize, f64)>,
+    x_const: Vec<f64>,
+    /// Scratch: z − z₀.
+    dz0: Vec<f64>,
+}
+
+impl AffineGain {
+    /// The gain of `factorization` (k selected rows) over the linearization `lin`; `None` when
+    /// the component is too large for dense matrices.
+    fn of(
+        factorization: &mut MinNormFactorization,
+        lin: &camber_solve::Linearization,
+    ) -> Result<Option<Self>> {
+        let (m, n, k) = (lin.g.len(), lin.map.len(), factorization.rows());
+        if n.saturating_mul(k) > GAIN_MAX_ENTRIES || m.saturating_mul(n) > GAIN_MAX_ENTRIES {
+            return Ok(None);
+        }
+        // Column j: the refined step for g_sel = e_j (J·col = −e_j); the step is linear in g_sel.
+        let mut gain = vec![0.0; n * k];
+        let mut unit = vec![0.0; k];
+        for (j, col) in gain.chunks_exact_mut(n).enumerate() {
+            unit[j] = 1.0;
+            factorization.solve_refined(&unit, col, REFINEMENT_STEPS, 0.0)?;
+            unit[j] = 0.0;
+        }
+        let mut jacobian = vec![0.0; m * n];
+        for (i, row) in jacobian.chunks_exact_mut(n).enumerate() {
+            let (cols, vals) = lin.jacobian.row(i);
+            for (c, v) in cols.iter().zip(vals) {
+                row[*c] = *v;
+            }
+        }
+        let nx = lin.x.len();
+        let (mut x_ptr, mut x_terms, mut x_const) = (vec![0], Vec::new(), Vec::with_capacity(nx));
+        for i in 0..nx {
+            let (terms, c) = lin.map.row(i);
+            x_terms.extend_from_slice(terms);
+            x_ptr.push(x_terms.len());
+            x_const.push(c);
+        }
+        Ok(Some(Self {
+            k: gain,
+            jacobian,
+            z0: lin.map.z0().to_vec(),
+            g0: lin.g.clone(),
+            x_ptr,
+            x_terms,
+            x_const,
+            dz0: vec![0.0; n],
+        }))
+    }
+
+    /// Δz = K·g_sel, z_new = z + Δz, x_new = A·z_new + c and g_new = g(z₀) + J_z·(z_new − z₀).
+    fn step(
+        &mut self,
+        g_sel: &[f64],
+        z: &[f64],
+        z_new: &mut [f64],
+        x_new: &mut [f64],
+        g_new: &mut [f64],
+    ) {
+        let n = z.len();
+        z_new.copy_from_slice(z);
+        for (col, s) in self.k.chunks_exact(n).zip(g_sel) {
+            for (zn, kv) in z_new.iter_mut().zip(col) {
+                *zn += kv * s;
+            }
+        }
+        for (i, x) in x_new.iter_mut().enumerate() {
+            let terms = &self.x_terms[self.x_ptr[i]..self.x_ptr[i + 1]];
+            *x = self.x_const[i] + terms.iter().map(|(k, a)| a * z_new[*k]).sum::<f64>();
+        }
+        for ((d, zn), z0) in self.dz0.iter_mut().zip(&*z_new).zip(&self.z0) {
+            *d = zn - z0;
+        }
+        for ((gn, g0), row) in g_new
+            .iter_mut()
+            .zip(&self.g0)
+            .zip(self.jacobian.chunks_exact(n))
+        {
+            *gn = g0 + row.iter().zip(&self.dz0).map(|(a, b)| a * b).sum::<f64>();
+        }
+    }
 }
 
 /// The state of a drag on a nonlinear component: the component's solve policy runs from the
@@ -338,7 +457,7 @@ impl Sketch {
                 }
             }
         }
-        let factorization = if mix.is_empty() {
+        let mut factorization = if mix.is_empty() {
             None
         } else {
             let j = camber_solve::SparseMatrix::try_from_triplets(
@@ -351,6 +470,10 @@ impl Sketch {
         let anchor = {
             let p = self.point(point)?;
             [p.x, p.y]
+        };
+        let gain = match factorization.as_mut() {
+            Some(f) => AffineGain::of(f, &lin)?,
+            None => None,
         };
         let nx = lin.x.len();
         let selected = rows.len() + mix.len();
@@ -373,6 +496,7 @@ impl Sketch {
             freedom,
             anchor,
             tolerance: options.tolerance,
+            gain,
             z_new: vec![0.0; n],
             x_new: vec![0.0; nx],
             g_new: vec![0.0; m],
@@ -512,9 +636,9 @@ impl AffineDrag {
     /// One affine update (see the module documentation): the pin rows along the point's
     /// directions of freedom move by the target's shift; a determined point does not move.
     fn update(&mut self, target: Point2<f64>) -> Result<()> {
-        let Some(factorization) = self.factorization.as_mut() else {
+        if self.factorization.is_none() {
             return Ok(());
-        };
+        }
         let shift = [target.x - self.anchor[0], target.y - self.anchor[1]];
         let k0 = self.rows.len();
         for (k, r) in self.rows.iter().enumerate() {
@@ -527,6 +651,22 @@ impl AffineDrag {
         for (k, u) in self.mix.iter().enumerate() {
             self.g_sel[k0 + k] = u[0] * pin_now[0] + u[1] * pin_now[1];
         }
+        if let Some(gain) = self.gain.as_mut() {
+            gain.step(
+                &self.g_sel,
+                &self.z,
+                &mut self.z_new,
+                &mut self.x_new,
+                &mut self.g_new,
+            );
+            if self.worst(shift).1 <= self.tolerance {
+                return self.accept();
+            }
+            // Refused by the dense products: the factorization decides.
+        }
+        let Some(factorization) = self.factorization.as_mut() else {
+            return Ok(());
+        };
         factorization.solve_refined(
             &self.g_sel,
             &mut self.dz,
@@ -541,6 +681,23 @@ impl AffineDrag {
             .cp
             .problem
             .evaluate_at(&self.x_new, &mut self.g_new)?;
+        let worst = self.worst(shift);
+        if worst.1 > self.tolerance {
+            let owner = self
+                .row_owner
+                .get(worst.0)
+                .copied()
+                .unwrap_or(DRAG_CONSTRAINT);
+            return Err(Error::NotSatisfied {
+                failed: vec![(owner, worst.1)],
+            });
+        }
+        self.accept()
+    }
+
+    /// The largest |row| of `g_new` (NaN as infinite) with its row: every constraint row, and
+    /// the pin along each direction of freedom relative to the target's `shift`.
+    fn worst(&self, shift: [f64; 2]) -> (usize, f64) {
         let mut worst = (0usize, 0.0_f64);
         for (i, v) in self.g_new.iter().enumerate() {
             if i == self.pin[0] || i == self.pin[1] {
@@ -563,16 +720,11 @@ impl AffineDrag {
                 );
             }
         }
-        if worst.1 > self.tolerance {
-            let owner = self
-                .row_owner
-                .get(worst.0)
-                .copied()
-                .unwrap_or(DRAG_CONSTRAINT);
-            return Err(Error::NotSatisfied {
-                failed: vec![(owner, worst.1)],
-            });
-        }
+        worst
+    }
+
+    /// Keeps the new state (z_new, x_new, g_new) when no tangent flipped or collapsed.
+    fn accept(&mut self) -> Result<()> {
         self.common.cp.check_orientations(&self.x_new)?;
         std::mem::swap(&mut self.z, &mut self.z_new);
         std::mem::swap(&mut self.common.x, &mut self.x_new);
@@ -795,5 +947,82 @@ impl DragSession {
         // Free parameters moved with the drag: the constraints keep the solved ones.
         sketch.store_free(&free);
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::constraints::{Fixed, StartTangent};
+    use crate::vocabulary::{Sense, TangentForm};
+    use camber_geom::BezierCurve2;
+
+    /// W1's cubic (P₃ fixed, start tangent along D) in the given form, dragged by P₁.
+    fn w1_session(form: TangentForm) -> (Sketch, EntityId, DragSession) {
+        let d = Vector2::new(30f64.to_radians().cos(), 30f64.to_radians().sin());
+        let mut s = Sketch::new();
+        let c = s
+            .add_bezier(
+                BezierCurve2::try_new(vec![
+                    Point2::origin(),
+                    Point2::from(1.2 * d),
+                    Point2::new(2.2, 0.9),
+                    Point2::new(3.0, 0.0),
+                ])
+                .unwrap(),
+            )
+            .unwrap();
+        s.add_constraint(Fixed::point(PointRef::Control(c, 3)))
+            .unwrap();
+        s.add_constraint(StartTangent {
+            curve: c,
+            direction: d,
+            sense: Sense::Agree,
+            form,
+        })
+        .unwrap();
+        let session = s.drag(PointRef::Control(c, 1)).unwrap();
+        (s, c, session)
+    }
+
+    /// The dense products give, update after update, the state the factorization gives (refined
+    /// solve, rows evaluated through the problem), in both tangent forms.
+    #[test]
+    fn the_dense_update_follows_the_factorization() {
+        for form in [TangentForm::Row, TangentForm::Elimination] {
+            let (_, c, mut fast) = w1_session(form);
+            let (_, _, mut slow) = w1_session(form);
+            let DragSession::Affine(d) = &mut slow else {
+                panic!("W1 is affine");
+            };
+            assert!(
+                d.gain.take().is_some(),
+                "a small component has the dense path"
+            );
+            let DragSession::Affine(d) = &fast else {
+                panic!("W1 is affine");
+            };
+            assert!(d.gain.is_some());
+            let p1 = fast.point(PointRef::Control(c, 1)).unwrap();
+            for k in 1..=100 {
+                let th = std::f64::consts::TAU * f64::from(k) / 100.0;
+                let target = p1 + 0.3 * Vector2::new(th.cos() - 1.0, th.sin());
+                fast.update(target).unwrap();
+                slow.update(target).unwrap();
+                for j in 0..4 {
+                    let (a, b) = (
+                        fast.point(PointRef::Control(c, j)).unwrap(),
+                        slow.point(PointRef::Control(c, j)).unwrap(),
+                    );
+                    assert!(
+                        (a - b).norm() < 1e-12,
+                        "{form:?} update {k} point {j}: {a} {b}"
+                    );
+                }
+                assert!((fast.point(PointRef::Control(c, 1)).unwrap() - target).norm() < 1e-12);
+            }
+            // The residuals the session reports come from the problem itself.
+            assert!(fast.residuals().unwrap().iter().all(|(_, r)| *r < 1e-12));
+        }
     }
 }
