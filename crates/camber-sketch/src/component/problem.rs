@@ -81,18 +81,37 @@ impl Orientation {
     /// |v|, the length of the oriented tangent at `x`, when it has vanished: when it is no
     /// more than [`COLLAPSED_TANGENT`] times the size of the terms it sums (rounding left over
     /// from points that coincide, whose sign means nothing); `None` otherwise.
+    ///
+    /// This runs on every drag update, so the size is first bounded from above by
+    /// Σ|c|·(|px| + |py|) (at least Σ|c|·|p|): a tangent above the threshold of that bound (with
+    /// a margin for the sums' rounding) is not collapsed, and only one near it pays for the
+    /// exact Σ|c|·|p|.
     pub(crate) fn collapsed(&self, x: &[f64]) -> Option<f64> {
-        let (mut vx, mut vy, mut size) = (0.0_f64, 0.0_f64, 0.0_f64);
+        let point = |i: usize| {
+            (
+                x.get(i).copied().unwrap_or(f64::NAN),
+                x.get(i + 1).copied().unwrap_or(f64::NAN),
+            )
+        };
+        let (mut vx, mut vy, mut bound) = (0.0_f64, 0.0_f64, 0.0_f64);
         for (i, c) in &self.terms {
-            let (px, py) = (
-                x.get(*i).copied().unwrap_or(f64::NAN),
-                x.get(*i + 1).copied().unwrap_or(f64::NAN),
-            );
+            let (px, py) = point(*i);
             vx += c * px;
             vy += c * py;
-            size += c.abs() * px.hypot(py);
+            bound += c.abs() * (px.abs() + py.abs());
         }
         let speed = vx.hypot(vy);
+        if speed > COLLAPSED_TANGENT * bound * (1.0 + 1e-9) {
+            return None;
+        }
+        let size: f64 = self
+            .terms
+            .iter()
+            .map(|(i, c)| {
+                let (px, py) = point(*i);
+                c.abs() * px.hypot(py)
+            })
+            .sum();
         (speed <= COLLAPSED_TANGENT * size).then_some(speed)
     }
 }
@@ -781,5 +800,44 @@ impl ComponentProblem {
             }
         }
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// The direct definition: |v| when |v| ≤ COLLAPSED_TANGENT·Σ|c|·|p|.
+    fn collapsed_directly(o: &Orientation, x: &[f64]) -> Option<f64> {
+        let (mut vx, mut vy, mut size) = (0.0_f64, 0.0_f64, 0.0_f64);
+        for (i, c) in &o.terms {
+            let (px, py) = (x[*i], x[*i + 1]);
+            vx += c * px;
+            vy += c * py;
+            size += c.abs() * px.hypot(py);
+        }
+        let speed = vx.hypot(vy);
+        (speed <= COLLAPSED_TANGENT * size).then_some(speed)
+    }
+
+    proptest! {
+        /// The bounded test gives the direct answer, on tangents far from, near and exactly at
+        /// collapse (two points that coincide up to a relative `gap`).
+        #[test]
+        fn the_bounded_collapse_test_matches_the_direct_one(
+            p in prop::array::uniform2(-1e3..1e3_f64),
+            q in prop::array::uniform2(-1e3..1e3_f64),
+            gap in prop::sample::select(vec![0.0, 1e-15, 1e-12, 1e-10, 1e-9, 1e-8, 1e-3]),
+            scale in -5.0..5.0_f64,
+        ) {
+            let x = [p[0], p[1], p[0] * (1.0 + gap) + q[0] * gap, p[1] * (1.0 - gap) + q[1] * gap];
+            let o = Orientation {
+                constraint: ConstraintId(0),
+                terms: vec![(2, scale), (0, -scale)],
+                direction: [1.0, 0.0],
+            };
+            prop_assert_eq!(o.collapsed(&x), collapsed_directly(&o, &x));
+        }
     }
 }
