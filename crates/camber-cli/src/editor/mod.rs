@@ -622,7 +622,7 @@ impl EditorState {
         self.analyse()
     }
 
-    /// Recomputes the components, their DOF analysis (small sketches) and their residuals.
+    /// Recomputes the components, their DOF analysis and their residuals.
     fn analyse(&mut self) -> Result<()> {
         let (components, conflicting) = analyse(&self.sketch)?;
         self.components = components;
