@@ -935,8 +935,6 @@ mod tests {
     use nalgebra::dmatrix;
     use proptest::prelude::*;
 
-    /// Rows that are random small-integer rows or integer combinations of earlier ones, with a
-    /// right-hand side consistent with a point z (g = J·z), except where `break_row` shifts it.
     /// Sparse rows (two adjacent columns at a random place, small integers), copies of an
     /// earlier row and sums of two, with g = J·z except where one row is shifted: several
     /// pieces and clear blocks.
@@ -981,6 +979,8 @@ mod tests {
         })
     }
 
+    /// Rows that are random small-integer rows or integer combinations of earlier ones, with a
+    /// right-hand side consistent with a point z (g = J·z), except where `break_row` shifts it.
     fn dependent_system() -> impl Strategy<Value = (DMatrix<f64>, Vec<f64>)> {
         (2usize..7, 3usize..9, any::<u64>()).prop_map(|(n, m, seed)| {
             let mut state = seed | 1;
