@@ -68,47 +68,52 @@ pub(crate) struct Orientation {
 }
 
 impl Orientation {
-    /// The signed dot product at the unknowns `x`.
-    pub(crate) fn dot(&self, x: &[f64]) -> f64 {
-        let (mut vx, mut vy) = (0.0, 0.0);
-        for (i, c) in &self.terms {
-            vx += c * x.get(*i).copied().unwrap_or(f64::NAN);
-            vy += c * x.get(*i + 1).copied().unwrap_or(f64::NAN);
-        }
-        vx * self.direction[0] + vy * self.direction[1]
-    }
-
-    /// |v|, the length of the oriented tangent at `x`, when it has vanished: when it is no
-    /// more than [`COLLAPSED_TANGENT`] times the size of the terms it sums (rounding left over
-    /// from points that coincide, whose sign means nothing); `None` otherwise.
-    ///
-    /// This runs on every drag update, so the size is first bounded from above by
-    /// Σ|c|·(|px| + |py|) (at least Σ|c|·|p|): a tangent above the threshold of that bound (with
-    /// a margin for the sums' rounding) is not collapsed, and only one near it pays for the
-    /// exact Σ|c|·|p|.
-    pub(crate) fn collapsed(&self, x: &[f64]) -> Option<f64> {
-        let point = |i: usize| {
-            (
-                x.get(i).copied().unwrap_or(f64::NAN),
-                x.get(i + 1).copied().unwrap_or(f64::NAN),
-            )
-        };
+    /// The oriented tangent v = Σ c·(x_i, x_{i+1}) at the unknowns `x`, and the upper bound
+    /// Σ|c|·(|x_i| + |x_{i+1}|) of the size of the terms it sums (a missing unknown reads NaN).
+    fn tangent(&self, x: &[f64]) -> ([f64; 2], f64) {
         let (mut vx, mut vy, mut bound) = (0.0_f64, 0.0_f64, 0.0_f64);
         for (i, c) in &self.terms {
-            let (px, py) = point(*i);
+            let px = x.get(*i).copied().unwrap_or(f64::NAN);
+            let py = x.get(*i + 1).copied().unwrap_or(f64::NAN);
             vx += c * px;
             vy += c * py;
             bound += c.abs() * (px.abs() + py.abs());
         }
-        let speed = vx.hypot(vy);
-        if speed > COLLAPSED_TANGENT * bound * (1.0 + 1e-9) {
+        ([vx, vy], bound)
+    }
+
+    /// The signed dot product v·direction of a tangent v.
+    fn dot_of(&self, v: [f64; 2]) -> f64 {
+        v[0] * self.direction[0] + v[1] * self.direction[1]
+    }
+
+    /// |v|, the length of the oriented tangent v at `x` (with the `bound` of its terms, both
+    /// from [`Self::tangent`]), when it has vanished: when it is no more than
+    /// [`COLLAPSED_TANGENT`] times the size Σ|c|·|p| of the terms it sums (rounding left over
+    /// from points that coincide, whose sign means nothing); `None` otherwise.
+    ///
+    /// This runs on every drag update, so it decides from the bound when it can: the size is
+    /// at most Σ|c|·(|px| + |py|), so a tangent above the threshold of that bound (with a
+    /// margin of 1e-9 for the sums' rounding) is not collapsed. That comparison is made on
+    /// squares, |v|² > limit², when limit² is a normal number (its margin of 2e-9 is then far
+    /// above the rounding of either square, and an overflowed |v|² means |v| > limit); only
+    /// a tangent near the threshold pays for |v| and the exact Σ|c|·|p|.
+    fn collapsed_given(&self, x: &[f64], v: [f64; 2], bound: f64) -> Option<f64> {
+        let limit = COLLAPSED_TANGENT * bound * (1.0 + 1e-9);
+        let limit2 = limit * limit;
+        if limit2 >= f64::MIN_POSITIVE && v[0] * v[0] + v[1] * v[1] > limit2 {
+            return None;
+        }
+        let speed = v[0].hypot(v[1]);
+        if speed > limit {
             return None;
         }
         let size: f64 = self
             .terms
             .iter()
             .map(|(i, c)| {
-                let (px, py) = point(*i);
+                let px = x.get(*i).copied().unwrap_or(f64::NAN);
+                let py = x.get(*i + 1).copied().unwrap_or(f64::NAN);
                 c.abs() * px.hypot(py)
             })
             .sum();
@@ -785,13 +790,14 @@ impl ComponentProblem {
     /// The first orientation check that fails at `x`, as an error.
     pub(crate) fn check_orientations(&self, x: &[f64]) -> Result<()> {
         for o in &self.orientations {
-            if let Some(speed) = o.collapsed(x) {
+            let (v, bound) = o.tangent(x);
+            if let Some(speed) = o.collapsed_given(x, v, bound) {
                 return Err(Error::Cusp {
                     constraint: o.constraint,
                     speed,
                 });
             }
-            let dot = o.dot(x);
+            let dot = o.dot_of(v);
             if dot.is_nan() || dot <= 0.0 {
                 return Err(Error::OrientationFlipped {
                     constraint: o.constraint,
@@ -823,21 +829,25 @@ mod tests {
 
     proptest! {
         /// The bounded test gives the direct answer, on tangents far from, near and exactly at
-        /// collapse (two points that coincide up to a relative `gap`).
+        /// collapse (two points that coincide up to a relative `gap`), at magnitudes whose
+        /// squares underflow or overflow.
         #[test]
         fn the_bounded_collapse_test_matches_the_direct_one(
             p in prop::array::uniform2(-1e3..1e3_f64),
             q in prop::array::uniform2(-1e3..1e3_f64),
             gap in prop::sample::select(vec![0.0, 1e-15, 1e-12, 1e-10, 1e-9, 1e-8, 1e-3]),
             scale in -5.0..5.0_f64,
+            magnitude in prop::sample::select(vec![1e-165, 1e-150, 1e-100, 1.0, 1e100, 1e150, 1e160]),
         ) {
+            let (p, q) = (p.map(|v| v * magnitude), q.map(|v| v * magnitude));
             let x = [p[0], p[1], p[0] * (1.0 + gap) + q[0] * gap, p[1] * (1.0 - gap) + q[1] * gap];
             let o = Orientation {
                 constraint: ConstraintId(0),
                 terms: vec![(2, scale), (0, -scale)],
                 direction: [1.0, 0.0],
             };
-            prop_assert_eq!(o.collapsed(&x), collapsed_directly(&o, &x));
+            let (v, bound) = o.tangent(&x);
+            prop_assert_eq!(o.collapsed_given(&x, v, bound), collapsed_directly(&o, &x));
         }
     }
 }
