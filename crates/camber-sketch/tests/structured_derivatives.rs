@@ -8,6 +8,7 @@
 #![allow(clippy::unwrap_used)]
 
 use camber_geom::{BSplineCurve2, KnotVector, NurbsCurve2};
+use camber_sketch::constraints::distance::PointDistance;
 use camber_sketch::constraints::g1_join_free::TangentsParallel;
 use camber_sketch::constraints::tangent_to_circle::CircleContact;
 use camber_sketch::curve_eval::CurveBasis;
@@ -210,6 +211,16 @@ proptest! {
         all.extend(p2.iter().cloned());
         let (dj, dh) = compare(&whole, &all, &vec![true; all.len()], &[lambda]);
         prop_assert!(dj < 1e-12 && dh < 1e-10, "whole: {dj:e} {dh:e}");
+    }
+
+    #[test]
+    fn point_distances_match_the_dual_reference(
+        p in prop::array::uniform2(-3.0..3.0_f64), q in prop::array::uniform2(-3.0..3.0_f64),
+        d in 0.1..4.0_f64, on in prop::array::uniform2(any::<bool>()), lambda in -2.0..2.0_f64,
+    ) {
+        let r = PointDistance::new(d);
+        let (dj, dh) = compare(&r, &[p.to_vec(), q.to_vec()], &on, &[lambda]);
+        prop_assert!(dj < 1e-12 && dh < 1e-12, "{dj:e} {dh:e}");
     }
 
     #[test]

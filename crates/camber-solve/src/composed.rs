@@ -54,7 +54,30 @@ pub const MAX_MOVING_INPUTS: usize = 8;
 pub trait Outer {
     /// f(y) into `out`.
     fn outer<T: Scalar>(&self, y: &[T], out: &mut [T]);
+    /// Hand-written first derivatives, when f is simple enough: f(y) into `values` and ∂fᵢ/∂yₖ
+    /// into `jacobian` (row major, one row per value, one column per input). Returns `false`
+    /// (the default) to have them by dual numbers.
+    fn first_derivatives(&self, y: &[f64], values: &mut [f64], jacobian: &mut [f64]) -> bool {
+        let _ = (y, values, jacobian);
+        false
+    }
+    /// Hand-written weighted derivatives: Σᵢ λᵢ·∇fᵢ into `gradient` (one per input) and
+    /// Σᵢ λᵢ·∇²fᵢ into `hessian` (row major, inputs × inputs), `weights` holding λ. Returns
+    /// `false` (the default) to have them by hyper-dual numbers.
+    fn weighted_second_derivatives(
+        &self,
+        y: &[f64],
+        weights: &[f64],
+        gradient: &mut [f64],
+        hessian: &mut [f64],
+    ) -> bool {
+        let _ = (y, weights, gradient, hessian);
+        false
+    }
 }
+
+/// The most inputs a hand-written [`Outer`] derivative is offered.
+const HAND_WRITTEN_MAX: usize = 8;
 
 /// The inner map y(x) at one point x: each input's value, its non-zero first derivatives in the
 /// flat columns of x, and its non-zero second derivatives.
@@ -142,6 +165,21 @@ pub fn weighted_hessian<F: Outer + ?Sized>(
     if out.len() != n * n {
         return false;
     }
+    let inputs = map.values.len();
+    if inputs <= HAND_WRITTEN_MAX {
+        let mut mu = [0.0; HAND_WRITTEN_MAX];
+        let mut hf = [0.0; HAND_WRITTEN_MAX * HAND_WRITTEN_MAX];
+        if f.weighted_second_derivatives(
+            &map.values,
+            weights,
+            &mut mu[..inputs],
+            &mut hf[..inputs * inputs],
+        ) {
+            let every: SmallVec<[Option<usize>; 16]> = (0..inputs).map(Some).collect();
+            chain_hessian(map, &every, &hf[..inputs * inputs], &mu[..inputs], out);
+            return true;
+        }
+    }
     let (slot, k) = map.moving();
     match k {
         0 => true,
@@ -181,14 +219,15 @@ fn hessian_pass<F: Outer + ?Sized, const K: usize>(
         smallvec::smallvec![Dual2SVec64::<K>::from_re(0.0); weights.len()];
     f.outer(&y, &mut g);
     // F = Σ λᵢ·∇²fᵢ and μ = Σ λᵢ·∇fᵢ over the moving inputs.
-    let mut hf = [[0.0; K]; K];
+    let mut hf = [0.0; HESSIAN_SCRATCH];
+    let hf = &mut hf[..K * K];
     let mut mu = [0.0; K];
     for (gi, w) in g.iter().zip(weights) {
         if *w == 0.0 {
             continue;
         }
         if let Some(m) = &gi.v2.0 {
-            for (a, row) in hf.iter_mut().enumerate() {
+            for (a, row) in hf.chunks_exact_mut(K).enumerate() {
                 for (b, slot) in row.iter_mut().enumerate() {
                     *slot += w * m[(a, b)];
                 }
@@ -200,20 +239,31 @@ fn hessian_pass<F: Outer + ?Sized, const K: usize>(
             }
         }
     }
+    chain_hessian(map, slot, hf, &mu, out);
+    true
+}
+
+/// Room for F over at most [`MAX_MOVING_INPUTS`] inputs.
+const HESSIAN_SCRATCH: usize = MAX_MOVING_INPUTS * MAX_MOVING_INPUTS;
+
+/// out += Jᵀ·F·J + Σₖ μₖ·∇²yₖ, with F (k × k, row major) and μ over the inputs' `slot`s.
+fn chain_hessian(map: &InnerMap, slot: &[Option<usize>], hf: &[f64], mu: &[f64], out: &mut [f64]) {
     let n = map.columns;
+    let k = mu.len();
     // Jᵀ·F·J over the non-zero entries of J.
     for &(ka, i, ga) in &map.gradient {
         let Some(sa) = slot[ka] else { continue };
+        let row = &hf[sa * k..(sa + 1) * k];
         for &(kb, j, gb) in &map.gradient {
             let Some(sb) = slot[kb] else { continue };
             if let Some(o) = out.get_mut(i * n + j) {
-                *o += ga * hf[sa][sb] * gb;
+                *o += ga * row[sb] * gb;
             }
         }
     }
     // Σₖ μₖ·∇²yₖ.
-    for &(k, i, j, d) in &map.curvature {
-        let Some(s) = slot[k] else { continue };
+    for &(input, i, j, d) in &map.curvature {
+        let Some(s) = slot[input] else { continue };
         let v = mu[s] * d;
         if let Some(o) = out.get_mut(i * n + j) {
             *o += v;
@@ -224,7 +274,6 @@ fn hessian_pass<F: Outer + ?Sized, const K: usize>(
             }
         }
     }
-    true
 }
 
 /// Writes g = f(y(x)) into `values` and J_g = ∇f·J into `jac` (row major, `values.len()` rows,
@@ -256,6 +305,21 @@ pub fn jacobian<F: Outer + ?Sized>(
     let n = map.columns;
     if jac.len() != n * values.len() {
         return false;
+    }
+    let inputs = map.values.len();
+    if inputs <= HAND_WRITTEN_MAX && values.len() <= HAND_WRITTEN_MAX {
+        let mut df = [0.0; HAND_WRITTEN_MAX * HAND_WRITTEN_MAX];
+        let df = &mut df[..values.len() * inputs];
+        if f.first_derivatives(&map.values, values, df) {
+            for (row, d_row) in df.chunks_exact(inputs).enumerate() {
+                for &(k, col, d) in &map.gradient {
+                    if let Some(o) = jac.get_mut(row * n + col) {
+                        *o += d_row[k] * d;
+                    }
+                }
+            }
+            return true;
+        }
     }
     let (slot, k) = map.moving();
     match k {
@@ -390,6 +454,79 @@ mod tests {
                 assert_relative_eq!(hess[r * 3 + c], fd, epsilon = 1e-6);
             }
         }
+    }
+
+    /// f(y) = y₀²·y₁ with its derivatives by hand (and a deliberate flag to break them).
+    struct Hand(f64);
+
+    impl Outer for Hand {
+        fn outer<T: Scalar>(&self, y: &[T], out: &mut [T]) {
+            out[0] = y[0] * y[0] * y[1];
+        }
+        fn first_derivatives(&self, y: &[f64], values: &mut [f64], jacobian: &mut [f64]) -> bool {
+            values[0] = y[0] * y[0] * y[1];
+            jacobian[0] = self.0 * 2.0 * y[0] * y[1];
+            jacobian[1] = y[0] * y[0];
+            true
+        }
+        fn weighted_second_derivatives(
+            &self,
+            y: &[f64],
+            weights: &[f64],
+            gradient: &mut [f64],
+            hessian: &mut [f64],
+        ) -> bool {
+            let w = weights[0];
+            gradient.copy_from_slice(&[w * 2.0 * y[0] * y[1], w * y[0] * y[0]]);
+            let cross = w * 2.0 * y[0];
+            hessian.copy_from_slice(&[self.0 * w * 2.0 * y[1], cross, cross, 0.0]);
+            true
+        }
+    }
+
+    /// The same f without hand-written derivatives (dual numbers).
+    struct ByDuals;
+
+    impl Outer for ByDuals {
+        fn outer<T: Scalar>(&self, y: &[T], out: &mut [T]) {
+            Hand(1.0).outer(y, out);
+        }
+    }
+
+    /// g, J and H (weight 0.7) of a one-row f over two columns.
+    fn both<F: Outer>(f: &F, map: &InnerMap) -> ([f64; 1], [f64; 2], [f64; 4]) {
+        let (mut v, mut j, mut h) = ([0.0], [0.0; 2], [0.0; 4]);
+        assert!(jacobian(f, map, &mut v, &mut j));
+        assert!(weighted_hessian(f, map, &[0.7], &mut h));
+        (v, j, h)
+    }
+
+    #[test]
+    fn hand_written_derivatives_are_used_and_agree_with_dual_numbers() {
+        // y₀ = a·b (curved), y₁ = a − 2b over x = (a, b).
+        let (a, b) = (0.6, -1.4);
+        let mut map = InnerMap::new(2);
+        let y0 = map.input(a * b);
+        map.gradient(y0, 0, b);
+        map.gradient(y0, 1, a);
+        map.curvature(y0, 0, 1, 1.0);
+        let y1 = map.input(a - 2.0 * b);
+        map.gradient(y1, 0, 1.0);
+        map.gradient(y1, 1, -2.0);
+        let duals = both(&ByDuals, &map);
+        let hand = both(&Hand(1.0), &map);
+        for (x, y) in duals
+            .1
+            .iter()
+            .chain(&duals.2)
+            .zip(hand.1.iter().chain(&hand.2))
+        {
+            assert_relative_eq!(*x, *y, epsilon = 1e-13);
+        }
+        assert_relative_eq!(duals.0[0], hand.0[0], epsilon = 1e-15);
+        // A wrong hand-written derivative shows: the hand path is the one taken.
+        let wrong = both(&Hand(3.0), &map);
+        assert!((wrong.1[0] - duals.1[0]).abs() > 1e-3 && (wrong.2[0] - duals.2[0]).abs() > 1e-3);
     }
 
     #[test]

@@ -233,24 +233,21 @@ impl Evaluator {
             {
                 continue;
             }
-            // Local column → unknown index.
-            let mut unknowns: smallvec::SmallVec<[usize; 32]> = smallvec::SmallVec::new();
+            // Local column → the reduced columns of its unknown (x = A·z + c), looked up once.
+            let mut terms: smallvec::SmallVec<[&[(usize, f64)]; 32]> = smallvec::SmallVec::new();
             for b in &rb.blocks {
                 let (start, len) = problem.block_range(*b)?;
-                unknowns.extend(start..start + len);
+                terms.extend((start..start + len).map(|u| self.map.row(u).0));
             }
-            for (p, up) in unknowns.iter().enumerate() {
-                let (tp, _) = self.map.row(*up);
+            let triplets = &mut self.hess_triplets;
+            for (tp, h_row) in terms.iter().zip(self.hess.chunks_exact(ncols)) {
                 if tp.is_empty() {
                     continue;
                 }
-                for (q, uq) in unknowns.iter().enumerate() {
-                    let h = self.hess[p * ncols + q];
-                    let (tq, _) = self.map.row(*uq);
-                    for (c1, a1) in tp {
-                        for (c2, a2) in tq {
-                            self.hess_triplets.push((*c1, *c2, h * a1 * a2));
-                        }
+                for (tq, h) in terms.iter().zip(h_row) {
+                    for (c1, a1) in *tp {
+                        let ha = h * a1;
+                        triplets.extend(tq.iter().map(|(c2, a2)| (*c1, *c2, ha * a2)));
                     }
                 }
             }

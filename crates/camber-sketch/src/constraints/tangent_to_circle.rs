@@ -109,8 +109,11 @@ impl Residual for CircleContact {
         values: &mut [f64],
         jac: &mut [f64],
     ) -> bool {
-        self.inner(x, active)
-            .is_some_and(|map| composed::jacobian(self, &map, values, jac))
+        let Some(blocks) = Blocks::new(x, active) else {
+            return false;
+        };
+        let mut map = blocks.map();
+        self.inner(&blocks, &mut map).is_some() && composed::jacobian(self, &map, values, jac)
     }
     fn structured_hessian(
         &self,
@@ -119,8 +122,12 @@ impl Residual for CircleContact {
         active: &[bool],
         out: &mut [f64],
     ) -> bool {
-        self.inner(x, active)
-            .is_some_and(|map| composed::weighted_hessian(self, &map, weights, out))
+        let Some(blocks) = Blocks::new(x, active) else {
+            return false;
+        };
+        let mut map = blocks.map();
+        self.inner(&blocks, &mut map).is_some()
+            && composed::weighted_hessian(self, &map, weights, out)
     }
 }
 
@@ -138,13 +145,11 @@ impl Outer for CircleContact {
 impl CircleContact {
     /// C(u), C′(u), the centre and the radius as the inputs of [`Outer::outer`], with their
     /// derivatives (in u too when it is free).
-    fn inner(&self, x: &[&[f64]], active: &[bool]) -> Option<InnerMap> {
-        let blocks = Blocks::new(x, active)?;
-        let mut map = blocks.map();
-        let k = blocks.curve(&self.basis, self.u, 0, 0..=1, &mut map)?;
-        blocks.block(k, &mut map)?;
-        blocks.block(k + 1, &mut map)?;
-        Some(map)
+    fn inner(&self, blocks: &Blocks<'_>, map: &mut InnerMap) -> Option<()> {
+        let k = blocks.curve(&self.basis, self.u, 0, 0..=1, map)?;
+        blocks.block(k, map)?;
+        blocks.block(k + 1, map)?;
+        Some(())
     }
 }
 
