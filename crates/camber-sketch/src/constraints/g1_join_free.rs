@@ -1,8 +1,9 @@
 //! `g1_join_free`: the end of one curve is the start of the next and the tangents there are
 //! parallel and point the same way, the direction itself being free:
 //! P_end(first) − P_start(second) = 0 (two affine rows, or a merged unknown) and
-//! cross(C₁′(b₁), C₂′(a₂))/(|C₁′||C₂′|) = 0 (one nonlinear row), with C₁′·C₂′ > 0 checked after
-//! every solve. [`G2Join`](super::G2Join) adds equal curvature. File form:
+//! the angle from C₁′(b₁) to C₂′(a₂), atan2(cross(C₁′, C₂′), C₁′·C₂′) = 0 (one nonlinear row, in
+//! radians; its gradient vanishes only with a tangent, unlike the sine's at a right angle, see
+//! [`Angle`](super::Angle)), with C₁′·C₂′ > 0 checked after every solve. [`G2Join`](super::G2Join) adds equal curvature. File form:
 //! `{"kind": "g1_join_free", "first": 0, "second": 1}`.
 
 use std::sync::Arc;
@@ -21,7 +22,8 @@ use crate::curve_eval::CurveBasis;
 use crate::errors::Result;
 use crate::ids::{EntityId, PointRef};
 use crate::lookup::EntityLookup;
-use crate::residuals::curve::{cross, dot, Blocks, Param};
+use super::angle::angle_between;
+use crate::residuals::curve::{Blocks, Param};
 
 /// The end of `first` coincides with the start of `second` and their tangents there are
 /// parallel and point the same way, the direction being free (three rows).
@@ -34,8 +36,8 @@ pub struct G1JoinFree {
     pub second: EntityId,
 }
 
-/// cross(C₁′(u₁), C₂′(u₂))/(|C₁′||C₂′|) = 0: the tangents of two curves at fixed parameters
-/// are parallel (blocks: the first curve's control points, then the second's).
+/// atan2(cross(C₁′(u₁), C₂′(u₂)), C₁′·C₂′) = 0: the tangents of two curves at fixed parameters
+/// point the same way (blocks: the first curve's control points, then the second's).
 #[derive(Debug, Clone, PartialEq)]
 pub struct TangentsParallel {
     first: (CurveBasis, f64),
@@ -87,11 +89,11 @@ impl Residual for TangentsParallel {
     }
 }
 
-/// f(t₁, t₂) = cross(t₁, t₂)/(|t₁||t₂|) of the two tangents (inputs t₁ₓ, t₁ᵧ, t₂ₓ, t₂ᵧ).
+/// f(t₁, t₂) = atan2(cross(t₁, t₂), t₁·t₂), the angle from t₁ to t₂, of the two tangents
+/// (inputs t₁ₓ, t₁ᵧ, t₂ₓ, t₂ᵧ).
 impl Outer for TangentsParallel {
     fn outer<T: Scalar>(&self, y: &[T], out: &mut [T]) {
-        let (t1, t2) = ([y[0], y[1]], [y[2], y[3]]);
-        out[0] = cross(t1, t2) / (dot(t1, t1) * dot(t2, t2)).sqrt();
+        out[0] = angle_between([y[0], y[1]], [y[2], y[3]], 1.0);
     }
 }
 
