@@ -95,6 +95,37 @@ impl NewtonWorkspace {
     pub(crate) fn unprime(&mut self) {
         self.primed = None;
     }
+
+    /// The workspace the last solve on this thread left ([`NewtonWorkspace::keep_as_spare`]),
+    /// or a new one. Every run sizes and fills the vectors it uses, so a workspace from another
+    /// problem serves as well as a new one; the sparse factorization's pattern cache checks
+    /// the pattern it is given.
+    pub(crate) fn take_spare() -> Self {
+        SPARE
+            .with(|spare| spare.borrow_mut().take())
+            .unwrap_or_default()
+    }
+
+    /// Keeps this workspace for the next solve on this thread ([`NewtonWorkspace::take_spare`]):
+    /// a sketch's small components, solved one after another, then allocate their vectors
+    /// once instead of once each. A workspace grown past [`SPARE_MAX_UNKNOWNS`] is dropped, and
+    /// the sparse pattern cache is never kept, so a large solve does not hold its memory.
+    pub(crate) fn keep_as_spare(mut self) {
+        if self.z.capacity() > SPARE_MAX_UNKNOWNS {
+            return;
+        }
+        self.normal = crate::normal::NormalCache::default();
+        self.primed = None;
+        SPARE.with(|spare| *spare.borrow_mut() = Some(self));
+    }
+}
+
+/// Largest workspace (in unknowns) kept between solves by [`NewtonWorkspace::keep_as_spare`].
+const SPARE_MAX_UNKNOWNS: usize = 4096;
+
+thread_local! {
+    /// The Newton workspace of the last finished solve on this thread.
+    static SPARE: std::cell::RefCell<Option<NewtonWorkspace>> = const { std::cell::RefCell::new(None) };
 }
 
 /// How a Newton run ended (the point is left in the workspace's `z`).
