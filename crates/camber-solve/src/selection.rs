@@ -184,6 +184,11 @@ pub(crate) fn certainly_full_row_rank_of(
     rank_tolerance: f64,
 ) -> bool {
     let (m, n) = (lin.jacobian.nrows(), lin.jacobian.ncols());
+    if m == 1 && n >= 1 {
+        if let Some(certified) = one_row_certified(lin.jacobian.row(0).1, rank_tolerance) {
+            return certified;
+        }
+    }
     m > 0
         && m <= n
         && m.saturating_mul(n) <= analysis::DENSE_ANALYSIS_MAX_ENTRIES
@@ -210,7 +215,7 @@ fn certainly_full_row_rank(j: &nalgebra::DMatrix<f64>, rank_tolerance: f64) -> b
     if !(frobenius.is_finite() && frobenius > 0.0) {
         return false;
     }
-    let margin = (1e3 * rank_tolerance).max(1e-5);
+    let margin = rank_margin(rank_tolerance);
     // J·Jᵀ by its lower triangle and symmetry (a general product costs more at these sizes).
     let mut gram = nalgebra::DMatrix::<f64>::zeros(m, m);
     for a in 0..m {
@@ -231,6 +236,22 @@ fn certainly_full_row_rank(j: &nalgebra::DMatrix<f64>, rank_tolerance: f64) -> b
     // lower-triangular solve reads only that part.
     let inverse_norm = inverse.norm();
     inverse_norm.is_finite() && 1.0 / inverse_norm >= margin * frobenius
+}
+
+/// [`certainly_full_row_rank`] for a J of one row (its non-zero values), without the dense
+/// copy and factorization: L = ‖J‖, so the test reads ‖J‖ ≥ c·‖J‖, which holds for every
+/// finite non-zero row when c ≤ ½ (no rounding can turn it). `None` for a larger margin.
+fn one_row_certified(values: &[f64], rank_tolerance: f64) -> Option<bool> {
+    if rank_margin(rank_tolerance) > 0.5 {
+        return None;
+    }
+    let norm = values.iter().map(|v| v * v).sum::<f64>().sqrt();
+    Some(norm.is_finite() && norm > 0.0)
+}
+
+/// The margin c of [`certainly_full_row_rank`]: max(10⁻⁵, 10³·tolerance).
+fn rank_margin(rank_tolerance: f64) -> f64 {
+    (1e3 * rank_tolerance).max(1e-5)
 }
 
 /// Re-evaluates every residual at z and writes z back only if all are within tolerance and
@@ -827,7 +848,7 @@ pub fn solve_newton_from(
 
 #[cfg(test)]
 mod tests {
-    use super::certainly_full_row_rank;
+    use super::{certainly_full_row_rank, one_row_certified};
     use nalgebra::DMatrix;
     use proptest::prelude::*;
 
@@ -922,6 +943,28 @@ mod tests {
     }
 
     proptest! {
+        /// The one-row shortcut answers as the dense certificate does (rows with zeros,
+        /// tiny and huge entries, and the zero row).
+        #[test]
+        fn one_row_shortcut_agrees_with_the_dense_certificate(
+            entries in proptest::collection::vec(-1.0f64..1.0, 1..8),
+            zeros in proptest::collection::vec(proptest::bool::ANY, 8),
+            scale in -12i32..12,
+            tolerance in prop_oneof![Just(1e-10), Just(1e-6), Just(1e-3), Just(0.1)],
+        ) {
+            let row: Vec<f64> = entries
+                .iter()
+                .zip(&zeros)
+                .map(|(v, z)| if *z { 0.0 } else { v * 10f64.powi(scale) })
+                .collect();
+            let dense = DMatrix::from_row_slice(1, row.len(), &row);
+            if let Some(certified) = one_row_certified(&row, tolerance) {
+                prop_assert_eq!(certified, certainly_full_row_rank(&dense, tolerance));
+            } else {
+                prop_assert!(tolerance > 1e-4);
+            }
+        }
+
         /// Whenever the certificate holds, the singular values agree: every one above the
         /// margin times σ_max (so the analysis' rank test finds rank m).
         #[test]
