@@ -542,7 +542,7 @@ impl Sketch {
         };
         let block = cp.point_block(entity, index)?;
         // A point merged into a coincident one moves with that one's unknowns.
-        let block = cp.merged.get(&block).copied().unwrap_or(block);
+        let block = cp.merged_into(block);
         for k in 0..2 {
             let u = cp.problem.unknown(block, k)?;
             if !matches!(cp.problem.binding(u)?, camber_solve::Binding::Free) {

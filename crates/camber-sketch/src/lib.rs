@@ -61,6 +61,7 @@
 pub mod analysis;
 pub mod component;
 pub mod constraints;
+mod curve_ends;
 pub mod curve_eval;
 pub mod displacement;
 pub mod drag;

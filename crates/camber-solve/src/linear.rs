@@ -1,11 +1,12 @@
 //! The linear solve of an affine problem: analysis → minimum-norm step → re-evaluation →
 //! write-back on success.
 
+use std::borrow::Cow;
 use std::time::Instant;
 
 use crate::analysis::{self, DofAnalysis};
 use crate::errors::{Error, Result};
-use crate::min_norm::MinNormFactorization;
+use crate::min_norm::{self, MinNormFactorization};
 use crate::options::Options;
 use crate::problem::Problem;
 use crate::report::{per_constraint, Selection, SolveReport, SolverKind, Status};
@@ -128,14 +129,30 @@ pub fn solve_linear(problem: &mut Problem, options: &Options) -> Result<SolveRep
     let mut dz = vec![0.0; n];
     let dense = n <= options.dense_max_unknowns;
     if !rows.is_empty() {
-        let j = lin.jacobian.select_rows(&rows);
-        let g: Vec<f64> = rows.iter().map(|i| lin.g[*i]).collect();
-        let mut f = if dense {
-            MinNormFactorization::try_dense(&j, lin.map.weights())?
+        // Every row kept (the usual case): J and g as they are, no copy.
+        let (j, g) = if rows.len() == m {
+            (
+                Cow::Borrowed(&lin.jacobian),
+                Cow::Borrowed(lin.g.as_slice()),
+            )
         } else {
-            MinNormFactorization::try_sparse(&j, lin.map.weights())?
+            (
+                Cow::Owned(lin.jacobian.select_rows(&rows)),
+                Cow::Owned(rows.iter().map(|i| lin.g[*i]).collect()),
+            )
         };
-        f.solve_refined(&g, &mut dz, REFINEMENT_STEPS, 0.01 * options.tolerance)?;
+        let weights = lin.map.weights();
+        let refine = 0.01 * options.tolerance;
+        if dense && rows.len() <= min_norm::SMALL_ROWS {
+            min_norm::solve_small_refined(&j, weights, &g, &mut dz, REFINEMENT_STEPS, refine)?;
+        } else {
+            let mut f = if dense {
+                MinNormFactorization::try_dense(&j, weights)?
+            } else {
+                MinNormFactorization::try_sparse(&j, weights)?
+            };
+            f.solve_refined(&g, &mut dz, REFINEMENT_STEPS, refine)?;
+        }
     }
     let z: Vec<f64> = lin.map.z0().iter().zip(&dz).map(|(a, b)| a + b).collect();
     let mut x = vec![0.0; problem.num_unknowns()];

@@ -348,6 +348,137 @@ impl MinNormFactorization {
     }
 }
 
+/// Rows up to which [`solve_small_refined`] works on the stack.
+pub(crate) const SMALL_ROWS: usize = 8;
+
+/// [`MinNormFactorization::solve_refined`] for a J of at most [`SMALL_ROWS`] rows, without
+/// building a factorization: J·W⁻¹·Jᵀ is formed from J's sparse rows and factorized by
+/// Cholesky on the stack, and the step and its refinements (same stopping rule) are written
+/// into `dz` directly. Nothing is allocated: for the many small components of a sketch the
+/// allocations of the general path cost more than the arithmetic.
+///
+/// # Errors
+/// [`Error::Dimension`] for wrong lengths or more than [`SMALL_ROWS`] rows;
+/// [`Error::NonPositiveWeight`]; [`Error::RankDeficient`] when J·W⁻¹·Jᵀ is not positive
+/// definite.
+pub(crate) fn solve_small_refined(
+    j: &SparseMatrix,
+    weights: &[f64],
+    g: &[f64],
+    dz: &mut [f64],
+    steps: usize,
+    tolerance: f64,
+) -> Result<()> {
+    let m = j.nrows();
+    check_len("weights", j.ncols(), weights.len())?;
+    check_len("right-hand side", m, g.len())?;
+    check_len("step", j.ncols(), dz.len())?;
+    if m > SMALL_ROWS {
+        return Err(Error::Dimension {
+            what: "rows of a small minimum-norm system",
+            expected: SMALL_ROWS,
+            found: m,
+        });
+    }
+    if let Some((index, w)) = weights
+        .iter()
+        .enumerate()
+        .find(|(_, w)| !(w.is_finite() && **w > 0.0))
+    {
+        return Err(Error::NonPositiveWeight { index, value: *w });
+    }
+    // L (lower triangle) of J·W⁻¹·Jᵀ = L·Lᵀ.
+    let mut l = [[0.0_f64; SMALL_ROWS]; SMALL_ROWS];
+    for (a, l_a) in l.iter_mut().enumerate().take(m) {
+        let (ca, va) = j.row(a);
+        for (b, l_ab) in l_a.iter_mut().enumerate().take(a + 1) {
+            let (cb, vb) = j.row(b);
+            // The two rows' common columns (both sorted).
+            let (mut x, mut y, mut sum) = (0, 0, 0.0);
+            while x < ca.len() && y < cb.len() {
+                match ca[x].cmp(&cb[y]) {
+                    std::cmp::Ordering::Less => x += 1,
+                    std::cmp::Ordering::Greater => y += 1,
+                    std::cmp::Ordering::Equal => {
+                        sum += va[x] * (1.0 / weights[ca[x]]) * vb[y];
+                        x += 1;
+                        y += 1;
+                    }
+                }
+            }
+            *l_ab = sum;
+        }
+    }
+    for c in 0..m {
+        let (done, below) = l.split_at_mut(c + 1);
+        let l_c = &mut done[c];
+        let d = l_c[c] - l_c[..c].iter().map(|v| v * v).sum::<f64>();
+        if d.is_nan() || d <= 0.0 {
+            return Err(Error::RankDeficient { rows: m });
+        }
+        let d = d.sqrt();
+        l_c[c] = d;
+        for l_r in below.iter_mut().take(m - c - 1) {
+            let v = l_r[c]
+                - l_r[..c]
+                    .iter()
+                    .zip(&l_c[..c])
+                    .map(|(a, b)| a * b)
+                    .sum::<f64>();
+            l_r[c] = v / d;
+        }
+    }
+    // Adds −W⁻¹·Jᵀ·(L·Lᵀ)⁻¹·rhs to dz.
+    let step = |rhs: &[f64], dz: &mut [f64]| {
+        let mut y = [0.0_f64; SMALL_ROWS];
+        for r in 0..m {
+            let mut v = rhs[r];
+            for k in 0..r {
+                v -= l[r][k] * y[k];
+            }
+            y[r] = v / l[r][r];
+        }
+        for r in (0..m).rev() {
+            let mut v = y[r];
+            for k in r + 1..m {
+                v -= l[k][r] * y[k];
+            }
+            y[r] = v / l[r][r];
+        }
+        for (i, yi) in y.iter().enumerate().take(m) {
+            let (cols, vals) = j.row(i);
+            for (c, v) in cols.iter().zip(vals) {
+                dz[*c] -= v * yi / weights[*c];
+            }
+        }
+    };
+    dz.fill(0.0);
+    step(g, dz);
+    let mut residual = [0.0_f64; SMALL_ROWS];
+    for _ in 0..steps {
+        // r = J·Δz + g, and whether every rᵢ is within the rounding of its sum (as
+        // `MinNormFactorization::miss`).
+        let mut worst = 0.0_f64;
+        let mut at_rounding = true;
+        for (i, (r, gi)) in residual.iter_mut().zip(g).enumerate() {
+            let (cols, vals) = j.row(i);
+            let (sum, size) = cols
+                .iter()
+                .zip(vals)
+                .map(|(c, a)| a * dz[*c])
+                .fold((*gi, gi.abs()), |(s, z), t| (s + t, z + t.abs()));
+            *r = sum;
+            worst = worst.max(sum.abs());
+            at_rounding &= sum.abs() <= 4.0 * f64::EPSILON * size;
+        }
+        if worst <= tolerance || at_rounding {
+            break;
+        }
+        step(&residual[..m], dz);
+    }
+    Ok(())
+}
+
 /// 1/w for every column, after checking the weights.
 fn inverse_weights(j: &SparseMatrix, weights: &[f64]) -> Result<Vec<f64>> {
     check_len("weights", j.ncols(), weights.len())?;
@@ -454,6 +585,69 @@ mod tests {
             .unwrap();
         assert_eq!(plain.map(f64::to_bits), refined.map(f64::to_bits));
         assert_relative_eq!(refined[1], 2.0, epsilon = 1e-15);
+    }
+
+    /// The stack path gives the dense factorization's refined step on random small systems
+    /// (1–8 rows, sparse rows, uneven weights), and the same errors.
+    #[test]
+    fn the_small_path_agrees_with_the_factorization() {
+        let mut seed = 7_u64;
+        let mut next = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((seed >> 33) as f64) / f64::from(1_u32 << 31) - 0.5
+        };
+        for m in 1..=SMALL_ROWS {
+            for _ in 0..20 {
+                let n = m + 3;
+                let mut triplets = Vec::new();
+                for i in 0..m {
+                    // Row i reads columns i … i + 3 (some entries left out): full row rank.
+                    for c in i..i + 4 {
+                        if c == i || next() > -0.2 {
+                            triplets.push((i, c, next() + if c == i { 2.0 } else { 0.0 }));
+                        }
+                    }
+                }
+                let j = SparseMatrix::try_from_triplets(m, n, &triplets).unwrap();
+                let w: Vec<f64> = (0..n).map(|_| 1.5 + next()).collect();
+                let g: Vec<f64> = (0..m).map(|_| 3.0 * next()).collect();
+                let (mut want, mut got) = (vec![0.0; n], vec![0.0; n]);
+                MinNormFactorization::try_dense(&j, &w)
+                    .unwrap()
+                    .solve_refined(&g, &mut want, 3, 0.0)
+                    .unwrap();
+                solve_small_refined(&j, &w, &g, &mut got, 3, 0.0).unwrap();
+                for k in 0..n {
+                    assert_relative_eq!(got[k], want[k], epsilon = 1e-13, max_relative = 1e-12);
+                }
+                // J·Δz = −g.
+                let mut jz = vec![0.0; m];
+                j.mul_vec(&got, &mut jz).unwrap();
+                for i in 0..m {
+                    assert_relative_eq!(jz[i], -g[i], epsilon = 1e-13);
+                }
+            }
+        }
+        let dependent = SparseMatrix::try_from_triplets(2, 2, &[(0, 0, 1.0), (1, 0, 2.0)]).unwrap();
+        let mut dz = [0.0; 2];
+        assert_eq!(
+            solve_small_refined(&dependent, &[1.0, 1.0], &[1.0, 2.0], &mut dz, 3, 0.0),
+            Err(Error::RankDeficient { rows: 2 })
+        );
+        assert_eq!(
+            solve_small_refined(&dependent, &[1.0, 0.0], &[1.0, 2.0], &mut dz, 3, 0.0),
+            Err(Error::NonPositiveWeight {
+                index: 1,
+                value: 0.0
+            })
+        );
+        let tall = SparseMatrix::try_from_triplets(SMALL_ROWS + 1, 1, &[]).unwrap();
+        let mut one = [0.0];
+        assert!(
+            solve_small_refined(&tall, &[1.0], &[0.0; SMALL_ROWS + 1], &mut one, 3, 0.0).is_err()
+        );
     }
 
     #[test]

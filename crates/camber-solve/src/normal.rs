@@ -45,9 +45,8 @@ struct Pattern {
     /// M's lower triangle in compressed columns.
     m_col_ptr: Vec<usize>,
     m_row_idx: Vec<usize>,
-    /// Per column k of J, `terms[term_ptr[k]..term_ptr[k+1]]` are the products (slot of M,
-    /// value index a, value index b) with J's values a, b in column k.
-    term_ptr: Vec<usize>,
+    /// The products J_jk·J_ik (slot of M[i, j], value index of J_jk, value index of J_ik), i ≥ j,
+    /// by columns j of M.
     terms: Vec<(usize, usize, usize)>,
     symbolic: Arc<SymbolicCholesky<usize>>,
     values: Vec<f64>,
@@ -119,10 +118,9 @@ impl NormalCache {
             .as_mut()
             .ok_or(Error::RankDeficient { rows: m })?;
         p.values.fill(0.0);
-        for (k, d) in inv_w.iter().enumerate() {
-            for &(slot, a, b) in &p.terms[p.term_ptr[k]..p.term_ptr[k + 1]] {
-                p.values[slot] += values[a] * d * values[b];
-            }
+        let (_, col_idx, _) = j.raw();
+        for &(slot, a, b) in &p.terms {
+            p.values[slot] += values[a] * inv_w[col_idx[a]] * values[b];
         }
         let pattern = SymbolicSparseColMatRef::new_checked(m, m, &p.m_col_ptr, None, &p.m_row_idx);
         let mat = SparseColMatRef::new(pattern, &p.values);
@@ -151,6 +149,11 @@ impl NormalCache {
 }
 
 impl Pattern {
+    /// M's pattern column by column: column j of M (row j of J) meets row i exactly when rows
+    /// i and j of J share a column, found through J's columns with a marker per row, so no
+    /// global sort is needed, only each column's few rows. The upper triangle (for the
+    /// symbolic factorization) comes from the same pass, and every product J_jk·J_ik is
+    /// listed with the slot of M it adds to.
     fn build(j: &SparseMatrix) -> Result<Self> {
         let (row_ptr, col_idx, _) = j.raw();
         let (m, n) = (j.nrows(), j.ncols());
@@ -175,34 +178,62 @@ impl Pattern {
                 next[c] += 1;
             }
         }
-        // The lower-triangle positions (column j, row i ≥ j) of M, with every diagonal.
-        let mut positions: Vec<(usize, usize)> = (0..m).map(|i| (i, i)).collect();
-        for k in 0..n {
-            let entries = &by_col[col_count[k]..col_count[k + 1]];
-            for (x, &(ia, _)) in entries.iter().enumerate() {
-                for &(ib, _) in &entries[..x] {
-                    positions.push((ia.min(ib), ia.max(ib)));
+        // For column j: `mark[i] == j` once row i is listed, `slot[i]` its slot then.
+        let mut mark = vec![usize::MAX; m];
+        let mut slot = vec![0_usize; m];
+        let mut m_col_ptr = Vec::with_capacity(m + 1);
+        let mut m_row_idx = Vec::with_capacity(4 * m);
+        let mut upper_col_ptr = Vec::with_capacity(m + 1);
+        let mut upper_row_idx = Vec::with_capacity(4 * m);
+        let mut terms = Vec::with_capacity(8 * m);
+        m_col_ptr.push(0);
+        upper_col_ptr.push(0);
+        for jr in 0..m {
+            let entries = row_ptr[jr]..row_ptr[jr + 1];
+            // Every diagonal entry is present, even for an empty row of J.
+            mark[jr] = jr;
+            let lower_start = m_row_idx.len();
+            let upper_start = upper_row_idx.len();
+            m_row_idx.push(jr);
+            upper_row_idx.push(jr);
+            for &c in &col_idx[entries.clone()] {
+                for &(i, _) in &by_col[col_count[c]..col_count[c + 1]] {
+                    if mark[i] != jr {
+                        mark[i] = jr;
+                        if i > jr {
+                            m_row_idx.push(i);
+                        } else {
+                            upper_row_idx.push(i);
+                        }
+                    }
+                }
+            }
+            m_row_idx[lower_start..].sort_unstable();
+            upper_row_idx[upper_start..].sort_unstable();
+            for (s, &i) in m_row_idx.iter().enumerate().skip(lower_start) {
+                slot[i] = s;
+            }
+            m_col_ptr.push(m_row_idx.len());
+            upper_col_ptr.push(upper_row_idx.len());
+            for (a, &c) in col_idx
+                .iter()
+                .enumerate()
+                .take(entries.end)
+                .skip(entries.start)
+            {
+                for &(i, b) in &by_col[col_count[c]..col_count[c + 1]] {
+                    if i >= jr {
+                        terms.push((slot[i], a, b));
+                    }
                 }
             }
         }
-        let (m_col_ptr, m_row_idx) = crate::sparse::compress(m, &positions);
-        let slot = |row: usize, col: usize| -> usize {
-            let rows = &m_row_idx[m_col_ptr[col]..m_col_ptr[col + 1]];
-            m_col_ptr[col] + rows.binary_search(&row).unwrap_or(0)
-        };
-        let mut term_ptr = Vec::with_capacity(n + 1);
-        let mut terms = Vec::new();
-        term_ptr.push(0);
-        for k in 0..n {
-            let entries = &by_col[col_count[k]..col_count[k + 1]];
-            for (x, &(ia, a)) in entries.iter().enumerate() {
-                for &(ib, b) in &entries[..=x] {
-                    terms.push((slot(ia.max(ib), ia.min(ib)), a, b));
-                }
-            }
-            term_ptr.push(terms.len());
-        }
-        let symbolic = Arc::new(symbolic_of(m, &m_col_ptr, &m_row_idx)?);
+        let symbolic = Arc::new(symbolic_of(
+            m,
+            &upper_col_ptr,
+            &upper_row_idx,
+            m_row_idx.len(),
+        )?);
         let values = vec![0.0; m_row_idx.len()];
         Ok(Self {
             j_cols: n,
@@ -210,7 +241,6 @@ impl Pattern {
             j_col_idx: col_idx.to_vec(),
             m_col_ptr,
             m_row_idx,
-            term_ptr,
             terms,
             symbolic,
             values,
@@ -218,23 +248,20 @@ impl Pattern {
     }
 }
 
-/// The symbolic Cholesky factorization of M's pattern, given as its lower triangle in
-/// compressed columns (m × m): in M's own order when its factor has at most
-/// [`NATURAL_FILL_LIMIT`] times the entries of that triangle, after the approximate minimum
-/// degree ordering otherwise.
-fn symbolic_of(m: usize, col_ptr: &[usize], row_idx: &[usize]) -> Result<SymbolicCholesky<usize>> {
+/// The symbolic Cholesky factorization of M's pattern, given as its upper triangle in
+/// compressed columns (m × m, `lower_len` entries in either triangle): in M's own order when
+/// its factor has at most [`NATURAL_FILL_LIMIT`] times the entries of a triangle, after the
+/// approximate minimum degree ordering otherwise.
+fn symbolic_of(
+    m: usize,
+    upper_col_ptr: &[usize],
+    upper_row_idx: &[usize],
+    lower_len: usize,
+) -> Result<SymbolicCholesky<usize>> {
     let rank_deficient = |_| Error::RankDeficient { rows: m };
     // faer reads the pattern as given when it keeps the order, and then as the upper
-    // triangle whatever side is named: the upper triangle of the symmetric M is the transpose
-    // of the lower one.
-    let mut transposed = Vec::with_capacity(row_idx.len());
-    for j in 0..m {
-        for &i in &row_idx[col_ptr[j]..col_ptr[j + 1]] {
-            transposed.push((i, j));
-        }
-    }
-    let (upper_col_ptr, upper_row_idx) = crate::sparse::compress(m, &transposed);
-    let upper = SymbolicSparseColMatRef::new_checked(m, m, &upper_col_ptr, None, &upper_row_idx);
+    // triangle whatever side is named.
+    let upper = SymbolicSparseColMatRef::new_checked(m, m, upper_col_ptr, None, upper_row_idx);
     let natural = factorize_symbolic_cholesky(
         upper,
         Side::Upper,
@@ -242,7 +269,7 @@ fn symbolic_of(m: usize, col_ptr: &[usize], row_idx: &[usize]) -> Result<Symboli
         Default::default(),
     )
     .map_err(rank_deficient)?;
-    if natural.len_val() <= NATURAL_FILL_LIMIT.saturating_mul(row_idx.len()) {
+    if natural.len_val() <= NATURAL_FILL_LIMIT.saturating_mul(lower_len) {
         return Ok(natural);
     }
     factorize_symbolic_cholesky(

@@ -108,9 +108,15 @@ impl Problem {
     pub fn reduced_map(&self) -> Result<ReducedMap> {
         let n = self.values.len();
         let mut column = vec![None; n];
-        let mut vars = Vec::new();
-        let (mut z0, mut weights, mut lower, mut upper) =
-            (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+        // At most every unknown and every auxiliary is a column.
+        let cols = n + self.aux_values.len();
+        let mut vars = Vec::with_capacity(cols);
+        let (mut z0, mut weights, mut lower, mut upper) = (
+            Vec::with_capacity(cols),
+            Vec::with_capacity(cols),
+            Vec::with_capacity(cols),
+            Vec::with_capacity(cols),
+        );
         for (i, b) in self.bindings.iter().enumerate() {
             if *b == Binding::Free {
                 column[i] = Some(vars.len());
@@ -130,7 +136,8 @@ impl Problem {
             upper.push(self.aux_bounds[a].1);
         }
         let mut row_ptr = Vec::with_capacity(n + 1);
-        let mut terms = Vec::new();
+        // One term per free or merged unknown, more for the few other substitutions.
+        let mut terms = Vec::with_capacity(n);
         let mut constant = Vec::with_capacity(n);
         row_ptr.push(0);
         for (i, b) in self.bindings.iter().enumerate() {
@@ -202,9 +209,12 @@ impl Problem {
         let mut g = vec![0.0; m];
         let mut row_owner = Vec::with_capacity(m);
         let mut row_residual = Vec::with_capacity(m);
-        let mut triplets = Vec::new();
+        // J_z in compressed rows, assembled row by row: a residual's rows are consecutive, so
+        // no global sort of triplets is needed, only of each row's few entries.
+        let mut rows = CsrRows::with_capacity(m);
         let mut jac = Vec::new();
         let mut moves: smallvec::SmallVec<[bool; 16]> = smallvec::SmallVec::new();
+        let mut ranges: smallvec::SmallVec<[(usize, usize); 16]> = smallvec::SmallVec::new();
         let mut row0 = 0;
         let mut affine = true;
         for (r, rb) in self.residuals.iter().enumerate() {
@@ -216,35 +226,37 @@ impl Problem {
             jac.resize(dim * ncols, 0.0);
             let out = &mut g[row0..row0 + dim];
             moves.clear();
+            ranges.clear();
             for b in &rb.blocks {
                 let (start, len) = self.block_range(*b)?;
+                ranges.push((start, len));
                 moves.push((start..start + len).any(|u| !map.row(u).0.is_empty()));
             }
             rb.residual
                 .jacobian_active(&slices, &moves, out, &mut jac)?;
             check_residual(rb, out)?;
-            // Local column → flat unknown index.
-            let mut local = 0;
-            for b in &rb.blocks {
-                let (start, len) = self.block_range(*b)?;
-                for u in start..start + len {
-                    let (terms, _) = map.row(u);
-                    for row in 0..dim {
-                        let d = jac[row * ncols + local];
-                        if d != 0.0 {
-                            for (col, a) in terms {
-                                triplets.push((row0 + row, *col, d * a));
-                            }
+            for jac_row in jac.chunks_exact(ncols.max(1)).take(dim) {
+                // Local column → flat unknown index → reduced columns.
+                let local = ranges.iter().flat_map(|&(start, len)| start..start + len);
+                for (u, d) in local.zip(jac_row) {
+                    if *d != 0.0 {
+                        for (col, a) in map.row(u).0 {
+                            rows.push(*col, d * a)?;
                         }
                     }
-                    local += 1;
+                }
+                rows.finish_row();
+            }
+            if ncols == 0 {
+                for _ in 0..dim {
+                    rows.finish_row();
                 }
             }
             row_owner.extend(std::iter::repeat_n(rb.owner, dim));
             row_residual.extend(std::iter::repeat_n(ResidualId(r), dim));
             row0 += dim;
         }
-        let jacobian = SparseMatrix::try_from_triplets(m, map.len(), &triplets)?;
+        let jacobian = rows.into_matrix(m, map.len())?;
         Ok(Linearization {
             map,
             x,
@@ -302,5 +314,71 @@ impl Problem {
             }
         }
         Ok(())
+    }
+}
+
+/// A compressed-row matrix built one row at a time: each row's entries are pushed in any
+/// order, then sorted and merged (duplicates summed, sums of exactly zero dropped, as
+/// [`SparseMatrix::try_from_triplets`] does).
+struct CsrRows {
+    row_ptr: Vec<usize>,
+    col_idx: Vec<usize>,
+    values: Vec<f64>,
+    /// The current row's entries.
+    pending: smallvec::SmallVec<[(usize, f64); 32]>,
+    /// Entries pushed so far (the index named by a non-finite entry's error).
+    pushed: usize,
+}
+
+impl CsrRows {
+    fn with_capacity(rows: usize) -> Self {
+        let mut row_ptr = Vec::with_capacity(rows + 1);
+        row_ptr.push(0);
+        Self {
+            row_ptr,
+            col_idx: Vec::with_capacity(4 * rows),
+            values: Vec::with_capacity(4 * rows),
+            pending: smallvec::SmallVec::new(),
+            pushed: 0,
+        }
+    }
+
+    /// Adds `value` at column `col` of the current row.
+    fn push(&mut self, col: usize, value: f64) -> Result<()> {
+        if !value.is_finite() {
+            return Err(Error::NonFinite {
+                what: "matrix entry",
+                index: self.pushed,
+                value,
+            });
+        }
+        self.pending.push((col, value));
+        self.pushed += 1;
+        Ok(())
+    }
+
+    /// Ends the current row.
+    fn finish_row(&mut self) {
+        self.pending.sort_unstable_by_key(|e| e.0);
+        let mut k = 0;
+        while k < self.pending.len() {
+            let col = self.pending[k].0;
+            let mut sum = 0.0;
+            while k < self.pending.len() && self.pending[k].0 == col {
+                sum += self.pending[k].1;
+                k += 1;
+            }
+            if sum != 0.0 {
+                self.col_idx.push(col);
+                self.values.push(sum);
+            }
+        }
+        self.pending.clear();
+        self.row_ptr.push(self.col_idx.len());
+    }
+
+    /// The matrix of the rows finished (`nrows` of them, columns below `ncols`).
+    fn into_matrix(self, nrows: usize, ncols: usize) -> Result<SparseMatrix> {
+        SparseMatrix::from_csr(nrows, ncols, self.row_ptr, self.col_idx, self.values)
     }
 }

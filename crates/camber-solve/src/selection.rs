@@ -184,6 +184,11 @@ pub(crate) fn certainly_full_row_rank_of(
     rank_tolerance: f64,
 ) -> bool {
     let (m, n) = (lin.jacobian.nrows(), lin.jacobian.ncols());
+    if m == 1 && n >= 1 {
+        if let Some(certified) = one_row_certified(lin.jacobian.row(0).1, rank_tolerance) {
+            return certified;
+        }
+    }
     m > 0
         && m <= n
         && m.saturating_mul(n) <= analysis::DENSE_ANALYSIS_MAX_ENTRIES
@@ -210,7 +215,7 @@ fn certainly_full_row_rank(j: &nalgebra::DMatrix<f64>, rank_tolerance: f64) -> b
     if !(frobenius.is_finite() && frobenius > 0.0) {
         return false;
     }
-    let margin = (1e3 * rank_tolerance).max(1e-5);
+    let margin = rank_margin(rank_tolerance);
     // J·Jᵀ by its lower triangle and symmetry (a general product costs more at these sizes).
     let mut gram = nalgebra::DMatrix::<f64>::zeros(m, m);
     for a in 0..m {
@@ -231,6 +236,22 @@ fn certainly_full_row_rank(j: &nalgebra::DMatrix<f64>, rank_tolerance: f64) -> b
     // lower-triangular solve reads only that part.
     let inverse_norm = inverse.norm();
     inverse_norm.is_finite() && 1.0 / inverse_norm >= margin * frobenius
+}
+
+/// [`certainly_full_row_rank`] for a J of one row (its non-zero values), without the dense
+/// copy and factorization: L = ‖J‖, so the test reads ‖J‖ ≥ c·‖J‖, which holds for every
+/// finite non-zero row when c ≤ ½ (no rounding can turn it). `None` for a larger margin.
+fn one_row_certified(values: &[f64], rank_tolerance: f64) -> Option<bool> {
+    if rank_margin(rank_tolerance) > 0.5 {
+        return None;
+    }
+    let norm = values.iter().map(|v| v * v).sum::<f64>().sqrt();
+    Some(norm.is_finite() && norm > 0.0)
+}
+
+/// The margin c of [`certainly_full_row_rank`]: max(10⁻⁵, 10³·tolerance).
+fn rank_margin(rank_tolerance: f64) -> f64 {
+    (1e3 * rank_tolerance).max(1e-5)
 }
 
 /// Re-evaluates every residual at z and writes z back only if all are within tolerance and
@@ -447,6 +468,18 @@ pub fn solve(problem: &mut Problem, options: &Options) -> Result<SolveReport> {
 
 /// [`solve`] for the whole set of constraints, priorities aside.
 fn solve_whole(problem: &mut Problem, options: &Options) -> Result<SolveReport> {
+    let mut ws = NewtonWorkspace::take_spare();
+    let outcome = solve_whole_with(problem, options, &mut ws);
+    ws.keep_as_spare();
+    outcome
+}
+
+/// [`solve_whole`] with the Newton workspace given.
+fn solve_whole_with(
+    problem: &mut Problem,
+    options: &Options,
+    ws: &mut NewtonWorkspace,
+) -> Result<SolveReport> {
     let (start, satisfied, primed) = Start::new(problem, options)?;
     if satisfied {
         return start.already_satisfied(problem);
@@ -469,13 +502,12 @@ fn solve_whole(problem: &mut Problem, options: &Options) -> Result<SolveReport> 
     }
 
     let mut notes: Vec<String> = Vec::new();
-    let mut ws = NewtonWorkspace::new();
     if start.full_rank || start.independent.is_some() {
         let rows = start.independent.as_deref();
         match newton_path(
             problem,
             options,
-            &mut ws,
+            ws,
             &start.z0,
             &start.z0,
             rows,
@@ -555,7 +587,7 @@ fn solve_whole(problem: &mut Problem, options: &Options) -> Result<SolveReport> 
     )?;
     if lm.max_residual <= options.tolerance.sqrt() {
         if let Ok((iterations, _, residuals, z)) =
-            newton_path(problem, options, &mut ws, &z_lm, &start.z0, None, None)
+            newton_path(problem, options, ws, &z_lm, &start.z0, None, None)
         {
             let reason = format!(
                 "{} → Levenberg–Marquardt ({} iterations) then Newton minimum norm",
@@ -610,7 +642,7 @@ fn solve_whole(problem: &mut Problem, options: &Options) -> Result<SolveReport> 
             };
             if let Some(z1) = moved {
                 if let Ok((iterations, _, residuals, z)) =
-                    newton_path(problem, options, &mut ws, &z1, &start.z0, None, None)
+                    newton_path(problem, options, ws, &z1, &start.z0, None, None)
                 {
                     let reason = format!(
                         "{} → Newton minimum norm from a start moved off the singular one",
@@ -816,7 +848,7 @@ pub fn solve_newton_from(
 
 #[cfg(test)]
 mod tests {
-    use super::certainly_full_row_rank;
+    use super::{certainly_full_row_rank, one_row_certified};
     use nalgebra::DMatrix;
     use proptest::prelude::*;
 
@@ -846,7 +878,93 @@ mod tests {
         assert!(!certainly_full_row_rank(&tall, 1e-10));
     }
 
+    /// A nonlinear problem: a point (x, y) on the circle of radius `r` about the origin with
+    /// x − y = `d`, started at `start`.
+    fn circle_and_line(r: f64, d: f64, start: [f64; 2]) -> crate::Problem {
+        #[derive(Debug)]
+        struct OnCircle(f64);
+        impl crate::Residual for OnCircle {
+            fn name(&self) -> &str {
+                "on circle"
+            }
+            fn dim(&self) -> usize {
+                1
+            }
+            fn eval<T: crate::Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+                let r = crate::scalar::cst::<T>(self.0);
+                out[0] = x[0][0] * x[0][0] + x[0][1] * x[0][1] - r * r;
+            }
+        }
+        #[derive(Debug)]
+        struct Apart(f64);
+        impl crate::Residual for Apart {
+            fn name(&self) -> &str {
+                "apart"
+            }
+            fn dim(&self) -> usize {
+                1
+            }
+            fn eval<T: crate::Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+                out[0] = x[0][0] - x[0][1] - crate::scalar::cst::<T>(self.0);
+            }
+            fn is_affine(&self) -> bool {
+                true
+            }
+        }
+        let mut p = crate::Problem::new();
+        let b = p.add_block(&start).unwrap();
+        p.add_residual(OnCircle(r), &[b], crate::ConstraintId(1))
+            .unwrap();
+        p.add_residual(Apart(d), &[b], crate::ConstraintId(2))
+            .unwrap();
+        p
+    }
+
+    /// A solve after another problem's (whose Newton workspace it takes over on this thread)
+    /// gives bit for bit what it gives first on a fresh thread.
+    #[test]
+    fn a_reused_workspace_gives_the_same_solve() {
+        let options = crate::Options::default();
+        let fresh = std::thread::spawn(|| {
+            let mut p = circle_and_line(2.0, 0.5, [1.9, 0.3]);
+            crate::solve(&mut p, &crate::Options::default()).unwrap();
+            p.values().to_vec()
+        })
+        .join()
+        .unwrap();
+        let mut other = circle_and_line(5.0, -1.0, [3.0, 3.5]);
+        crate::solve(&mut other, &options).unwrap();
+        let mut p = circle_and_line(2.0, 0.5, [1.9, 0.3]);
+        crate::solve(&mut p, &options).unwrap();
+        let again: Vec<u64> = p.values().iter().map(|v| v.to_bits()).collect();
+        assert_eq!(again, fresh.iter().map(|v| v.to_bits()).collect::<Vec<_>>());
+        let (x, y) = (p.values()[0], p.values()[1]);
+        assert!((x * x + y * y - 4.0).abs() < 1e-9 && (x - y - 0.5).abs() < 1e-9);
+    }
+
     proptest! {
+        /// The one-row shortcut answers as the dense certificate does (rows with zeros,
+        /// tiny and huge entries, and the zero row).
+        #[test]
+        fn one_row_shortcut_agrees_with_the_dense_certificate(
+            entries in proptest::collection::vec(-1.0f64..1.0, 1..8),
+            zeros in proptest::collection::vec(proptest::bool::ANY, 8),
+            scale in -12i32..12,
+            tolerance in prop_oneof![Just(1e-10), Just(1e-6), Just(1e-3), Just(0.1)],
+        ) {
+            let row: Vec<f64> = entries
+                .iter()
+                .zip(&zeros)
+                .map(|(v, z)| if *z { 0.0 } else { v * 10f64.powi(scale) })
+                .collect();
+            let dense = DMatrix::from_row_slice(1, row.len(), &row);
+            if let Some(certified) = one_row_certified(&row, tolerance) {
+                prop_assert_eq!(certified, certainly_full_row_rank(&dense, tolerance));
+            } else {
+                prop_assert!(tolerance > 1e-4);
+            }
+        }
+
         /// Whenever the certificate holds, the singular values agree: every one above the
         /// margin times σ_max (so the analysis' rank test finds rank m).
         #[test]

@@ -117,6 +117,56 @@ impl SparseMatrix {
         })
     }
 
+    /// A matrix from its compressed rows, checked: `row_ptr` has `nrows + 1` non-decreasing
+    /// offsets from 0 to the number of entries, and each row's columns are strictly
+    /// increasing and below `ncols`.
+    ///
+    /// # Errors
+    /// [`Error::Dimension`] for inconsistent lengths or offsets, [`Error::UnknownUnknown`]
+    /// for a column out of range or out of order.
+    pub(crate) fn from_csr(
+        nrows: usize,
+        ncols: usize,
+        row_ptr: Vec<usize>,
+        col_idx: Vec<usize>,
+        values: Vec<f64>,
+    ) -> Result<Self> {
+        check_len("row offsets", nrows + 1, row_ptr.len())?;
+        check_len("column indices", values.len(), col_idx.len())?;
+        check_len(
+            "entries",
+            col_idx.len(),
+            row_ptr.last().copied().unwrap_or(0),
+        )?;
+        check_len("first row offset", 0, row_ptr.first().copied().unwrap_or(0))?;
+        for w in row_ptr.windows(2) {
+            let Some(cols) = col_idx.get(w[0]..w[1]) else {
+                return Err(Error::Dimension {
+                    what: "row offsets",
+                    expected: w[0],
+                    found: w[1],
+                });
+            };
+            let mut prev = None;
+            for &c in cols {
+                if c >= ncols || prev.is_some_and(|p| c <= p) {
+                    return Err(Error::UnknownUnknown {
+                        index: c,
+                        len: ncols,
+                    });
+                }
+                prev = Some(c);
+            }
+        }
+        Ok(Self {
+            nrows,
+            ncols,
+            row_ptr,
+            col_idx,
+            values,
+        })
+    }
+
     /// The sparse form of a dense matrix (exact zeros dropped).
     pub fn from_dense(m: &DMatrix<f64>) -> Self {
         let mut row_ptr = vec![0];
@@ -394,6 +444,26 @@ pub(crate) fn check_len(what: &'static str, expected: usize, found: usize) -> Re
 mod tests {
     use super::*;
     use approx::assert_relative_eq;
+
+    /// Compressed rows as given equal the triplet construction; malformed ones are refused.
+    #[test]
+    fn compressed_rows_are_checked() {
+        let a = SparseMatrix::from_csr(2, 3, vec![0, 2, 3], vec![0, 2, 1], vec![1.0, 2.0, 3.0])
+            .unwrap();
+        let b = SparseMatrix::try_from_triplets(2, 3, &[(1, 1, 3.0), (0, 2, 2.0), (0, 0, 1.0)])
+            .unwrap();
+        assert_eq!(a, b);
+        let bad = |row_ptr: Vec<usize>, col_idx: Vec<usize>| {
+            let values = vec![1.0; col_idx.len()];
+            SparseMatrix::from_csr(2, 3, row_ptr, col_idx, values).is_err()
+        };
+        assert!(bad(vec![0, 2], vec![0, 1])); // too few offsets
+        assert!(bad(vec![1, 2, 3], vec![0, 1, 2])); // not starting at 0
+        assert!(bad(vec![0, 2, 1], vec![0, 1])); // decreasing
+        assert!(bad(vec![0, 2, 2], vec![1, 0])); // columns out of order
+        assert!(bad(vec![0, 1, 2], vec![0, 3])); // column out of range
+        assert!(bad(vec![0, 1, 3], vec![0, 1])); // offsets past the entries
+    }
 
     #[test]
     fn triplets_sum_and_sort() {

@@ -11,7 +11,7 @@
 
 use std::collections::HashMap;
 
-use rustc_hash::{FxHashMap, FxHashSet};
+use rustc_hash::FxHashMap;
 use std::sync::Arc;
 
 use camber_solve::{BlockId, ConstraintId, Problem, Var};
@@ -52,10 +52,13 @@ pub struct ParameterFreedom {
     pub parameter: usize,
 }
 
-#[derive(Debug, Clone)]
+/// Where an entity's blocks are in [`ComponentProblem`]'s list of entity blocks: its points'
+/// from `start`, then its scalars'.
+#[derive(Debug, Clone, Copy)]
 struct EntityBlocks {
-    points: Vec<BlockId>,
-    scalars: Vec<BlockId>,
+    start: usize,
+    points: usize,
+    scalars: usize,
 }
 
 /// The orientation check of a tangency: (Σ c·(x_i, x_{i+1})) · direction > 0, i being the flat
@@ -142,7 +145,11 @@ pub(crate) struct CheckEntry {
 pub struct ComponentProblem {
     pub(crate) problem: Problem,
     pub(crate) component: Component,
-    layout: FxHashMap<EntityId, EntityBlocks>,
+    /// Every entity with where its blocks are in `blocks`, by increasing id.
+    layout: Vec<(EntityId, EntityBlocks)>,
+    /// The blocks of all entities, end to end: the first blocks of the problem, block k at
+    /// position k.
+    blocks: Vec<BlockId>,
     pub(crate) orientations: Vec<Orientation>,
     /// The first constraint whose residual is not affine, with the residual's name.
     pub(crate) nonlinear: Option<(ConstraintId, String)>,
@@ -151,8 +158,9 @@ pub struct ComponentProblem {
     pub(crate) free: Vec<(ConstraintId, BlockId)>,
     /// The checks of the solved state, with their owners.
     pub(crate) checks: Vec<CheckEntry>,
-    /// Point blocks bound to a coincident one (block → the block whose unknowns it shares).
-    pub(crate) merged: FxHashMap<BlockId, BlockId>,
+    /// Point blocks bound to a coincident one (block, the block whose unknowns it shares), by
+    /// increasing block.
+    pub(crate) merged: Vec<(BlockId, BlockId)>,
     /// Constraints whose coincidence joined points already merged (redundant).
     pub(crate) merged_redundant: Vec<ConstraintId>,
 }
@@ -168,31 +176,49 @@ impl ComponentProblem {
         &self.component
     }
 
+    /// The point blocks and the scalar blocks of an entity, `None` for one outside the
+    /// component.
+    fn entity_blocks(&self, entity: EntityId) -> Option<(&[BlockId], &[BlockId])> {
+        let k = self
+            .layout
+            .binary_search_by_key(&entity, |(id, _)| *id)
+            .ok()?;
+        let (_, b) = self.layout.get(k)?;
+        let points = self.blocks.get(b.start..b.start + b.points)?;
+        let scalars = self
+            .blocks
+            .get(b.start + b.points..b.start + b.points + b.scalars)?;
+        Some((points, scalars))
+    }
+
+    /// The block that a point block shares its unknowns with: the representative of its
+    /// coincident points when it was merged, else itself.
+    pub(crate) fn merged_into(&self, block: BlockId) -> BlockId {
+        match self.merged.binary_search_by_key(&block, |(b, _)| *b) {
+            Ok(k) => self.merged.get(k).map_or(block, |(_, r)| *r),
+            Err(_) => block,
+        }
+    }
+
     /// The block of point `index` of an entity.
     ///
     /// # Errors
     /// [`Error::UnknownEntity`] or [`Error::UnknownPoint`].
     pub fn point_block(&self, entity: EntityId, index: usize) -> Result<BlockId> {
-        let blocks = self
-            .layout
-            .get(&entity)
+        let (points, _) = self
+            .entity_blocks(entity)
             .ok_or(Error::UnknownEntity { entity })?;
-        blocks
-            .points
-            .get(index)
-            .copied()
-            .ok_or(Error::UnknownPoint {
-                entity,
-                index,
-                count: blocks.points.len(),
-            })
+        points.get(index).copied().ok_or(Error::UnknownPoint {
+            entity,
+            index,
+            count: points.len(),
+        })
     }
 
     /// The block of an entity's `index`-th scalar (a circle's radius).
     fn scalar_block(&self, entity: EntityId, index: usize) -> Result<BlockId> {
-        self.layout
-            .get(&entity)
-            .and_then(|b| b.scalars.get(index).copied())
+        self.entity_blocks(entity)
+            .and_then(|(_, scalars)| scalars.get(index).copied())
             .ok_or(Error::UnknownEntity { entity })
     }
 
@@ -212,8 +238,8 @@ impl ComponentProblem {
     }
 
     /// Maps terms to (block, coefficient), merging repeated blocks.
-    fn blocks_of(&self, terms: &ETerms) -> Result<(Vec<BlockId>, Vec<f64>)> {
-        let mut blocks: Vec<BlockId> = Vec::with_capacity(terms.len());
+    fn blocks_of(&self, terms: &ETerms) -> Result<(SmallVec<[BlockId; 8]>, Vec<f64>)> {
+        let mut blocks: SmallVec<[BlockId; 8]> = SmallVec::with_capacity(terms.len());
         let mut coeffs: Vec<f64> = Vec::with_capacity(terms.len());
         for (e, j, c) in terms {
             let b = self.point_block(*e, *j)?;
@@ -281,7 +307,7 @@ impl ComponentProblem {
                 if !residual.is_affine() && self.nonlinear.is_none() {
                     self.nonlinear = Some((owner, residual.name().to_owned()));
                 }
-                let mut blocks = Vec::with_capacity(slots.len());
+                let mut blocks: SmallVec<[BlockId; 8]> = SmallVec::with_capacity(slots.len());
                 let mut free = SmallVec::new();
                 for slot in slots {
                     let (block, new) = self.slot_block(owner, *slot)?;
@@ -383,12 +409,13 @@ pub(crate) fn build(
     let mut cp = ComponentProblem {
         problem: Problem::new(),
         component: component.clone(),
-        layout: FxHashMap::with_capacity_and_hasher(component.entities.len(), Default::default()),
+        layout: Vec::with_capacity(component.entities.len()),
+        blocks: Vec::new(),
         orientations: Vec::new(),
         nonlinear: None,
         free: Vec::new(),
         checks: Vec::new(),
-        merged: FxHashMap::default(),
+        merged: Vec::new(),
         merged_redundant: Vec::new(),
     };
     let mut entities: SmallVec<[&Entity; 16]> = SmallVec::with_capacity(component.entities.len());
@@ -402,11 +429,9 @@ pub(crate) fn build(
     }
     cp.problem
         .reserve(blocks_needed, unknowns_needed, compiled.len());
+    cp.blocks.reserve(blocks_needed);
     for (id, e) in component.entities.iter().zip(entities) {
-        let mut blocks = EntityBlocks {
-            points: Vec::with_capacity(e.points().len()),
-            scalars: Vec::new(),
-        };
+        let (start, points) = (cp.blocks.len(), e.points().len());
         for (j, p) in e.points().iter().enumerate() {
             let block = cp.problem.add_block(&[p.x, p.y])?;
             let weight = lookup.weight(*id, j);
@@ -416,25 +441,45 @@ pub(crate) fn build(
                     cp.problem.set_weight(Var::Unknown(unknown), weight)?;
                 }
             }
-            blocks.points.push(block);
+            cp.blocks.push(block);
         }
         for s in e.scalars() {
-            blocks.scalars.push(cp.problem.add_block(&[s])?);
+            let block = cp.problem.add_block(&[s])?;
+            cp.blocks.push(block);
         }
-        cp.layout.insert(*id, blocks);
+        let scalars = cp.blocks.len() - start - points;
+        cp.layout.push((
+            *id,
+            EntityBlocks {
+                start,
+                points,
+                scalars,
+            },
+        ));
     }
+    // Components list their entities by id already; sorting keeps the lookups right if not.
+    if !cp.layout.is_sorted_by_key(|(id, _)| *id) {
+        cp.layout.sort_by_key(|(id, _)| *id);
+    }
+    // Flags per entity block (block k at index k, see `ComponentProblem::blocks`).
+    let flag = |set: &mut [bool], b: BlockId| {
+        if let Some(f) = set.get_mut(b.index()) {
+            *f = true;
+        }
+    };
+    let is = |set: &[bool], b: BlockId| set.get(b.index()).copied().unwrap_or(false);
 
     // Points held by `Fixed` (one block each).
-    let mut fixed: FxHashSet<BlockId> = FxHashSet::default();
+    let mut fixed = vec![false; cp.blocks.len()];
     for (_, pieces) in compiled {
         for piece in pieces {
             match piece {
-                Piece::FixPoint(e, j) => {
-                    fixed.insert(cp.point_block(*e, *j)?);
-                }
+                Piece::FixPoint(e, j) => flag(&mut fixed, cp.point_block(*e, *j)?),
                 Piece::FixEntity(e) => {
-                    if let Some(b) = cp.layout.get(e) {
-                        fixed.extend(b.points.iter().copied());
+                    if let Some((points, _)) = cp.entity_blocks(*e) {
+                        for b in points {
+                            flag(&mut fixed, *b);
+                        }
                     }
                 }
                 _ => {}
@@ -443,7 +488,7 @@ pub(crate) fn build(
     }
 
     // Eliminations first.
-    let (mut targets, mut bases): (FxHashSet<BlockId>, FxHashSet<BlockId>) = Default::default();
+    let (mut targets, mut bases) = (vec![false; cp.blocks.len()], vec![false; cp.blocks.len()]);
     let mut rows: Vec<(ConstraintId, Piece)> = Vec::new();
     for (id, pieces) in compiled {
         for piece in pieces {
@@ -462,10 +507,10 @@ pub(crate) fn build(
                 Some(base) => Some(cp.point_block(*curve, *base)?),
                 None => None,
             };
-            let usable = !fixed.contains(&tb)
-                && !targets.contains(&tb)
-                && !bases.contains(&tb)
-                && bb.is_none_or(|bb| !targets.contains(&bb));
+            let usable = !is(&fixed, tb)
+                && !is(&targets, tb)
+                && !is(&bases, tb)
+                && bb.is_none_or(|bb| !is(&targets, bb));
             if !usable {
                 rows.push((*id, (**fallback).clone()));
                 continue;
@@ -505,10 +550,10 @@ pub(crate) fn build(
                 }
             };
             cp.problem.set_bounds(Var::Aux(t), 0.0, f64::INFINITY)?;
-            targets.insert(tb);
+            flag(&mut targets, tb);
             let mut terms = ETerms::new();
             if let (Some(bb), Some(base)) = (bb, base) {
-                bases.insert(bb);
+                flag(&mut bases, bb);
                 terms.push((*curve, *base, -1.0));
             }
             terms.push((*curve, *target, 1.0));
@@ -523,10 +568,12 @@ pub(crate) fn build(
             let list: Vec<(EntityId, usize)> = match piece {
                 Piece::FixPoint(e, j) => vec![(*e, *j)],
                 Piece::FixEntity(e) => {
-                    if let Some(b) = cp.layout.get(e) {
-                        for s in b.scalars.clone() {
-                            cp.problem.fix_block(s)?;
-                        }
+                    let scalars: SmallVec<[BlockId; 2]> = cp
+                        .entity_blocks(*e)
+                        .map(|(_, s)| s.iter().copied().collect())
+                        .unwrap_or_default();
+                    for s in scalars {
+                        cp.problem.fix_block(s)?;
                     }
                     let n = lookup.lookup(*e)?.points().len();
                     (0..n).map(|j| (*e, j)).collect()
@@ -535,7 +582,7 @@ pub(crate) fn build(
             };
             for (e, j) in list {
                 let b = cp.point_block(e, j)?;
-                if targets.contains(&b) {
+                if is(&targets, b) {
                     let p: Point2<f64> = lookup.lookup(e)?.points()[j];
                     let mut terms = ETerms::new();
                     terms.push((e, j, 1.0));
@@ -562,38 +609,43 @@ pub(crate) fn build(
             (*id, pieces)
         })
         .collect();
+    // Fixed points and elimination bases stay the representatives of their classes.
+    let anchored: Vec<bool> = fixed.iter().zip(&bases).map(|(f, b)| *f || *b).collect();
     let merges = super::merge::plan(
         &lists,
+        &cp.blocks,
         |e, j| cp.point_block(e, j),
-        &fixed,
+        &anchored,
         &targets,
-        &bases,
     )?;
-    let mut groups: FxHashMap<BlockId, Vec<BlockId>> = FxHashMap::default();
-    for (b, r) in &merges.into {
-        groups.entry(*r).or_default().push(*b);
-    }
-    let mut representatives: Vec<_> = groups.into_iter().collect();
-    representatives.sort_unstable_by_key(|(r, _)| *r);
-    for (r, members) in &representatives {
+    // The members of each class by increasing representative, then block (`into` is by
+    // increasing block).
+    let mut by_representative: Vec<(BlockId, BlockId)> =
+        merges.into.iter().map(|(b, r)| (*r, *b)).collect();
+    by_representative.sort_unstable();
+    let mut us: SmallVec<[camber_solve::UnknownId; 8]> = SmallVec::new();
+    for group in by_representative.chunk_by(|a, b| a.0 == b.0) {
+        let Some((r, _)) = group.first() else {
+            continue;
+        };
         for k in 0..2 {
             let rep = cp.problem.unknown(*r, k)?;
-            let mut us = Vec::with_capacity(members.len());
-            for m in members {
+            us.clear();
+            for (_, m) in group {
                 us.push(cp.problem.unknown(*m, k)?);
             }
             cp.problem.merge_group(rep, &us)?;
         }
-        for m in members {
-            cp.merged.insert(*m, *r);
-        }
     }
+    cp.merged = merges.into;
     cp.merged_redundant = merges.redundant;
 
     let mut later: Vec<(ConstraintId, &Piece)> = Vec::new();
+    let mut replaced = merges.replaced.iter().peekable();
     for (ci, (id, pieces)) in compiled.iter().enumerate() {
         for (pi, piece) in pieces.iter().enumerate() {
-            if merges.replaced.contains(&(ci, pi)) {
+            // `replaced` is in increasing order, as this walk.
+            if replaced.next_if(|at| **at == (ci, pi)).is_some() {
                 continue;
             }
             if reads_other_free(piece) {
@@ -638,16 +690,16 @@ impl ComponentProblem {
         let mut out = Vec::with_capacity(self.component.entities.len());
         for id in &self.component.entities {
             let e = lookup.lookup(*id)?;
-            let Some(blocks) = self.layout.get(id) else {
+            let Some((points, scalar_blocks)) = self.entity_blocks(*id) else {
                 continue;
             };
-            let mut pts = Vec::with_capacity(blocks.points.len());
-            for b in &blocks.points {
+            let mut pts = Vec::with_capacity(points.len());
+            for b in points {
                 let i = self.problem.unknown(*b, 0)?.index();
                 pts.push(Point2::new(x[i], x[i + 1]));
             }
-            let mut scalars = Vec::with_capacity(blocks.scalars.len());
-            for b in &blocks.scalars {
+            let mut scalars = Vec::with_capacity(scalar_blocks.len());
+            for b in scalar_blocks {
                 scalars.push(x[self.problem.unknown(*b, 0)?.index()]);
             }
             out.push((*id, e.with_points(&pts, &scalars)?));
@@ -680,17 +732,17 @@ impl ComponentProblem {
         };
         let mut out = Vec::new();
         for id in &self.component.entities {
-            let Some(blocks) = self.layout.get(id) else {
+            let Some((point_blocks, scalar_blocks)) = self.entity_blocks(*id) else {
                 continue;
             };
             let mut points = Vec::new();
-            for (i, b) in blocks.points.iter().enumerate() {
+            for (i, b) in point_blocks.iter().enumerate() {
                 if moves(*b, 0)? || moves(*b, 1)? {
                     points.push(i);
                 }
             }
             let mut scalars = Vec::new();
-            for (i, b) in blocks.scalars.iter().enumerate() {
+            for (i, b) in scalar_blocks.iter().enumerate() {
                 if moves(*b, 0)? {
                     scalars.push(i);
                 }

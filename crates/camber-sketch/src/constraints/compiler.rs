@@ -143,7 +143,11 @@ impl<'a> Compiler<'a> {
     /// The terms of C⁽ᵏ⁾(u) of a curve, k = `order` ∈ {0, 1}.
     pub(crate) fn curve_terms(&self, curve: EntityId, u: f64, order: usize) -> Result<ETerms> {
         finite("parameter", u)?;
-        let t = self.entity(curve)?.coefficients(curve, u, order)?;
+        let e = self.entity(curve)?;
+        let t = match end_terms(e, u, order.min(1)) {
+            Some(t) => t,
+            None => e.coefficients(curve, u, order)?,
+        };
         let mut out = ETerms::new();
         with_entity(curve, &t, 1.0, &mut out);
         Ok(out)
@@ -161,6 +165,11 @@ impl<'a> Compiler<'a> {
             return self.curve_terms(curve, u, order);
         }
         finite("parameter", u)?;
+        if let Some(t) = end_terms(self.entity(curve)?, u, order) {
+            let mut out = ETerms::new();
+            with_entity(curve, &t, 1.0, &mut out);
+            return Ok(out);
+        }
         let (lo, hi) = self.domain(curve)?;
         if u < lo || u > hi {
             return Err(Error::ParameterOutsideDomain {
@@ -246,6 +255,12 @@ impl<'a> Compiler<'a> {
             }
         })
     }
+}
+
+/// The terms of C⁽ᵏ⁾(u) in closed form when u is an end of the domain of a clamped
+/// polynomial curve ([`crate::curve_ends`]); `None` where the general evaluation is needed.
+fn end_terms(e: &Entity, u: f64, order: usize) -> Option<Terms> {
+    crate::curve_ends::end_derivative(e, crate::curve_ends::which_end(e, u)?, order)
 }
 
 fn with_entity(id: EntityId, terms: &Terms, sign: f64, out: &mut ETerms) {

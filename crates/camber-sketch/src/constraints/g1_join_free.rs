@@ -1,8 +1,9 @@
 //! `g1_join_free`: the end of one curve is the start of the next and the tangents there are
 //! parallel and point the same way, the direction itself being free:
 //! P_end(first) − P_start(second) = 0 (two affine rows, or a merged unknown) and
-//! cross(C₁′(b₁), C₂′(a₂))/(|C₁′||C₂′|) = 0 (one nonlinear row), with C₁′·C₂′ > 0 checked after
-//! every solve. [`G2Join`](super::G2Join) adds equal curvature. File form:
+//! the angle from C₁′(b₁) to C₂′(a₂), atan2(cross(C₁′, C₂′), C₁′·C₂′) = 0 (one nonlinear row, in
+//! radians; its gradient vanishes only with a tangent, unlike the sine's at a right angle, see
+//! [`Angle`](super::Angle)), with C₁′·C₂′ > 0 checked after every solve. [`G2Join`](super::G2Join) adds equal curvature. File form:
 //! `{"kind": "g1_join_free", "first": 0, "second": 1}`.
 
 use std::sync::Arc;
@@ -21,7 +22,8 @@ use crate::curve_eval::CurveBasis;
 use crate::errors::Result;
 use crate::ids::{EntityId, PointRef};
 use crate::lookup::EntityLookup;
-use crate::residuals::curve::{cross, dot, Blocks, Param};
+use super::angle::angle_between;
+use crate::residuals::curve::{Blocks, Param};
 
 /// The end of `first` coincides with the start of `second` and their tangents there are
 /// parallel and point the same way, the direction being free (three rows).
@@ -34,8 +36,8 @@ pub struct G1JoinFree {
     pub second: EntityId,
 }
 
-/// cross(C₁′(u₁), C₂′(u₂))/(|C₁′||C₂′|) = 0: the tangents of two curves at fixed parameters
-/// are parallel (blocks: the first curve's control points, then the second's).
+/// atan2(cross(C₁′(u₁), C₂′(u₂)), C₁′·C₂′) = 0: the tangents of two curves at fixed parameters
+/// point the same way (blocks: the first curve's control points, then the second's).
 #[derive(Debug, Clone, PartialEq)]
 pub struct TangentsParallel {
     first: (CurveBasis, f64),
@@ -94,88 +96,11 @@ impl Residual for TangentsParallel {
     }
 }
 
-/// f(t₁, t₂) = cross(t₁, t₂)/(|t₁||t₂|) of the two tangents (inputs t₁ₓ, t₁ᵧ, t₂ₓ, t₂ᵧ), with
-/// its derivatives by hand. With y = (a, b), c = cross(a, b), s = (|a|²|b|²)^(−½) and
-/// q = (a/|a|², b/|b|²): ∇f = s·(∇c − c·q) and
-/// ∇²f = s·(∇²c − q∇cᵀ − ∇c qᵀ + c·(q qᵀ − D)), D = diag(I/|a|² − 2aaᵀ/|a|⁴, I/|b|² − 2bbᵀ/|b|⁴),
-/// where ∇c = (b_y, −b_x, −a_y, a_x) and ∇²c pairs a_x with b_y (+1) and a_y with b_x (−1).
+/// f(t₁, t₂) = atan2(cross(t₁, t₂), t₁·t₂), the angle from t₁ to t₂, of the two tangents
+/// (inputs t₁ₓ, t₁ᵧ, t₂ₓ, t₂ᵧ).
 impl Outer for TangentsParallel {
     fn outer<T: Scalar>(&self, y: &[T], out: &mut [T]) {
-        let (t1, t2) = ([y[0], y[1]], [y[2], y[3]]);
-        out[0] = cross(t1, t2) / (dot(t1, t1) * dot(t2, t2)).sqrt();
-    }
-
-    fn first_derivatives(&self, y: &[f64], values: &mut [f64], jacobian: &mut [f64]) -> bool {
-        let Some(p) = ParallelParts::at(y) else {
-            return false;
-        };
-        values[0] = p.c * p.s;
-        for (k, d) in jacobian.iter_mut().enumerate().take(4) {
-            *d = p.s * (p.dc[k] - p.c * p.q[k]);
-        }
-        true
-    }
-
-    fn weighted_second_derivatives(
-        &self,
-        y: &[f64],
-        weights: &[f64],
-        gradient: &mut [f64],
-        hessian: &mut [f64],
-    ) -> bool {
-        let Some(p) = ParallelParts::at(y) else {
-            return false;
-        };
-        let w = weights[0];
-        let (a, b) = ([y[0], y[1]], [y[2], y[3]]);
-        let (aa, bb) = (dot(a, a), dot(b, b));
-        for k in 0..4 {
-            gradient[k] = w * p.s * (p.dc[k] - p.c * p.q[k]);
-            for l in 0..4 {
-                let d2c = match (k, l) {
-                    (0, 3) | (3, 0) => 1.0,
-                    (1, 2) | (2, 1) => -1.0,
-                    _ => 0.0,
-                };
-                let d = match (k / 2, l / 2) {
-                    (0, 0) => f64::from(u8::from(k == l)) / aa - 2.0 * a[k] * a[l] / (aa * aa),
-                    (1, 1) => {
-                        f64::from(u8::from(k == l)) / bb - 2.0 * b[k - 2] * b[l - 2] / (bb * bb)
-                    }
-                    _ => 0.0,
-                };
-                hessian[k * 4 + l] = w
-                    * p.s
-                    * (d2c - p.q[k] * p.dc[l] - p.dc[k] * p.q[l] + p.c * (p.q[k] * p.q[l] - d));
-            }
-        }
-        true
-    }
-}
-
-/// The shared pieces of the hand-written derivatives of [`TangentsParallel`]'s f.
-struct ParallelParts {
-    c: f64,
-    s: f64,
-    dc: [f64; 4],
-    q: [f64; 4],
-}
-
-impl ParallelParts {
-    /// `None` for a zero tangent (f is not differentiable there; the dual path says what it
-    /// says).
-    fn at(y: &[f64]) -> Option<Self> {
-        let (a, b) = ([*y.first()?, *y.get(1)?], [*y.get(2)?, *y.get(3)?]);
-        let (aa, bb) = (dot(a, a), dot(b, b));
-        if aa <= 0.0 || bb <= 0.0 || !(aa * bb).is_finite() {
-            return None;
-        }
-        Some(Self {
-            c: cross(a, b),
-            s: 1.0 / (aa * bb).sqrt(),
-            dc: [b[1], -b[0], -a[1], a[0]],
-            q: [a[0] / aa, a[1] / aa, b[0] / bb, b[1] / bb],
-        })
+        out[0] = angle_between([y[0], y[1]], [y[2], y[3]], 1.0);
     }
 }
 

@@ -79,6 +79,19 @@ impl Residual for PointCombination {
     fn is_affine(&self) -> bool {
         true
     }
+    /// ∂/∂Pⱼ = cⱼ·I (two columns per block).
+    fn jacobian_by_hand(&self, x: &[&[f64]], out: &mut [f64], jac: &mut [f64]) -> bool {
+        let ncols = 2 * self.coeffs.len();
+        if x.len() != self.coeffs.len() || jac.len() != 2 * ncols {
+            return false;
+        }
+        self.eval(x, out);
+        for (j, c) in self.coeffs.iter().enumerate() {
+            jac[2 * j] = *c;
+            jac[ncols + 2 * j + 1] = *c;
+        }
+        true
+    }
 }
 
 /// cross(Σ cⱼ·Pⱼ, d) = 0: the combination (a tangent C′(u)) is parallel to the fixed direction
@@ -126,6 +139,18 @@ impl Residual for DirectionCross {
         out[0] = v[0] * cst::<T>(self.direction[1]) - v[1] * cst::<T>(self.direction[0]);
     }
     fn is_affine(&self) -> bool {
+        true
+    }
+    /// ∂/∂Pⱼ = cⱼ·(d_y, −d_x).
+    fn jacobian_by_hand(&self, x: &[&[f64]], out: &mut [f64], jac: &mut [f64]) -> bool {
+        if x.len() != self.coeffs.len() || jac.len() != 2 * self.coeffs.len() {
+            return false;
+        }
+        self.eval(x, out);
+        for (j, c) in self.coeffs.iter().enumerate() {
+            jac[2 * j] = c * self.direction[1];
+            jac[2 * j + 1] = -(c * self.direction[0]);
+        }
         true
     }
 }
@@ -187,5 +212,49 @@ impl Residual for LineTangency {
     }
     fn is_affine(&self) -> bool {
         true
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used)] // a failed unwrap is a failed test
+
+    use super::*;
+    use camber_solve::DynResidual;
+
+    /// The Jacobian by hand is the one automatic differentiation gives
+    /// ([`DynResidual::jacobian`] does not take the shortcut), values to the bit, and the shortcut
+    /// of [`camber_solve::autodiff::jacobian_active`] returns it.
+    #[test]
+    fn jacobians_by_hand_are_those_of_autodiff() {
+        let blocks = [[0.3, -1.7], [2.0, 0.125], [-4.5, 3.3]];
+        let x: Vec<&[f64]> = blocks.iter().map(|b| &b[..]).collect();
+        let coeffs = vec![3.0, -6.000_000_1, 1.0 / 3.0];
+        let check = |r: &dyn DynResidual, by_hand: &dyn Fn(&mut [f64], &mut [f64]) -> bool| {
+            let dim = r.dim();
+            let (mut g, mut jac) = (vec![0.0; dim], vec![0.0; dim * 6]);
+            r.jacobian(&x, &mut g, &mut jac).unwrap();
+            let (mut g2, mut jac2) = (vec![0.0; dim], vec![0.0; dim * 6]);
+            assert!(by_hand(&mut g2, &mut jac2));
+            assert_eq!(
+                g.iter().map(|v| v.to_bits()).collect::<Vec<_>>(),
+                g2.iter().map(|v| v.to_bits()).collect::<Vec<_>>()
+            );
+            // Equal as numbers (autodiff writes −0 where a negative coefficient meets a
+            // zero seed).
+            assert_eq!(jac, jac2);
+            let (mut g3, mut jac3) = (vec![0.0; dim], vec![7.0; dim * 6]);
+            r.jacobian_active(&x, &[true; 3], &mut g3, &mut jac3)
+                .unwrap();
+            assert_eq!(jac3, jac);
+            assert!(jac.iter().any(|v| *v != 0.0));
+        };
+        let p = PointCombination::new("c", coeffs.clone(), [0.5, -2.0]);
+        check(&p, &|g, j| Residual::jacobian_by_hand(&p, &x, g, j));
+        let d = DirectionCross::new("t", coeffs, [0.6, -0.8]);
+        check(&d, &|g, j| Residual::jacobian_by_hand(&d, &x, g, j));
+        // Blocks that do not match the coefficients: left to automatic differentiation.
+        let (mut g, mut j) = ([0.0; 2], [0.0; 8]);
+        assert!(!Residual::jacobian_by_hand(&p, &x[..2], &mut g, &mut j));
     }
 }
