@@ -22,8 +22,8 @@ use crate::curve_eval::CurveBasis;
 use crate::errors::Result;
 use crate::ids::{EntityId, PointRef};
 use crate::lookup::EntityLookup;
-use super::angle::angle_between;
-use crate::residuals::curve::{Blocks, Param};
+use super::angle::{angle_between, angle_of};
+use crate::residuals::curve::{cross, dot, Blocks, Param};
 
 /// The end of `first` coincides with the start of `second` and their tangents there are
 /// parallel and point the same way, the direction being free (three rows).
@@ -96,11 +96,93 @@ impl Residual for TangentsParallel {
     }
 }
 
-/// f(t₁, t₂) = atan2(cross(t₁, t₂), t₁·t₂), the angle from t₁ to t₂, of the two tangents
-/// (inputs t₁ₓ, t₁ᵧ, t₂ₓ, t₂ᵧ).
+/// f(t₁, t₂) = θ = atan2(cross(t₁, t₂), t₁·t₂), the angle from t₁ to t₂ (inputs t₁ₓ, t₁ᵧ, t₂ₓ,
+/// t₂ᵧ), with its derivatives by hand. With y = (a, b), c = cross(a, b), d = a·b and
+/// r² = c² + d² = |a|²|b|²: ∇θ = u/r² with u = d∇c − c∇d, and
+/// ∇²θ = (d∇²c − c∇²d)/r² − (u vᵀ + v uᵀ)/r⁴ with v = c∇c + d∇d, where ∇c = (b_y, −b_x, −a_y, a_x),
+/// ∇d = (b_x, b_y, a_x, a_y), ∇²c pairs a_x with b_y (+1) and a_y with b_x (−1), and ∇²d pairs
+/// a_x with b_x and a_y with b_y (+1). (The mixed terms ∇c∇dᵀ − ∇d∇cᵀ of ∇u are antisymmetric
+/// and cancel in the symmetric Hessian.)
 impl Outer for TangentsParallel {
     fn outer<T: Scalar>(&self, y: &[T], out: &mut [T]) {
         out[0] = angle_between([y[0], y[1]], [y[2], y[3]], 1.0);
+    }
+
+    fn first_derivatives(&self, y: &[f64], values: &mut [f64], jacobian: &mut [f64]) -> bool {
+        let Some(p) = AngleParts::at(y) else {
+            return false;
+        };
+        values[0] = p.theta;
+        for (k, d) in jacobian.iter_mut().enumerate().take(4) {
+            *d = p.u[k] / p.r2;
+        }
+        true
+    }
+
+    fn weighted_second_derivatives(
+        &self,
+        y: &[f64],
+        weights: &[f64],
+        gradient: &mut [f64],
+        hessian: &mut [f64],
+    ) -> bool {
+        let Some(p) = AngleParts::at(y) else {
+            return false;
+        };
+        let w = weights[0];
+        let r4 = p.r2 * p.r2;
+        for k in 0..4 {
+            gradient[k] = w * p.u[k] / p.r2;
+            for l in 0..4 {
+                let d2c = match (k, l) {
+                    (0, 3) | (3, 0) => 1.0,
+                    (1, 2) | (2, 1) => -1.0,
+                    _ => 0.0,
+                };
+                let d2d = match (k, l) {
+                    (0, 2) | (2, 0) | (1, 3) | (3, 1) => 1.0,
+                    _ => 0.0,
+                };
+                hessian[k * 4 + l] = w
+                    * ((p.d * d2c - p.c * d2d) / p.r2
+                        - (p.u[k] * p.v[l] + p.v[k] * p.u[l]) / r4);
+            }
+        }
+        true
+    }
+}
+
+/// The shared pieces of the hand-written derivatives of [`TangentsParallel`]'s f.
+struct AngleParts {
+    theta: f64,
+    c: f64,
+    d: f64,
+    r2: f64,
+    /// d∇c − c∇d.
+    u: [f64; 4],
+    /// c∇c + d∇d.
+    v: [f64; 4],
+}
+
+impl AngleParts {
+    /// `None` for a zero tangent (θ is not defined there; the dual path says what it says).
+    fn at(y: &[f64]) -> Option<Self> {
+        let (a, b) = ([*y.first()?, *y.get(1)?], [*y.get(2)?, *y.get(3)?]);
+        let (c, d) = (cross(a, b), dot(a, b));
+        let r2 = c * c + d * d;
+        if r2 <= 0.0 || !r2.is_finite() {
+            return None;
+        }
+        let dc = [b[1], -b[0], -a[1], a[0]];
+        let dd = [b[0], b[1], a[0], a[1]];
+        Some(Self {
+            theta: angle_of(c, d),
+            c,
+            d,
+            r2,
+            u: std::array::from_fn(|k| d * dc[k] - c * dd[k]),
+            v: std::array::from_fn(|k| c * dc[k] + d * dd[k]),
+        })
     }
 }
 
