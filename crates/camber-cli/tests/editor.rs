@@ -851,6 +851,17 @@ fn every_move_answer_carries_the_residuals_of_the_geometry_it_draws() {
         assert!(moved["residual"].as_f64().unwrap() < 1e-9, "{moved}");
         last = moved;
     }
+    // Asked for the whole state during the drag, the component shows the drag's residual
+    // and its worst constraint, not the open join from before the drag.
+    let during = state(&mut ed);
+    let component = &during["components"][0];
+    assert!(during["dragging"].is_object(), "{during}");
+    assert_eq!(
+        component["residual"].as_f64().unwrap().to_bits(),
+        last["residual"].as_f64().unwrap().to_bits(),
+        "{component}"
+    );
+    assert_eq!(component["worst"], last["worst"], "{component}");
     // Ending commits the same state: the panel's component residual is the last answer's.
     let (status, ended) = post(&mut ed, "/api/drag/end", json!({}));
     assert_eq!(status, 200, "{ended}");

@@ -42,6 +42,9 @@ use crate::hermite_chain::MapRow;
 /// The basis values of one evaluation: rows k = 0 … order of p + 1 derivatives dᵏRⱼ/duᵏ.
 type BasisRows<T> = SmallVec<[T; 32]>;
 
+/// Per block read, the weights of C, C′, …, C⁗ at one parameter ([`CurveBasis::block_weights`]).
+pub(crate) type BlockWeights = SmallVec<[(usize, [f64; 5]); 8]>;
+
 /// Degree, knots and weights of a curve entity, for evaluation at generic scalars.
 ///
 /// ```
@@ -243,6 +246,53 @@ impl CurveBasis {
             }
         }
         out
+    }
+
+    /// The weights of C⁽ᵏ⁾(u) = Σⱼ aⱼₖ·Xⱼ for k = 0 … `order` (at most 4) in plain floats, one
+    /// `(j, [aⱼ₀, …, aⱼ₄])` per block j that the evaluation reads with a non-zero weight (the
+    /// span's control points, or the blocks they are mapped from), and whether C moves with u
+    /// there: false for a basis made by [`CurveBasis::at`] (which ignores u) and outside the
+    /// domain (where u is clamped). The derivatives in u of the evaluation at a free parameter
+    /// are read from the higher orders: ∂C⁽ᵏ⁾/∂u = C⁽ᵏ⁺¹⁾.
+    pub(crate) fn block_weights(&self, u: f64, order: usize) -> (BlockWeights, bool) {
+        let mut out = BlockWeights::new();
+        if let Some(f) = &self.fixed {
+            for (j, c) in f.coefficients.iter().enumerate() {
+                out.push((j, [c[0], c[1], c[2], 0.0, 0.0]));
+            }
+            return (out, false);
+        }
+        let order = order.min(4);
+        let Some((first, rows)) = self.basis_rows(u, order) else {
+            return (out, false);
+        };
+        let (a, b) = self.domain();
+        let moves = (a..=b).contains(&u);
+        let w = self.degree + 1;
+        for r in 0..w {
+            let mut c = [0.0; 5];
+            for (k, ck) in c.iter_mut().enumerate().take(order + 1) {
+                *ck = rows[k * w + r];
+            }
+            match self.map.as_deref() {
+                None => out.push((first + r, c)),
+                Some(map) => {
+                    for (j, m) in map.get(first + r).into_iter().flatten() {
+                        let k = match out.iter().position(|(q, _)| q == j) {
+                            Some(k) => k,
+                            None => {
+                                out.push((*j, [0.0; 5]));
+                                out.len() - 1
+                            }
+                        };
+                        for (acc, ck) in out[k].1.iter_mut().zip(c) {
+                            *acc += m * ck;
+                        }
+                    }
+                }
+            }
+        }
+        (out, moves)
     }
 
     /// The control points C(u) and C′(u) depend on at the parameter u (clamped to the domain):

@@ -160,8 +160,10 @@ const GAIN_MAX_ENTRIES: usize = 4096;
 /// factorization (refined solve, rows evaluated) before it is refused.
 #[derive(Debug)]
 struct AffineGain {
-    /// K, n × k, column-major.
+    /// K, n × k, row-major (row i gives Δzᵢ).
     k: Vec<f64>,
+    /// k, the number of selected rows (K's columns).
+    selected: usize,
     /// J_z, m × n, row-major.
     jacobian: Vec<f64>,
     /// z₀ and g(z₀).
@@ -172,28 +174,32 @@ struct AffineGain {
     x_ptr: Vec<usize>,
     x_terms: Vec<(usize, f64)>,
     x_const: Vec<f64>,
-    /// Scratch: z − z₀.
-    dz0: Vec<f64>,
 }
 
 impl AffineGain {
     /// The gain of `factorization` (k selected rows) over the linearization `lin`; `None` when
-    /// the component is too large for dense matrices.
+    /// no row is selected or the component is too large for dense matrices.
     fn of(
         factorization: &mut MinNormFactorization,
         lin: &camber_solve::Linearization,
     ) -> Result<Option<Self>> {
         let (m, n, k) = (lin.g.len(), lin.map.len(), factorization.rows());
-        if n.saturating_mul(k) > GAIN_MAX_ENTRIES || m.saturating_mul(n) > GAIN_MAX_ENTRIES {
+        if k == 0
+            || n.saturating_mul(k) > GAIN_MAX_ENTRIES
+            || m.saturating_mul(n) > GAIN_MAX_ENTRIES
+        {
             return Ok(None);
         }
         // Column j: the refined step for g_sel = e_j (J·col = −e_j); the step is linear in g_sel.
         let mut gain = vec![0.0; n * k];
-        let mut unit = vec![0.0; k];
-        for (j, col) in gain.chunks_exact_mut(n).enumerate() {
+        let (mut unit, mut col) = (vec![0.0; k], vec![0.0; n]);
+        for j in 0..k {
             unit[j] = 1.0;
-            factorization.solve_refined(&unit, col, REFINEMENT_STEPS, 0.0)?;
+            factorization.solve_refined(&unit, &mut col, REFINEMENT_STEPS, 0.0)?;
             unit[j] = 0.0;
+            for (i, v) in col.iter().enumerate() {
+                gain[i * k + j] = *v;
+            }
         }
         let mut jacobian = vec![0.0; m * n];
         for (i, row) in jacobian.chunks_exact_mut(n).enumerate() {
@@ -212,45 +218,61 @@ impl AffineGain {
         }
         Ok(Some(Self {
             k: gain,
+            selected: k,
             jacobian,
             z0: lin.map.z0().to_vec(),
             g0: lin.g.clone(),
             x_ptr,
             x_terms,
             x_const,
-            dz0: vec![0.0; n],
         }))
     }
 
     /// Δz = K·g_sel, z_new = z + Δz, x_new = A·z_new + c and g_new = g(z₀) + J_z·(z_new − z₀).
+    ///
+    /// Each entry is one sum in a fixed order (z_new[i] = z[i] + Σⱼ K[i, j]·g_sel[j], j rising),
+    /// over rows stored contiguously, so the few dozen products of a small drag run without
+    /// scratch vectors or bounds checks.
     fn step(
-        &mut self,
+        &self,
         g_sel: &[f64],
         z: &[f64],
         z_new: &mut [f64],
         x_new: &mut [f64],
         g_new: &mut [f64],
     ) {
-        let n = z.len();
-        z_new.copy_from_slice(z);
-        for (col, s) in self.k.chunks_exact(n).zip(g_sel) {
-            for (zn, kv) in z_new.iter_mut().zip(col) {
-                *zn += kv * s;
+        for ((zn, z), row) in z_new
+            .iter_mut()
+            .zip(z)
+            .zip(self.k.chunks_exact(self.selected))
+        {
+            let mut acc = *z;
+            for (kv, s) in row.iter().zip(g_sel) {
+                acc += kv * s;
             }
+            *zn = acc;
         }
-        for (i, x) in x_new.iter_mut().enumerate() {
-            let terms = &self.x_terms[self.x_ptr[i]..self.x_ptr[i + 1]];
-            *x = self.x_const[i] + terms.iter().map(|(k, a)| a * z_new[*k]).sum::<f64>();
+        for ((x, c), ends) in x_new
+            .iter_mut()
+            .zip(&self.x_const)
+            .zip(self.x_ptr.windows(2))
+        {
+            let terms = &self.x_terms[ends[0]..ends[1]];
+            *x = c + terms.iter().map(|(k, a)| a * z_new[*k]).sum::<f64>();
         }
-        for ((d, zn), z0) in self.dz0.iter_mut().zip(&*z_new).zip(&self.z0) {
-            *d = zn - z0;
-        }
+        let n = z_new.len();
         for ((gn, g0), row) in g_new
             .iter_mut()
             .zip(&self.g0)
             .zip(self.jacobian.chunks_exact(n))
         {
-            *gn = g0 + row.iter().zip(&self.dz0).map(|(a, b)| a * b).sum::<f64>();
+            *gn = g0
+                + row
+                    .iter()
+                    .zip(&*z_new)
+                    .zip(&self.z0)
+                    .map(|((a, zn), z0)| a * (zn - z0))
+                    .sum::<f64>();
         }
     }
 }
@@ -520,7 +542,7 @@ impl Sketch {
         };
         let block = cp.point_block(entity, index)?;
         // A point merged into a coincident one moves with that one's unknowns.
-        let block = cp.merged.get(&block).copied().unwrap_or(block);
+        let block = cp.merged_into(block);
         for k in 0..2 {
             let u = cp.problem.unknown(block, k)?;
             if !matches!(cp.problem.binding(u)?, camber_solve::Binding::Free) {
@@ -651,7 +673,7 @@ impl AffineDrag {
         for (k, u) in self.mix.iter().enumerate() {
             self.g_sel[k0 + k] = u[0] * pin_now[0] + u[1] * pin_now[1];
         }
-        if let Some(gain) = self.gain.as_mut() {
+        if let Some(gain) = self.gain.as_ref() {
             gain.step(
                 &self.g_sel,
                 &self.z,

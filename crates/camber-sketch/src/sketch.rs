@@ -701,11 +701,14 @@ impl Sketch {
         comp: &Component,
         pin: Option<PointRef>,
     ) -> Result<ComponentProblem> {
+        // The component's entities, found by binary search in a short list instead of the
+        // sketch's map at every one of the many lookups below.
+        let lookup = crate::lookup::ComponentEntities::new(self, &comp.entities);
         let mut compiled = Vec::with_capacity(comp.constraints.len());
         for id in &comp.constraints {
-            let pieces = self.constraint(*id)?.compile(self)?;
+            let pieces = self.constraint(*id)?.compile(&lookup)?;
             let pieces = if self.priority(*id) > 0 {
-                crate::component::piece::as_rows(self, pieces)?
+                crate::component::piece::as_rows(&lookup, pieces)?
             } else {
                 pieces
             };
@@ -717,7 +720,7 @@ impl Sketch {
             .copied()
             .filter(|id| self.priority(*id) > 0)
             .collect();
-        let mut cp = build(self, comp, &compiled, &relaxable, pin)?;
+        let mut cp = build(&lookup, comp, &compiled, &relaxable, pin)?;
         if !relaxable.is_empty() && pin.is_some() {
             // The cursor is a wish below every tier: the constraints are met first, the
             // dragged point then comes as close to it as they allow.

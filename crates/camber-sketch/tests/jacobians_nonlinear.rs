@@ -387,3 +387,48 @@ fn arc_length_of_a_parabola_matches_its_closed_form() {
         r.integral(&refs) - exact
     );
 }
+
+/// The rule on a rational curve and on a Hermite curve (whose control points are a map of its
+/// blocks), against closed forms: the quarter circle of radius 2 as a quadratic NURBS is π long,
+/// and a Hermite segment from (0, 0) to (3, 0) with tangents (3, 0) at both ends is the
+/// straight segment traversed at constant speed, 3 long.
+#[test]
+fn arc_length_of_a_rational_and_a_hermite_curve_match_their_closed_forms() {
+    use camber_sketch::constraints::arc_length::LengthOf;
+    let h = std::f64::consts::FRAC_1_SQRT_2;
+    let quarter = Entity::Nurbs(
+        camber_geom::NurbsCurve2::try_new(
+            2,
+            camber_geom::KnotVector::bezier(2),
+            vec![
+                Point2::new(2.0, 0.0),
+                Point2::new(2.0, 2.0),
+                Point2::new(0.0, 2.0),
+            ],
+            vec![1.0, h, 1.0],
+        )
+        .unwrap(),
+    );
+    let b = CurveBasis::of(&quarter).unwrap();
+    let pts = [[2.0, 0.0], [2.0, 2.0], [0.0, 2.0]];
+    let refs: Vec<&[f64]> = pts.iter().map(|p| &p[..]).collect();
+    let r = LengthOf::new(b, &[0.0, 1.0], &refs, 1.0);
+    let err = r.integral(&refs) - std::f64::consts::PI;
+    assert!(err.abs() < 1e-13, "quarter circle: {err}");
+
+    let segment = Entity::Hermite(
+        camber_sketch::hermite_chain::HermiteChain::try_new(
+            vec![Point2::new(0.0, 0.0), Point2::new(3.0, 0.0)],
+            vec![nalgebra::Vector2::new(3.0, 0.0); 2],
+            vec![],
+        )
+        .unwrap(),
+    );
+    let (a, z) = segment.domain().unwrap();
+    let b = CurveBasis::of(&segment).unwrap();
+    let blocks: Vec<[f64; 2]> = segment.points().iter().map(|p| [p.x, p.y]).collect();
+    let refs: Vec<&[f64]> = blocks.iter().map(|p| &p[..]).collect();
+    let r = LengthOf::new(b, &[a, z], &refs, 1.0);
+    let err = r.integral(&refs) - 3.0;
+    assert!(err.abs() < 1e-13, "Hermite segment: {err}");
+}

@@ -118,7 +118,8 @@ struct Out<'a> {
 /// (`DualSVec64<k>`, k ≤ 8): a curve contact reading seven control points and a free parameter
 /// (15 active columns) takes two passes, where one pass per block would take eight, each
 /// repeating the basis evaluation. When `active` is all true and every block fits one pass this
-/// is the per-block seeding of [`JacobianMode::PerBlock`] with fewer passes.
+/// is the per-block seeding of [`JacobianMode::PerBlock`] with fewer passes. A residual with a
+/// cheaper exact form ([`Residual::structured_jacobian`]) gives it instead.
 ///
 /// ```
 /// use camber_solve::{autodiff::jacobian_active, Residual, Scalar};
@@ -159,10 +160,10 @@ pub fn jacobian_active<R: Residual>(
             });
         }
     }
-    jac.fill(0.0);
-    if residual.jacobian_by_hand(x, values, jac) {
+    if residual.structured_jacobian(x, active, values, jac) {
         return Ok(());
     }
+    jac.fill(0.0);
     let mut needed: smallvec::SmallVec<[bool; 16]> = active.iter().copied().collect();
     residual.depends_on(x, &mut needed);
     let mut columns: smallvec::SmallVec<[usize; 32]> = smallvec::SmallVec::new();

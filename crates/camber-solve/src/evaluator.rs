@@ -36,11 +36,12 @@ pub(crate) struct Evaluator {
     /// The compressed forms of J and H, rebuilt only when their patterns change.
     jac_asm: Assembler,
     hess_asm: Assembler,
-    /// The local Jacobians of the affine residuals (constant: taken at the first
-    /// linearization, then only the values are evaluated), end to end, and where each
-    /// residual's starts (`usize::MAX` until taken, and for residuals that are not affine).
-    affine_jac: Vec<f64>,
-    affine_at: Vec<usize>,
+    /// The triplets of the affine residuals (constant, J_x and A both being: taken at the
+    /// first linearization, then only the values are evaluated), end to end, and where each
+    /// residual's run starts and ends (`None` until taken, and for residuals that are not
+    /// affine).
+    affine_triplets: Vec<(usize, usize, f64)>,
+    affine_at: Vec<Option<(usize, usize)>>,
 }
 
 impl Evaluator {
@@ -58,7 +59,8 @@ impl Evaluator {
             upper.push(hi);
         }
         let mut row_owner = Vec::with_capacity(problem.num_rows());
-        let mut block_moves = Vec::new();
+        let mut block_moves =
+            Vec::with_capacity(problem.residuals.iter().map(|rb| rb.blocks.len()).sum());
         for rb in &problem.residuals {
             row_owner.extend(std::iter::repeat_n(rb.owner, rb.residual.dim()));
             for b in &rb.blocks {
@@ -79,8 +81,8 @@ impl Evaluator {
             hess_triplets: Vec::new(),
             jac_asm: Assembler::default(),
             hess_asm: Assembler::default(),
-            affine_jac: Vec::new(),
-            affine_at: vec![usize::MAX; problem.residuals.len()],
+            affine_triplets: Vec::new(),
+            affine_at: vec![None; problem.residuals.len()],
         })
     }
 
@@ -143,35 +145,30 @@ impl Evaluator {
         for (r, rb) in problem.residuals.iter().enumerate() {
             let dim = rb.residual.dim();
             let slices = problem.gather(&self.x, &rb.blocks);
-            let ncols: usize = slices.iter().map(|s| s.len()).sum();
-            let size = dim * ncols;
             let out = &mut g[row0..row0 + dim];
             let moves = &self.block_moves[flags..flags + rb.blocks.len()];
             flags += rb.blocks.len();
-            let cached = self
+            if let Some(cached) = self
                 .affine_at
                 .get(r)
-                .and_then(|at| self.affine_jac.get(*at..at.saturating_add(size)));
-            self.jac.clear();
-            match cached {
-                Some(cached) => {
-                    // Affine: the Jacobian is the one taken before, only the values change.
-                    self.jac.extend_from_slice(cached);
-                    rb.residual.values(&slices, out)?;
-                }
-                None => {
-                    self.jac.resize(size, 0.0);
-                    rb.residual
-                        .jacobian_active(&slices, moves, out, &mut self.jac)?;
-                    if rb.residual.is_affine() {
-                        if let Some(at) = self.affine_at.get_mut(r) {
-                            *at = self.affine_jac.len();
-                            self.affine_jac.extend_from_slice(&self.jac);
-                        }
-                    }
-                }
+                .copied()
+                .flatten()
+                .and_then(|(a, b)| self.affine_triplets.get(a..b))
+            {
+                // Affine: the triplets are those taken before, only the values change.
+                rb.residual.values(&slices, out)?;
+                check_residual(rb, out)?;
+                self.triplets.extend_from_slice(cached);
+                row0 += dim;
+                continue;
             }
+            let ncols: usize = slices.iter().map(|s| s.len()).sum();
+            self.jac.clear();
+            self.jac.resize(dim * ncols, 0.0);
+            rb.residual
+                .jacobian_active(&slices, moves, out, &mut self.jac)?;
             check_residual(rb, out)?;
+            let first = self.triplets.len();
             let mut local = 0;
             for b in &rb.blocks {
                 let (start, len) = problem.block_range(*b)?;
@@ -185,6 +182,14 @@ impl Evaluator {
                         }
                     }
                     local += 1;
+                }
+            }
+            if rb.residual.is_affine() {
+                if let Some(at) = self.affine_at.get_mut(r) {
+                    let start = self.affine_triplets.len();
+                    self.affine_triplets
+                        .extend_from_slice(&self.triplets[first..]);
+                    *at = Some((start, self.affine_triplets.len()));
                 }
             }
             row0 += dim;

@@ -15,6 +15,10 @@
 //! k(k + 1)/2 passes once k > 2. Otherwise blocks of 1 to 3 unknowns (parameters, planar and
 //! spatial points) use the mixed vector form; larger blocks fall back to scalar `HyperDual64`
 //! evaluations per pair of columns. Affine residuals have H = 0 and are not evaluated at all.
+//!
+//! A residual that knows a cheaper exact form ([`Residual::structured_hessian`], a curve
+//! residual composed of a small function of the curve's point and derivatives,
+//! [`crate::composed`]) gives it instead; [`hyper_dual_hessian`] always takes the passes above.
 
 use num_dual::{Dual2SVec64, HyperDual64, HyperDualSVec64};
 
@@ -58,6 +62,48 @@ pub fn weighted_hessian<R: Residual>(
     active: &[bool],
     out: &mut [f64],
 ) -> Result<()> {
+    let n = checked_columns(residual, x, weights, active, out)?;
+    out.fill(0.0);
+    if residual.is_affine() || weights.iter().all(|w| *w == 0.0) {
+        return Ok(());
+    }
+    if residual.structured_hessian(x, weights, active, out) {
+        return Ok(());
+    }
+    out.fill(0.0);
+    hyper_dual_passes(residual, x, weights, active, Square { h: out, n });
+    Ok(())
+}
+
+/// [`weighted_hessian`] by hyper-dual numbers alone, ignoring
+/// [`Residual::structured_hessian`] (the reference the structured forms are tested against).
+///
+/// # Errors
+/// As [`weighted_hessian`].
+pub fn hyper_dual_hessian<R: Residual>(
+    residual: &R,
+    x: &[&[f64]],
+    weights: &[f64],
+    active: &[bool],
+    out: &mut [f64],
+) -> Result<()> {
+    let n = checked_columns(residual, x, weights, active, out)?;
+    out.fill(0.0);
+    if residual.is_affine() || weights.iter().all(|w| *w == 0.0) {
+        return Ok(());
+    }
+    hyper_dual_passes(residual, x, weights, active, Square { h: out, n });
+    Ok(())
+}
+
+/// The number of columns N, once the lengths of `weights`, `active` and `out` are checked.
+fn checked_columns<R: Residual>(
+    residual: &R,
+    x: &[&[f64]],
+    weights: &[f64],
+    active: &[bool],
+    out: &[f64],
+) -> Result<usize> {
     let n: usize = x.iter().map(|b| b.len()).sum();
     for (what, expected, found) in [
         ("Hessian weights", residual.dim(), weights.len()),
@@ -72,11 +118,17 @@ pub fn weighted_hessian<R: Residual>(
             });
         }
     }
-    out.fill(0.0);
-    if residual.is_affine() || weights.iter().all(|w| *w == 0.0) {
-        return Ok(());
-    }
-    let mut out = Square { h: out, n };
+    Ok(n)
+}
+
+/// The hyper-dual evaluations of [`weighted_hessian`] into a zeroed `out`.
+fn hyper_dual_passes<R: Residual>(
+    residual: &R,
+    x: &[&[f64]],
+    weights: &[f64],
+    active: &[bool],
+    mut out: Square<'_>,
+) {
     let mut needed: smallvec::SmallVec<[bool; 16]> = active.iter().copied().collect();
     residual.depends_on(x, &mut needed);
     let active = &needed[..];
@@ -97,7 +149,7 @@ pub fn weighted_hessian<R: Residual>(
     }
     if count <= WHOLE_MAX {
         whole(residual, x, weights, &columns[..count], &mut out);
-        return Ok(());
+        return;
     }
     let mut start_a = 0;
     for (a, block_a) in x.iter().enumerate() {
@@ -114,7 +166,6 @@ pub fn weighted_hessian<R: Residual>(
         }
         start_a += block_a.len();
     }
-    Ok(())
 }
 
 /// The flat column ranges (start, length) of two blocks, a before or equal to b.

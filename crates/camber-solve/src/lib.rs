@@ -53,6 +53,7 @@ pub mod analysis;
 pub mod autodiff;
 mod block_analysis;
 mod budget;
+pub mod composed;
 pub mod errors;
 mod free_columns;
 pub mod hessian;

@@ -75,6 +75,8 @@ pub struct NewtonWorkspace {
     /// The point z and residuals g at which the evaluator passed to the next run was just
     /// linearized (by the selection's analysis): its first iteration takes them over.
     primed: Option<(Vec<f64>, Vec<f64>)>,
+    /// The LU of a square J, refactorized in place at every iteration.
+    square: SquareLu,
 }
 
 impl NewtonWorkspace {
@@ -93,6 +95,37 @@ impl NewtonWorkspace {
     pub(crate) fn unprime(&mut self) {
         self.primed = None;
     }
+
+    /// The workspace the last solve on this thread left ([`NewtonWorkspace::keep_as_spare`]),
+    /// or a new one. Every run sizes and fills the vectors it uses, so a workspace from another
+    /// problem serves as well as a new one; the sparse factorization's pattern cache checks
+    /// the pattern it is given.
+    pub(crate) fn take_spare() -> Self {
+        SPARE
+            .with(|spare| spare.borrow_mut().take())
+            .unwrap_or_default()
+    }
+
+    /// Keeps this workspace for the next solve on this thread ([`NewtonWorkspace::take_spare`]):
+    /// a sketch's small components, solved one after another, then allocate their vectors
+    /// once instead of once each. A workspace grown past [`SPARE_MAX_UNKNOWNS`] is dropped, and
+    /// the sparse pattern cache is never kept, so a large solve does not hold its memory.
+    pub(crate) fn keep_as_spare(mut self) {
+        if self.z.capacity() > SPARE_MAX_UNKNOWNS {
+            return;
+        }
+        self.normal = crate::normal::NormalCache::default();
+        self.primed = None;
+        SPARE.with(|spare| *spare.borrow_mut() = Some(self));
+    }
+}
+
+/// Largest workspace (in unknowns) kept between solves by [`NewtonWorkspace::keep_as_spare`].
+const SPARE_MAX_UNKNOWNS: usize = 4096;
+
+thread_local! {
+    /// The Newton workspace of the last finished solve on this thread.
+    static SPARE: std::cell::RefCell<Option<NewtonWorkspace>> = const { std::cell::RefCell::new(None) };
 }
 
 /// How a Newton run ended (the point is left in the workspace's `z`).
@@ -207,11 +240,13 @@ pub(crate) fn run(
     let mut primed = ws.primed.take().filter(|(z, g)| {
         g.len() == m && z.len() == n && z.iter().zip(&ws.z).all(|(a, b)| a.to_bits() == b.to_bits())
     });
-    // The LU of the last accepted square step: a chord step with it shows a point that
+    // The LU of a square J (its buffers reused from one iteration to the next), and whether
+    // it is that of the last accepted square step: a chord step with it shows a point that
     // already meets the rows to be stationary without linearizing and factorizing it again.
-    let mut chord: Option<SquareLu> = None;
+    let mut lu = std::mem::take(&mut ws.square);
+    let mut chord = false;
     for iteration in 0..settings.max_iterations {
-        if let Some(mut lu) = chord.take() {
+        if std::mem::take(&mut chord) {
             // `gs_trial` holds the rows at the accepted point, now `z`. With an empty null
             // space there is nothing to pull back: stationary is g = 0 up to the step
             // tolerance, which −J⁻¹·g with the previous J shows as well as with the new one
@@ -220,6 +255,7 @@ pub(crate) fn run(
             if met <= inner_tol && ws.gs_trial.len() == lu.order() {
                 lu.step(&ws.gs_trial, &mut ws.soc);
                 if max_abs(&ws.soc) <= settings.step_tolerance * (1.0 + max_abs(&ws.z)) {
+                    ws.square = lu;
                     return Ok(NewtonRun {
                         iterations: iteration,
                         max_residual: met,
@@ -242,13 +278,18 @@ pub(crate) fn run(
         // The Gauss–Newton pull-back step: by one LU of J when it is square (no null space to
         // pull back in), else by the minimum-norm factorization, holding unknowns at a bound
         // whose step points outward.
-        let mut factorization = match square_step(ev, ws, &weights, reference, rows, options) {
-            Some(lu) => Factors::Square(lu),
-            None => Factors::MinNorm(min_norm_step(ev, ws, &weights, reference, rows, options)?),
+        let mut factorization = if square_step(ev, ws, &mut lu, &weights, reference, rows, options)
+        {
+            Factors::Square(&mut lu)
+        } else {
+            Factors::MinNorm(Box::new(min_norm_step(
+                ev, ws, &weights, reference, rows, options,
+            )?))
         };
 
         let zmax = max_abs(&ws.z);
         if last_max <= inner_tol && max_abs(&ws.step) <= settings.step_tolerance * (1.0 + zmax) {
+            ws.square = lu;
             return Ok(NewtonRun {
                 iterations: iteration,
                 max_residual: last_max,
@@ -327,6 +368,7 @@ pub(crate) fn run(
         let Some(alpha) = taken else {
             // No progress possible: a solution counts if the residuals are already met.
             if last_max <= inner_tol {
+                ws.square = lu;
                 return Ok(NewtonRun {
                     iterations: iteration,
                     max_residual: last_max,
@@ -344,10 +386,9 @@ pub(crate) fn run(
             *l += alpha * (t - *l);
         }
         std::mem::swap(&mut ws.z, &mut ws.z_trial);
-        if let Factors::Square(lu) = factorization {
-            chord = Some(lu);
-        }
+        chord = matches!(factorization, Factors::Square(_));
     }
+    ws.square = lu;
     // Out of iterations: accept a point that meets the residuals, flagged as not stationary.
     ev.residuals(problem, &ws.z, &mut ws.g)?;
     select(&ws.g, rows, &mut ws.gs);
@@ -369,12 +410,13 @@ pub(crate) fn run(
 
 /// The factorization a Newton iteration solves its steps with.
 enum Factors<'a> {
-    /// Of J·W⁻¹·Jᵀ: the weighted minimum-norm steps.
-    MinNorm(MinNormFactorization),
+    /// Of J·W⁻¹·Jᵀ: the weighted minimum-norm steps (boxed: the square variant is a
+    /// reference).
+    MinNorm(Box<MinNormFactorization>),
     /// The same, borrowed.
     Borrowed(&'a mut MinNormFactorization),
     /// The LU of a square J: the steps −J⁻¹·g.
-    Square(SquareLu),
+    Square(&'a mut SquareLu),
 }
 
 impl Factors<'_> {
@@ -399,26 +441,29 @@ fn outward(ev: &Evaluator, z: &[f64], step: &[f64], k: usize) -> bool {
 }
 
 /// The Gauss–Newton step of a square J (the rows used as many as the unknowns, within the
-/// dense size) by one LU of J ([`crate::square`]): Δ = −J⁻¹·g into `ws.step`, its multipliers
-/// λ = −J⁻ᵀ·(W·Δ + c) into `ws.lambda_gn`. `None`, leaving the step to
+/// dense size) by one LU of J ([`crate::square`]) into `lu`: Δ = −J⁻¹·g into `ws.step`, its
+/// multipliers λ = −J⁻ᵀ·(W·Δ + c) into `ws.lambda_gn`. `false`, leaving the step to
 /// [`min_norm_step`], when J is not square, the LU finds it singular, or the step pushes an
 /// unknown through a bound (which the minimum-norm path holds there).
 fn square_step(
     ev: &Evaluator,
     ws: &mut NewtonWorkspace,
+    lu: &mut SquareLu,
     weights: &[f64],
     reference: &[f64],
     rows: Option<&[usize]>,
     options: &Options,
-) -> Option<SquareLu> {
+) -> bool {
     let n = ev.cols();
     if n > options.dense_max_unknowns || ws.gs.len() != n {
-        return None;
+        return false;
     }
-    let mut lu = SquareLu::factorize(n, ev.triplets(), ev.rows(), rows)?;
+    if !lu.refactorize(n, ev.triplets(), ev.rows(), rows) {
+        return false;
+    }
     lu.step(&ws.gs, &mut ws.step);
     if (0..n).any(|k| outward(ev, &ws.z, &ws.step, k)) {
-        return None;
+        return false;
     }
     ws.drop.fill(false);
     for k in 0..n {
@@ -429,7 +474,7 @@ fn square_step(
     for l in &mut ws.lambda_gn {
         *l = -*l;
     }
-    Some(lu)
+    true
 }
 
 /// The Gauss–Newton pull-back step d − J⁺·(g + J·d) by the minimum-norm factorization and

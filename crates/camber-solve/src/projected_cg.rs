@@ -123,6 +123,14 @@ pub(crate) fn solve(
     }
     // rᵀ·P·r, computed as ‖P·r‖²_W (equal, since P·W·P = P): rᵀ·v would carry rounding of
     // order ε·‖r‖², which swamps a small but real projected part.
+    // No null space to move in: as many rows as unknowns that may move, J of full row rank
+    // (its factorization exists), so P = 0 and the feasible start is the step. What the
+    // projection leaves of r is rounding, which the iterations would only chase (on a large
+    // square component it stays above `ROUNDING` and they ran to the limit, 50 solves).
+    let free = data.held.iter().filter(|h| !**h).count();
+    if free <= lambda.len() {
+        return Ok(CgOutcome::Converged { iterations: 0 });
+    }
     let w = data.weights;
     let mut rho = w_dot(w, &ws.v, &ws.v);
     let rho0 = rho;
@@ -332,6 +340,67 @@ mod tests {
             assert_relative_eq!(step[k], d[k] - 0.35 / 3.0, epsilon = 1e-14);
         }
         assert_relative_eq!(lambda[0], 0.35 / 3.0, epsilon = 1e-14);
+    }
+
+    /// As many rows as free unknowns: the step is −J⁻¹·g with no iteration, whatever the
+    /// curvature and the pull toward the reference, and λ solves Jᵀ·λ = −(K·Δ + c). One unknown
+    /// held leaves a square system in the others.
+    #[test]
+    fn without_a_null_space_the_feasible_start_is_the_step() {
+        let jd = DMatrix::from_row_slice(2, 3, &[2.0, 1.0, 0.0, -1.0, 3.0, 0.0]);
+        let j = SparseMatrix::from_dense(&jd);
+        let w = [1.0, 2.0, 1.0];
+        let h = SparseMatrix::from_dense(&DMatrix::from_row_slice(
+            3,
+            3,
+            &[0.5, 0.1, 0.0, 0.1, -0.2, 0.0, 0.0, 0.0, 0.0],
+        ));
+        let c = [0.4, -0.3, 0.0];
+        let g = [1.0, -2.0];
+        // [2 1; −1 3]·Δ = −g: Δ = (−5/7, 3/7).
+        let want = [-5.0 / 7.0, 3.0 / 7.0];
+        for (sparse, hessian) in [(false, None), (true, None), (true, Some(&h))] {
+            let mut f = if sparse {
+                MinNormFactorization::try_sparse(&j, &w).unwrap()
+            } else {
+                MinNormFactorization::try_dense(&j, &w).unwrap()
+            };
+            let data = QpData {
+                weights: &w,
+                hessian,
+                gradient: &c,
+                residuals: &g,
+                held: &[false, false, true],
+                start: Start::Compute,
+                tolerance: 1e-14,
+            };
+            let (mut step, mut lambda) = ([0.0; 3], [0.0; 2]);
+            let out = solve(
+                &mut f,
+                &data,
+                &mut CgWorkspace::default(),
+                &mut step,
+                &mut lambda,
+            )
+            .unwrap();
+            assert_eq!(out, CgOutcome::Converged { iterations: 0 });
+            assert_relative_eq!(step[0], want[0], epsilon = 1e-14);
+            assert_relative_eq!(step[1], want[1], epsilon = 1e-14);
+            assert_relative_eq!(step[2], 0.0, epsilon = 1e-14);
+            // Jᵀ·λ = −(K·Δ + c) in the free unknowns.
+            let mut kd = [0.0; 2];
+            for i in 0..2 {
+                kd[i] = w[i] * step[i] + c[i];
+                if hessian.is_some() {
+                    let hd = [[0.5, 0.1], [0.1, -0.2]];
+                    kd[i] += hd[i][0] * step[0] + hd[i][1] * step[1];
+                }
+            }
+            for col in 0..2 {
+                let jt_l: f64 = (0..2).map(|r| jd[(r, col)] * lambda[r]).sum();
+                assert_relative_eq!(jt_l, -kd[col], epsilon = 1e-12);
+            }
+        }
     }
 
     #[test]

@@ -108,9 +108,15 @@ impl Problem {
     pub fn reduced_map(&self) -> Result<ReducedMap> {
         let n = self.values.len();
         let mut column = vec![None; n];
-        let mut vars = Vec::new();
-        let (mut z0, mut weights, mut lower, mut upper) =
-            (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+        // At most every unknown and every auxiliary is a column.
+        let cols = n + self.aux_values.len();
+        let mut vars = Vec::with_capacity(cols);
+        let (mut z0, mut weights, mut lower, mut upper) = (
+            Vec::with_capacity(cols),
+            Vec::with_capacity(cols),
+            Vec::with_capacity(cols),
+            Vec::with_capacity(cols),
+        );
         for (i, b) in self.bindings.iter().enumerate() {
             if *b == Binding::Free {
                 column[i] = Some(vars.len());
@@ -130,7 +136,8 @@ impl Problem {
             upper.push(self.aux_bounds[a].1);
         }
         let mut row_ptr = Vec::with_capacity(n + 1);
-        let mut terms = Vec::new();
+        // One term per free or merged unknown, more for the few other substitutions.
+        let mut terms = Vec::with_capacity(n);
         let mut constant = Vec::with_capacity(n);
         row_ptr.push(0);
         for (i, b) in self.bindings.iter().enumerate() {

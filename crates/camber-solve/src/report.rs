@@ -1,6 +1,5 @@
 //! What a solve reports: outcome, solver and why, residual per constraint, DOF, time.
 
-use std::collections::HashMap;
 use std::time::Duration;
 
 use serde::Serialize;
@@ -159,20 +158,41 @@ fn seconds<S: serde::Serializer>(d: &Duration, s: S) -> Result<S::Ok, S::Error> 
 
 /// max |g| per owning constraint, in order of first appearance.
 pub(crate) fn per_constraint(owners: &[ConstraintId], g: &[f64]) -> Vec<ConstraintResidual> {
-    let mut index: HashMap<ConstraintId, usize> = HashMap::new();
+    // The rows of one constraint are nearly always consecutive: one entry per run of rows
+    // first, then runs of the same constraint folded into its first (the maximum does not
+    // depend on the grouping).
     let mut out: Vec<ConstraintResidual> = Vec::new();
     for (owner, gi) in owners.iter().zip(g) {
-        let k = *index.entry(*owner).or_insert_with(|| {
-            out.push(ConstraintResidual {
+        match out.last_mut() {
+            Some(last) if last.constraint == *owner => last.max_abs = last.max_abs.max(gi.abs()),
+            _ => out.push(ConstraintResidual {
                 constraint: *owner,
-                max_abs: 0.0,
-            });
-            out.len() - 1
-        });
-        if let Some(slot) = out.get_mut(k) {
-            slot.max_abs = slot.max_abs.max(gi.abs());
+                max_abs: 0.0_f64.max(gi.abs()),
+            }),
         }
     }
+    let mut order: Vec<(ConstraintId, usize)> = out
+        .iter()
+        .enumerate()
+        .map(|(k, r)| (r.constraint, k))
+        .collect();
+    order.sort_unstable();
+    if order.windows(2).all(|w| w[0].0 != w[1].0) {
+        return out;
+    }
+    let mut keep = vec![true; out.len()];
+    for group in order.chunk_by(|a, b| a.0 == b.0) {
+        let Some(((_, first), rest)) = group.split_first() else {
+            continue;
+        };
+        for (_, k) in rest {
+            let m = out[*k].max_abs;
+            out[*first].max_abs = out[*first].max_abs.max(m);
+            keep[*k] = false;
+        }
+    }
+    let mut flags = keep.iter();
+    out.retain(|_| flags.next().copied().unwrap_or(true));
     out
 }
 
@@ -188,5 +208,18 @@ mod tests {
         assert_eq!(r[0].constraint, ConstraintId(4));
         assert!((r[0].max_abs - 0.3).abs() < 1e-15);
         assert!((r[1].max_abs - 0.5).abs() < 1e-15);
+    }
+
+    /// Runs of one owner, interleaved with others, fold into the owner's first appearance;
+    /// a NaN row is ignored by the maximum, as one row after another.
+    #[test]
+    fn interleaved_runs_fold_in_first_appearance_order() {
+        let c = ConstraintId;
+        let owners = [c(7), c(7), c(3), c(9), c(7), c(3), c(3), c(1), c(9)];
+        let g = [0.1, -0.2, 0.05, f64::NAN, -0.9, 0.4, -0.01, 2.0, -0.3];
+        let r = per_constraint(&owners, &g);
+        let got: Vec<(u64, f64)> = r.iter().map(|x| (x.constraint.0, x.max_abs)).collect();
+        assert_eq!(got, vec![(7, 0.9), (3, 0.4), (9, 0.3), (1, 2.0)]);
+        assert!(per_constraint(&[], &[]).is_empty());
     }
 }

@@ -80,13 +80,34 @@ pub trait Residual: Debug + Send + Sync + 'static {
     fn depends_on(&self, x: &[&[f64]], blocks: &mut [bool]) {
         let _ = (x, blocks);
     }
-    /// Writes g(x) into `out` and ∂g/∂x into `jac` (row major, `dim()` × Σ|x_b|, zeroed on
-    /// entry, lengths checked) and returns true when the residual has its Jacobian in closed
-    /// form, exactly as automatic differentiation would give it (an affine residual's constant
-    /// coefficients): [`crate::autodiff::jacobian_active`] then skips its dual-number passes.
-    /// The default returns false.
-    fn jacobian_by_hand(&self, x: &[&[f64]], out: &mut [f64], jac: &mut [f64]) -> bool {
-        let _ = (x, out, jac);
+    /// The values and the active columns of the Jacobian by the residual's own structure,
+    /// when it knows a cheaper exact way than dual numbers over all its unknowns (a curve
+    /// residual composed of a small function of the curve's point and derivatives:
+    /// [`crate::composed`]). Same contract as [`crate::autodiff::jacobian_active`], whose
+    /// checked slices it receives; returns `false` (the default) to leave it to dual numbers.
+    /// Built-in residuals only: a user residual keeps the default.
+    fn structured_jacobian(
+        &self,
+        x: &[&[f64]],
+        active: &[bool],
+        values: &mut [f64],
+        jac: &mut [f64],
+    ) -> bool {
+        let _ = (x, active, values, jac);
+        false
+    }
+    /// H = Σᵢ λᵢ·∇²gᵢ(x) by the residual's own structure (see
+    /// [`Residual::structured_jacobian`]). Same contract as
+    /// [`crate::hessian::weighted_hessian`], whose checked slices it receives; returns `false`
+    /// (the default) to leave it to hyper-dual numbers.
+    fn structured_hessian(
+        &self,
+        x: &[&[f64]],
+        weights: &[f64],
+        active: &[bool],
+        out: &mut [f64],
+    ) -> bool {
+        let _ = (x, weights, active, out);
         false
     }
 }

@@ -468,6 +468,18 @@ pub fn solve(problem: &mut Problem, options: &Options) -> Result<SolveReport> {
 
 /// [`solve`] for the whole set of constraints, priorities aside.
 fn solve_whole(problem: &mut Problem, options: &Options) -> Result<SolveReport> {
+    let mut ws = NewtonWorkspace::take_spare();
+    let outcome = solve_whole_with(problem, options, &mut ws);
+    ws.keep_as_spare();
+    outcome
+}
+
+/// [`solve_whole`] with the Newton workspace given.
+fn solve_whole_with(
+    problem: &mut Problem,
+    options: &Options,
+    ws: &mut NewtonWorkspace,
+) -> Result<SolveReport> {
     let (start, satisfied, primed) = Start::new(problem, options)?;
     if satisfied {
         return start.already_satisfied(problem);
@@ -490,13 +502,12 @@ fn solve_whole(problem: &mut Problem, options: &Options) -> Result<SolveReport> 
     }
 
     let mut notes: Vec<String> = Vec::new();
-    let mut ws = NewtonWorkspace::new();
     if start.full_rank || start.independent.is_some() {
         let rows = start.independent.as_deref();
         match newton_path(
             problem,
             options,
-            &mut ws,
+            ws,
             &start.z0,
             &start.z0,
             rows,
@@ -576,7 +587,7 @@ fn solve_whole(problem: &mut Problem, options: &Options) -> Result<SolveReport> 
     )?;
     if lm.max_residual <= options.tolerance.sqrt() {
         if let Ok((iterations, _, residuals, z)) =
-            newton_path(problem, options, &mut ws, &z_lm, &start.z0, None, None)
+            newton_path(problem, options, ws, &z_lm, &start.z0, None, None)
         {
             let reason = format!(
                 "{} → Levenberg–Marquardt ({} iterations) then Newton minimum norm",
@@ -631,7 +642,7 @@ fn solve_whole(problem: &mut Problem, options: &Options) -> Result<SolveReport> 
             };
             if let Some(z1) = moved {
                 if let Ok((iterations, _, residuals, z)) =
-                    newton_path(problem, options, &mut ws, &z1, &start.z0, None, None)
+                    newton_path(problem, options, ws, &z1, &start.z0, None, None)
                 {
                     let reason = format!(
                         "{} → Newton minimum norm from a start moved off the singular one",
@@ -865,6 +876,70 @@ mod tests {
         // More rows than unknowns can never have full row rank.
         let tall = DMatrix::from_row_slice(3, 2, &[1.0, 0.0, 0.0, 1.0, 1.0, 1.0]);
         assert!(!certainly_full_row_rank(&tall, 1e-10));
+    }
+
+    /// A nonlinear problem: a point (x, y) on the circle of radius `r` about the origin with
+    /// x − y = `d`, started at `start`.
+    fn circle_and_line(r: f64, d: f64, start: [f64; 2]) -> crate::Problem {
+        #[derive(Debug)]
+        struct OnCircle(f64);
+        impl crate::Residual for OnCircle {
+            fn name(&self) -> &str {
+                "on circle"
+            }
+            fn dim(&self) -> usize {
+                1
+            }
+            fn eval<T: crate::Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+                let r = crate::scalar::cst::<T>(self.0);
+                out[0] = x[0][0] * x[0][0] + x[0][1] * x[0][1] - r * r;
+            }
+        }
+        #[derive(Debug)]
+        struct Apart(f64);
+        impl crate::Residual for Apart {
+            fn name(&self) -> &str {
+                "apart"
+            }
+            fn dim(&self) -> usize {
+                1
+            }
+            fn eval<T: crate::Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+                out[0] = x[0][0] - x[0][1] - crate::scalar::cst::<T>(self.0);
+            }
+            fn is_affine(&self) -> bool {
+                true
+            }
+        }
+        let mut p = crate::Problem::new();
+        let b = p.add_block(&start).unwrap();
+        p.add_residual(OnCircle(r), &[b], crate::ConstraintId(1))
+            .unwrap();
+        p.add_residual(Apart(d), &[b], crate::ConstraintId(2))
+            .unwrap();
+        p
+    }
+
+    /// A solve after another problem's (whose Newton workspace it takes over on this thread)
+    /// gives bit for bit what it gives first on a fresh thread.
+    #[test]
+    fn a_reused_workspace_gives_the_same_solve() {
+        let options = crate::Options::default();
+        let fresh = std::thread::spawn(|| {
+            let mut p = circle_and_line(2.0, 0.5, [1.9, 0.3]);
+            crate::solve(&mut p, &crate::Options::default()).unwrap();
+            p.values().to_vec()
+        })
+        .join()
+        .unwrap();
+        let mut other = circle_and_line(5.0, -1.0, [3.0, 3.5]);
+        crate::solve(&mut other, &options).unwrap();
+        let mut p = circle_and_line(2.0, 0.5, [1.9, 0.3]);
+        crate::solve(&mut p, &options).unwrap();
+        let again: Vec<u64> = p.values().iter().map(|v| v.to_bits()).collect();
+        assert_eq!(again, fresh.iter().map(|v| v.to_bits()).collect::<Vec<_>>());
+        let (x, y) = (p.values()[0], p.values()[1]);
+        assert!((x * x + y * y - 4.0).abs() < 1e-9 && (x - y - 0.5).abs() < 1e-9);
     }
 
     proptest! {

@@ -19,8 +19,9 @@ pub(crate) const SINGULAR_PIVOT: f64 = 1e-12;
 /// rounding).
 const REFINEMENT: usize = 2;
 
-/// The LU factors P·J = L·U of a dense square Jacobian, with J kept for refinement.
-#[derive(Debug, Clone)]
+/// The LU factors P·J = L·U of a dense square Jacobian, with J kept for refinement. One value
+/// is refactorized at every Newton iteration ([`SquareLu::refactorize`]), reusing its buffers.
+#[derive(Debug, Clone, Default)]
 pub(crate) struct SquareLu {
     n: usize,
     /// J, row-major.
@@ -29,9 +30,12 @@ pub(crate) struct SquareLu {
     lu: Vec<f64>,
     /// Row `perm[k]` of J is row k of P·J.
     perm: Vec<usize>,
-    /// Scratch: a residual and a correction.
+    /// Scratch: the place of every row of the whole J among the rows used.
+    place: Vec<usize>,
+    /// Scratch: a residual, a correction, and the intermediate of the transposed solve.
     miss: Vec<f64>,
     correction: Vec<f64>,
+    w: Vec<f64>,
 }
 
 impl SquareLu {
@@ -39,44 +43,69 @@ impl SquareLu {
     /// to the rows `rows` (all when `None`; row `rows[k]` becomes row k). `None` when the rows
     /// used are not n, an index is out of range, an entry is not finite, or a pivot is
     /// singular by [`SINGULAR_PIVOT`].
+    #[cfg(test)]
     pub(crate) fn factorize(
         n: usize,
         triplets: &[(usize, usize, f64)],
         total_rows: usize,
         rows: Option<&[usize]>,
     ) -> Option<Self> {
+        let mut lu = Self::default();
+        lu.refactorize(n, triplets, total_rows, rows).then_some(lu)
+    }
+
+    /// [`SquareLu::factorize`] into this value, reusing its buffers: `false` (the factors
+    /// then unusable) where that gives `None`.
+    pub(crate) fn refactorize(
+        &mut self,
+        n: usize,
+        triplets: &[(usize, usize, f64)],
+        total_rows: usize,
+        rows: Option<&[usize]>,
+    ) -> bool {
+        self.n = 0;
         if n == 0 || rows.map_or(total_rows, <[usize]>::len) != n {
-            return None;
+            return false;
         }
-        let mut place: Vec<usize> = Vec::new();
+        let place = &mut self.place;
+        place.clear();
         if let Some(rows) = rows {
             place.resize(total_rows, usize::MAX);
             for (k, r) in rows.iter().enumerate() {
-                *place.get_mut(*r)? = k;
+                match place.get_mut(*r) {
+                    Some(slot) => *slot = k,
+                    None => return false,
+                }
             }
         }
-        let mut j = vec![0.0; n * n];
+        let j = &mut self.j;
+        j.clear();
+        j.resize(n * n, 0.0);
         for &(r, c, v) in triplets {
             let row = if rows.is_some() {
                 match place.get(r) {
                     Some(k) if *k != usize::MAX => *k,
                     Some(_) => continue,
-                    None => return None,
+                    None => return false,
                 }
             } else {
                 r
             };
             if row >= n || c >= n {
-                return None;
+                return false;
             }
             j[row * n + c] += v;
         }
         let scale = j.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
         if !(scale.is_finite() && scale > 0.0) {
-            return None;
+            return false;
         }
-        let mut lu = j.clone();
-        let mut perm: Vec<usize> = (0..n).collect();
+        let lu = &mut self.lu;
+        lu.clear();
+        lu.extend_from_slice(j);
+        let perm = &mut self.perm;
+        perm.clear();
+        perm.extend(0..n);
         for k in 0..n {
             // Partial pivoting: the largest entry of column k at or below the diagonal.
             let mut p = k;
@@ -87,7 +116,7 @@ impl SquareLu {
             }
             let pivot = lu[p * n + k];
             if pivot.abs() <= SINGULAR_PIVOT * scale || pivot.is_nan() {
-                return None;
+                return false;
             }
             if p != k {
                 for c in 0..n {
@@ -95,24 +124,25 @@ impl SquareLu {
                 }
                 perm.swap(k, p);
             }
-            for i in k + 1..n {
-                let f = lu[i * n + k] / pivot;
-                lu[i * n + k] = f;
+            // Rows below k by slices (the same arithmetic without an index check per entry).
+            let (top, below) = lu.split_at_mut((k + 1) * n);
+            let pivot_row = &top[k * n + k + 1..(k + 1) * n];
+            for row in below.chunks_exact_mut(n) {
+                let f = row[k] / pivot;
+                row[k] = f;
                 if f != 0.0 {
-                    for c in k + 1..n {
-                        lu[i * n + c] -= f * lu[k * n + c];
+                    for (a, p) in row[k + 1..].iter_mut().zip(pivot_row) {
+                        *a -= f * p;
                     }
                 }
             }
         }
-        Some(Self {
-            n,
-            j,
-            lu,
-            perm,
-            miss: vec![0.0; n],
-            correction: vec![0.0; n],
-        })
+        for v in [&mut self.miss, &mut self.correction, &mut self.w] {
+            v.clear();
+            v.resize(n, 0.0);
+        }
+        self.n = n;
+        true
     }
 
     /// The order n.
@@ -171,9 +201,11 @@ impl SquareLu {
     }
 
     /// y = J⁻ᵀ·b (Jᵀ = Uᵀ·Lᵀ·P).
-    pub(crate) fn solve_transpose(&self, b: &[f64], y: &mut [f64]) {
+    pub(crate) fn solve_transpose(&mut self, b: &[f64], y: &mut [f64]) {
         let n = self.n;
-        let mut w = vec![0.0; n];
+        let mut w = std::mem::take(&mut self.w);
+        w.clear();
+        w.resize(n, 0.0);
         // Uᵀ·w = b.
         for k in 0..n {
             let known: f64 = w[..k]
@@ -196,6 +228,7 @@ impl SquareLu {
         for (k, v) in w.iter().enumerate() {
             y[self.perm[k]] = *v;
         }
+        self.w = w;
     }
 }
 
@@ -258,6 +291,33 @@ mod tests {
         lu.step(&[-8.0, -5.0], &mut dz);
         assert_relative_eq!(dz[0], 1.5, epsilon = 1e-15);
         assert_relative_eq!(dz[1], 2.0, epsilon = 1e-15);
+    }
+
+    /// A factorization reused for another system (of another order, after a refused one) gives
+    /// bit for bit what a fresh one gives.
+    #[test]
+    fn refactorizing_reuses_buffers_with_the_same_results() {
+        let a: [&[f64]; 3] = [&[0.0, 2.0, 1.0], &[1.0, 1.0, 0.0], &[2.0, 0.0, 3.0]];
+        let b: [&[f64]; 2] = [&[4.0, 1.0], &[1.0, 3.0]];
+        let mut reused = SquareLu::default();
+        assert!(reused.refactorize(3, &triplets(&a), 3, None));
+        let singular = triplets(&[&[1.0, 2.0], &[2.0, 4.0]]);
+        assert!(!reused.refactorize(2, &singular, 2, None));
+        assert!(reused.refactorize(2, &triplets(&b), 3, Some(&[1, 0])));
+        assert!(reused.refactorize(2, &triplets(&b), 2, None));
+        let mut fresh = SquareLu::factorize(2, &triplets(&b), 2, None).unwrap();
+        let g = [0.3, -1.7];
+        let (mut d1, mut d2) = ([0.0; 2], [0.0; 2]);
+        reused.step(&g, &mut d1);
+        fresh.step(&g, &mut d2);
+        assert_eq!(d1.map(f64::to_bits), d2.map(f64::to_bits));
+        let (mut y1, mut y2) = ([0.0; 2], [0.0; 2]);
+        reused.solve_transpose(&g, &mut y1);
+        fresh.solve_transpose(&g, &mut y2);
+        assert_eq!(y1.map(f64::to_bits), y2.map(f64::to_bits));
+        // [4 1; 1 3]·Δ = −g.
+        assert_relative_eq!(4.0 * d1[0] + d1[1], -g[0], epsilon = 1e-15);
+        assert_relative_eq!(d1[0] + 3.0 * d1[1], -g[1], epsilon = 1e-15);
     }
 
     #[test]

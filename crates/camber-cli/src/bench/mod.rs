@@ -247,6 +247,11 @@ pub struct Row {
     pub growth: Option<f64>,
     /// W1: moved / min-norm.
     pub moved_over_min_norm: Option<Ratio>,
+    /// W1: the median time of an empty timed section (two clock reads), seconds. Each W1
+    /// sample is one update between two clock reads, so its time includes this much that is
+    /// not the update's; it is reported, not subtracted.
+    #[serde(default)]
+    pub timer_s: Option<f64>,
 }
 
 /// The q-quantile (0 < q ≤ 1) of `sorted` by nearest rank: the ⌈q·n⌉-th smallest.
@@ -286,6 +291,7 @@ fn row(workload: Workload, case: String, times: &[Duration], valid: usize) -> Ro
         solvers: BTreeMap::new(),
         growth: None,
         moved_over_min_norm: None,
+        timer_s: None,
     }
 }
 
@@ -311,9 +317,10 @@ pub fn run(plan: &Plan, bar: &ProgressBar) -> Result<Vec<Row>> {
     Ok(rows)
 }
 
-/// A duration in seconds as "12.3 µs", "4.56 ms" or "1.23 s".
+/// A duration in seconds as "87 ns", "12.3 µs", "4.56 ms" or "1.23 s".
 ///
 /// ```
+/// assert_eq!(camber_cli::bench::human(8.7e-8), "87 ns");
 /// assert_eq!(camber_cli::bench::human(2.5e-6), "2.5 µs");
 /// assert_eq!(camber_cli::bench::human(0.0123), "12.30 ms");
 /// assert_eq!(camber_cli::bench::human(4.0), "4.00 s");
@@ -321,6 +328,8 @@ pub fn run(plan: &Plan, bar: &ProgressBar) -> Result<Vec<Row>> {
 pub fn human(s: f64) -> String {
     if !s.is_finite() {
         "-".to_owned()
+    } else if s < 1e-6 {
+        format!("{:.0} ns", s * 1e9)
     } else if s < 1e-3 {
         format!("{:.1} µs", s * 1e6)
     } else if s < 1.0 {
@@ -338,6 +347,9 @@ fn notes(r: &Row) -> String {
             "moved/min-norm {:.3} (max {:.3})",
             ratio.median, ratio.max
         ));
+    }
+    if let Some(t) = r.timer_s {
+        parts.push(format!("timer {} included", human(t)));
     }
     if let Some(g) = r.growth {
         parts.push(format!("growth {g:.2}"));

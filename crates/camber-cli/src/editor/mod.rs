@@ -146,6 +146,27 @@ struct Drag {
     scale: f64,
 }
 
+/// A constraint with its residual (the largest |row| it owns).
+type ConstraintResidual = (ConstraintId, f64);
+
+impl Drag {
+    /// Each constraint's residual in the dragged component at the session's current state, and
+    /// the largest non-zero one with its constraint (on a tie the smaller constraint id).
+    fn live_residuals(
+        &self,
+    ) -> camber_sketch::Result<(Vec<ConstraintResidual>, Option<ConstraintResidual>)> {
+        let residuals = self.session.residuals()?;
+        let worst = residuals.iter().filter(|(_, r)| *r > 0.0).fold(
+            None,
+            |best: Option<ConstraintResidual>, (id, r)| match best {
+                Some((_, b)) if b >= *r => best,
+                _ => Some((*id, *r)),
+            },
+        );
+        Ok((residuals, worst))
+    }
+}
+
 /// The largest entity or constraint id the editor accepts: 2^53 − 1, the largest integer a
 /// JavaScript number holds exactly (a larger id would be rounded by the page and name another
 /// entity or none).
@@ -302,6 +323,21 @@ impl EditorState {
             )?,
             None => SceneJson::of(&View::new(&self.sketch), &self.conflicting, |_| true)?,
         };
+        let mut components = self.components.clone();
+        // During a drag the dragged component's residual is the session's, as in the move
+        // answers: the geometry drawn is the session's, not the committed sketch's.
+        if let Some(d) = &self.drag {
+            let (_, worst) = d
+                .live_residuals()
+                .map_err(|e| anyhow!("residuals failed: {}", describe_error(&self.sketch, &e)))?;
+            if let Some(c) = components
+                .iter_mut()
+                .find(|c| c.entities.contains(&d.entity.0))
+            {
+                c.residual = worst.map_or(0.0, |w| w.1);
+                c.worst = worst.map(|(id, _)| ConstraintRef::of(&self.sketch, id));
+            }
+        }
         Ok(StateJson {
             file: self.file.display().to_string(),
             output: self.output.display().to_string(),
@@ -313,7 +349,7 @@ impl EditorState {
                 linear: d.linear,
             }),
             scene,
-            components: self.components.clone(),
+            components,
             report: self.report.clone(),
         })
     }
@@ -463,18 +499,10 @@ impl EditorState {
         let view = View::with_overrides(&self.sketch, &drag.current);
         let scene = SceneJson::of(&view, &self.conflicting, |id| changed.contains(&id))?;
         // The residuals at the new state, so the panel never shows the ones from before the
-        // drag. The largest wins; on a tie the smaller constraint id.
-        let residuals = drag
-            .session
-            .residuals()
+        // drag.
+        let (residuals, worst) = drag
+            .live_residuals()
             .map_err(|err| Failure::new(500, describe_error(&self.sketch, &err)))?;
-        let worst = residuals.iter().filter(|(_, r)| *r > 0.0).fold(
-            None,
-            |best: Option<(ConstraintId, f64)>, (id, r)| match best {
-                Some((_, b)) if b >= *r => best,
-                _ => Some((*id, *r)),
-            },
-        );
         Ok(Response::json(
             200,
             &MoveJson {

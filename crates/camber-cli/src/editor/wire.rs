@@ -223,7 +223,8 @@ pub struct ComponentJson {
     pub nonlinear: bool,
     /// The analysis, or `null` for a component too large to analyse here.
     pub analysis: Option<AnalysisJson>,
-    /// max |g| over the component's residual rows at the current geometry.
+    /// max |g| over the component's residual rows at the current geometry (during a drag, for
+    /// the dragged component, at the drag's current state, as in [`MoveJson`]).
     pub residual: f64,
     /// The constraint owning that largest row, if any row is non-zero.
     pub worst: Option<ConstraintRef>,

@@ -17,8 +17,6 @@
 //!
 //! [`Constraint::Coincident`]: crate::constraints::Coincident
 
-use rustc_hash::{FxHashMap, FxHashSet};
-
 use camber_solve::{BlockId, ConstraintId};
 
 use super::piece::Piece;
@@ -27,10 +25,11 @@ use crate::errors::Result;
 /// The merges of one component: which pieces became bindings and which were redundant.
 #[derive(Debug, Default)]
 pub(crate) struct Merges {
-    /// Every merged block and the block it is bound to.
+    /// Every merged block and the block it is bound to, by increasing block.
     pub(crate) into: Vec<(BlockId, BlockId)>,
-    /// (constraint position, piece position) of the coincidences replaced by bindings.
-    pub(crate) replaced: FxHashSet<(usize, usize)>,
+    /// (constraint position, piece position) of the coincidences replaced by bindings, in
+    /// increasing order.
+    pub(crate) replaced: Vec<(usize, usize)>,
     /// Constraints with a coincidence between points already merged.
     pub(crate) redundant: Vec<ConstraintId>,
 }
@@ -63,36 +62,34 @@ pub(crate) fn coincidence(
     })
 }
 
-/// Union–find over point blocks, each class rooted at its representative.
+/// Union–find over the blocks of a component (dense indices: block k is `parent[k]`'s child,
+/// a root its own parent), each class rooted at its representative.
 struct Classes<'a> {
-    parent: FxHashMap<BlockId, BlockId>,
-    /// Blocks that must be the representative of their class.
-    anchored: &'a dyn Fn(BlockId) -> bool,
+    parent: Vec<usize>,
+    /// Blocks that must be the representative of their class, by index.
+    anchored: &'a [bool],
 }
 
 impl Classes<'_> {
-    fn root(&mut self, b: BlockId) -> BlockId {
+    fn root(&mut self, b: usize) -> usize {
         let mut r = b;
-        while let Some(&p) = self.parent.get(&r) {
-            if p == r {
-                break;
-            }
-            r = p;
+        while self.parent[r] != r {
+            r = self.parent[r];
         }
         // Path compression.
         let mut c = b;
         while c != r {
-            let next = self.parent.get(&c).copied().unwrap_or(r);
-            self.parent.insert(c, r);
+            let next = self.parent[c];
+            self.parent[c] = r;
             c = next;
         }
         r
     }
 
     /// Joins the classes of a and b, or returns false when both are anchored.
-    fn join(&mut self, a: BlockId, b: BlockId) -> bool {
+    fn join(&mut self, a: usize, b: usize) -> bool {
         let (ra, rb) = (self.root(a), self.root(b));
-        let (fa, fb) = ((self.anchored)(ra), (self.anchored)(rb));
+        let (fa, fb) = (self.anchored[ra], self.anchored[rb]);
         if fa && fb {
             return false;
         }
@@ -102,25 +99,29 @@ impl Classes<'_> {
         } else {
             (rb, ra)
         };
-        self.parent.insert(bound, keep);
-        self.parent.entry(keep).or_insert(keep);
+        self.parent[bound] = keep;
         true
     }
 }
 
-/// Plans the merges of a component's coincidences. `fixed` blocks and elimination `bases` must
-/// stay representatives; elimination `targets` are never merged.
+/// Plans the merges of a component's coincidences. `blocks` holds every block a piece can
+/// name, block k at position k (the entity blocks, which a component problem adds first);
+/// `anchored` (fixed blocks and elimination bases) must stay representatives, elimination
+/// `targets` are never merged (both flags by block index, as long as `blocks`).
+///
+/// # Errors
+/// Those of `block`.
 pub(crate) fn plan(
     pieces: &[(ConstraintId, &[Piece])],
+    blocks: &[BlockId],
     block: impl Fn(crate::ids::EntityId, usize) -> Result<BlockId> + Copy,
-    fixed: &FxHashSet<BlockId>,
-    targets: &FxHashSet<BlockId>,
-    bases: &FxHashSet<BlockId>,
+    anchored: &[bool],
+    targets: &[bool],
 ) -> Result<Merges> {
-    let anchored = |b: BlockId| fixed.contains(&b) || bases.contains(&b);
+    let n = blocks.len();
     let mut classes = Classes {
-        parent: FxHashMap::default(),
-        anchored: &anchored,
+        parent: (0..n).collect(),
+        anchored,
     };
     let mut merges = Merges::default();
     for (ci, (id, list)) in pieces.iter().enumerate() {
@@ -128,25 +129,25 @@ pub(crate) fn plan(
             let Some((a, b)) = coincidence(piece, block)? else {
                 continue;
             };
-            if targets.contains(&a) || targets.contains(&b) {
+            let (a, b) = (a.index(), b.index());
+            // Blocks outside `blocks` (none, as the caller names entity blocks only) stay rows.
+            if a >= n || b >= n || targets[a] || targets[b] {
                 continue;
             }
             if classes.root(a) == classes.root(b) {
                 merges.redundant.push(*id);
-                merges.replaced.insert((ci, pi));
+                merges.replaced.push((ci, pi));
             } else if classes.join(a, b) {
-                merges.replaced.insert((ci, pi));
+                merges.replaced.push((ci, pi));
             }
         }
     }
-    let members: Vec<BlockId> = classes.parent.keys().copied().collect();
-    for b in members {
+    for (b, block) in blocks.iter().enumerate() {
         let r = classes.root(b);
         if r != b {
-            merges.into.push((b, r));
+            merges.into.push((*block, blocks[r]));
         }
     }
-    merges.into.sort_unstable_by_key(|(b, _)| *b);
     merges.redundant.sort_unstable();
     merges.redundant.dedup();
     Ok(merges)

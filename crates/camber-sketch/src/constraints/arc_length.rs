@@ -53,11 +53,20 @@ pub struct ArcLength {
 
 /// ∫|C′| − L by the fixed composite rule of the module documentation (blocks: the curve's
 /// control points).
+///
+/// The nodes being fixed, and the weights of a NURBS being data, C′ at each node is a fixed
+/// combination Σⱼ bⱼ·Pⱼ of the control points of the node's span ([`CurveBasis::at`]): the
+/// coefficients are computed once, in f64, and an evaluation (in dual numbers for the Jacobian
+/// and Hessian) is one short sum and one square root per node, never the basis again.
 #[derive(Debug, Clone, PartialEq)]
 pub struct LengthOf {
-    basis: CurveBasis,
     /// (parameter, weight) of every node.
     nodes: Vec<(f64, f64)>,
+    /// C′ at node k is Σ b·P_j over (j, b) in `terms[ends[k]..ends[k + 1]]`.
+    terms: Vec<(usize, f64)>,
+    ends: Vec<usize>,
+    /// The number of control point blocks the residual reads.
+    blocks: usize,
     length: f64,
 }
 
@@ -66,18 +75,11 @@ impl LengthOf {
     /// domain, increasing, ends included), for the length L, with the rule chosen on the
     /// control points `points` (see the module documentation).
     pub fn new(basis: CurveBasis, breakpoints: &[f64], points: &[&[f64]], length: f64) -> Self {
-        let mut r = Self {
-            basis,
-            nodes: Self::rule(breakpoints, 2),
-            length,
-        };
+        let mut r = Self::with_rule(&basis, Self::rule(breakpoints, 2), length);
         let mut previous = r.integral(points);
         let mut pieces = 4;
         while pieces <= MAX_SUBINTERVALS {
-            let next = Self {
-                nodes: Self::rule(breakpoints, pieces),
-                ..r.clone()
-            };
+            let next = Self::with_rule(&basis, Self::rule(breakpoints, pieces), length);
             let value = next.integral(points);
             r = next;
             let settled = (value - previous).abs() <= RULE_TOLERANCE * value.abs();
@@ -88,6 +90,29 @@ impl LengthOf {
             pieces *= 2;
         }
         r
+    }
+
+    /// The residual on the given nodes: the coefficients of C′ at each.
+    fn with_rule(basis: &CurveBasis, nodes: Vec<(f64, f64)>, length: f64) -> Self {
+        let mut terms = Vec::with_capacity(nodes.len() * 4);
+        let mut ends = Vec::with_capacity(nodes.len() + 1);
+        ends.push(0);
+        for (u, _) in &nodes {
+            let (fixed, points) = basis.at(*u, 1);
+            // Without coefficients (no valid knot vector, a curve the sketch refuses long
+            // before) the node's speed reads as zero rather than panicking.
+            if let Some(c) = fixed.fixed_coefficients() {
+                terms.extend(points.iter().zip(c).map(|(j, c)| (*j, c[1])));
+            }
+            ends.push(terms.len());
+        }
+        Self {
+            nodes,
+            terms,
+            ends,
+            blocks: basis.count(),
+            length,
+        }
     }
 
     /// The nodes (parameter, weight) of the composite rule with `pieces` sub-intervals per span.
@@ -110,12 +135,24 @@ impl LengthOf {
         self.nodes.len()
     }
 
+    /// C′ at node k, from the control points `x` (one block of two per control point).
+    fn speed_vector<T: Scalar>(&self, x: &[&[T]], k: usize) -> [T; 2] {
+        let mut c1 = [T::zero(), T::zero()];
+        for (j, b) in &self.terms[self.ends[k]..self.ends[k + 1]] {
+            let b = cst::<T>(*b);
+            c1[0] += b * x[*j][0];
+            c1[1] += b * x[*j][1];
+        }
+        c1
+    }
+
     /// The quadrature of ∫|C′| at the control points `points` (f64), for reports and tests.
     pub fn integral(&self, points: &[&[f64]]) -> f64 {
         self.nodes
             .iter()
-            .map(|(u, w)| {
-                let (_, c1) = self.basis.eval(points, *u);
+            .enumerate()
+            .map(|(k, (_, w))| {
+                let c1 = self.speed_vector(points, k);
                 w * c1[0].hypot(c1[1])
             })
             .sum()
@@ -130,12 +167,12 @@ impl Residual for LengthOf {
         1
     }
     fn block_sizes(&self) -> Option<Vec<usize>> {
-        Some(vec![2; self.basis.count()])
+        Some(vec![2; self.blocks])
     }
     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
         let mut sum = T::zero();
-        for (u, w) in &self.nodes {
-            let (_, c1) = self.basis.eval(x, cst::<T>(*u));
+        for (k, (_, w)) in self.nodes.iter().enumerate() {
+            let c1 = self.speed_vector(x, k);
             sum += cst::<T>(*w) * dot(c1, c1).sqrt();
         }
         out[0] = sum - cst::<T>(self.length);

@@ -1,7 +1,9 @@
 //! `curve_curve_tangent`: two curves touch: C₁(u) − C₂(v) = 0 (two rows) and their tangents are
-//! parallel there, cross(C₁′(u), C₂′(v))/(|C₁′||C₂′|) = 0 (one row), with the parameters fixed
-//! or free and the sense C₁′·C₂′ (same or opposite travel) checked after every solve, along
-//! with both tangents' speeds (no cusp). File form: `{"kind": "curve_curve_tangent",
+//! parallel there with the sense σ = ±1 asked (same or opposite travel): the angle from C₁′(u)
+//! to σ·C₂′(v), atan2(σ·cross(C₁′, C₂′), σ·C₁′·C₂′) = 0 (one row, in radians; see
+//! [`Angle`](super::Angle) for why the angle and not its sine), with the parameters fixed or
+//! free and the sense σ·C₁′·C₂′ > 0 checked after every solve, along with both tangents'
+//! speeds (no cusp). File form: `{"kind": "curve_curve_tangent",
 //! "first": 0, "u": {"free": 0.5}, "second": 1, "v": {"free": 0.5}, "sense": "agree"}`.
 
 use std::sync::Arc;
@@ -17,7 +19,8 @@ use crate::curve_eval::CurveBasis;
 use crate::errors::Result;
 use crate::ids::EntityId;
 use crate::lookup::EntityLookup;
-use crate::residuals::curve::{cross, curve_at, curve_block_sizes, curve_support, dot, Param};
+use super::angle::angle_between;
+use crate::residuals::curve::{curve_at, curve_block_sizes, curve_support, Param};
 use crate::vocabulary::{Contact, Sense};
 
 /// Two curves touch: C₁(u) = C₂(v) and their tangents there are parallel with the given sense
@@ -38,18 +41,34 @@ pub struct CurveCurveTangent {
     pub sense: Sense,
 }
 
-/// C₁(u) − C₂(v) = 0 (two rows) and cross(C₁′(u), C₂′(v))/(|C₁′||C₂′|) = 0 (one row). Blocks:
-/// the first curve's control points, u if free, the second curve's control points, v if free.
+/// C₁(u) − C₂(v) = 0 (two rows) and atan2(σ·cross(C₁′(u), C₂′(v)), σ·C₁′·C₂′) = 0 (one row).
+/// Blocks: the first curve's control points, u if free, the second curve's control points, v if
+/// free.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CurveCurveContact {
     first: (CurveBasis, Param),
     second: (CurveBasis, Param),
+    /// σ: +1 when the tangents travel the same way, −1 when opposite.
+    sense: f64,
 }
 
 impl CurveCurveContact {
-    /// Contact of `first` at its parameter with `second` at its parameter.
+    /// Contact of `first` at its parameter with `second` at its parameter, the tangents
+    /// travelling the same way.
     pub fn new(first: (CurveBasis, Param), second: (CurveBasis, Param)) -> Self {
-        Self { first, second }
+        Self {
+            first,
+            second,
+            sense: 1.0,
+        }
+    }
+
+    /// The same contact with the tangents travelling with `sense`.
+    pub fn with_sense(self, sense: Sense) -> Self {
+        Self {
+            sense: sense.sign(),
+            ..self
+        }
     }
 }
 
@@ -76,7 +95,7 @@ impl Residual for CurveCurveContact {
         let (c2, t2, _) = curve_at(&self.second.0, self.second.1, &x[k..]);
         out[0] = c1[0] - c2[0];
         out[1] = c1[1] - c2[1];
-        out[2] = cross(t1, t2) / (dot(t1, t1) * dot(t2, t2)).sqrt();
+        out[2] = angle_between(t1, t2, self.sense);
     }
 }
 
@@ -95,7 +114,7 @@ impl ConstraintKind for CurveCurveTangent {
         let (b2, s2, p2) = cx.curve_contact(self.second, self.v)?;
         slots.extend(s2);
         cx.residual(
-            CurveCurveContact::new((b1, p1), (b2, p2)),
+            CurveCurveContact::new((b1, p1), (b2, p2)).with_sense(self.sense),
             slots,
             Some(Arc::new(*self)),
         );

@@ -1,12 +1,14 @@
 //! `g1_join_free`: the end of one curve is the start of the next and the tangents there are
 //! parallel and point the same way, the direction itself being free:
 //! P_end(first) − P_start(second) = 0 (two affine rows, or a merged unknown) and
-//! cross(C₁′(b₁), C₂′(a₂))/(|C₁′||C₂′|) = 0 (one nonlinear row), with C₁′·C₂′ > 0 checked after
-//! every solve. [`G2Join`](super::G2Join) adds equal curvature. File form:
+//! the angle from C₁′(b₁) to C₂′(a₂), atan2(cross(C₁′, C₂′), C₁′·C₂′) = 0 (one nonlinear row, in
+//! radians; its gradient vanishes only with a tangent, unlike the sine's at a right angle, see
+//! [`Angle`](super::Angle)), with C₁′·C₂′ > 0 checked after every solve. [`G2Join`](super::G2Join) adds equal curvature. File form:
 //! `{"kind": "g1_join_free", "first": 0, "second": 1}`.
 
 use std::sync::Arc;
 
+use camber_solve::composed::{self, InnerMap, Outer};
 use camber_solve::scalar::cst;
 use camber_solve::{Residual, Scalar};
 use serde::{Deserialize, Serialize};
@@ -20,7 +22,8 @@ use crate::curve_eval::CurveBasis;
 use crate::errors::Result;
 use crate::ids::{EntityId, PointRef};
 use crate::lookup::EntityLookup;
-use crate::residuals::curve::{cross, dot};
+use super::angle::angle_between;
+use crate::residuals::curve::{Blocks, Param};
 
 /// The end of `first` coincides with the start of `second` and their tangents there are
 /// parallel and point the same way, the direction being free (three rows).
@@ -33,8 +36,8 @@ pub struct G1JoinFree {
     pub second: EntityId,
 }
 
-/// cross(C₁′(u₁), C₂′(u₂))/(|C₁′||C₂′|) = 0: the tangents of two curves at fixed parameters
-/// are parallel (blocks: the first curve's control points, then the second's).
+/// atan2(cross(C₁′(u₁), C₂′(u₂)), C₁′·C₂′) = 0: the tangents of two curves at fixed parameters
+/// point the same way (blocks: the first curve's control points, then the second's).
 #[derive(Debug, Clone, PartialEq)]
 pub struct TangentsParallel {
     first: (CurveBasis, f64),
@@ -62,7 +65,48 @@ impl Residual for TangentsParallel {
         let n1 = self.first.0.count();
         let t1 = self.first.0.tangent(x, cst(self.first.1));
         let t2 = self.second.0.tangent(&x[n1..], cst(self.second.1));
-        out[0] = cross(t1, t2) / (dot(t1, t1) * dot(t2, t2)).sqrt();
+        self.outer(&[t1[0], t1[1], t2[0], t2[1]], out);
+    }
+    fn structured_jacobian(
+        &self,
+        x: &[&[f64]],
+        active: &[bool],
+        values: &mut [f64],
+        jac: &mut [f64],
+    ) -> bool {
+        self.inner(x, active)
+            .is_some_and(|map| composed::jacobian(self, &map, values, jac))
+    }
+    fn structured_hessian(
+        &self,
+        x: &[&[f64]],
+        weights: &[f64],
+        active: &[bool],
+        out: &mut [f64],
+    ) -> bool {
+        self.inner(x, active)
+            .is_some_and(|map| composed::weighted_hessian(self, &map, weights, out))
+    }
+}
+
+/// f(t₁, t₂) = atan2(cross(t₁, t₂), t₁·t₂), the angle from t₁ to t₂, of the two tangents
+/// (inputs t₁ₓ, t₁ᵧ, t₂ₓ, t₂ᵧ).
+impl Outer for TangentsParallel {
+    fn outer<T: Scalar>(&self, y: &[T], out: &mut [T]) {
+        out[0] = angle_between([y[0], y[1]], [y[2], y[3]], 1.0);
+    }
+}
+
+impl TangentsParallel {
+    /// The two tangents as the inputs of [`Outer::outer`], with their derivatives.
+    fn inner(&self, x: &[&[f64]], active: &[bool]) -> Option<InnerMap> {
+        let blocks = Blocks::new(x, active)?;
+        let mut map = blocks.map();
+        let (b1, u1) = &self.first;
+        let (b2, u2) = &self.second;
+        let next = blocks.curve(b1, Param::Fixed(*u1), 0, 1..=1, &mut map)?;
+        blocks.curve(b2, Param::Fixed(*u2), next, 1..=1, &mut map)?;
+        Some(map)
     }
 }
 

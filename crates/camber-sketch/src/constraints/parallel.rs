@@ -1,5 +1,6 @@
-//! `parallel`: two line entities are parallel, either sense: sin(φ) = 0 for the angle φ
-//! between their directions (one row, the angle row of [`Angle`](super::Angle) at θ = 0).
+//! `parallel`: two line entities are parallel, either sense: the angle φ between their
+//! directions, folded into [−π/2, π/2], is 0 (one row, the angle row of [`Angle`](super::Angle)
+//! at θ = 0 for either sense).
 //! File form: `{"kind": "parallel", "first": 1, "second": 2}`.
 
 use serde::{Deserialize, Serialize};

@@ -1,6 +1,6 @@
-//! `perpendicular`: two line entities are perpendicular: cos(φ) = 0 for the angle φ between
-//! their directions (one row, the angle row of [`Angle`](super::Angle) at θ = π/2, either
-//! sense). File form: `{"kind": "perpendicular", "first": 1, "second": 2}`.
+//! `perpendicular`: two line entities are perpendicular: the angle φ between their directions
+//! is π/2 up to a half turn (one row, the angle row of [`Angle`](super::Angle) at θ = π/2 for
+//! either sense). File form: `{"kind": "perpendicular", "first": 1, "second": 2}`.
 
 use serde::{Deserialize, Serialize};
 

@@ -13,6 +13,7 @@
 
 use std::sync::Arc;
 
+use camber_solve::composed::{self, InnerMap, Outer};
 use camber_solve::scalar::cst;
 use camber_solve::{Residual, Scalar};
 use serde::{Deserialize, Serialize};
@@ -26,7 +27,7 @@ use crate::entity::Entity;
 use crate::errors::{Error, Result};
 use crate::ids::EntityId;
 use crate::lookup::EntityLookup;
-use crate::residuals::curve::{curve_at, curve_block_sizes, curve_support, dot, Param};
+use crate::residuals::curve::{curve_at, curve_block_sizes, curve_support, dot, Blocks, Param};
 use crate::vocabulary::{CircleSide, Contact, Rotation};
 
 /// The curve touches the circle entity at u: |C(u) − c|² = r² and (C(u) − c)·C′(u) = 0,
@@ -99,10 +100,51 @@ impl Residual for CircleContact {
     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
         let (c, c1, k) = curve_at(&self.basis, self.u, x);
         let (centre, r) = (x[k], x[k + 1][0]);
+        self.outer(&[c[0], c[1], c1[0], c1[1], centre[0], centre[1], r], out);
+    }
+    fn structured_jacobian(
+        &self,
+        x: &[&[f64]],
+        active: &[bool],
+        values: &mut [f64],
+        jac: &mut [f64],
+    ) -> bool {
+        self.inner(x, active)
+            .is_some_and(|map| composed::jacobian(self, &map, values, jac))
+    }
+    fn structured_hessian(
+        &self,
+        x: &[&[f64]],
+        weights: &[f64],
+        active: &[bool],
+        out: &mut [f64],
+    ) -> bool {
+        self.inner(x, active)
+            .is_some_and(|map| composed::weighted_hessian(self, &map, weights, out))
+    }
+}
+
+/// f(C, C′, c, r) = C − c − σ·r·n (inputs Cₓ, C_y, C′ₓ, C′_y, cₓ, c_y, r).
+impl Outer for CircleContact {
+    fn outer<T: Scalar>(&self, y: &[T], out: &mut [T]) {
+        let (c, c1, centre, r) = ([y[0], y[1]], [y[2], y[3]], [y[4], y[5]], y[6]);
         let speed = dot(c1, c1).sqrt();
         let s = cst::<T>(self.sigma) * r / speed;
         out[0] = c[0] - centre[0] + s * c1[1];
         out[1] = c[1] - centre[1] - s * c1[0];
+    }
+}
+
+impl CircleContact {
+    /// C(u), C′(u), the centre and the radius as the inputs of [`Outer::outer`], with their
+    /// derivatives (in u too when it is free).
+    fn inner(&self, x: &[&[f64]], active: &[bool]) -> Option<InnerMap> {
+        let blocks = Blocks::new(x, active)?;
+        let mut map = blocks.map();
+        let k = blocks.curve(&self.basis, self.u, 0, 0..=1, &mut map)?;
+        blocks.block(k, &mut map)?;
+        blocks.block(k + 1, &mut map)?;
+        Some(map)
     }
 }
 

@@ -5,9 +5,18 @@
 //! A residual over a curve reads the curve's control-point blocks first, then, when the
 //! parameter is free ([`Param::Block`]), a block of one holding u, then the blocks of whatever
 //! else it relates the curve to.
+//!
+//! Such a residual is a small function f of the curve's point and derivatives at u (and of the
+//! other blocks' values): [`Blocks`] writes those inputs with their exact derivatives in floats
+//! into a [`camber_solve::composed::InnerMap`], so that the solver's Jacobians and Hessians
+//! differentiate only f by dual numbers ([`camber_solve::composed`]).
 
+use std::ops::RangeInclusive;
+
+use camber_solve::composed::InnerMap;
 use camber_solve::scalar::cst;
 use camber_solve::Scalar;
+use smallvec::SmallVec;
 
 use crate::curve_eval::CurveBasis;
 
@@ -68,6 +77,103 @@ pub(crate) fn curve_support(
             }
             n + 1
         }
+    }
+}
+
+/// The blocks of a residual seen by its inner map ([`InnerMap`]): the values, which blocks
+/// move, and where each block's first column is among all the residual's columns.
+pub(crate) struct Blocks<'a> {
+    x: &'a [&'a [f64]],
+    active: &'a [bool],
+    offsets: SmallVec<[usize; 16]>,
+}
+
+impl<'a> Blocks<'a> {
+    /// The blocks `x` with their `active` flags (one per block); `None` when the counts differ.
+    pub(crate) fn new(x: &'a [&'a [f64]], active: &'a [bool]) -> Option<Self> {
+        if x.len() != active.len() {
+            return None;
+        }
+        let mut offsets = SmallVec::new();
+        let mut at = 0;
+        for b in x {
+            offsets.push(at);
+            at += b.len();
+        }
+        Some(Self { x, active, offsets })
+    }
+
+    /// An empty inner map over all the blocks' columns.
+    pub(crate) fn map(&self) -> InnerMap {
+        InnerMap::new(self.x.iter().map(|b| b.len()).sum())
+    }
+
+    /// Adds C⁽ᵏ⁾(u) for k in `orders` (at most 2; x then y of each) as inputs of `map`, the
+    /// curve reading the blocks from `first` on (its parameter after them when it is
+    /// [`Param::Block`]), with their derivatives in the control points and in u (see
+    /// [`camber_solve::composed`]); the same values as [`curve_at`] and
+    /// [`CurveBasis::eval2`]. Returns the index of the block after the curve's (and u's), or
+    /// `None` when the blocks are too few.
+    pub(crate) fn curve(
+        &self,
+        basis: &CurveBasis,
+        u: Param,
+        first: usize,
+        orders: RangeInclusive<usize>,
+        map: &mut InnerMap,
+    ) -> Option<usize> {
+        let n = basis.count();
+        let (uu, u_block) = match u {
+            Param::Fixed(v) => (v, None),
+            Param::Block => (*self.x.get(first + n)?.first()?, Some(first + n)),
+        };
+        let u_active = u_block.is_some_and(|b| self.active[b]);
+        let top = (*orders.end()).min(2);
+        let (weights, inside) = basis.block_weights(uu, if u_active { top + 2 } else { top });
+        if weights.iter().any(|(j, _)| *j >= n) || self.x.len() < first + n {
+            return None;
+        }
+        let u_col = u_block
+            .filter(|_| u_active && inside)
+            .map(|b| self.offsets[b]);
+        for k in *orders.start()..=top {
+            for c in 0..2 {
+                let sum = |order: usize| -> f64 {
+                    weights
+                        .iter()
+                        .map(|(j, a)| a[order] * self.x[first + j].get(c).copied().unwrap_or(0.0))
+                        .sum()
+                };
+                let input = map.input(sum(k));
+                for (j, a) in &weights {
+                    if self.active[first + j] {
+                        map.gradient(input, self.offsets[first + j] + c, a[k]);
+                    }
+                }
+                if let Some(uc) = u_col {
+                    map.gradient(input, uc, sum(k + 1));
+                    map.curvature(input, uc, uc, sum(k + 2));
+                    for (j, a) in &weights {
+                        if self.active[first + j] {
+                            map.curvature(input, self.offsets[first + j] + c, uc, a[k + 1]);
+                        }
+                    }
+                }
+            }
+        }
+        Some(first + n + usize::from(u_block.is_some()))
+    }
+
+    /// Adds every value of block `b` as an input of `map` (moving with itself when active).
+    pub(crate) fn block(&self, b: usize, map: &mut InnerMap) -> Option<()> {
+        let values = self.x.get(b)?;
+        for (c, v) in values.iter().enumerate() {
+            let input = map.input(*v);
+            if self.active[b] {
+                map.gradient(input, self.offsets[b] + c, 1.0);
+            }
+        }
+        Some(())
     }
 }
 
