@@ -164,9 +164,6 @@ pub fn jacobian_active<R: Residual>(
         return Ok(());
     }
     jac.fill(0.0);
-    if residual.jacobian_by_hand(x, values, jac) {
-        return Ok(());
-    }
     let mut needed: smallvec::SmallVec<[bool; 16]> = active.iter().copied().collect();
     residual.depends_on(x, &mut needed);
     let mut columns: smallvec::SmallVec<[usize; 32]> = smallvec::SmallVec::new();

@@ -110,15 +110,6 @@ pub trait Residual: Debug + Send + Sync + 'static {
         let _ = (x, weights, active, out);
         false
     }
-    /// Writes g(x) into `out` and ∂g/∂x into `jac` (row major, `dim()` × Σ|x_b|, zeroed on
-    /// entry, lengths checked) and returns true when the residual has its Jacobian in closed
-    /// form, exactly as automatic differentiation would give it (an affine residual's constant
-    /// coefficients): [`crate::autodiff::jacobian_active`] then skips its dual-number passes.
-    /// The default returns false.
-    fn jacobian_by_hand(&self, x: &[&[f64]], out: &mut [f64], jac: &mut [f64]) -> bool {
-        let _ = (x, out, jac);
-        false
-    }
 }
 
 /// The object-safe face of a [`Residual`], stored by the problem as `Box<dyn DynResidual>`.

@@ -79,13 +79,20 @@ impl Residual for PointCombination {
     fn is_affine(&self) -> bool {
         true
     }
-    /// ∂/∂Pⱼ = cⱼ·I (two columns per block).
-    fn jacobian_by_hand(&self, x: &[&[f64]], out: &mut [f64], jac: &mut [f64]) -> bool {
+    /// ∂/∂Pⱼ = cⱼ·I (two columns per block), constant: no dual numbers needed.
+    fn structured_jacobian(
+        &self,
+        x: &[&[f64]],
+        _active: &[bool],
+        values: &mut [f64],
+        jac: &mut [f64],
+    ) -> bool {
         let ncols = 2 * self.coeffs.len();
-        if x.len() != self.coeffs.len() || jac.len() != 2 * ncols {
+        if x.len() != self.coeffs.len() || jac.len() != 2 * ncols || values.len() != 2 {
             return false;
         }
-        self.eval(x, out);
+        self.eval(x, values);
+        jac.fill(0.0);
         for (j, c) in self.coeffs.iter().enumerate() {
             jac[2 * j] = *c;
             jac[ncols + 2 * j + 1] = *c;
@@ -141,12 +148,18 @@ impl Residual for DirectionCross {
     fn is_affine(&self) -> bool {
         true
     }
-    /// ∂/∂Pⱼ = cⱼ·(d_y, −d_x).
-    fn jacobian_by_hand(&self, x: &[&[f64]], out: &mut [f64], jac: &mut [f64]) -> bool {
-        if x.len() != self.coeffs.len() || jac.len() != 2 * self.coeffs.len() {
+    /// ∂/∂Pⱼ = cⱼ·(d_y, −d_x), constant: no dual numbers needed.
+    fn structured_jacobian(
+        &self,
+        x: &[&[f64]],
+        _active: &[bool],
+        values: &mut [f64],
+        jac: &mut [f64],
+    ) -> bool {
+        if x.len() != self.coeffs.len() || jac.len() != 2 * self.coeffs.len() || values.len() != 1 {
             return false;
         }
-        self.eval(x, out);
+        self.eval(x, values);
         for (j, c) in self.coeffs.iter().enumerate() {
             jac[2 * j] = c * self.direction[1];
             jac[2 * j + 1] = -(c * self.direction[0]);
@@ -222,9 +235,9 @@ mod tests {
     use super::*;
     use camber_solve::DynResidual;
 
-    /// The Jacobian by hand is the one automatic differentiation gives
-    /// ([`DynResidual::jacobian`] does not take the shortcut), values to the bit, and the shortcut
-    /// of [`camber_solve::autodiff::jacobian_active`] returns it.
+    /// The structured Jacobian is the one automatic differentiation gives
+    /// ([`DynResidual::jacobian`] does not take the shortcut): values to the bit, every entry
+    /// written; and [`camber_solve::autodiff::jacobian_active`] returns it.
     #[test]
     fn jacobians_by_hand_are_those_of_autodiff() {
         let blocks = [[0.3, -1.7], [2.0, 0.125], [-4.5, 3.3]];
@@ -234,7 +247,7 @@ mod tests {
             let dim = r.dim();
             let (mut g, mut jac) = (vec![0.0; dim], vec![0.0; dim * 6]);
             r.jacobian(&x, &mut g, &mut jac).unwrap();
-            let (mut g2, mut jac2) = (vec![0.0; dim], vec![0.0; dim * 6]);
+            let (mut g2, mut jac2) = (vec![0.0; dim], vec![7.0; dim * 6]);
             assert!(by_hand(&mut g2, &mut jac2));
             assert_eq!(
                 g.iter().map(|v| v.to_bits()).collect::<Vec<_>>(),
@@ -250,11 +263,21 @@ mod tests {
             assert!(jac.iter().any(|v| *v != 0.0));
         };
         let p = PointCombination::new("c", coeffs.clone(), [0.5, -2.0]);
-        check(&p, &|g, j| Residual::jacobian_by_hand(&p, &x, g, j));
+        check(&p, &|g, j| {
+            Residual::structured_jacobian(&p, &x, &[true; 3], g, j)
+        });
         let d = DirectionCross::new("t", coeffs, [0.6, -0.8]);
-        check(&d, &|g, j| Residual::jacobian_by_hand(&d, &x, g, j));
+        check(&d, &|g, j| {
+            Residual::structured_jacobian(&d, &x, &[true; 3], g, j)
+        });
         // Blocks that do not match the coefficients: left to automatic differentiation.
         let (mut g, mut j) = ([0.0; 2], [0.0; 8]);
-        assert!(!Residual::jacobian_by_hand(&p, &x[..2], &mut g, &mut j));
+        assert!(!Residual::structured_jacobian(
+            &p,
+            &x[..2],
+            &[true; 2],
+            &mut g,
+            &mut j
+        ));
     }
 }
