@@ -8,7 +8,7 @@
 
 use std::sync::Arc;
 
-use camber_solve::composed::{self, InnerMap, Outer};
+use camber_solve::composed::{InnerMap, Outer};
 use camber_solve::scalar::cst;
 use camber_solve::{Residual, Scalar};
 use serde::{Deserialize, Serialize};
@@ -23,7 +23,9 @@ use crate::errors::Result;
 use crate::ids::{EntityId, PointRef};
 use crate::lookup::EntityLookup;
 use super::angle::{angle_between, angle_of};
-use crate::residuals::curve::{cross, dot, Blocks, Param};
+use crate::residuals::curve::{
+    composed_hessian, composed_jacobian, cross, dot, Blocks, ComposedCurve, Param,
+};
 
 /// The end of `first` coincides with the start of `second` and their tangents there are
 /// parallel and point the same way, the direction being free (three rows).
@@ -74,11 +76,7 @@ impl Residual for TangentsParallel {
         values: &mut [f64],
         jac: &mut [f64],
     ) -> bool {
-        let Some(blocks) = Blocks::new(x, active) else {
-            return false;
-        };
-        let mut map = blocks.map();
-        self.inner(&blocks, &mut map).is_some() && composed::jacobian(self, &map, values, jac)
+        composed_jacobian(self, x, active, values, jac)
     }
     fn structured_hessian(
         &self,
@@ -87,12 +85,7 @@ impl Residual for TangentsParallel {
         active: &[bool],
         out: &mut [f64],
     ) -> bool {
-        let Some(blocks) = Blocks::new(x, active) else {
-            return false;
-        };
-        let mut map = blocks.map();
-        self.inner(&blocks, &mut map).is_some()
-            && composed::weighted_hessian(self, &map, weights, out)
+        composed_hessian(self, x, weights, active, out)
     }
 }
 
@@ -186,7 +179,7 @@ impl AngleParts {
     }
 }
 
-impl TangentsParallel {
+impl ComposedCurve for TangentsParallel {
     /// The two tangents as the inputs of [`Outer::outer`], with their derivatives.
     fn inner(&self, blocks: &Blocks<'_>, map: &mut InnerMap) -> Option<()> {
         let (b1, u1) = &self.first;

@@ -13,7 +13,7 @@
 
 use std::sync::Arc;
 
-use camber_solve::composed::{self, InnerMap, Outer};
+use camber_solve::composed::{InnerMap, Outer};
 use camber_solve::scalar::cst;
 use camber_solve::{Residual, Scalar};
 use serde::{Deserialize, Serialize};
@@ -27,7 +27,10 @@ use crate::entity::Entity;
 use crate::errors::{Error, Result};
 use crate::ids::EntityId;
 use crate::lookup::EntityLookup;
-use crate::residuals::curve::{curve_at, curve_block_sizes, curve_support, dot, Blocks, Param};
+use crate::residuals::curve::{
+    composed_hessian, composed_jacobian, curve_at, curve_block_sizes, curve_support, dot, Blocks,
+    ComposedCurve, Param,
+};
 use crate::vocabulary::{CircleSide, Contact, Rotation};
 
 /// The curve touches the circle entity at u: |C(u) − c|² = r² and (C(u) − c)·C′(u) = 0,
@@ -109,11 +112,7 @@ impl Residual for CircleContact {
         values: &mut [f64],
         jac: &mut [f64],
     ) -> bool {
-        let Some(blocks) = Blocks::new(x, active) else {
-            return false;
-        };
-        let mut map = blocks.map();
-        self.inner(&blocks, &mut map).is_some() && composed::jacobian(self, &map, values, jac)
+        composed_jacobian(self, x, active, values, jac)
     }
     fn structured_hessian(
         &self,
@@ -122,12 +121,7 @@ impl Residual for CircleContact {
         active: &[bool],
         out: &mut [f64],
     ) -> bool {
-        let Some(blocks) = Blocks::new(x, active) else {
-            return false;
-        };
-        let mut map = blocks.map();
-        self.inner(&blocks, &mut map).is_some()
-            && composed::weighted_hessian(self, &map, weights, out)
+        composed_hessian(self, x, weights, active, out)
     }
 }
 
@@ -142,7 +136,7 @@ impl Outer for CircleContact {
     }
 }
 
-impl CircleContact {
+impl ComposedCurve for CircleContact {
     /// C(u), C′(u), the centre and the radius as the inputs of [`Outer::outer`], with their
     /// derivatives (in u too when it is free).
     fn inner(&self, blocks: &Blocks<'_>, map: &mut InnerMap) -> Option<()> {

@@ -7,13 +7,14 @@
 //! else it relates the curve to.
 //!
 //! Such a residual is a small function f of the curve's point and derivatives at u (and of the
-//! other blocks' values): [`Blocks`] writes those inputs with their exact derivatives in floats
+//! other blocks' values): `Blocks` writes those inputs with their exact derivatives in floats
 //! into a [`camber_solve::composed::InnerMap`], so that the solver's Jacobians and Hessians
-//! differentiate only f by dual numbers ([`camber_solve::composed`]).
+//! differentiate only f by dual numbers ([`camber_solve::composed`]); `ComposedCurve`
+//! names such a residual and gives it both structured derivatives.
 
 use std::ops::RangeInclusive;
 
-use camber_solve::composed::InnerMap;
+use camber_solve::composed::{self, InnerMap, Outer};
 use camber_solve::scalar::cst;
 use camber_solve::Scalar;
 use smallvec::SmallVec;
@@ -78,6 +79,47 @@ pub(crate) fn curve_support(
             n + 1
         }
     }
+}
+
+/// A curve residual written as g = f(y(x)): a small outer function f ([`Outer`]) of a few
+/// inputs y that its inner map gives, with their derivatives, from the blocks (a curve's point
+/// and derivatives at a parameter, a circle's centre and radius). Its structured derivatives
+/// are [`composed_jacobian`] and [`composed_hessian`].
+pub(crate) trait ComposedCurve: Outer {
+    /// Writes the inputs y and their derivatives into `map`; `None` when the blocks do not
+    /// have the shape the residual reads.
+    fn inner(&self, blocks: &Blocks<'_>, map: &mut InnerMap) -> Option<()>;
+}
+
+/// [`camber_solve::Residual::structured_jacobian`] of a [`ComposedCurve`] residual.
+pub(crate) fn composed_jacobian<R: ComposedCurve>(
+    residual: &R,
+    x: &[&[f64]],
+    active: &[bool],
+    values: &mut [f64],
+    jac: &mut [f64],
+) -> bool {
+    let Some(blocks) = Blocks::new(x, active) else {
+        return false;
+    };
+    let mut map = blocks.map();
+    residual.inner(&blocks, &mut map).is_some() && composed::jacobian(residual, &map, values, jac)
+}
+
+/// [`camber_solve::Residual::structured_hessian`] of a [`ComposedCurve`] residual.
+pub(crate) fn composed_hessian<R: ComposedCurve>(
+    residual: &R,
+    x: &[&[f64]],
+    weights: &[f64],
+    active: &[bool],
+    out: &mut [f64],
+) -> bool {
+    let Some(blocks) = Blocks::new(x, active) else {
+        return false;
+    };
+    let mut map = blocks.map();
+    residual.inner(&blocks, &mut map).is_some()
+        && composed::weighted_hessian(residual, &map, weights, out)
 }
 
 /// The blocks of a residual seen by its inner map ([`InnerMap`]): the values, which blocks
