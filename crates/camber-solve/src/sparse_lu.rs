@@ -5,24 +5,27 @@
 //! factor of J·W⁻¹·Jᵀ, the refined minimum-norm solves and the projection. J keeps its
 //! sparsity pattern from one Newton iteration to the next, so everything that depends on the
 //! pattern alone is done once per pattern ([`Pattern`]): where every triplet of the
-//! linearization lands among J's compressed columns (repeats summed), and the fill-reducing
-//! column order (faer's COLAMD). Each iteration then scatters the new values into place and
-//! factorizes them numerically with faer's left-looking simplicial LU, which pivots by rows
-//! (partial pivoting, the largest candidate of each column): the pattern of L and U follows
-//! the pivots, which are numeric, so that part is redone by every factorization.
+//! linearization lands among J's compressed columns (repeats summed), and the column order.
+//! That order is J's own while it fills L and U little (the rows of a chain or a ladder,
+//! numbered along it, give a narrow band), and faer's COLAMD once the natural order fills
+//! more than [`NATURAL_FILL_LIMIT`] times J's entries. Each iteration then scatters the new
+//! values into place and factorizes them numerically with faer's left-looking simplicial LU,
+//! which pivots by rows (partial pivoting, the largest candidate of each column): the
+//! pattern of L and U follows the pivots, which are numeric, so that part is redone by every
+//! factorization.
 //!
 //! **Singular J.** faer refuses only a structurally singular J (a column left without a
 //! candidate pivot); it accepts a pivot of any size, zero included. This module reads U's
 //! diagonal after the factorization and refuses the LU when a pivot is at most
 //! [`SINGULAR_PIVOT`] times J's largest entry, or not finite: the test of the dense
 //! [`crate::square::SquareLu`], made on the pivots of this elimination order (COLAMD's columns,
-//! rows by partial pivoting) instead of the natural one. Both refuse an exactly singular J;
-//! on a nearly singular one (pivots within a few orders of magnitude of the threshold) the two
-//! orders may decide differently. A refused LU sends the caller to the minimum-norm path,
-//! which decides about rank deficiency as it always did.
+//! rows by partial pivoting) instead of the natural one, followed by the same condition
+//! estimate behind a pivot below [`SUSPECT_PIVOT`] (see [`crate::square`]). On a nearly
+//! singular J the two orders may decide differently. A refused LU sends the caller to the
+//! minimum-norm path, which decides about rank deficiency as it always did.
 //!
-//! The step is refined like the dense one (J·Δ + g recomputed with J's own values, at most
-//! [`REFINEMENT`] corrections, stopped once the miss is rounding), and the multipliers
+//! The step is refined like the dense one (J·Δ + g recomputed with J's own values, a
+//! correction unless the miss is rounding, at most [`REFINEMENT`]), and the multipliers
 //! λ = −J⁻ᵀ·(W·Δ + c) come from the transposed solve with the same factors.
 
 use faer::dyn_stack::{MemBuffer, MemStack};
@@ -37,9 +40,15 @@ use faer::{Conj, MatMut, Par};
 
 use crate::square::{ill_conditioned, SINGULAR_PIVOT, SUSPECT_PIVOT};
 
-/// Rounds of iterative refinement after the first solve (stopped early once the miss is
-/// rounding).
-const REFINEMENT: usize = 2;
+/// Rounds of iterative refinement after the first solve (skipped when the miss is rounding).
+/// One, where the dense LU takes two: a round costs a sparse solve, and one already brings
+/// the step to the accuracy that Newton's convergence test can see.
+const REFINEMENT: usize = 1;
+
+/// J's own column order is kept while L and U hold at most this many times J's entries (the
+/// rows of a chain or a ladder, numbered along it, fill little); above, COLAMD's order is
+/// computed once for the pattern and J factorized again.
+const NATURAL_FILL_LIMIT: usize = 3;
 
 /// The pattern work of one sparsity pattern of J: kept while the linearizations keep it.
 #[derive(Debug, Clone)]
@@ -56,9 +65,12 @@ struct Pattern {
     /// J in compressed columns: rows sorted within each column, no repeats.
     col_ptr: Vec<usize>,
     row_idx: Vec<usize>,
-    /// COLAMD's column order: column `col_perm[k]` of J is eliminated k-th.
+    /// The column order: column `col_perm[k]` of J is eliminated k-th. J's own order until
+    /// it fills L and U too much ([`NATURAL_FILL_LIMIT`]), COLAMD's from then on.
     col_perm: Vec<usize>,
     col_perm_inv: Vec<usize>,
+    /// Whether `col_perm` is COLAMD's.
+    reordered: bool,
 }
 
 impl Pattern {
@@ -127,18 +139,6 @@ impl Pattern {
             }
             col_ptr.push(row_idx.len());
         }
-        let mut col_perm = vec![0_usize; n];
-        let mut col_perm_inv = vec![0_usize; n];
-        let symbolic = SymbolicSparseColMatRef::new_checked(n, n, &col_ptr, None, &row_idx);
-        let mut scratch = MemBuffer::new(colamd::order_scratch::<usize>(n, n, row_idx.len()));
-        colamd::order(
-            &mut col_perm,
-            &mut col_perm_inv,
-            symbolic,
-            colamd::Control::default(),
-            MemStack::new(&mut scratch),
-        )
-        .ok()?;
         Some(Self {
             n,
             total_rows,
@@ -147,9 +147,27 @@ impl Pattern {
             slots,
             col_ptr,
             row_idx,
-            col_perm,
-            col_perm_inv,
+            col_perm: (0..n).collect(),
+            col_perm_inv: (0..n).collect(),
+            reordered: false,
         })
+    }
+
+    /// Replaces J's own column order by COLAMD's. `false` when COLAMD fails.
+    fn reorder(&mut self) -> bool {
+        let n = self.n;
+        let symbolic =
+            SymbolicSparseColMatRef::new_checked(n, n, &self.col_ptr, None, &self.row_idx);
+        let mut scratch = MemBuffer::new(colamd::order_scratch::<usize>(n, n, self.row_idx.len()));
+        self.reordered = true;
+        colamd::order(
+            &mut self.col_perm,
+            &mut self.col_perm_inv,
+            symbolic,
+            colamd::Control::default(),
+            MemStack::new(&mut scratch),
+        )
+        .is_ok()
     }
 
     /// Whether this pattern is that of `triplets` over the same rows.
@@ -252,31 +270,24 @@ impl SparseLu {
         if !(scale.is_finite() && scale > 0.0) {
             return false;
         }
-        let scratch = self.scratch.get_or_insert_with(|| {
-            MemBuffer::new(
-                factorize_simplicial_numeric_lu_scratch::<usize, f64>(n, n)
-                    .or(solve_in_place_scratch::<usize, f64>(n, 1, Par::Seq)),
-            )
-        });
-        self.row_perm.resize(n, 0);
-        self.row_perm_inv.resize(n, 0);
-        let j = SparseColMatRef::new(
-            SymbolicSparseColMatRef::new_checked(n, n, &p.col_ptr, None, &p.row_idx),
-            &self.values,
-        );
-        let col_perm = PermRef::new_checked(&p.col_perm, &p.col_perm_inv, n);
-        if factorize_simplicial_numeric_lu(
-            &mut self.row_perm,
-            &mut self.row_perm_inv,
-            &mut self.lu,
-            j,
-            col_perm,
-            MemStack::new(scratch),
-        )
-        .is_err()
-        {
+        let entries = p.row_idx.len();
+        if !self.factorize_numeric(n) {
             return false;
         }
+        let fill =
+            self.lu.l_factor_unsorted().compute_nnz() + self.lu.u_factor_unsorted().compute_nnz();
+        if fill > NATURAL_FILL_LIMIT * entries {
+            let reordered = self
+                .pattern
+                .as_mut()
+                .is_some_and(|p| !p.reordered && p.reorder());
+            if reordered && !self.factorize_numeric(n) {
+                return false;
+            }
+        }
+        let Some(p) = &self.pattern else {
+            return false;
+        };
         // U's diagonal entry is the last of each of its columns (faer stores it there and its
         // triangular solves rely on it).
         let u = self.lu.u_factor_unsorted();
@@ -336,6 +347,36 @@ impl SparseLu {
             }
         }
         true
+    }
+
+    /// The numeric factorization of `values` in the pattern's column order. `false` when
+    /// faer finds J structurally singular.
+    fn factorize_numeric(&mut self, n: usize) -> bool {
+        let Some(p) = &self.pattern else {
+            return false;
+        };
+        let scratch = self.scratch.get_or_insert_with(|| {
+            MemBuffer::new(
+                factorize_simplicial_numeric_lu_scratch::<usize, f64>(n, n)
+                    .or(solve_in_place_scratch::<usize, f64>(n, 1, Par::Seq)),
+            )
+        });
+        self.row_perm.resize(n, 0);
+        self.row_perm_inv.resize(n, 0);
+        let j = SparseColMatRef::new(
+            SymbolicSparseColMatRef::new_checked(n, n, &p.col_ptr, None, &p.row_idx),
+            &self.values,
+        );
+        let col_perm = PermRef::new_checked(&p.col_perm, &p.col_perm_inv, n);
+        factorize_simplicial_numeric_lu(
+            &mut self.row_perm,
+            &mut self.row_perm_inv,
+            &mut self.lu,
+            j,
+            col_perm,
+            MemStack::new(scratch),
+        )
+        .is_ok()
     }
 
     /// The order n (0 when the last factorization was refused).
@@ -611,6 +652,35 @@ mod tests {
         reused.forget();
         assert_eq!(reused.order(), 0);
         assert!(reused.refactorize(2, &other, 2, None));
+    }
+
+    /// An arrowhead J (full first row and column, a diagonal) fills L and U completely in its
+    /// own order and not at all in COLAMD's: the pattern is reordered, and the step is right.
+    /// A tridiagonal J keeps its own order.
+    #[test]
+    fn the_column_order_changes_only_when_the_natural_one_fills() {
+        let n = 40;
+        let mut arrow = vec![(0, 0, 10.0)];
+        for k in 1..n {
+            arrow.extend([(0, k, 1.0), (k, 0, 1.0), (k, k, 2.0 + k as f64)]);
+        }
+        let mut lu = factorize(n, &arrow, n, None).unwrap();
+        assert!(lu.pattern.as_ref().unwrap().reordered);
+        let g: Vec<f64> = (0..n).map(|k| (k as f64).sin()).collect();
+        let mut dz = vec![0.0; n];
+        lu.step(&g, &mut dz);
+        for (jd, gk) in apply(n, &arrow, None, &dz, false).iter().zip(&g) {
+            assert_relative_eq!(*jd, -gk, epsilon = 1e-13);
+        }
+        let mut band = Vec::new();
+        for k in 0..n {
+            band.push((k, k, 4.0));
+            if k + 1 < n {
+                band.extend([(k, k + 1, 1.0), (k + 1, k, -1.0)]);
+            }
+        }
+        let lu = factorize(n, &band, n, None).unwrap();
+        assert!(!lu.pattern.as_ref().unwrap().reordered);
     }
 
     /// A random sparse n × n J, strictly diagonally dominant by rows before its rows are
