@@ -9,10 +9,12 @@
 //! That order is J's own while it fills L and U little (the rows of a chain or a ladder,
 //! numbered along it, give a narrow band), and faer's COLAMD once the natural order fills
 //! more than [`NATURAL_FILL_LIMIT`] times J's entries. Each iteration then scatters the new
-//! values into place and factorizes them numerically with faer's left-looking simplicial LU,
-//! which pivots by rows (partial pivoting, the largest candidate of each column): the
-//! pattern of L and U follows the pivots, which are numeric, so that part is redone by every
-//! factorization.
+//! values into place. The first factorization of a pattern is faer's left-looking
+//! simplicial LU, which pivots by rows (partial pivoting, the largest candidate of each
+//! column) and finds the patterns of L and U as it goes; later ones keep its pivots and
+//! patterns and only redo the arithmetic ([`crate::lu_triangles`]), until a kept pivot falls
+//! below a tenth of its column's largest candidate, when faer pivots afresh. The solves run
+//! on those triangles.
 //!
 //! **Singular J.** faer refuses only a structurally singular J (a column left without a
 //! candidate pivot); it accepts a pivot of any size, zero included. This module reads U's
