@@ -56,6 +56,7 @@ mod budget;
 pub mod composed;
 pub mod errors;
 mod free_columns;
+mod held_step;
 pub mod hessian;
 pub mod ids;
 pub mod linear;
