@@ -99,6 +99,7 @@ pub mod selection;
 #[cfg(feature = "nlopt")]
 pub(crate) mod slsqp;
 pub(crate) mod soft;
+pub(crate) mod sparse_lu;
 pub(crate) mod square;
 pub use newton::NewtonWorkspace;
 pub use nonlinear::{NonlinearOptions, SolverChoice};
