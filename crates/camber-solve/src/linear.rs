@@ -147,11 +147,12 @@ fn solve_in(
     let (m, n) = (lin.g.len(), lin.map.len());
 
     let dense_analysis = m.saturating_mul(n) <= options.dense_analysis_max_entries;
+    // The rows kept for the step (`None`: all of them).
     let (rank, dof, redundant, rows) = if dense_analysis
         && crate::selection::certainly_full_row_rank_of(lin, options.rank_tolerance)
     {
         // Every row independent by the analysis' own test: its answer is known.
-        (m, n - m, Vec::new(), (0..m).collect())
+        (m, n - m, Vec::new(), None)
     } else if dense_analysis {
         let a = analysis::analyze(lin, options.rank_tolerance, options.tolerance)?;
         if !a.conflicting.is_empty() {
@@ -165,9 +166,9 @@ fn solve_in(
             constraints.extend(&a.partly_redundant);
             return Err(Error::Redundant { constraints });
         }
-        (a.rank, a.dof, a.redundant, a.rows.independent)
+        (a.rank, a.dof, a.redundant, Some(a.rows.independent))
     } else {
-        (m.min(n), n.saturating_sub(m), Vec::new(), (0..m).collect())
+        (m.min(n), n.saturating_sub(m), Vec::new(), None)
     };
 
     let satisfied = lin.g.iter().all(|v| v.abs() <= options.tolerance);
@@ -197,22 +198,22 @@ fn solve_in(
     dz.clear();
     dz.resize(n, 0.0);
     let dense = n <= options.dense_max_unknowns;
-    if !rows.is_empty() {
+    let kept = rows.as_ref().map_or(m, Vec::len);
+    if kept > 0 {
         // Every row kept (the usual case): J and g as they are, no copy.
-        let (j, g) = if rows.len() == m {
-            (
+        let (j, g) = match &rows {
+            Some(rows) if rows.len() < m => (
+                Cow::Owned(lin.jacobian.select_rows(rows)),
+                Cow::Owned(rows.iter().map(|i| lin.g[*i]).collect()),
+            ),
+            _ => (
                 Cow::Borrowed(&lin.jacobian),
                 Cow::Borrowed(lin.g.as_slice()),
-            )
-        } else {
-            (
-                Cow::Owned(lin.jacobian.select_rows(&rows)),
-                Cow::Owned(rows.iter().map(|i| lin.g[*i]).collect()),
-            )
+            ),
         };
         let weights = lin.map.weights();
         let refine = 0.01 * options.tolerance;
-        if dense && rows.len() <= min_norm::SMALL_ROWS {
+        if dense && kept <= min_norm::SMALL_ROWS {
             min_norm::solve_small_refined(&j, weights, &g, dz, REFINEMENT_STEPS, refine)?;
         } else {
             let mut f = if dense {

@@ -87,10 +87,11 @@ impl ReducedMap {
         Ok(())
     }
 
-    /// xᵢ = (A·z + c)ᵢ (lengths checked by the caller).
+    /// xᵢ = (A·z + c)ᵢ (`unknown` in range, lengths checked by the caller).
+    #[inline]
     fn value_at(&self, unknown: usize, z: &[f64]) -> f64 {
-        let (terms, c) = self.row(unknown);
-        c + terms.iter().map(|(k, a)| a * z[*k]).sum::<f64>()
+        let terms = &self.terms[self.row_ptr[unknown]..self.row_ptr[unknown + 1]];
+        self.constant[unknown] + terms.iter().map(|(k, a)| a * z[*k]).sum::<f64>()
     }
 }
 
@@ -353,6 +354,14 @@ impl Problem {
         // x is formed row by row twice, to check and then to write, so that nothing is
         // written on an error and nothing is allocated.
         for (i, (lo, hi)) in self.bounds.iter().enumerate().take(self.values.len()) {
+            // z is finite, so an unbounded unknown needs no check.
+            if lo.is_infinite()
+                && lo.is_sign_negative()
+                && hi.is_infinite()
+                && hi.is_sign_positive()
+            {
+                continue;
+            }
             let xi = map.value_at(i, z);
             if xi < *lo || xi > *hi {
                 return Err(Error::OutOfBounds {
