@@ -54,6 +54,7 @@ pub mod autodiff;
 mod block_analysis;
 mod budget;
 pub mod composed;
+mod envelope;
 pub mod errors;
 mod free_columns;
 mod held_step;
