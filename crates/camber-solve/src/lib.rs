@@ -93,6 +93,7 @@ pub use residual::{DynResidual, Residual};
 pub use scalar::Scalar;
 pub use sparse::SparseMatrix;
 pub(crate) mod evaluator;
+pub(crate) mod lu_triangles;
 pub mod newton;
 pub mod nonlinear;
 pub mod objective;
