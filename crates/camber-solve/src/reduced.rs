@@ -24,6 +24,9 @@ pub struct ReducedMap {
     row_ptr: Vec<usize>,
     terms: Vec<(usize, f64)>,
     constant: Vec<f64>,
+    /// The column of each free unknown (`usize::MAX` for the others): storage reused by
+    /// [`Problem::reduced_map_into`], determined by `vars`.
+    column: Vec<usize>,
 }
 
 impl ReducedMap {
@@ -38,6 +41,7 @@ impl ReducedMap {
             row_ptr: Vec::new(),
             terms: Vec::new(),
             constant: Vec::new(),
+            column: Vec::new(),
         }
     }
 
@@ -159,7 +163,10 @@ impl Problem {
             row_ptr,
             terms,
             constant,
+            column,
         } = map;
+        // At most every unknown and every auxiliary is a column.
+        let cols = n + self.aux_values.len();
         for v in [
             &mut *z0,
             &mut *weights,
@@ -168,12 +175,17 @@ impl Problem {
             &mut *constant,
         ] {
             v.clear();
+            v.reserve(cols);
         }
         vars.clear();
+        vars.reserve(cols);
         row_ptr.clear();
         terms.clear();
+        column.clear();
+        column.resize(n, usize::MAX);
         for (i, b) in self.bindings.iter().enumerate() {
             if *b == Binding::Free {
+                column[i] = vars.len();
                 vars.push(Var::Unknown(crate::ids::UnknownId(i)));
                 z0.push(self.values[i]);
                 weights.push(self.weights[i]);
@@ -189,17 +201,7 @@ impl Problem {
             lower.push(self.aux_bounds[a].0);
             upper.push(self.aux_bounds[a].1);
         }
-        // The column of a free unknown: its place among the free ones, which `vars` lists in
-        // increasing order (only substitutions, a few, look it up).
-        let free_vars = &vars[..aux_start];
-        let column = |u: usize| {
-            free_vars
-                .binary_search_by(|v| match v {
-                    Var::Unknown(w) => w.0.cmp(&u),
-                    Var::Aux(_) => std::cmp::Ordering::Greater,
-                })
-                .ok()
-        };
+        let column = |u: usize| column.get(u).copied().filter(|c| *c != usize::MAX);
         row_ptr.reserve(n + 1);
         // One term per free or merged unknown, more for the few other substitutions.
         terms.reserve(n);
@@ -288,7 +290,8 @@ impl Problem {
         let mut jac: smallvec::SmallVec<[f64; 64]> = smallvec::SmallVec::new();
         let mut moves: smallvec::SmallVec<[bool; 16]> = smallvec::SmallVec::new();
         // The residual's local columns as unknowns (flat indices).
-        let mut local: smallvec::SmallVec<[usize; 32]> = smallvec::SmallVec::new();
+        // The residual's local columns as ranges of A's terms (x_u = Σ a·z over the range).
+        let mut local: smallvec::SmallVec<[(usize, usize); 32]> = smallvec::SmallVec::new();
         let mut row0 = 0;
         let mut affine = true;
         for (r, rb) in self.residuals.iter().enumerate() {
@@ -299,8 +302,14 @@ impl Problem {
             local.clear();
             for b in &rb.blocks {
                 let (start, len) = self.block_range(*b)?;
-                local.extend(start..start + len);
-                moves.push((start..start + len).any(|u| !map.row(u).0.is_empty()));
+                let before = local.len();
+                local.extend((start..start + len).map(|u| {
+                    match (map.row_ptr.get(u), map.row_ptr.get(u + 1)) {
+                        (Some(&a), Some(&e)) => (a, e),
+                        _ => (0, 0),
+                    }
+                }));
+                moves.push(local[before..].iter().any(|(a, e)| a < e));
             }
             let ncols = local.len();
             jac.clear();
@@ -311,10 +320,10 @@ impl Problem {
             check_residual(rb, out)?;
             for jac_row in jac.chunks_exact(ncols.max(1)).take(dim) {
                 // Local column → flat unknown index → reduced columns.
-                for (u, d) in local.iter().zip(jac_row) {
+                for (&(a, e), d) in local.iter().zip(jac_row) {
                     if *d != 0.0 {
-                        for (col, a) in map.row(*u).0 {
-                            rows.push(*col, d * a)?;
+                        for (col, coef) in &map.terms[a..e] {
+                            rows.push(*col, d * coef)?;
                         }
                     }
                 }
@@ -443,6 +452,18 @@ impl CsrRows {
 
     /// Ends the current row.
     fn finish_row(&mut self) {
+        // Entries pushed in increasing columns (the usual order) need no sort and no merge.
+        if self.pending.windows(2).all(|w| w[0].0 < w[1].0) {
+            for &(col, value) in &self.pending {
+                if value != 0.0 {
+                    self.col_idx.push(col);
+                    self.values.push(value);
+                }
+            }
+            self.pending.clear();
+            self.row_ptr.push(self.col_idx.len());
+            return;
+        }
         self.pending.sort_unstable_by_key(|e| e.0);
         let mut k = 0;
         while k < self.pending.len() {
