@@ -9,6 +9,7 @@ use crate::errors::{Error, Result};
 use crate::min_norm::{self, MinNormFactorization};
 use crate::options::Options;
 use crate::problem::Problem;
+use crate::reduced::Linearization;
 use crate::report::{per_constraint, Selection, SolveReport, SolverKind, Status};
 
 /// Rounds of iterative refinement after the minimum-norm step (see
@@ -67,6 +68,64 @@ impl Problem {
 /// [`Error::NotSatisfied`] and [`Error::OutOfBounds`] after the step; the problem's values are
 /// unchanged in every case.
 pub fn solve_linear(problem: &mut Problem, options: &Options) -> Result<SolveReport> {
+    let mut scratch = Scratch::take();
+    let outcome = solve_in(problem, options, &mut scratch);
+    scratch.keep();
+    outcome
+}
+
+/// The storage of [`solve_linear`], kept per thread between solves of small problems: a sketch
+/// of many small components solves them one after another on each thread, and their
+/// allocations cost more than their arithmetic.
+struct Scratch {
+    lin: Linearization,
+    /// Δz, z, x(z), g(x(z)).
+    dz: Vec<f64>,
+    z: Vec<f64>,
+    x: Vec<f64>,
+    g: Vec<f64>,
+    /// The last success reason and what it was made of (dependent rows dropped, reduced
+    /// unknowns, dense, threshold): sketches solve many components of one size.
+    reason: Option<((bool, usize, bool, usize), String)>,
+}
+
+thread_local! {
+    static SCRATCH: std::cell::Cell<Option<Box<Scratch>>> = const { std::cell::Cell::new(None) };
+}
+
+/// Storage is kept for the next solve only up to this many rows or reduced unknowns (a large
+/// problem's allocations are small next to its arithmetic, and its memory is given back).
+const SCRATCH_MAX: usize = 4096;
+
+impl Scratch {
+    /// This thread's kept storage, or new storage (also when a solve is already using it).
+    fn take() -> Box<Self> {
+        SCRATCH.with(std::cell::Cell::take).unwrap_or_else(|| {
+            Box::new(Self {
+                lin: Linearization::empty(),
+                dz: Vec::new(),
+                z: Vec::new(),
+                x: Vec::new(),
+                g: Vec::new(),
+                reason: None,
+            })
+        })
+    }
+
+    /// Keeps the storage for this thread's next solve, if it is small.
+    fn keep(self: Box<Self>) {
+        if self.lin.g.capacity().max(self.dz.capacity()) <= SCRATCH_MAX {
+            SCRATCH.with(|s| s.set(Some(self)));
+        }
+    }
+}
+
+/// [`solve_linear`] in the given storage.
+fn solve_in(
+    problem: &mut Problem,
+    options: &Options,
+    scratch: &mut Scratch,
+) -> Result<SolveReport> {
     let start = Instant::now();
     options.validate()?;
     if let Some(rb) = problem.residuals.iter().find(|rb| !rb.residual.is_affine()) {
@@ -75,17 +134,27 @@ pub fn solve_linear(problem: &mut Problem, options: &Options) -> Result<SolveRep
             name: rb.residual.name().to_owned(),
         });
     }
-    let lin = problem.linearize()?;
+    let Scratch {
+        lin,
+        dz,
+        z,
+        x,
+        g,
+        reason,
+    } = scratch;
+    problem.linearize_into(lin)?;
+    let lin = &*lin;
     let (m, n) = (lin.g.len(), lin.map.len());
 
     let dense_analysis = m.saturating_mul(n) <= options.dense_analysis_max_entries;
+    // The rows kept for the step (`None`: all of them).
     let (rank, dof, redundant, rows) = if dense_analysis
-        && crate::selection::certainly_full_row_rank_of(&lin, options.rank_tolerance)
+        && crate::selection::certainly_full_row_rank_of(lin, options.rank_tolerance)
     {
         // Every row independent by the analysis' own test: its answer is known.
-        (m, n - m, Vec::new(), (0..m).collect())
+        (m, n - m, Vec::new(), None)
     } else if dense_analysis {
-        let a = analysis::analyze(&lin, options.rank_tolerance, options.tolerance)?;
+        let a = analysis::analyze(lin, options.rank_tolerance, options.tolerance)?;
         if !a.conflicting.is_empty() {
             return Err(Error::Conflicting {
                 constraints: a.conflicting,
@@ -97,9 +166,9 @@ pub fn solve_linear(problem: &mut Problem, options: &Options) -> Result<SolveRep
             constraints.extend(&a.partly_redundant);
             return Err(Error::Redundant { constraints });
         }
-        (a.rank, a.dof, a.redundant, a.rows.independent)
+        (a.rank, a.dof, a.redundant, Some(a.rows.independent))
     } else {
-        (m.min(n), n.saturating_sub(m), Vec::new(), (0..m).collect())
+        (m.min(n), n.saturating_sub(m), Vec::new(), None)
     };
 
     let satisfied = lin.g.iter().all(|v| v.abs() <= options.tolerance);
@@ -126,40 +195,44 @@ pub fn solve_linear(problem: &mut Problem, options: &Options) -> Result<SolveRep
         });
     }
 
-    let mut dz = vec![0.0; n];
+    dz.clear();
+    dz.resize(n, 0.0);
     let dense = n <= options.dense_max_unknowns;
-    if !rows.is_empty() {
+    let kept = rows.as_ref().map_or(m, Vec::len);
+    if kept > 0 {
         // Every row kept (the usual case): J and g as they are, no copy.
-        let (j, g) = if rows.len() == m {
-            (
+        let (j, g) = match &rows {
+            Some(rows) if rows.len() < m => (
+                Cow::Owned(lin.jacobian.select_rows(rows)),
+                Cow::Owned(rows.iter().map(|i| lin.g[*i]).collect()),
+            ),
+            _ => (
                 Cow::Borrowed(&lin.jacobian),
                 Cow::Borrowed(lin.g.as_slice()),
-            )
-        } else {
-            (
-                Cow::Owned(lin.jacobian.select_rows(&rows)),
-                Cow::Owned(rows.iter().map(|i| lin.g[*i]).collect()),
-            )
+            ),
         };
         let weights = lin.map.weights();
         let refine = 0.01 * options.tolerance;
-        if dense && rows.len() <= min_norm::SMALL_ROWS {
-            min_norm::solve_small_refined(&j, weights, &g, &mut dz, REFINEMENT_STEPS, refine)?;
+        if dense && kept <= min_norm::SMALL_ROWS {
+            min_norm::solve_small_refined(&j, weights, &g, dz, REFINEMENT_STEPS, refine)?;
         } else {
             let mut f = if dense {
                 MinNormFactorization::try_dense(&j, weights)?
             } else {
                 MinNormFactorization::try_sparse(&j, weights)?
             };
-            f.solve_refined(&g, &mut dz, REFINEMENT_STEPS, refine)?;
+            f.solve_refined(&g, dz, REFINEMENT_STEPS, refine)?;
         }
     }
-    let z: Vec<f64> = lin.map.z0().iter().zip(&dz).map(|(a, b)| a + b).collect();
-    let mut x = vec![0.0; problem.num_unknowns()];
-    lin.map.expand(&z, &mut x)?;
-    let mut g = vec![0.0; m];
-    problem.evaluate_at(&x, &mut g)?;
-    let residuals = per_constraint(&lin.row_owner, &g);
+    z.clear();
+    z.extend(lin.map.z0().iter().zip(dz.iter()).map(|(a, b)| a + b));
+    x.clear();
+    x.resize(problem.num_unknowns(), 0.0);
+    lin.map.expand(z, x)?;
+    g.clear();
+    g.resize(m, 0.0);
+    problem.evaluate_at(x, g)?;
+    let residuals = per_constraint(&lin.row_owner, g);
     let failed: Vec<_> = residuals
         .iter()
         .filter(|r| r.max_abs > options.tolerance || r.max_abs.is_nan())
@@ -168,27 +241,36 @@ pub fn solve_linear(problem: &mut Problem, options: &Options) -> Result<SolveRep
     if !failed.is_empty() {
         return Err(Error::NotSatisfied { failed });
     }
-    problem.apply_reduced(&lin.map, &z)?;
+    problem.apply_reduced(&lin.map, z)?;
 
     let (solver, backend) = if dense {
         (SolverKind::DenseMinNorm, "dense")
     } else {
         (SolverKind::SparseMinNorm, "sparse")
     };
-    let dropped = if redundant.is_empty() {
-        ""
-    } else {
-        ", consistent redundant rows dropped"
+    let key = (!redundant.is_empty(), n, dense, options.dense_max_unknowns);
+    let reason = match reason {
+        Some((k, text)) if *k == key => text.clone(),
+        _ => {
+            let dropped = if key.0 {
+                ", consistent redundant rows dropped"
+            } else {
+                ""
+            };
+            let text = format!(
+                "all residuals affine and full row rank{dropped}; {n} reduced unknowns → \
+                 {backend} (threshold {})",
+                options.dense_max_unknowns
+            );
+            *reason = Some((key, text.clone()));
+            text
+        }
     };
     Ok(SolveReport {
         status: Status::Solved,
         solver,
         selection: Selection::Affine,
-        reason: format!(
-            "all residuals affine and full row rank{dropped}; {n} reduced unknowns → {backend} \
-             (threshold {})",
-            options.dense_max_unknowns
-        ),
+        reason,
         iterations: 1,
         residuals,
         displacement_norm: dz.iter().map(|v| v * v).sum::<f64>().sqrt(),

@@ -17,6 +17,11 @@
 //! narrow band and little fill. Only when that order would fill L beyond
 //! [`NATURAL_FILL_LIMIT`] times M's own lower triangle is faer's approximate minimum degree
 //! ordering computed instead, which costs several times the rest of the symbolic work.
+//!
+//! **Envelope.** Before any of this, an M whose rows, in its own order, reach only a few rows
+//! back (a chain, a strip) is formed and factorized in its envelope instead (the `envelope`
+//! module): its symbolic work is one pass over J, and no general sparse factorization matches
+//! it on a narrow band.
 
 use std::sync::Arc;
 
@@ -27,6 +32,7 @@ use faer::sparse::linalg::cholesky::{
 use faer::sparse::{SparseColMatRef, SymbolicSparseColMatRef};
 use faer::{Conj, MatMut, Par, Side};
 
+use crate::envelope::{EnvelopeFactor, EnvelopePattern};
 use crate::errors::{Error, Result};
 use crate::sparse::SparseMatrix;
 
@@ -42,6 +48,21 @@ struct Pattern {
     j_cols: usize,
     j_row_ptr: Vec<usize>,
     j_col_idx: Vec<usize>,
+    structure: Structure,
+}
+
+/// How M is factorized for one pattern of J.
+#[derive(Debug, Clone)]
+enum Structure {
+    /// In its envelope (a narrow band in M's own order).
+    Envelope(EnvelopePattern),
+    /// By faer's supernodal Cholesky.
+    General(General),
+}
+
+/// M's pattern and faer's symbolic factorization.
+#[derive(Debug, Clone)]
+struct General {
     /// M's lower triangle in compressed columns.
     m_col_ptr: Vec<usize>,
     m_row_idx: Vec<usize>,
@@ -57,17 +78,26 @@ struct Pattern {
 /// ordering is computed.
 pub const NATURAL_FILL_LIMIT: usize = 2;
 
-/// A numeric Cholesky factor M = L·Lᵀ of J·D·Jᵀ: the symbolic factorization shared with the
-/// cache and the values of L, with the scratch its solves reuse.
-pub(crate) struct NormalFactor {
+/// A numeric Cholesky factor M = L·Lᵀ of J·D·Jᵀ.
+#[derive(Debug)]
+pub(crate) enum NormalFactor {
+    /// L in M's envelope.
+    Envelope(EnvelopeFactor),
+    /// faer's supernodal factor.
+    General(SupernodalFactor),
+}
+
+/// faer's factor: the symbolic factorization shared with the cache and the values of L, with
+/// the scratch its solves reuse.
+pub(crate) struct SupernodalFactor {
     symbolic: Arc<SymbolicCholesky<usize>>,
     values: Vec<f64>,
     scratch: MemBuffer,
 }
 
-impl std::fmt::Debug for NormalFactor {
+impl std::fmt::Debug for SupernodalFactor {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("NormalFactor")
+        f.debug_struct("SupernodalFactor")
             .field("rows", &self.symbolic.nrows())
             .field("factor_entries", &self.values.len())
             .finish()
@@ -77,19 +107,27 @@ impl std::fmt::Debug for NormalFactor {
 impl NormalFactor {
     /// Overwrites `rhs` with M⁻¹·rhs (`rhs` has M's order).
     pub(crate) fn solve_in_place(&mut self, rhs: &mut [f64]) {
-        let m = rhs.len();
-        LltRef::new(&self.symbolic, &self.values).solve_in_place_with_conj(
-            Conj::No,
-            MatMut::from_column_major_slice_mut(rhs, m, 1),
-            Par::Seq,
-            MemStack::new(&mut self.scratch),
-        );
+        match self {
+            Self::Envelope(f) => f.solve_in_place(rhs),
+            Self::General(f) => {
+                let m = rhs.len();
+                LltRef::new(&f.symbolic, &f.values).solve_in_place_with_conj(
+                    Conj::No,
+                    MatMut::from_column_major_slice_mut(rhs, m, 1),
+                    Par::Seq,
+                    MemStack::new(&mut f.scratch),
+                );
+            }
+        }
     }
 
     /// Whether the factorization kept M's own order (no fill-reducing permutation).
     #[cfg(test)]
     fn natural_order(&self) -> bool {
-        self.symbolic.perm().is_none()
+        match self {
+            Self::Envelope(_) => true,
+            Self::General(f) => f.symbolic.perm().is_none(),
+        }
     }
 }
 
@@ -105,7 +143,7 @@ impl NormalCache {
     /// # Errors
     /// [`Error::RankDeficient`] when M is not positive definite (J lacks full row rank).
     pub(crate) fn factorize(&mut self, j: &SparseMatrix, inv_w: &[f64]) -> Result<NormalFactor> {
-        let (row_ptr, col_idx, values) = j.raw();
+        let (row_ptr, col_idx, _) = j.raw();
         let m = j.nrows();
         let fits = self.pattern.as_ref().is_some_and(|p| {
             p.j_cols == j.ncols() && p.j_row_ptr == row_ptr && p.j_col_idx == col_idx
@@ -117,8 +155,20 @@ impl NormalCache {
             .pattern
             .as_mut()
             .ok_or(Error::RankDeficient { rows: m })?;
+        match &mut p.structure {
+            Structure::Envelope(e) => Ok(NormalFactor::Envelope(e.factorize(j, inv_w)?)),
+            Structure::General(g) => Ok(NormalFactor::General(g.factorize(j, inv_w)?)),
+        }
+    }
+}
+
+impl General {
+    /// Forms M in its pattern and factorizes it numerically.
+    fn factorize(&mut self, j: &SparseMatrix, inv_w: &[f64]) -> Result<SupernodalFactor> {
+        let (_, col_idx, values) = j.raw();
+        let m = j.nrows();
+        let p = self;
         p.values.fill(0.0);
-        let (_, col_idx, _) = j.raw();
         for &(slot, a, b) in &p.terms {
             p.values[slot] += values[a] * inv_w[col_idx[a]] * values[b];
         }
@@ -140,7 +190,7 @@ impl NormalCache {
             )
             .map_err(|_| Error::RankDeficient { rows: m })?;
         let solve_scratch = p.symbolic.solve_in_place_scratch::<f64>(1, Par::Seq);
-        Ok(NormalFactor {
+        Ok(SupernodalFactor {
             symbolic: Arc::clone(&p.symbolic),
             values,
             scratch: MemBuffer::new(solve_scratch),
@@ -149,6 +199,24 @@ impl NormalCache {
 }
 
 impl Pattern {
+    /// The envelope of M when it is narrow (the `envelope` module), M's pattern and faer's
+    /// symbolic factorization otherwise.
+    fn build(j: &SparseMatrix) -> Result<Self> {
+        let (row_ptr, col_idx, _) = j.raw();
+        let structure = match EnvelopePattern::try_new(j) {
+            Some(e) => Structure::Envelope(e),
+            None => Structure::General(General::build(j)?),
+        };
+        Ok(Self {
+            j_cols: j.ncols(),
+            j_row_ptr: row_ptr.to_vec(),
+            j_col_idx: col_idx.to_vec(),
+            structure,
+        })
+    }
+}
+
+impl General {
     /// M's pattern column by column: column j of M (row j of J) meets row i exactly when rows
     /// i and j of J share a column, found through J's columns with a marker per row, so no
     /// global sort is needed, only each column's few rows. The upper triangle (for the
@@ -236,9 +304,6 @@ impl Pattern {
         )?);
         let values = vec![0.0; m_row_idx.len()];
         Ok(Self {
-            j_cols: n,
-            j_row_ptr: row_ptr.to_vec(),
-            j_col_idx: col_idx.to_vec(),
             m_col_ptr,
             m_row_idx,
             terms,

@@ -24,9 +24,27 @@ pub struct ReducedMap {
     row_ptr: Vec<usize>,
     terms: Vec<(usize, f64)>,
     constant: Vec<f64>,
+    /// The column of each free unknown (`usize::MAX` for the others): storage reused by
+    /// [`Problem::reduced_map_into`], determined by `vars`.
+    column: Vec<usize>,
 }
 
 impl ReducedMap {
+    /// A map of nothing, storage for [`Problem::reduced_map_into`].
+    pub(crate) fn empty() -> Self {
+        Self {
+            vars: Vec::new(),
+            z0: Vec::new(),
+            weights: Vec::new(),
+            lower: Vec::new(),
+            upper: Vec::new(),
+            row_ptr: Vec::new(),
+            terms: Vec::new(),
+            constant: Vec::new(),
+            column: Vec::new(),
+        }
+    }
+
     /// Number of reduced unknowns (columns of A).
     pub fn len(&self) -> usize {
         self.vars.len()
@@ -68,10 +86,16 @@ impl ReducedMap {
         check_len("reduced unknowns", self.len(), z.len())?;
         check_len("unknowns", self.constant.len(), x.len())?;
         for (i, xi) in x.iter_mut().enumerate() {
-            let (terms, c) = self.row(i);
-            *xi = c + terms.iter().map(|(k, a)| a * z[*k]).sum::<f64>();
+            *xi = self.value_at(i, z);
         }
         Ok(())
+    }
+
+    /// xᵢ = (A·z + c)ᵢ (`unknown` in range, lengths checked by the caller).
+    #[inline]
+    fn value_at(&self, unknown: usize, z: &[f64]) -> f64 {
+        let terms = &self.terms[self.row_ptr[unknown]..self.row_ptr[unknown + 1]];
+        self.constant[unknown] + terms.iter().map(|(k, a)| a * z[*k]).sum::<f64>()
     }
 }
 
@@ -94,6 +118,21 @@ pub struct Linearization {
     pub affine: bool,
 }
 
+impl Linearization {
+    /// A linearization of nothing, storage for [`Problem::linearize_into`].
+    pub(crate) fn empty() -> Self {
+        Self {
+            map: ReducedMap::empty(),
+            x: Vec::new(),
+            g: Vec::new(),
+            jacobian: SparseMatrix::empty(),
+            row_owner: Vec::new(),
+            row_residual: Vec::new(),
+            affine: true,
+        }
+    }
+}
+
 /// # Reduction
 impl Problem {
     /// Builds the map x = A·z + c from the current bindings and values.
@@ -106,20 +145,47 @@ impl Problem {
     /// [`Error::SubstitutionChain`] when a substitution refers to an unknown that is itself
     /// substituted.
     pub fn reduced_map(&self) -> Result<ReducedMap> {
+        let mut map = ReducedMap::empty();
+        self.reduced_map_into(&mut map)?;
+        Ok(map)
+    }
+
+    /// [`Problem::reduced_map`] written into `map`, whose storage is reused (a solve of many
+    /// small components allocates nothing here once the storage has grown).
+    pub(crate) fn reduced_map_into(&self, map: &mut ReducedMap) -> Result<()> {
         let n = self.values.len();
-        let mut column = vec![None; n];
+        let ReducedMap {
+            vars,
+            z0,
+            weights,
+            lower,
+            upper,
+            row_ptr,
+            terms,
+            constant,
+            column,
+        } = map;
         // At most every unknown and every auxiliary is a column.
         let cols = n + self.aux_values.len();
-        let mut vars = Vec::with_capacity(cols);
-        let (mut z0, mut weights, mut lower, mut upper) = (
-            Vec::with_capacity(cols),
-            Vec::with_capacity(cols),
-            Vec::with_capacity(cols),
-            Vec::with_capacity(cols),
-        );
+        for v in [
+            &mut *z0,
+            &mut *weights,
+            &mut *lower,
+            &mut *upper,
+            &mut *constant,
+        ] {
+            v.clear();
+            v.reserve(cols);
+        }
+        vars.clear();
+        vars.reserve(cols);
+        row_ptr.clear();
+        terms.clear();
+        column.clear();
+        column.resize(n, usize::MAX);
         for (i, b) in self.bindings.iter().enumerate() {
             if *b == Binding::Free {
-                column[i] = Some(vars.len());
+                column[i] = vars.len();
                 vars.push(Var::Unknown(crate::ids::UnknownId(i)));
                 z0.push(self.values[i]);
                 weights.push(self.weights[i]);
@@ -135,15 +201,18 @@ impl Problem {
             lower.push(self.aux_bounds[a].0);
             upper.push(self.aux_bounds[a].1);
         }
-        let mut row_ptr = Vec::with_capacity(n + 1);
+        let column = |u: usize| column.get(u).copied().filter(|c| *c != usize::MAX);
+        row_ptr.reserve(n + 1);
         // One term per free or merged unknown, more for the few other substitutions.
-        let mut terms = Vec::with_capacity(n);
-        let mut constant = Vec::with_capacity(n);
+        terms.reserve(n);
+        constant.reserve(n);
         row_ptr.push(0);
+        let mut free = 0;
         for (i, b) in self.bindings.iter().enumerate() {
             match b {
                 Binding::Free => {
-                    terms.push((column[i].unwrap_or(0), 1.0));
+                    terms.push((free, 1.0));
+                    free += 1;
                     constant.push(0.0);
                 }
                 Binding::Fixed => constant.push(self.values[i]),
@@ -154,8 +223,8 @@ impl Problem {
                     let mut c = *c;
                     for (var, a) in t {
                         match var {
-                            Var::Unknown(u) => match (self.bindings.get(u.0), column.get(u.0)) {
-                                (_, Some(Some(col))) => terms.push((*col, *a)),
+                            Var::Unknown(u) => match (self.bindings.get(u.0), column(u.0)) {
+                                (Some(Binding::Free), Some(col)) => terms.push((col, *a)),
                                 // A fixed unknown contributes its value to the constant.
                                 (Some(Binding::Fixed), _) => c += a * self.values[u.0],
                                 _ => {
@@ -178,22 +247,14 @@ impl Problem {
         for (i, b) in self.bindings.iter().enumerate() {
             if let Binding::Affine { terms: t, .. } = b {
                 if let [(Var::Unknown(u), a)] = t.as_slice() {
-                    if let Some(Some(col)) = column.get(u.0) {
-                        weights[*col] += self.weights[i] * a * a;
+                    if let (Some(Binding::Free), Some(col)) = (self.bindings.get(u.0), column(u.0))
+                    {
+                        weights[col] += self.weights[i] * a * a;
                     }
                 }
             }
         }
-        Ok(ReducedMap {
-            vars,
-            z0,
-            weights,
-            lower,
-            upper,
-            row_ptr,
-            terms,
-            constant,
-        })
+        Ok(())
     }
 
     /// Evaluates the residuals and their Jacobian over z at z₀ (autodiff through every residual
@@ -202,46 +263,67 @@ impl Problem {
     /// # Errors
     /// Those of [`Problem::reduced_map`], and [`Error::NonFiniteResidual`].
     pub fn linearize(&self) -> Result<Linearization> {
-        let map = self.reduced_map()?;
-        let mut x = vec![0.0; self.values.len()];
-        map.expand(&map.z0, &mut x)?;
+        let mut lin = Linearization::empty();
+        self.linearize_into(&mut lin)?;
+        Ok(lin)
+    }
+
+    /// [`Problem::linearize`] written into `lin`, whose storage is reused. On an error `lin`
+    /// holds no meaningful linearization.
+    pub(crate) fn linearize_into(&self, lin: &mut Linearization) -> Result<()> {
+        self.reduced_map_into(&mut lin.map)?;
+        let map = &lin.map;
+        lin.x.clear();
+        lin.x.resize(self.values.len(), 0.0);
+        map.expand(&map.z0, &mut lin.x)?;
+        let x = &lin.x;
         let m = self.num_rows();
-        let mut g = vec![0.0; m];
-        let mut row_owner = Vec::with_capacity(m);
-        let mut row_residual = Vec::with_capacity(m);
+        lin.g.clear();
+        lin.g.resize(m, 0.0);
+        lin.row_owner.clear();
+        lin.row_owner.reserve(m);
+        lin.row_residual.clear();
+        lin.row_residual.reserve(m);
         // J_z in compressed rows, assembled row by row: a residual's rows are consecutive, so
         // no global sort of triplets is needed, only of each row's few entries.
-        let mut rows = CsrRows::with_capacity(m);
-        let mut jac = Vec::new();
+        let mut rows = CsrRows::in_storage(&mut lin.jacobian, m);
+        let mut jac: smallvec::SmallVec<[f64; 64]> = smallvec::SmallVec::new();
         let mut moves: smallvec::SmallVec<[bool; 16]> = smallvec::SmallVec::new();
-        let mut ranges: smallvec::SmallVec<[(usize, usize); 16]> = smallvec::SmallVec::new();
+        // The residual's local columns as unknowns (flat indices).
+        // The residual's local columns as ranges of A's terms (x_u = Σ a·z over the range).
+        let mut local: smallvec::SmallVec<[(usize, usize); 32]> = smallvec::SmallVec::new();
         let mut row0 = 0;
         let mut affine = true;
         for (r, rb) in self.residuals.iter().enumerate() {
             let dim = rb.residual.dim();
             affine &= rb.residual.is_affine();
-            let slices = self.gather(&x, &rb.blocks);
-            let ncols: usize = slices.iter().map(|s| s.len()).sum();
-            jac.clear();
-            jac.resize(dim * ncols, 0.0);
-            let out = &mut g[row0..row0 + dim];
+            let slices = self.gather(x, &rb.blocks);
             moves.clear();
-            ranges.clear();
+            local.clear();
             for b in &rb.blocks {
                 let (start, len) = self.block_range(*b)?;
-                ranges.push((start, len));
-                moves.push((start..start + len).any(|u| !map.row(u).0.is_empty()));
+                let before = local.len();
+                local.extend((start..start + len).map(|u| {
+                    match (map.row_ptr.get(u), map.row_ptr.get(u + 1)) {
+                        (Some(&a), Some(&e)) => (a, e),
+                        _ => (0, 0),
+                    }
+                }));
+                moves.push(local[before..].iter().any(|(a, e)| a < e));
             }
+            let ncols = local.len();
+            jac.clear();
+            jac.resize(dim * ncols, 0.0);
+            let out = &mut lin.g[row0..row0 + dim];
             rb.residual
                 .jacobian_active(&slices, &moves, out, &mut jac)?;
             check_residual(rb, out)?;
             for jac_row in jac.chunks_exact(ncols.max(1)).take(dim) {
                 // Local column → flat unknown index → reduced columns.
-                let local = ranges.iter().flat_map(|&(start, len)| start..start + len);
-                for (u, d) in local.zip(jac_row) {
+                for (&(a, e), d) in local.iter().zip(jac_row) {
                     if *d != 0.0 {
-                        for (col, a) in map.row(u).0 {
-                            rows.push(*col, d * a)?;
+                        for (col, coef) in &map.terms[a..e] {
+                            rows.push(*col, d * coef)?;
                         }
                     }
                 }
@@ -252,20 +334,14 @@ impl Problem {
                     rows.finish_row();
                 }
             }
-            row_owner.extend(std::iter::repeat_n(rb.owner, dim));
-            row_residual.extend(std::iter::repeat_n(ResidualId(r), dim));
+            lin.row_owner.extend(std::iter::repeat_n(rb.owner, dim));
+            lin.row_residual
+                .extend(std::iter::repeat_n(ResidualId(r), dim));
             row0 += dim;
         }
-        let jacobian = rows.into_matrix(m, map.len())?;
-        Ok(Linearization {
-            map,
-            x,
-            g,
-            jacobian,
-            row_owner,
-            row_residual,
-            affine,
-        })
+        lin.jacobian = rows.into_matrix(m, map.len())?;
+        lin.affine = affine;
+        Ok(())
     }
 
     /// Writes x = A·z + c and the auxiliary values from z. `map` must come from this problem
@@ -283,13 +359,23 @@ impl Problem {
                 value: *value,
             });
         }
-        let mut x = vec![0.0; self.values.len()];
-        map.expand(z, &mut x)?;
-        for (i, (xi, (lo, hi))) in x.iter().zip(&self.bounds).enumerate() {
-            if xi < lo || xi > hi {
+        check_len("unknowns", map.constant.len(), self.values.len())?;
+        // x is formed row by row twice, to check and then to write, so that nothing is
+        // written on an error and nothing is allocated.
+        for (i, (lo, hi)) in self.bounds.iter().enumerate().take(self.values.len()) {
+            // z is finite, so an unbounded unknown needs no check.
+            if lo.is_infinite()
+                && lo.is_sign_negative()
+                && hi.is_infinite()
+                && hi.is_sign_positive()
+            {
+                continue;
+            }
+            let xi = map.value_at(i, z);
+            if xi < *lo || xi > *hi {
                 return Err(Error::OutOfBounds {
                     unknown: i,
-                    value: *xi,
+                    value: xi,
                     lower: *lo,
                     upper: *hi,
                 });
@@ -305,7 +391,9 @@ impl Problem {
                 });
             }
         }
-        self.values = x;
+        for (i, xi) in self.values.iter_mut().enumerate() {
+            *xi = map.value_at(i, z);
+        }
         for (var, zk) in map.vars.iter().zip(z) {
             if let Var::Aux(a) = var {
                 if let Some(slot) = self.aux_values.get_mut(a.0) {
@@ -331,13 +419,18 @@ struct CsrRows {
 }
 
 impl CsrRows {
-    fn with_capacity(rows: usize) -> Self {
-        let mut row_ptr = Vec::with_capacity(rows + 1);
+    /// Rows to be built in the storage of `matrix`, which must be replaced by
+    /// [`CsrRows::into_matrix`]'s result (see [`SparseMatrix::take_storage`]).
+    fn in_storage(matrix: &mut SparseMatrix, rows: usize) -> Self {
+        let (mut row_ptr, mut col_idx, mut values) = matrix.take_storage();
+        row_ptr.reserve(rows + 1);
         row_ptr.push(0);
+        col_idx.reserve(4 * rows);
+        values.reserve(4 * rows);
         Self {
             row_ptr,
-            col_idx: Vec::with_capacity(4 * rows),
-            values: Vec::with_capacity(4 * rows),
+            col_idx,
+            values,
             pending: smallvec::SmallVec::new(),
             pushed: 0,
         }
@@ -359,6 +452,18 @@ impl CsrRows {
 
     /// Ends the current row.
     fn finish_row(&mut self) {
+        // Entries pushed in increasing columns (the usual order) need no sort and no merge.
+        if self.pending.windows(2).all(|w| w[0].0 < w[1].0) {
+            for &(col, value) in &self.pending {
+                if value != 0.0 {
+                    self.col_idx.push(col);
+                    self.values.push(value);
+                }
+            }
+            self.pending.clear();
+            self.row_ptr.push(self.col_idx.len());
+            return;
+        }
         self.pending.sort_unstable_by_key(|e| e.0);
         let mut k = 0;
         while k < self.pending.len() {

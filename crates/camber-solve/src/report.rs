@@ -171,6 +171,15 @@ pub(crate) fn per_constraint(owners: &[ConstraintId], g: &[f64]) -> Vec<Constrai
             }),
         }
     }
+    // A few runs (a small component): distinct owners are checked pairwise, without sorting.
+    if out.len() <= 16
+        && out
+            .iter()
+            .enumerate()
+            .all(|(k, r)| out[..k].iter().all(|q| q.constraint != r.constraint))
+    {
+        return out;
+    }
     let mut order: Vec<(ConstraintId, usize)> = out
         .iter()
         .enumerate()

@@ -167,6 +167,32 @@ impl SparseMatrix {
         })
     }
 
+    /// The 0 × 0 matrix.
+    pub(crate) fn empty() -> Self {
+        Self {
+            nrows: 0,
+            ncols: 0,
+            row_ptr: vec![0],
+            col_idx: Vec::new(),
+            values: Vec::new(),
+        }
+    }
+
+    /// Takes the storage of the compressed-row arrays, emptied, to build another matrix in;
+    /// `self` is left 0 × 0 without even its one row offset, so it must be replaced before
+    /// it is used again.
+    pub(crate) fn take_storage(&mut self) -> (Vec<usize>, Vec<usize>, Vec<f64>) {
+        self.nrows = 0;
+        self.ncols = 0;
+        let mut row_ptr = std::mem::take(&mut self.row_ptr);
+        let mut col_idx = std::mem::take(&mut self.col_idx);
+        let mut values = std::mem::take(&mut self.values);
+        row_ptr.clear();
+        col_idx.clear();
+        values.clear();
+        (row_ptr, col_idx, values)
+    }
+
     /// The sparse form of a dense matrix (exact zeros dropped).
     pub fn from_dense(m: &DMatrix<f64>) -> Self {
         let mut row_ptr = vec![0];
