@@ -145,17 +145,22 @@ fn w2_quick_counts_valid_results() {
         [
             "bspline7 δ=0.01",
             "bspline7 δ=0.05",
+            "bspline7 drag update",
             "2cubic δ=0.01",
             "2cubic δ=0.05"
         ]
     );
-    for r in rows {
-        assert_eq!(n(r, "samples"), 10);
-        assert!(n(r, "valid") <= 10);
+    for (k, r) in rows.iter().enumerate() {
+        // The drag row: one run of 200 targets (the quick plan's W1 run count).
+        let samples = if k == 2 { 200 } else { 10 };
+        assert_eq!(n(r, "samples"), samples, "{r}");
+        assert!(n(r, "valid") <= samples);
     }
-    // The small perturbations are all recovered.
+    // The small perturbations are all recovered, and every drag update holds.
     assert_eq!(n(&rows[0], "valid"), 10);
-    assert_eq!(n(&rows[2], "valid"), 10);
+    assert_eq!(n(&rows[2], "valid"), 200);
+    assert_eq!(n(&rows[2], "failed"), 0);
+    assert_eq!(n(&rows[3], "valid"), 10);
 }
 
 #[test]

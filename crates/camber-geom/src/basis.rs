@@ -18,8 +18,6 @@ const ROW: usize = INLINE_DEGREE + 1;
 
 /// Scratch for one row of p + 1 values.
 type Row<T> = SmallVec<[T; ROW]>;
-/// Scratch for a (p + 1) × (p + 1) table, row-major.
-type Table<T> = SmallVec<[T; ROW * ROW]>;
 
 impl<T: Scalar> KnotVector<T> {
     /// The p + 1 non-zero basis functions N_{span−p,p}(u) … N_{span,p}(u) into `out`
@@ -166,8 +164,30 @@ fn values<T: Scalar, K: Copy>(
     out: &mut [T],
 ) {
     let p = degree;
-    let mut left: Row<T> = smallvec![T::zero(); p + 1];
-    let mut right: Row<T> = smallvec![T::zero(); p + 1];
+    if p < ROW {
+        // Plain stack arrays: this is the inner loop of every curve point, and a SmallVec
+        // would test inline-or-heap at each index.
+        let (mut left, mut right) = ([T::zero(); ROW], [T::zero(); ROW]);
+        values_with(knots, knot, span, u, p, out, &mut left, &mut right);
+    } else {
+        let (mut left, mut right) = (vec![T::zero(); p + 1], vec![T::zero(); p + 1]);
+        values_with(knots, knot, span, u, p, out, &mut left, &mut right);
+    }
+}
+
+/// The recurrence of [`values`] with its scratch rows `left` and `right` (p + 1 entries each).
+#[allow(clippy::too_many_arguments)] // values' signature plus its two scratch rows
+#[inline]
+fn values_with<T: Scalar, K: Copy>(
+    knots: &[K],
+    knot: impl Fn(K) -> T,
+    span: usize,
+    u: T,
+    p: usize,
+    out: &mut [T],
+    left: &mut [T],
+    right: &mut [T],
+) {
     out[0] = T::one();
     for j in 1..=p {
         left[j] = u - knot(knots[span + 1 - j]);
@@ -194,13 +214,46 @@ fn derivatives<T: Scalar, K: Copy>(
     n_derivs: usize,
     out: &mut [T],
 ) {
+    let w = degree + 1;
+    // Plain stack arrays sized for the common degrees (a SmallVec would test inline-or-heap
+    // at each index of these inner loops); the table is (p + 1)², so cubics get a small one.
+    let mut scratch = |ndu: &mut [T], row: &mut [T]| {
+        let (left, rest) = row.split_at_mut(w);
+        let (right, a) = rest.split_at_mut(w);
+        derivatives_with(
+            knots, &knot, span, u, degree, n_derivs, out, ndu, left, right, a,
+        );
+    };
+    if w <= 4 {
+        scratch(&mut [T::zero(); 16], &mut [T::zero(); 16]);
+    } else if w <= ROW {
+        scratch(&mut [T::zero(); ROW * ROW], &mut [T::zero(); 4 * ROW]);
+    } else {
+        scratch(&mut vec![T::zero(); w * w], &mut vec![T::zero(); 4 * w]);
+    }
+}
+
+/// The algorithm of [`derivatives`] with its scratch: `ndu` of (p + 1)² entries, `left` and
+/// `right` of p + 1, `a` of 2(p + 1).
+#[allow(clippy::too_many_arguments)] // derivatives' signature plus its scratch
+#[inline]
+fn derivatives_with<T: Scalar, K: Copy>(
+    knots: &[K],
+    knot: &impl Fn(K) -> T,
+    span: usize,
+    u: T,
+    degree: usize,
+    n_derivs: usize,
+    out: &mut [T],
+    ndu: &mut [T],
+    left: &mut [T],
+    right: &mut [T],
+    a: &mut [T],
+) {
     let p = degree;
     let w = p + 1;
-    let mut left: Row<T> = smallvec![T::zero(); w];
-    let mut right: Row<T> = smallvec![T::zero(); w];
     // ndu[j][r] (row j, column r): basis functions in the upper triangle, knot differences
     // in the lower one.
-    let mut ndu: Table<T> = smallvec![T::zero(); w * w];
     ndu[0] = T::one();
     for j in 1..=p {
         left[j] = u - knot(knots[span + 1 - j]);
@@ -218,8 +271,7 @@ fn derivatives<T: Scalar, K: Copy>(
         out[j] = ndu[j * w + p];
     }
     let top = n_derivs.min(p);
-    // Two alternating rows of coefficients a_{k,j}.
-    let mut a: Row<T> = smallvec![T::zero(); 2 * w];
+    // Two alternating rows of coefficients a_{k,j} in `a`.
     for r in 0..=p {
         let (mut s1, mut s2) = (0usize, w);
         a[0] = T::one();
@@ -299,7 +351,8 @@ mod tests {
     }
 
     fn random_knots() -> impl Strategy<Value = (usize, Vec<f64>)> {
-        (1usize..=5, prop::collection::vec(0.05f64..1.0, 1..6)).prop_map(|(p, gaps)| {
+        // Degrees up to 10: the stack scratch for p ≤ 3 and p ≤ 7, and the heap above.
+        (1usize..=10, prop::collection::vec(0.05f64..1.0, 1..6)).prop_map(|(p, gaps)| {
             // An unclamped, non-[0, 1] knot vector: p + 1 + interior + p + 1 knots with
             // strictly increasing values starting at -1.
             let mut knots = vec![-1.0];

@@ -7,7 +7,7 @@
 
 use crate::errors::Result;
 use crate::ids::{ConstraintId, Var};
-use crate::problem::{check_residual, Problem};
+use crate::problem::{check_residual, gather_into, Problem};
 use crate::reduced::ReducedMap;
 use crate::report::{per_constraint, ConstraintResidual};
 use crate::sparse::{check_len, Assembler, SparseMatrix};
@@ -48,7 +48,21 @@ impl Evaluator {
     /// Builds the map of `problem` and the bounds of its reduced unknowns.
     pub(crate) fn new(problem: &Problem) -> Result<Self> {
         let map = problem.reduced_map()?;
-        let (mut lower, mut upper) = (Vec::with_capacity(map.len()), Vec::with_capacity(map.len()));
+        let Spare {
+            mut lower,
+            mut upper,
+            mut row_owner,
+            mut block_moves,
+            mut x,
+            mut jac,
+            mut triplets,
+            mut affine_triplets,
+            mut affine_at,
+        } = Spare::take();
+        lower.clear();
+        upper.clear();
+        lower.reserve(map.len());
+        upper.reserve(map.len());
         for var in map.vars() {
             let (lo, hi) = match var {
                 Var::Unknown(u) => problem.bounds.get(u.0).copied(),
@@ -58,31 +72,56 @@ impl Evaluator {
             lower.push(lo);
             upper.push(hi);
         }
-        let mut row_owner = Vec::with_capacity(problem.num_rows());
-        let mut block_moves =
-            Vec::with_capacity(problem.residuals.iter().map(|rb| rb.blocks.len()).sum());
+        row_owner.clear();
+        row_owner.reserve(problem.num_rows());
+        block_moves.clear();
+        block_moves.reserve(problem.residuals.iter().map(|rb| rb.blocks.len()).sum());
+        // The sizes the scratch of a linearization reaches, so that the first one does not
+        // grow it step by step: the largest dense block Jacobian, and one triplet per row,
+        // unknown read and reduced column it moves with (all of them, affine ones once more
+        // for their cache).
+        let (mut jac_len, mut triplets_len, mut affine_len) = (0, 0, 0);
         for rb in &problem.residuals {
-            row_owner.extend(std::iter::repeat_n(rb.owner, rb.residual.dim()));
-            for b in &rb.blocks {
-                let (start, len) = problem.block_range(*b)?;
-                block_moves.push((start..start + len).any(|u| !map.row(u).0.is_empty()));
+            row_owner.extend(std::iter::repeat_n(rb.owner, rb.dim));
+            let (mut cols, mut terms) = (0, 0);
+            for (start, len) in problem.spans_of(rb) {
+                block_moves.push((*start..start + len).any(|u| !map.row(u).0.is_empty()));
+                cols += len;
+                terms += (*start..start + len)
+                    .map(|u| map.row(u).0.len())
+                    .sum::<usize>();
+            }
+            jac_len = jac_len.max(rb.dim * cols);
+            triplets_len += rb.dim * terms;
+            if rb.affine {
+                affine_len += rb.dim * terms;
             }
         }
+        x.clear();
+        x.resize(problem.num_unknowns(), 0.0);
+        jac.clear();
+        jac.reserve(jac_len);
+        triplets.clear();
+        triplets.reserve(triplets_len);
+        affine_triplets.clear();
+        affine_triplets.reserve(affine_len);
+        affine_at.clear();
+        affine_at.resize(problem.residuals.len(), None);
         Ok(Self {
-            x: vec![0.0; problem.num_unknowns()],
+            x,
             map,
             lower,
             upper,
             row_owner,
             block_moves,
-            jac: Vec::new(),
-            triplets: Vec::new(),
+            jac,
+            triplets,
             hess: Vec::new(),
             hess_triplets: Vec::new(),
             jac_asm: Assembler::default(),
             hess_asm: Assembler::default(),
-            affine_triplets: Vec::new(),
-            affine_at: vec![None; problem.residuals.len()],
+            affine_triplets,
+            affine_at,
         })
     }
 
@@ -142,9 +181,10 @@ impl Evaluator {
         self.triplets.clear();
         let mut row0 = 0;
         let mut flags = 0;
+        let mut slices = smallvec::SmallVec::new();
         for (r, rb) in problem.residuals.iter().enumerate() {
-            let dim = rb.residual.dim();
-            let slices = problem.gather(&self.x, &rb.blocks);
+            let dim = rb.dim;
+            gather_into(&self.x, problem.spans_of(rb), &mut slices);
             let out = &mut g[row0..row0 + dim];
             let moves = &self.block_moves[flags..flags + rb.blocks.len()];
             flags += rb.blocks.len();
@@ -170,9 +210,8 @@ impl Evaluator {
             check_residual(rb, out)?;
             let first = self.triplets.len();
             let mut local = 0;
-            for b in &rb.blocks {
-                let (start, len) = problem.block_range(*b)?;
-                for u in start..start + len {
+            for (start, len) in problem.spans_of(rb) {
+                for u in *start..start + len {
                     let (terms, _) = self.map.row(u);
                     // Zero derivatives are kept: the pattern stays that of the residual's reads.
                     for row in 0..dim {
@@ -184,7 +223,7 @@ impl Evaluator {
                     local += 1;
                 }
             }
-            if rb.residual.is_affine() {
+            if rb.affine {
                 if let Some(at) = self.affine_at.get_mut(r) {
                     let start = self.affine_triplets.len();
                     self.affine_triplets
@@ -216,19 +255,17 @@ impl Evaluator {
         self.hess_triplets.clear();
         let mut row0 = 0;
         let mut flags = 0;
+        let mut slices = smallvec::SmallVec::new();
         for rb in &problem.residuals {
-            let dim = rb.residual.dim();
+            let dim = rb.dim;
             let weights = &lambda[row0..row0 + dim];
             row0 += dim;
             let moves = &self.block_moves[flags..flags + rb.blocks.len()];
             flags += rb.blocks.len();
-            if rb.residual.is_affine()
-                || weights.iter().all(|w| *w == 0.0)
-                || !moves.iter().any(|a| *a)
-            {
+            if rb.affine || weights.iter().all(|w| *w == 0.0) || !moves.iter().any(|a| *a) {
                 continue;
             }
-            let slices = problem.gather(&self.x, &rb.blocks);
+            gather_into(&self.x, problem.spans_of(rb), &mut slices);
             let ncols: usize = slices.iter().map(|s| s.len()).sum();
             self.hess.clear();
             self.hess.resize(ncols * ncols, 0.0);
@@ -240,9 +277,8 @@ impl Evaluator {
             }
             // Local column → the reduced columns of its unknown (x = A·z + c), looked up once.
             let mut terms: smallvec::SmallVec<[&[(usize, f64)]; 32]> = smallvec::SmallVec::new();
-            for b in &rb.blocks {
-                let (start, len) = problem.block_range(*b)?;
-                terms.extend((start..start + len).map(|u| self.map.row(u).0));
+            for (start, len) in problem.spans_of(rb) {
+                terms.extend((*start..start + len).map(|u| self.map.row(u).0));
             }
             let triplets = &mut self.hess_triplets;
             for (tp, h_row) in terms.iter().zip(self.hess.chunks_exact(ncols)) {
@@ -305,6 +341,83 @@ impl Evaluator {
     }
 }
 
+impl Drop for Evaluator {
+    /// Hands the buffers to the next evaluator built on this thread.
+    fn drop(&mut self) {
+        use std::mem::take;
+        Spare {
+            lower: take(&mut self.lower),
+            upper: take(&mut self.upper),
+            row_owner: take(&mut self.row_owner),
+            block_moves: take(&mut self.block_moves),
+            x: take(&mut self.x),
+            jac: take(&mut self.jac),
+            triplets: take(&mut self.triplets),
+            affine_triplets: take(&mut self.affine_triplets),
+            affine_at: take(&mut self.affine_at),
+        }
+        .keep();
+    }
+}
+
+/// The buffers of a dropped [`Evaluator`], kept per thread for the next one: a sketch solves
+/// its components one after the other, each with an evaluator of its own, and these lists were
+/// allocated and freed once per component (for a rectangle, as often as it has rows).
+#[derive(Debug, Default)]
+struct Spare {
+    lower: Vec<f64>,
+    upper: Vec<f64>,
+    row_owner: Vec<ConstraintId>,
+    block_moves: Vec<bool>,
+    x: Vec<f64>,
+    jac: Vec<f64>,
+    triplets: Vec<(usize, usize, f64)>,
+    affine_triplets: Vec<(usize, usize, f64)>,
+    affine_at: Vec<Option<(usize, usize)>>,
+}
+
+/// Spare buffers of more entries than this in all are freed instead of kept, so that a thread
+/// which once solved a large problem does not hold its memory.
+const SPARE_MAX_ENTRIES: usize = 1 << 16;
+
+thread_local! {
+    static SPARE: std::cell::RefCell<Option<Spare>> = const { std::cell::RefCell::new(None) };
+}
+
+impl Spare {
+    /// The buffers kept on this thread, or empty ones.
+    fn take() -> Self {
+        SPARE
+            .try_with(|slot| slot.try_borrow_mut().ok().and_then(|mut s| s.take()))
+            .ok()
+            .flatten()
+            .unwrap_or_default()
+    }
+
+    /// Keeps the buffers for the next [`Spare::take`] on this thread (unless they are large,
+    /// or the thread is ending).
+    fn keep(self) {
+        let entries = self.lower.capacity()
+            + self.upper.capacity()
+            + self.row_owner.capacity()
+            + self.block_moves.capacity()
+            + self.x.capacity()
+            + self.jac.capacity()
+            + self.triplets.capacity()
+            + self.affine_triplets.capacity()
+            + self.affine_at.capacity();
+        if entries > SPARE_MAX_ENTRIES {
+            return;
+        }
+        // An unavailable slot (the thread is ending) drops the buffers.
+        let _ = SPARE.try_with(|slot| {
+            if let Ok(mut s) = slot.try_borrow_mut() {
+                *s = Some(self);
+            }
+        });
+    }
+}
+
 /// max |v|, 0 for an empty slice (NaN propagates as NaN is never below the running maximum
 /// and is returned as infinity).
 pub(crate) fn max_abs(v: &[f64]) -> f64 {
@@ -320,4 +433,142 @@ pub(crate) fn max_abs(v: &[f64]) -> f64 {
 /// Euclidean norm.
 pub(crate) fn norm2(v: &[f64]) -> f64 {
     v.iter().map(|x| x * x).sum::<f64>().sqrt()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ids::UnknownId;
+    use crate::scalar::cst;
+    use crate::{Residual, Scalar};
+
+    /// |p|² − r² over one point block (nonlinear).
+    #[derive(Debug)]
+    struct OnCircle(f64);
+    impl Residual for OnCircle {
+        fn name(&self) -> &str {
+            "on circle"
+        }
+        fn dim(&self) -> usize {
+            1
+        }
+        fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+            out[0] = x[0][0] * x[0][0] + x[0][1] * x[0][1] - cst(self.0 * self.0);
+        }
+    }
+
+    /// p − q − d over two point blocks (affine, two rows).
+    #[derive(Debug)]
+    struct Offset([f64; 2]);
+    impl Residual for Offset {
+        fn name(&self) -> &str {
+            "offset"
+        }
+        fn dim(&self) -> usize {
+            2
+        }
+        fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+            out[0] = x[0][0] - x[1][0] - cst(self.0[0]);
+            out[1] = x[0][1] - x[1][1] - cst(self.0[1]);
+        }
+        fn is_affine(&self) -> bool {
+            true
+        }
+    }
+
+    fn large() -> Problem {
+        let mut p = Problem::new();
+        let mut blocks = Vec::new();
+        for k in 0..6 {
+            let v = f64::from(k);
+            blocks.push(p.add_block(&[v, 1.0 - v]).unwrap());
+        }
+        for (k, pair) in blocks.windows(2).enumerate() {
+            p.add_residual(Offset([1.0, -1.0]), pair, ConstraintId(k as u64))
+                .unwrap();
+            p.add_residual(OnCircle(2.0), &pair[..1], ConstraintId(10 + k as u64))
+                .unwrap();
+        }
+        p
+    }
+
+    fn small() -> Problem {
+        let mut p = Problem::new();
+        let a = p.add_block(&[0.5, 0.25]).unwrap();
+        let b = p.add_block(&[1.5, -0.5]).unwrap();
+        let c = p.add_block(&[3.0, 2.0]).unwrap();
+        p.fix_block(c).unwrap();
+        p.merge(p.unknown(b, 1).unwrap(), p.unknown(a, 1).unwrap())
+            .unwrap();
+        p.set_bounds(Var::Unknown(UnknownId(0)), -1.0, 1.0).unwrap();
+        p.add_residual(OnCircle(1.0), &[a], ConstraintId(1))
+            .unwrap();
+        p.add_residual(Offset([0.5, 0.0]), &[b, c], ConstraintId(2))
+            .unwrap();
+        p.add_residual(OnCircle(2.0), &[b], ConstraintId(3))
+            .unwrap();
+        p
+    }
+
+    /// What an evaluator gives at `z`: the rows and triplets of two linearizations (the
+    /// second reuses the affine triplets), the values, and its bounds and owners.
+    type Taken = (
+        Vec<f64>,
+        Vec<(usize, usize, f64)>,
+        Vec<(usize, usize, f64)>,
+        Vec<f64>,
+        Vec<f64>,
+        Vec<ConstraintId>,
+    );
+
+    fn take(ev: &mut Evaluator, p: &Problem, z: &[f64]) -> Taken {
+        let mut g = vec![0.0; ev.rows()];
+        ev.linearize_for_report(p, z, &mut g).unwrap();
+        let first = ev.triplets().to_vec();
+        ev.linearize_for_report(p, z, &mut g).unwrap();
+        let second = ev.triplets().to_vec();
+        (
+            g,
+            first,
+            second,
+            ev.lower.clone(),
+            ev.upper.clone(),
+            ev.row_owner.clone(),
+        )
+    }
+
+    /// An evaluator built on the buffers a larger one left behind answers as a fresh one.
+    #[test]
+    fn an_evaluator_on_spare_buffers_matches_a_fresh_one() {
+        let (big, p) = (large(), small());
+        let mut e1 = Evaluator::new(&big).unwrap();
+        let z1 = e1.map.z0().to_vec();
+        let mut g1 = vec![0.0; e1.rows()];
+        e1.linearize(&big, &z1, &mut g1).unwrap();
+        drop(e1);
+        let mut reused = Evaluator::new(&p).unwrap();
+        // Built while `reused` holds the spare buffers: fresh ones.
+        let mut fresh = Evaluator::new(&p).unwrap();
+        assert_eq!((reused.rows(), reused.cols()), (fresh.rows(), fresh.cols()));
+        assert_eq!((reused.rows(), reused.cols()), (4, 3));
+        let z = [0.75, -0.3, 1.25];
+        let (a, b) = (take(&mut reused, &p, &z), take(&mut fresh, &p, &z));
+        assert_eq!(a, b);
+        // J_z by hand: rows (circle a; offset x, y; circle b), columns (x_a, y_a = y_b, x_b).
+        let (xa, ya, xb) = (z[0], z[1], z[2]);
+        let mut dense = nalgebra::DMatrix::<f64>::zeros(4, 3);
+        for (r, c, v) in &a.1 {
+            dense[(*r, *c)] += v;
+        }
+        #[rustfmt::skip]
+        let expected = nalgebra::DMatrix::from_row_slice(4, 3, &[
+            2.0 * xa, 2.0 * ya, 0.0,
+            0.0, 0.0, 1.0,
+            0.0, 1.0, 0.0,
+            0.0, 2.0 * ya, 2.0 * xb,
+        ]);
+        assert!((dense - expected).abs().max() < 1e-15);
+        // The bound on x_a is the first column's.
+        assert_eq!((a.3[0], a.4[0]), (-1.0, 1.0));
+    }
 }

@@ -41,7 +41,7 @@ use crate::min_norm::MinNormFactorization;
 use crate::options::Options;
 use crate::problem::Problem;
 use crate::projected_cg::{self, CgOutcome, QpData, Start};
-use crate::square::SquareLu;
+use crate::square::SquareFactors;
 
 /// Reusable buffers of the Newton iterations: a drag session keeps one and passes it to
 /// [`crate::solve_newton_from`] at every mouse event, so repeated solves of the same problem
@@ -75,8 +75,8 @@ pub struct NewtonWorkspace {
     /// The point z and residuals g at which the evaluator passed to the next run was just
     /// linearized (by the selection's analysis): its first iteration takes them over.
     primed: Option<(Vec<f64>, Vec<f64>)>,
-    /// The LU of a square J, refactorized in place at every iteration.
-    square: SquareLu,
+    /// The LU of a square J (dense or sparse), refactorized in place at every iteration.
+    square: SquareFactors,
 }
 
 impl NewtonWorkspace {
@@ -115,6 +115,7 @@ impl NewtonWorkspace {
             return;
         }
         self.normal = crate::normal::NormalCache::default();
+        self.square.forget_sparse();
         self.primed = None;
         SPARE.with(|spare| *spare.borrow_mut() = Some(self));
     }
@@ -416,7 +417,7 @@ enum Factors<'a> {
     /// The same, borrowed.
     Borrowed(&'a mut MinNormFactorization),
     /// The LU of a square J: the steps −J⁻¹·g.
-    Square(&'a mut SquareLu),
+    Square(&'a mut SquareFactors),
 }
 
 impl Factors<'_> {
@@ -440,25 +441,32 @@ fn outward(ev: &Evaluator, z: &[f64], step: &[f64], k: usize) -> bool {
     (z[k] <= ev.lower[k] && step[k] < 0.0) || (z[k] >= ev.upper[k] && step[k] > 0.0)
 }
 
-/// The Gauss–Newton step of a square J (the rows used as many as the unknowns, within the
-/// dense size) by one LU of J ([`crate::square`]) into `lu`: Δ = −J⁻¹·g into `ws.step`, its
-/// multipliers λ = −J⁻ᵀ·(W·Δ + c) into `ws.lambda_gn`. `false`, leaving the step to
-/// [`min_norm_step`], when J is not square, the LU finds it singular, or the step pushes an
-/// unknown through a bound (which the minimum-norm path holds there).
+/// The Gauss–Newton step of a square J (the rows used as many as the unknowns) by one LU of J
+/// into `lu`, dense within the dense size ([`crate::square`]) and sparse above it
+/// ([`crate::sparse_lu`]): Δ = −J⁻¹·g into `ws.step`, its multipliers λ = −J⁻ᵀ·(W·Δ + c) into
+/// `ws.lambda_gn`. `false`, leaving the step to [`min_norm_step`], when J is not square, the
+/// LU finds it singular, or the step pushes an unknown through a bound (which the
+/// minimum-norm path holds there).
 fn square_step(
     ev: &Evaluator,
     ws: &mut NewtonWorkspace,
-    lu: &mut SquareLu,
+    lu: &mut SquareFactors,
     weights: &[f64],
     reference: &[f64],
     rows: Option<&[usize]>,
     options: &Options,
 ) -> bool {
     let n = ev.cols();
-    if n > options.dense_max_unknowns || ws.gs.len() != n {
+    if ws.gs.len() != n {
         return false;
     }
-    if !lu.refactorize(n, ev.triplets(), ev.rows(), rows) {
+    if !lu.refactorize(
+        n,
+        ev.triplets(),
+        ev.rows(),
+        rows,
+        options.dense_max_unknowns,
+    ) {
         return false;
     }
     lu.step(&ws.gs, &mut ws.step);

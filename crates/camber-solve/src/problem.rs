@@ -10,6 +10,8 @@
 //!   ([`Problem::merge`]) and the tangency elimination x_P1 = x_P0 + t·T
 //!   ([`Problem::eliminate`]) are special cases.
 
+use std::sync::Arc;
+
 use smallvec::SmallVec;
 
 use crate::budget::Budget;
@@ -34,11 +36,26 @@ pub enum Binding {
 }
 
 /// A residual block: the residual, the blocks it reads, and the constraint that owns it.
+///
+/// What every evaluation asks of the residual and its blocks is kept here, taken once when the
+/// block is added: its row count and whether it is affine (each a call through the trait
+/// object otherwise), and where its blocks lie in x (a block's range never changes once
+/// issued).
 #[derive(Debug)]
 pub(crate) struct ResidualBlock {
-    pub(crate) residual: Box<dyn DynResidual>,
+    /// Shared, so that a residual a caller already holds behind an `Arc` (the sketch's
+    /// compiled constraints) is added without a copy or a second indirection.
+    pub(crate) residual: Arc<dyn DynResidual>,
     /// The blocks it reads (inline up to four: most residuals read one to four points).
     pub(crate) blocks: SmallVec<[BlockId; 4]>,
+    /// Where the (first unknown, length) of every block in `blocks` start in
+    /// [`Problem::spans`] ([`Problem::spans_of`]): kept there end to end rather than here, so
+    /// that a residual block stays small.
+    pub(crate) spans_at: usize,
+    /// `residual.dim()`.
+    pub(crate) dim: usize,
+    /// `residual.is_affine()`.
+    pub(crate) affine: bool,
     pub(crate) owner: ConstraintId,
     /// Its priority tier (0, required, unless [`Problem::set_priority`] said otherwise).
     pub(crate) priority: crate::priority::Priority,
@@ -82,6 +99,9 @@ pub struct Problem {
     pub(crate) aux_weights: Vec<f64>,
     pub(crate) aux_bounds: Vec<(f64, f64)>,
     pub(crate) residuals: Vec<ResidualBlock>,
+    /// (first unknown, length) of the blocks every residual block reads, end to end in the
+    /// order of `residuals` (see [`ResidualBlock::spans_at`]).
+    pub(crate) spans: Vec<(usize, usize)>,
     /// The evaluations a solve may still spend ([`Problem::start_budget`]).
     pub(crate) budget: Budget,
 }
@@ -113,6 +133,7 @@ impl Problem {
         self.bounds.reserve(unknowns);
         self.weights.reserve(unknowns);
         self.residuals.reserve(residuals);
+        self.spans.reserve(2 * residuals);
     }
 
     /// Adds a parameter block with the given starting values (all free, unbounded, weight 1).
@@ -165,7 +186,7 @@ impl Problem {
         blocks: &[BlockId],
         owner: ConstraintId,
     ) -> Result<ResidualId> {
-        self.add_dyn_residual(Box::new(residual), blocks, owner)
+        self.add_shared_residual(Arc::new(residual), blocks, owner)
     }
 
     /// [`Problem::add_residual`] for an already boxed residual.
@@ -180,24 +201,66 @@ impl Problem {
         blocks: &[BlockId],
         owner: ConstraintId,
     ) -> Result<ResidualId> {
-        let mut found: SmallVec<[usize; 8]> = SmallVec::with_capacity(blocks.len());
+        self.add_shared_residual(Arc::from(residual), blocks, owner)
+    }
+
+    /// [`Problem::add_residual`] for a shared residual: the problem keeps a reference to it,
+    /// so one residual can serve several problems (the solves of one sketch component, say)
+    /// without being copied.
+    ///
+    /// ```
+    /// use std::sync::Arc;
+    /// use camber_solve::{scalar::cst, ConstraintId, DynResidual, Problem, Residual, Scalar};
+    ///
+    /// /// x = 1.
+    /// #[derive(Debug)]
+    /// struct IsOne;
+    /// impl Residual for IsOne {
+    ///     fn name(&self) -> &str { "is one" }
+    ///     fn dim(&self) -> usize { 1 }
+    ///     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) { out[0] = x[0][0] - cst(1.0); }
+    ///     fn is_affine(&self) -> bool { true }
+    /// }
+    ///
+    /// let shared: Arc<dyn DynResidual> = Arc::new(IsOne);
+    /// let (mut p, mut q) = (Problem::new(), Problem::new());
+    /// let (b, c) = (p.add_block(&[0.0])?, q.add_block(&[2.0])?);
+    /// p.add_shared_residual(shared.clone(), &[b], ConstraintId(1))?;
+    /// q.add_shared_residual(shared, &[c], ConstraintId(1))?;
+    /// assert_eq!((p.num_rows(), q.num_rows()), (1, 1));
+    /// # Ok::<(), camber_solve::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// As [`Problem::add_dyn_residual`].
+    pub fn add_shared_residual(
+        &mut self,
+        residual: Arc<dyn DynResidual>,
+        blocks: &[BlockId],
+        owner: ConstraintId,
+    ) -> Result<ResidualId> {
+        let mut spans: SmallVec<[(usize, usize); 8]> = SmallVec::with_capacity(blocks.len());
         for b in blocks {
-            found.push(self.block_range(*b)?.1);
+            spans.push(self.block_range(*b)?);
         }
-        if let Some(expected) = residual
-            .block_sizes()
-            .filter(|e| e.as_slice() != found.as_slice())
-        {
+        let found: SmallVec<[usize; 8]> = spans.iter().map(|(_, len)| *len).collect();
+        if !residual.accepts_block_sizes(&found) {
             return Err(Error::BlockShape {
                 residual: residual.name().to_owned(),
                 owner,
-                expected,
+                expected: residual.block_sizes().unwrap_or_default(),
                 found: found.to_vec(),
             });
         }
+        let (dim, affine) = (residual.dim(), residual.is_affine());
+        let spans_at = self.spans.len();
+        self.spans.extend_from_slice(&spans);
         self.residuals.push(ResidualBlock {
             residual,
             blocks: SmallVec::from_slice(blocks),
+            spans_at,
+            dim,
+            affine,
             owner,
             priority: 0,
         });
@@ -334,6 +397,9 @@ impl Problem {
     /// active rows of an inequality, can be taken back without rebuilding the problem).
     /// Nothing happens when there are `count` or fewer.
     pub fn truncate_residuals(&mut self, count: usize) {
+        if let Some(first) = self.residuals.get(count) {
+            self.spans.truncate(first.spans_at);
+        }
         self.residuals.truncate(count);
     }
 
@@ -455,10 +521,15 @@ impl Problem {
     /// # Errors
     /// As [`Problem::substitute`].
     pub fn merge_group(&mut self, representative: UnknownId, members: &[UnknownId]) -> Result<()> {
-        if matches!(self.binding(representative)?, Binding::Free) {
+        // Every id is checked before anything changes; the bindings are then written directly
+        // (what `merge` would write, without checking the one representative per member).
+        let representative_free = matches!(self.binding(representative)?, Binding::Free);
+        for m in members {
+            self.binding(*m)?;
+        }
+        if representative_free {
             let (mut sum, mut total) = (0.0, 0.0);
             for u in std::iter::once(&representative).chain(members) {
-                self.binding(*u)?;
                 let w = self.weights[u.0];
                 sum += w * self.values[u.0];
                 total += w;
@@ -468,7 +539,10 @@ impl Problem {
             }
         }
         for m in members {
-            self.merge(*m, representative)?;
+            self.bindings[m.0] = Binding::Affine {
+                terms: vec![(Var::Unknown(representative), 1.0)],
+                constant: 0.0,
+            };
         }
         Ok(())
     }
@@ -598,7 +672,7 @@ impl Problem {
 
     /// Number of residual rows (Σ dim over residual blocks).
     pub fn num_rows(&self) -> usize {
-        self.residuals.iter().map(|r| r.residual.dim()).sum()
+        self.residuals.iter().map(|r| r.dim).sum()
     }
 
     /// The values of a block.
@@ -682,13 +756,13 @@ impl Problem {
         crate::sparse::check_len("unknowns", self.values.len(), x.len())?;
         crate::sparse::check_len("residual rows", self.num_rows(), g.len())?;
         let mut row = 0;
+        let mut slices = SmallVec::new();
         for rb in &self.residuals {
-            let dim = rb.residual.dim();
-            let slices = self.gather(x, &rb.blocks);
-            let out = &mut g[row..row + dim];
+            gather_into(x, self.spans_of(rb), &mut slices);
+            let out = &mut g[row..row + rb.dim];
             rb.residual.values(&slices, out)?;
             check_residual(rb, out)?;
-            row += dim;
+            row += rb.dim;
         }
         Ok(())
     }
@@ -703,6 +777,14 @@ impl Problem {
             out.push(x.get(start..start + len).unwrap_or(&[]));
         }
         out
+    }
+
+    /// (first unknown, length) of every block a residual block reads, in order.
+    #[inline]
+    pub(crate) fn spans_of(&self, rb: &ResidualBlock) -> &[(usize, usize)] {
+        self.spans
+            .get(rb.spans_at..rb.spans_at + rb.blocks.len())
+            .unwrap_or(&[])
     }
 
     /// The first unknown and the length of a block. The error is built only on a miss: this
@@ -732,6 +814,23 @@ impl Problem {
             Var::Unknown(u) => self.binding(u).map(|_| ()),
             Var::Aux(a) => self.aux_value(a).map(|_| ()),
         }
+    }
+}
+
+/// Slices of `x` for the spans (first unknown, length) of a residual's blocks
+/// ([`Problem::spans_of`]), written over `out`: one list serves every residual of an
+/// evaluation (a list returned per residual was a copy of its inline storage each time).
+#[inline]
+pub(crate) fn gather_into<'a>(
+    x: &'a [f64],
+    spans: &[(usize, usize)],
+    out: &mut SmallVec<[&'a [f64]; 8]>,
+) {
+    out.clear();
+    // A plain loop: the iterator `extend` of SmallVec costs more for the one to four blocks
+    // of most residuals.
+    for (start, len) in spans {
+        out.push(x.get(*start..*start + *len).unwrap_or(&[]));
     }
 }
 
@@ -846,5 +945,91 @@ mod tests {
         p.free(y0).unwrap();
         assert_eq!(p.binding(y0).unwrap(), &Binding::Free);
         assert!((p.aux_value(t).unwrap() - 0.5).abs() < 1e-15);
+    }
+
+    /// g = x₀ + 2·x₁ − c over one block (x₀) and another (x₁), declaring two blocks of one.
+    #[derive(Debug)]
+    struct Sum(f64);
+    impl Residual for Sum {
+        fn name(&self) -> &str {
+            "sum"
+        }
+        fn dim(&self) -> usize {
+            1
+        }
+        fn block_sizes(&self) -> Option<Vec<usize>> {
+            Some(vec![1, 1])
+        }
+        fn eval<T: crate::Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+            out[0] = x[0][0] + x[1][0] * crate::scalar::cst(2.0) - crate::scalar::cst(self.0);
+        }
+        fn is_affine(&self) -> bool {
+            true
+        }
+    }
+
+    /// The rows a problem's residuals give at `x`, one residual at a time by hand.
+    fn by_hand(p: &Problem, x: &[f64]) -> Vec<f64> {
+        let mut out = Vec::new();
+        for rb in &p.residuals {
+            let slices: Vec<&[f64]> = rb
+                .blocks
+                .iter()
+                .map(|b| {
+                    let (start, len) = p.blocks[b.0];
+                    &x[start..start + len]
+                })
+                .collect();
+            let mut g = vec![0.0; rb.residual.dim()];
+            rb.residual.values(&slices, &mut g).unwrap();
+            out.extend(g);
+        }
+        out
+    }
+
+    #[test]
+    fn spans_follow_added_and_truncated_residuals() {
+        let mut p = Problem::new();
+        let a = p.add_block(&[1.0]).unwrap();
+        let b = p.add_block(&[2.0, 3.0]).unwrap();
+        let c = p.add_block(&[4.0]).unwrap();
+        p.add_residual(Sum(0.5), &[a, c], ConstraintId(1)).unwrap();
+        p.add_residual(Sum(1.5), &[c, a], ConstraintId(2)).unwrap();
+        // A refused residual leaves no spans behind.
+        assert!(matches!(
+            p.add_residual(Sum(0.0), &[a, b], ConstraintId(3)),
+            Err(Error::BlockShape { ref expected, ref found, .. })
+                if expected == &vec![1, 1] && found == &vec![1, 2]
+        ));
+        p.truncate_residuals(1);
+        p.add_residual(Sum(-1.0), &[c, c], ConstraintId(4)).unwrap();
+        assert_eq!(p.spans, vec![(0, 1), (3, 1), (3, 1), (3, 1)]);
+        let x = [0.25, 7.0, 8.0, -1.5];
+        let mut g = vec![0.0; p.num_rows()];
+        p.evaluate_at(&x, &mut g).unwrap();
+        assert_eq!(g, by_hand(&p, &x));
+        assert_eq!(g, vec![0.25 - 3.0 - 0.5, -1.5 - 3.0 + 1.0]);
+    }
+
+    #[test]
+    fn merging_a_group_checks_every_id_before_changing_anything() {
+        let mut p = Problem::new();
+        let b = p.add_block(&[1.0, 3.0]).unwrap();
+        let (u0, u1) = (p.unknown(b, 0).unwrap(), p.unknown(b, 1).unwrap());
+        assert_eq!(
+            p.merge_group(u0, &[u1, UnknownId(9)]),
+            Err(Error::UnknownUnknown { index: 9, len: 2 })
+        );
+        assert_eq!(p.binding(u1).unwrap(), &Binding::Free);
+        assert_eq!(p.values(), &[1.0, 3.0]);
+        p.merge_group(u0, &[u1]).unwrap();
+        assert_eq!(
+            p.binding(u1).unwrap(),
+            &Binding::Affine {
+                terms: vec![(Var::Unknown(u0), 1.0)],
+                constant: 0.0
+            }
+        );
+        assert!((p.values()[0] - 2.0).abs() < 1e-15);
     }
 }

@@ -65,6 +65,13 @@ pub trait Residual: Debug + Send + Sync + 'static {
     fn block_sizes(&self) -> Option<Vec<usize>> {
         None
     }
+    /// Whether blocks of the lengths `sizes` (in order) are what this residual reads: by
+    /// default, whether they equal [`Residual::block_sizes`] (anything when that is `None`).
+    /// A residual may answer the same question without building the list, which the problem
+    /// otherwise allocates for every residual block it adds.
+    fn accepts_block_sizes(&self, sizes: &[usize]) -> bool {
+        self.block_sizes().is_none_or(|expected| expected == sizes)
+    }
     /// Writes g(x) into `out` (`dim()` entries); `x` holds one slice per block read.
     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]);
     /// Whether g is affine in the unknowns it reads (g(x) = M·x + b with M, b constant). Only
@@ -112,7 +119,7 @@ pub trait Residual: Debug + Send + Sync + 'static {
     }
 }
 
-/// The object-safe face of a [`Residual`], stored by the problem as `Box<dyn DynResidual>`.
+/// The object-safe face of a [`Residual`], stored by the problem as `Arc<dyn DynResidual>`.
 ///
 /// Every [`Residual`] gets it through a blanket implementation. The Jacobian is written row
 /// major, `dim()` rows by (Σ block lengths) columns, the columns of block 0 first.
@@ -123,6 +130,12 @@ pub trait DynResidual: Debug + Send + Sync {
     fn dim(&self) -> usize;
     /// The length of every block read, in order, when the residual declares them.
     fn block_sizes(&self) -> Option<Vec<usize>>;
+    /// Whether blocks of the lengths `sizes` (in order) are what the residual reads
+    /// (see [`Residual::accepts_block_sizes`]); by default, compared with
+    /// [`DynResidual::block_sizes`].
+    fn accepts_block_sizes(&self, sizes: &[usize]) -> bool {
+        self.block_sizes().is_none_or(|expected| expected == sizes)
+    }
     /// Whether the residual is affine in its unknowns.
     fn is_affine(&self) -> bool;
     /// Writes g(x) into `out`.
@@ -189,6 +202,10 @@ impl<R: Residual> DynResidual for R {
         Residual::block_sizes(self)
     }
 
+    fn accepts_block_sizes(&self, sizes: &[usize]) -> bool {
+        Residual::accepts_block_sizes(self, sizes)
+    }
+
     fn is_affine(&self) -> bool {
         Residual::is_affine(self)
     }
@@ -247,6 +264,9 @@ impl<R: DynResidual + ?Sized> DynResidual for std::sync::Arc<R> {
     }
     fn block_sizes(&self) -> Option<Vec<usize>> {
         (**self).block_sizes()
+    }
+    fn accepts_block_sizes(&self, sizes: &[usize]) -> bool {
+        (**self).accepts_block_sizes(sizes)
     }
     fn is_affine(&self) -> bool {
         (**self).is_affine()

@@ -564,3 +564,148 @@ fn a_solve_that_merely_failed_is_not_called_conflicting() {
     let json = serde_json::to_value(&solved).unwrap();
     assert_eq!(json["selection"], "full_rank");
 }
+
+/// |p − q|² − d² for two point blocks.
+#[derive(Debug)]
+struct PointDistance {
+    d: f64,
+}
+
+impl Residual for PointDistance {
+    fn name(&self) -> &str {
+        "point distance"
+    }
+    fn dim(&self) -> usize {
+        1
+    }
+    fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+        let dx = x[1][0] - x[0][0];
+        let dy = x[1][1] - x[0][1];
+        out[0] = dx * dx + dy * dy - cst(self.d * self.d);
+    }
+}
+
+/// q_k − p_k = 0 for one coordinate k of two point blocks (k = 0: vertical, 1: horizontal).
+#[derive(Debug)]
+struct SameCoordinate {
+    k: usize,
+}
+
+impl Residual for SameCoordinate {
+    fn name(&self) -> &str {
+        "same coordinate"
+    }
+    fn dim(&self) -> usize {
+        1
+    }
+    fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+        out[0] = x[1][self.k] - x[0][self.k];
+    }
+    fn is_affine(&self) -> bool {
+        true
+    }
+}
+
+/// A ladder of `cells` cells as W5b draws it, on points alone: bottom points p₀…p_N, top
+/// points q₀…q_N, p₀ fixed, rungs vertical, rails horizontal, bottom rails of widths 1.0,
+/// 1.2, 1.4 cycling and the first rung of height 1: as many rows as free unknowns
+/// (4N + 2). Every other coordinate starts up to 0.1 off its design value (a fixed LCG).
+fn ladder(cells: usize) -> Problem {
+    let mut state = 12345_u64;
+    let mut offset = || {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        0.1 * (2.0 * ((state >> 11) as f64) / ((1_u64 << 53) as f64) - 1.0)
+    };
+    let width = |k: usize| 1.0 + 0.2 * (k % 3) as f64;
+    let mut p = Problem::new();
+    let mut x = 0.0;
+    let (mut bottom, mut top) = (Vec::new(), Vec::new());
+    for k in 0..=cells {
+        let (dp, dq) = if k == 0 {
+            ([0.0, 0.0], [offset(), offset()])
+        } else {
+            ([offset(), offset()], [offset(), offset()])
+        };
+        bottom.push(p.add_block(&[x + dp[0], dp[1]]).unwrap());
+        top.push(p.add_block(&[x + dq[0], 1.0 + dq[1]]).unwrap());
+        x += width(k);
+    }
+    p.fix_block(bottom[0]).unwrap();
+    let mut id = 0;
+    let mut next_id = || {
+        id += 1;
+        ConstraintId(id)
+    };
+    p.add_residual(PointDistance { d: 1.0 }, &[bottom[0], top[0]], next_id())
+        .unwrap();
+    for k in 0..=cells {
+        p.add_residual(SameCoordinate { k: 0 }, &[bottom[k], top[k]], next_id())
+            .unwrap();
+    }
+    for k in 0..cells {
+        p.add_residual(
+            SameCoordinate { k: 1 },
+            &[bottom[k], bottom[k + 1]],
+            next_id(),
+        )
+        .unwrap();
+        p.add_residual(SameCoordinate { k: 1 }, &[top[k], top[k + 1]], next_id())
+            .unwrap();
+        p.add_residual(
+            PointDistance { d: width(k) },
+            &[bottom[k], bottom[k + 1]],
+            next_id(),
+        )
+        .unwrap();
+    }
+    p
+}
+
+/// Checks that the ladder of [`ladder`] is solved: every residual met, rails at heights 0
+/// and 1, rungs at the cumulated widths.
+fn assert_ladder_solved(p: &Problem, cells: usize) {
+    let mut g = vec![0.0; p.num_rows()];
+    p.evaluate_at(p.values(), &mut g).unwrap();
+    let worst = g.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+    assert!(worst <= 1e-9, "max |g| = {worst}");
+    let mut x = 0.0;
+    for k in 0..=cells {
+        let v = &p.values()[4 * k..4 * k + 4];
+        assert_abs_diff_eq!(v[0], x, epsilon = 1e-9);
+        assert_abs_diff_eq!(v[1], 0.0, epsilon = 1e-9);
+        assert_abs_diff_eq!(v[2], x, epsilon = 1e-9);
+        assert_abs_diff_eq!(v[3], 1.0, epsilon = 1e-9);
+        x += 1.0 + 0.2 * (k % 3) as f64;
+    }
+}
+
+/// W5b-like ladders solve with every residual met when their square Newton steps come from
+/// the sparse LU: a small one (the sparse LU forced by a dense size of 0) reaches the point
+/// the dense LU's steps reach, and a large one (above the default dense size) solves too.
+#[test]
+fn square_ladders_solve_by_the_sparse_lu_as_by_the_dense_one() {
+    let cells = 30;
+    let mut sparse = ladder(cells);
+    let r = solve(&mut sparse, &Options::default().with_dense_max_unknowns(0)).unwrap();
+    assert_eq!(
+        (r.solver, r.status, r.dof),
+        (SolverKind::Newton, Status::Solved, 0)
+    );
+    assert_ladder_solved(&sparse, cells);
+    let mut dense = ladder(cells);
+    let rd = solve(&mut dense, &Options::default()).unwrap();
+    assert_eq!((rd.solver, rd.status), (SolverKind::Newton, Status::Solved));
+    for (a, b) in sparse.values().iter().zip(dense.values()) {
+        assert_abs_diff_eq!(a, b, epsilon = 1e-12);
+    }
+    let cells = 400;
+    let mut large = ladder(cells);
+    let r = solve(&mut large, &Options::default()).unwrap();
+    assert_eq!(
+        (r.solver, r.status, r.dof),
+        (SolverKind::Newton, Status::Solved, 0)
+    );
+    assert_ladder_solved(&large, cells);
+}

@@ -45,7 +45,8 @@ pub enum Workload {
     /// W1: drag the second control point of a cubic with a directional start tangent.
     #[value(alias = "w1")]
     W1,
-    /// W2: a curve tangent to three circles, as one B-spline and as two cubics.
+    /// W2: a curve tangent to three circles, as one B-spline and as two cubics, and the
+    /// B-spline's drag update.
     #[value(alias = "w2")]
     W2,
     /// W3: the G1 chain along a sine wave with free joint directions and fixed chords.
@@ -112,7 +113,7 @@ pub struct Plan {
     pub mode: &'static str,
     /// The workloads to run, in table order.
     pub only: Vec<Workload>,
-    /// W1: runs of the 200 drag targets.
+    /// W1 and the W2 drag: runs of the 200 drag targets.
     pub w1_runs: usize,
     /// W2: perturbed starts per representation and δ.
     pub w2_trials: usize,
@@ -192,7 +193,7 @@ impl Plan {
         for w in &self.only {
             n += match w {
                 Workload::W1 => 2 * self.w1_runs * 200,
-                Workload::W2 => 4 * self.w2_trials,
+                Workload::W2 => 4 * self.w2_trials + self.w1_runs * 200,
                 Workload::W3 | Workload::W3a | Workload::W5 | Workload::W5b => self
                     .chain_sizes
                     .iter()

@@ -141,6 +141,7 @@ pub(super) fn w2(plan: &Plan, bar: &ProgressBar) -> Result<Vec<Row>> {
         let case = format!("bspline7 δ={delta}");
         rows.push(trials(case, starts, |s| wl::w2_valid(s, &w), bar));
     }
+    rows.push(w2_drag(&base, &w, plan, bar)?);
     bar.set_message("W2 2cubic");
     let (mut base, curves, _) = wl::w2_2cubic()?;
     base.solve()
@@ -157,6 +158,40 @@ pub(super) fn w2(plan: &Plan, bar: &ProgressBar) -> Result<Vec<Row>> {
         ));
     }
     Ok(rows)
+}
+
+/// The diffuser's drag: control point 3 of the solved bspline7 moved up by 0.0002·k and back
+/// (k = 1..100..1, 200 targets, as criterion's `w2_bspline7_drag_update`), each nonlinear update
+/// timed; `plan.w1_runs` runs from the solved base. Valid: the update is kept and every
+/// constraint's residual is at most 1e-6 after it.
+fn w2_drag(base: &Sketch, w: &wl::W2, plan: &Plan, bar: &ProgressBar) -> Result<Row> {
+    bar.set_message("W2 bspline7 drag");
+    let dragged = PointRef::Control(w.curve, 3);
+    let start = base.point(dragged)?;
+    let (mut times, mut valid, mut failed) = (Vec::new(), 0, 0);
+    for _ in 0..plan.w1_runs {
+        let mut session = base.drag(dragged)?;
+        for k in 1..=200_u32 {
+            let dy = 0.0002 * f64::from(k.min(200 - k));
+            let target = Point2::new(start.x, start.y + dy);
+            let t0 = Instant::now();
+            let outcome = session.update(target);
+            times.push(t0.elapsed());
+            bar.inc(1);
+            failed += usize::from(outcome.is_err());
+            let held = session.residuals()?.iter().all(|(_, r)| *r <= TOL);
+            valid += usize::from(outcome.is_ok() && held);
+        }
+    }
+    let mut r = row(
+        Workload::W2,
+        "bspline7 drag update".to_owned(),
+        &times,
+        valid,
+    );
+    r.failed = failed;
+    r.timer_s = Some(timer_overhead());
+    Ok(r)
 }
 
 /// W3 (`affine` false) or W3a (true) for every chain size: one full solve timed per repeat,

@@ -317,7 +317,7 @@ impl ComponentProblem {
                     }
                 }
                 self.problem
-                    .add_dyn_residual(Box::new(residual.clone()), &blocks, owner)?;
+                    .add_shared_residual(residual.clone(), &blocks, owner)?;
                 if let Some(check) = check {
                     self.checks.push(CheckEntry {
                         owner,

@@ -50,6 +50,10 @@ impl Residual for PointDistance {
     fn block_sizes(&self) -> Option<Vec<usize>> {
         Some(vec![2, 2])
     }
+    /// Two points, checked without building the list.
+    fn accepts_block_sizes(&self, sizes: &[usize]) -> bool {
+        sizes == [2, 2]
+    }
     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
         let v = sub(x[0], x[1]);
         let d = cst::<T>(self.distance);

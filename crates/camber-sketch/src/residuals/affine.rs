@@ -71,6 +71,10 @@ impl Residual for PointCombination {
     fn block_sizes(&self) -> Option<Vec<usize>> {
         Some(vec![2; self.coeffs.len()])
     }
+    /// One point (two unknowns) per coefficient, checked without building the list.
+    fn accepts_block_sizes(&self, sizes: &[usize]) -> bool {
+        sizes.len() == self.coeffs.len() && sizes.iter().all(|n| *n == 2)
+    }
     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
         let v = combination(&self.coeffs, x);
         out[0] = v[0] - cst::<T>(self.target[0]);
@@ -140,6 +144,10 @@ impl Residual for DirectionCross {
     }
     fn block_sizes(&self) -> Option<Vec<usize>> {
         Some(vec![2; self.coeffs.len()])
+    }
+    /// One point (two unknowns) per coefficient, checked without building the list.
+    fn accepts_block_sizes(&self, sizes: &[usize]) -> bool {
+        sizes.len() == self.coeffs.len() && sizes.iter().all(|n| *n == 2)
     }
     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
         let v = combination(&self.coeffs, x);
@@ -212,6 +220,10 @@ impl Residual for LineTangency {
     fn block_sizes(&self) -> Option<Vec<usize>> {
         Some(vec![2; self.point.len()])
     }
+    /// One point (two unknowns) per coefficient, checked without building the list.
+    fn accepts_block_sizes(&self, sizes: &[usize]) -> bool {
+        sizes.len() == self.point.len() && sizes.iter().all(|n| *n == 2)
+    }
     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
         let p = combination(&self.point, x);
         let t = combination(&self.tangent, x);
@@ -279,5 +291,41 @@ mod tests {
             &mut g,
             &mut j
         ));
+    }
+
+    /// The shape test without the list gives the answer of the declared list, for every
+    /// residual here and shapes of the right and wrong count and lengths.
+    #[test]
+    fn block_shapes_are_checked_as_declared() {
+        let residuals: [Box<dyn DynResidual>; 3] = [
+            Box::new(PointCombination::new("p", vec![1.0, -1.0], [0.0, 0.0])),
+            Box::new(DirectionCross::new("d", vec![1.0, 0.5, -1.5], [1.0, 0.0])),
+            Box::new(LineTangency::new(
+                vec![0.5, 0.5],
+                vec![-1.0, 1.0],
+                [0.0, 0.0],
+                [1.0, 0.0],
+            )),
+        ];
+        let shapes: [&[usize]; 7] = [
+            &[],
+            &[2],
+            &[2, 2],
+            &[2, 2, 2],
+            &[2, 1],
+            &[1, 2, 2],
+            &[2, 2, 3],
+        ];
+        for r in &residuals {
+            let declared = r.block_sizes().unwrap();
+            for shape in shapes {
+                assert_eq!(
+                    r.accepts_block_sizes(shape),
+                    declared.as_slice() == shape,
+                    "{} with {shape:?}",
+                    r.name()
+                );
+            }
+        }
     }
 }
