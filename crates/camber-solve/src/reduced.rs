@@ -464,14 +464,7 @@ impl CsrRows {
             self.row_ptr.push(self.col_idx.len());
             return;
         }
-        // Insertion sort: a row has a few entries, nearly in order.
-        for k in 1..self.pending.len() {
-            let mut i = k;
-            while i > 0 && self.pending[i - 1].0 > self.pending[i].0 {
-                self.pending.swap(i - 1, i);
-                i -= 1;
-            }
-        }
+        self.pending.sort_unstable_by_key(|e| e.0);
         let mut k = 0;
         while k < self.pending.len() {
             let col = self.pending[k].0;
