@@ -32,13 +32,6 @@
 //! selection as fallback, the orientation and contact checks of a solve, and the active set of
 //! honest contact (a step that would cross a target gets its clearance row instead of being
 //! refused). If that fails too, the session keeps its previous state.
-//!
-//! Newton starts from a prediction once two updates have been kept: the solution moves with the
-//! target along a smooth path, so with z₁, z₂ the last two states and t₁, t₂, t₃ the targets,
-//! z₂ + s·(z₂ − z₁) with s = (t₃ − t₂)·(t₂ − t₁)/|t₂ − t₁|² (the new move in units of the last
-//! one, capped at 2) is first-order close to the next solution. The pull stays toward z₂, so
-//! the answer is the same minimum-norm step; only the iterations to reach it are fewer. A move
-//! that turns back gets no prediction, and a predicted start that fails is retried from z₂.
 
 use std::collections::BTreeMap;
 
@@ -306,35 +299,6 @@ pub struct NonlinearDrag {
     /// below every tier (pin rows of the lowest priority, never a fixed block), so no
     /// constraint gives way to it.
     wish: bool,
-    /// The target of the last kept update, and the state and target of the one before it:
-    /// the secant along which the next update's Newton start is predicted.
-    last_target: Option<[f64; 2]>,
-    previous: Option<(Vec<f64>, [f64; 2])>,
-}
-
-/// The secant predictor caps its extrapolation at this many times the last step.
-const MAX_PREDICTION: f64 = 2.0;
-
-/// The first-order prediction of the next solution along the drag (see the module
-/// documentation): z + s·(z − z_prev), with s the new target move projected on the last one
-/// in units of it, s in (0, [`MAX_PREDICTION`]]. `None` when there is no last move, the new move
-/// turns back or away from it (s ≤ 0), or the sizes differ.
-fn predicted_start(
-    z: &[f64],
-    previous: &(Vec<f64>, [f64; 2]),
-    last_target: [f64; 2],
-    target: [f64; 2],
-) -> Option<Vec<f64>> {
-    let (z_prev, t_prev) = previous;
-    let last = [last_target[0] - t_prev[0], last_target[1] - t_prev[1]];
-    let next = [target[0] - last_target[0], target[1] - last_target[1]];
-    let length2 = last[0] * last[0] + last[1] * last[1];
-    let s = (last[0] * next[0] + last[1] * next[1]) / length2;
-    if z_prev.len() != z.len() || !s.is_finite() || s <= 0.0 {
-        return None;
-    }
-    let s = s.min(MAX_PREDICTION);
-    Some(z.iter().zip(z_prev).map(|(a, b)| a + s * (a - b)).collect())
 }
 
 /// How a dragged point can move under its constraints, at the state a session is in.
@@ -610,8 +574,6 @@ impl Sketch {
             base_rows,
             row_owner,
             wish,
-            last_target: None,
-            previous: None,
         }))
     }
 }
@@ -834,38 +796,13 @@ impl NonlinearDrag {
             cp.problem
                 .set_block_values(self.block, &[target.x, target.y])?;
         }
-        let target_xy = [target.x, target.y];
-        let predicted = match (&self.previous, self.last_target) {
-            (Some(previous), Some(last)) => predicted_start(&self.z, previous, last, target_xy),
-            _ => None,
-        };
-        let plain = Start::Warm {
+        let start = Start::Warm {
             from: self.z.clone(),
             toward: self.z.clone(),
         };
-        let outcome = match predicted {
-            // A predicted start that fails is retried from the plain one: the prediction only
-            // saves iterations, it must never lose an update.
-            Some(from) => match policy::solve(
-                cp,
-                &self.common.shapes,
-                &options,
-                Start::Warm {
-                    from,
-                    toward: self.z.clone(),
-                },
-            ) {
-                Ok(done) => Ok(done),
-                Err(_) => policy::solve(cp, &self.common.shapes, &options, plain),
-            },
-            None => policy::solve(cp, &self.common.shapes, &options, plain),
-        };
-        match outcome {
+        match policy::solve(cp, &self.common.shapes, &options, start) {
             Ok(_) => {
-                let solved = cp.problem.reduced_map()?.z0().to_vec();
-                let replaced = std::mem::replace(&mut self.z, solved);
-                self.previous = self.last_target.map(|t| (replaced, t));
-                self.last_target = Some(target_xy);
+                self.z = cp.problem.reduced_map()?.z0().to_vec();
                 self.common.x.clear();
                 self.common.x.extend_from_slice(cp.problem.values());
                 self.common.moved = true;
@@ -1109,90 +1046,5 @@ mod tests {
             // The residuals the session reports come from the problem itself.
             assert!(fast.residuals().unwrap().iter().all(|(_, r)| *r < 1e-12));
         }
-    }
-    /// A cubic touching a fixed circle from below at a free contact, both ends fixed; the
-    /// session drags P₁.
-    fn contact_session() -> (EntityId, DragSession) {
-        use crate::constraints::TangentToCircle;
-        use crate::vocabulary::{CircleSide, Contact, Rotation};
-        let mut s = Sketch::new();
-        let c = s
-            .add_bezier(
-                BezierCurve2::try_new(vec![
-                    Point2::origin(),
-                    Point2::new(1.0, 1.0),
-                    Point2::new(2.0, 1.0),
-                    Point2::new(3.0, 0.0),
-                ])
-                .unwrap(),
-            )
-            .unwrap();
-        let circle = s.add_circle(Point2::new(1.5, 1.75), 1.0).unwrap();
-        s.add_constraint(Fixed::entity(circle)).unwrap();
-        for end in [0, 3] {
-            s.add_constraint(Fixed::point(PointRef::Control(c, end)))
-                .unwrap();
-        }
-        s.add_constraint(TangentToCircle {
-            curve: c,
-            circle,
-            u: Contact::Free(0.45),
-            side: CircleSide::Outside,
-            rotation: Rotation::CounterClockwise,
-        })
-        .unwrap();
-        s.solve().unwrap();
-        let session = s.drag(PointRef::Control(c, 1)).unwrap();
-        assert!(matches!(session, DragSession::Nonlinear(_)));
-        (c, session)
-    }
-
-    /// Updates from the predicted start land where updates from the previous state do (the
-    /// prediction changes the iterations, not the answer), on a path that runs straight, turns
-    /// and runs back; and the prediction is used.
-    #[test]
-    fn a_predicted_start_changes_the_iterations_not_the_answer() {
-        let (c, mut predicted) = contact_session();
-        let (_, mut plain) = contact_session();
-        let start = predicted.point(PointRef::Control(c, 1)).unwrap();
-        let mut used = 0;
-        for k in 1..=60 {
-            let t = f64::from(k);
-            // Out along x, round a quarter turn, then back the way it came.
-            let offset = if k <= 20 {
-                Vector2::new(0.004 * t, 0.0)
-            } else if k <= 40 {
-                let a = (t - 20.0) / 20.0 * std::f64::consts::FRAC_PI_2;
-                Vector2::new(0.08 + 0.05 * a.sin(), 0.05 * (1.0 - a.cos()))
-            } else {
-                Vector2::new(0.13 - 0.004 * (t - 40.0), 0.05)
-            };
-            let target = start + offset;
-            if let DragSession::Nonlinear(d) = &predicted {
-                if let (Some(previous), Some(last)) = (&d.previous, d.last_target) {
-                    used += usize::from(
-                        predicted_start(&d.z, previous, last, [target.x, target.y]).is_some(),
-                    );
-                }
-            }
-            predicted.update(target).unwrap();
-            let DragSession::Nonlinear(d) = &mut plain else {
-                panic!("nonlinear");
-            };
-            d.previous = None;
-            plain.update(target).unwrap();
-            let (DragSession::Nonlinear(a), DragSession::Nonlinear(b)) = (&predicted, &plain)
-            else {
-                panic!("nonlinear");
-            };
-            let gap =
-                a.z.iter()
-                    .zip(&b.z)
-                    .map(|(x, y)| (x - y).abs())
-                    .fold(0.0, f64::max);
-            assert!(gap < 1e-9, "update {k}: the states differ by {gap:e}");
-        }
-        // Every update after the second except the one that reverses has a prediction.
-        assert!(used >= 55, "{used} predicted starts");
     }
 }
