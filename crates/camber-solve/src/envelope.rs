@@ -12,7 +12,7 @@
 //! symbolic work (ordering, elimination tree, supernodes).
 
 use crate::errors::{Error, Result};
-use crate::sparse::SparseMatrix;
+use crate::sparse::{entries_by_column, SparseMatrix};
 
 /// The envelope is used when Σᵢ wᵢ² ≤ this × m (the row widths wᵢ have a root mean square of
 /// at most 16): the factorization then costs at most 128 multiply-adds per row.
@@ -61,26 +61,7 @@ impl EnvelopePattern {
         for (i, f) in first.iter().enumerate() {
             start.push(start[i] + i - f + 1);
         }
-        let mut col_ptr = vec![0_usize; n + 1];
-        for &c in col_idx {
-            col_ptr[c + 1] += 1;
-        }
-        for c in 0..n {
-            col_ptr[c + 1] += col_ptr[c];
-        }
-        let mut next = col_ptr[..n].to_vec();
-        let mut by_col = vec![(0_usize, 0_usize); col_idx.len()];
-        for i in 0..m {
-            for (a, &c) in col_idx
-                .iter()
-                .enumerate()
-                .take(row_ptr[i + 1])
-                .skip(row_ptr[i])
-            {
-                by_col[next[c]] = (i, a);
-                next[c] += 1;
-            }
-        }
+        let (col_ptr, by_col) = entries_by_column(n, row_ptr, col_idx);
         Some(Self {
             first,
             start,

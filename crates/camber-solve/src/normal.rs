@@ -34,7 +34,7 @@ use faer::{Conj, MatMut, Par, Side};
 
 use crate::envelope::{EnvelopeFactor, EnvelopePattern};
 use crate::errors::{Error, Result};
-use crate::sparse::SparseMatrix;
+use crate::sparse::{entries_by_column, SparseMatrix};
 
 /// The pattern work of factorizing J·D·Jᵀ for one sparsity pattern of J.
 #[derive(Debug, Clone, Default)]
@@ -226,26 +226,7 @@ impl General {
         let (row_ptr, col_idx, _) = j.raw();
         let (m, n) = (j.nrows(), j.ncols());
         // The entries of each column: (row, value index).
-        let mut col_count = vec![0_usize; n + 1];
-        for &c in col_idx {
-            col_count[c + 1] += 1;
-        }
-        for k in 0..n {
-            col_count[k + 1] += col_count[k];
-        }
-        let mut next = col_count.clone();
-        let mut by_col = vec![(0_usize, 0_usize); col_idx.len()];
-        for i in 0..m {
-            for (a, &c) in col_idx
-                .iter()
-                .enumerate()
-                .take(row_ptr[i + 1])
-                .skip(row_ptr[i])
-            {
-                by_col[next[c]] = (i, a);
-                next[c] += 1;
-            }
-        }
+        let (col_count, by_col) = entries_by_column(n, row_ptr, col_idx);
         // For column j: `mark[i] == j` once row i is listed, `slot[i]` its slot then.
         let mut mark = vec![usize::MAX; m];
         let mut slot = vec![0_usize; m];

@@ -453,6 +453,32 @@ pub(crate) fn compress(nrows: usize, positions: &[(usize, usize)]) -> (Vec<usize
     (row_ptr, col_idx)
 }
 
+/// The entries of a compressed-row matrix column by column: `(col_ptr, by_col)` with the
+/// entries of column c at `by_col[col_ptr[c]..col_ptr[c + 1]]`, each as (row, index of its
+/// value in the compressed rows), rows increasing. One counting pass, no sort.
+pub(crate) fn entries_by_column(
+    ncols: usize,
+    row_ptr: &[usize],
+    col_idx: &[usize],
+) -> (Vec<usize>, Vec<(usize, usize)>) {
+    let mut col_ptr = vec![0_usize; ncols + 1];
+    for &c in col_idx {
+        col_ptr[c + 1] += 1;
+    }
+    for c in 0..ncols {
+        col_ptr[c + 1] += col_ptr[c];
+    }
+    let mut next = col_ptr[..ncols].to_vec();
+    let mut by_col = vec![(0_usize, 0_usize); col_idx.len()];
+    for (i, w) in row_ptr.windows(2).enumerate() {
+        for (a, &c) in col_idx.iter().enumerate().take(w[1]).skip(w[0]) {
+            by_col[next[c]] = (i, a);
+            next[c] += 1;
+        }
+    }
+    (col_ptr, by_col)
+}
+
 /// Checks that a slice has the expected length.
 pub(crate) fn check_len(what: &'static str, expected: usize, found: usize) -> Result<()> {
     if expected == found {
