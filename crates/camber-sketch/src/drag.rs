@@ -35,7 +35,7 @@
 
 use std::collections::BTreeMap;
 
-use camber_solve::analysis::analyze;
+use camber_solve::analyze;
 use camber_solve::{MinNormFactorization, ReducedMap};
 use nalgebra::{Point2, Vector2};
 use smallvec::SmallVec;

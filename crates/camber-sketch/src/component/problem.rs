@@ -709,7 +709,7 @@ impl ComponentProblem {
 
     /// Which points and scalars of each entity can still move with the constraints held (to
     /// first order), given the free columns of the DOF analysis (reduced unknowns, see
-    /// [`camber_solve::analysis::RowAnalysis::free_columns`]): an unknown is free when its
+    /// [`camber_solve::RowAnalysis::free_columns`]): an unknown is free when its
     /// reduced form x = A·z + c reads a free column. Entities with nothing free are left out.
     ///
     /// # Errors

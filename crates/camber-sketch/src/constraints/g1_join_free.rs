@@ -8,7 +8,7 @@
 
 use std::sync::Arc;
 
-use camber_solve::composed::{InnerMap, Outer};
+use camber_solve::derive::composed::{InnerMap, Outer};
 use camber_solve::scalar::cst;
 use camber_solve::{Residual, Scalar};
 use serde::{Deserialize, Serialize};

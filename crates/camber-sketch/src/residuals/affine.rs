@@ -249,7 +249,7 @@ mod tests {
 
     /// The structured Jacobian is the one automatic differentiation gives
     /// ([`DynResidual::jacobian`] does not take the shortcut): values to the bit, every entry
-    /// written; and [`camber_solve::autodiff::jacobian_active`] returns it.
+    /// written; and [`camber_solve::derive::autodiff::jacobian_active`] returns it.
     #[test]
     fn jacobians_by_hand_are_those_of_autodiff() {
         let blocks = [[0.3, -1.7], [2.0, 0.125], [-4.5, 3.3]];
