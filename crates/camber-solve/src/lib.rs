@@ -78,7 +78,7 @@ pub use model::scalar;
 pub use model::{
     slsqp_supports, AuxId, Binding, BlockId, ConstraintId, ConstraintResidual, DynResidual, Error,
     NonlinearOptions, Objective, Options, Priority, Problem, ProblemState, Residual, ResidualId,
-    Result, Scalar, Selection, SolveReport, SolverChoice, SolverKind, Status, TierOutcome,
+    Result, Scalar, Selection, SolveReport, SolverChoice, SolverKind, Stamps, Status, TierOutcome,
     UnknownId, UserObjective, Var, DEFAULT_MAX_EVALUATIONS, SLSQP_MAX_UNKNOWNS,
 };
 pub use policy::{solve, solve_newton, solve_newton_from};

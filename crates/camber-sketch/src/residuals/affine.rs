@@ -7,7 +7,8 @@
 //! - [`PointCombination`]: v − target = 0 (two rows);
 //! - [`DirectionCross`]: cross(v, d) = v_x·d_y − v_y·d_x = 0 (one row);
 //! - [`LineTangency`]: cross(v₀ − L₀, d) = 0 and cross(v₁, d) = 0, v₀ and v₁ being two
-//!   combinations over the same blocks (two rows).
+//!   combinations over the same blocks (two rows);
+//! - [`RadiusValue`]: r − R = 0 on a circle's radius block (one row).
 //!
 //! Their Jacobians are constant: ∂/∂Pⱼ of v is cⱼ·I₂.
 
@@ -234,6 +235,38 @@ impl Residual for LineTangency {
         );
         out[0] = qx * dy - qy * dx;
         out[1] = t[0] * dy - t[1] * dx;
+    }
+    fn is_affine(&self) -> bool {
+        true
+    }
+}
+
+/// r − R = 0: the radius block holds R (affine): the `radius` kind, and a fixed circle's
+/// radius held by a row.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RadiusValue {
+    radius: f64,
+}
+
+impl RadiusValue {
+    /// The residual r − `radius`.
+    pub fn new(radius: f64) -> Self {
+        Self { radius }
+    }
+}
+
+impl Residual for RadiusValue {
+    fn name(&self) -> &str {
+        "radius"
+    }
+    fn dim(&self) -> usize {
+        1
+    }
+    fn block_sizes(&self) -> Option<Vec<usize>> {
+        Some(vec![1])
+    }
+    fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+        out[0] = x[0][0] - cst::<T>(self.radius);
     }
     fn is_affine(&self) -> bool {
         true

@@ -19,7 +19,7 @@ use camber_solve::scalar::cst;
 use camber_solve::Scalar;
 use smallvec::SmallVec;
 
-use crate::curve_eval::CurveBasis;
+use crate::ground::curve_eval::CurveBasis;
 
 /// Where a curve residual takes its parameter.
 #[derive(Debug, Clone, Copy, PartialEq)]

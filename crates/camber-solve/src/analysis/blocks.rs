@@ -37,7 +37,8 @@ use crate::analysis::structure::{Decomposition, Part};
 use crate::analysis::{
     dense_rows, largest_row_norm, random_draws, sparse_rows, DependentRow, KernelRows, RowAnalysis,
 };
-use crate::linalg::sparse::{check_len, SparseMatrix};
+use crate::linalg::sparse::SparseMatrix;
+use crate::model::errors::check_len;
 use crate::model::errors::Result;
 
 /// Which rank kernel runs inside the blocks.

@@ -37,7 +37,8 @@ use crate::analysis::blocks::{analyze_blocks, BlockAnalysis, Kernel};
 use crate::analysis::structure::Part;
 use crate::linalg::min_norm::MinNormFactorization;
 use crate::linalg::reduced::Linearization;
-use crate::linalg::sparse::{check_len, SparseMatrix};
+use crate::linalg::sparse::SparseMatrix;
+use crate::model::errors::check_len;
 use crate::model::errors::Result;
 use crate::model::ids::ConstraintId;
 

@@ -6,7 +6,8 @@
 //! triplet list), so repeated evaluations allocate little.
 
 use crate::linalg::reduced::ReducedMap;
-use crate::linalg::sparse::{check_len, Assembler, SparseMatrix};
+use crate::linalg::sparse::{Assembler, SparseMatrix};
+use crate::model::errors::check_len;
 use crate::model::errors::Result;
 use crate::model::ids::{ConstraintId, Var};
 use crate::model::problem::{check_residual, gather_into, Problem};

@@ -15,7 +15,8 @@
 use nalgebra::{Cholesky, DMatrix, DVector, Dyn};
 
 use crate::linalg::normal::{NormalCache, NormalFactor};
-use crate::linalg::sparse::{check_len, SparseMatrix};
+use crate::linalg::sparse::SparseMatrix;
+use crate::model::errors::check_len;
 use crate::model::errors::{Error, Result};
 
 /// A factorization of J·W⁻¹·Jᵀ, reusable for any number of right-hand sides (dragging: J and W

@@ -7,7 +7,8 @@
 //! satisfied, which is how a substitution imposes itself. By the chain rule the Jacobian over z
 //! is J_z = J_x·A, assembled sparse from each residual block's dense Jacobian.
 
-use crate::linalg::sparse::{check_len, SparseMatrix};
+use crate::linalg::sparse::SparseMatrix;
+use crate::model::errors::check_len;
 use crate::model::errors::{Error, Result};
 use crate::model::ids::{ConstraintId, ResidualId, Var};
 use crate::model::problem::{check_residual, Binding, Problem};

@@ -6,7 +6,7 @@
 
 use nalgebra::DMatrix;
 
-use crate::model::errors::{Error, Result};
+use crate::model::errors::{check_len, Error, Result};
 
 /// A sparse matrix in compressed-sparse-row form: the entries of row i are
 /// `col_idx[row_ptr[i]..row_ptr[i+1]]` (strictly increasing) with `values` alongside.
@@ -477,19 +477,6 @@ pub(crate) fn entries_by_column(
         }
     }
     (col_ptr, by_col)
-}
-
-/// Checks that a slice has the expected length.
-pub(crate) fn check_len(what: &'static str, expected: usize, found: usize) -> Result<()> {
-    if expected == found {
-        Ok(())
-    } else {
-        Err(Error::Dimension {
-            what,
-            expected,
-            found,
-        })
-    }
 }
 
 #[cfg(test)]

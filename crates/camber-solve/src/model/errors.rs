@@ -276,6 +276,19 @@ fn failed_list(failed: &[(ConstraintId, f64)]) -> String {
         .join(", ")
 }
 
+/// Checks that a slice has the expected length.
+pub(crate) fn check_len(what: &'static str, expected: usize, found: usize) -> Result<()> {
+    if expected == found {
+        Ok(())
+    } else {
+        Err(Error::Dimension {
+            what,
+            expected,
+            found,
+        })
+    }
+}
+
 fn worst_residuals(residuals: &[crate::model::report::ConstraintResidual]) -> String {
     let mut worst: Vec<&crate::model::report::ConstraintResidual> = residuals
         .iter()

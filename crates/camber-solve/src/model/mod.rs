@@ -26,7 +26,7 @@ pub use nonlinear::{
 pub use objective::{Objective, UserObjective};
 pub use options::Options;
 pub use priority::Priority;
-pub use problem::{Binding, Problem, ProblemState};
+pub use problem::{Binding, Problem, ProblemState, Stamps};
 pub use report::{ConstraintResidual, Selection, SolveReport, SolverKind, Status, TierOutcome};
 pub use residual::{DynResidual, Residual};
 pub use scalar::Scalar;

@@ -1,8 +1,7 @@
 //! Settings of the nonlinear solvers (Newton, SLSQP, the soft least-squares mode) and of the
-//! selection between them, carried in [`Options::nonlinear`].
+//! selection between them, carried in [`crate::Options::nonlinear`].
 
 use crate::model::objective::Objective;
-use crate::model::options::Options;
 
 /// A solver the caller may force instead of the automatic selection (for comparisons).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -12,7 +11,7 @@ pub enum SolverChoice {
     Linear,
     /// Newton minimum-norm iterations with the pull-back toward the start.
     Newton,
-    /// SLSQP (NLopt); [`crate::Error::SolverUnavailable`] without the `nlopt` feature.
+    /// SLSQP (NLopt); [`crate::model::errors::Error::SolverUnavailable`] without the `nlopt` feature.
     Slsqp,
     /// The soft least-squares compromise (Levenberg–Marquardt), written back even when some
     /// constraints stay unsatisfied.
@@ -40,8 +39,8 @@ pub const SLSQP_MAX_UNKNOWNS: usize = 2_000;
 /// ```
 ///
 /// # Errors
-/// [`crate::Error::OutsideSolverLimits`] naming the limit exceeded.
-pub fn slsqp_supports(unknowns: usize, rows: usize) -> crate::Result<()> {
+/// [`crate::model::errors::Error::OutsideSolverLimits`] naming the limit exceeded.
+pub fn slsqp_supports(unknowns: usize, rows: usize) -> crate::model::errors::Result<()> {
     let why = if rows > unknowns {
         Some("more equality rows than unknowns")
     } else if unknowns > SLSQP_MAX_UNKNOWNS {
@@ -50,7 +49,7 @@ pub fn slsqp_supports(unknowns: usize, rows: usize) -> crate::Result<()> {
         None
     };
     match why {
-        Some(why) => Err(crate::Error::OutsideSolverLimits {
+        Some(why) => Err(crate::model::errors::Error::OutsideSolverLimits {
             solver: "SLSQP",
             unknowns,
             rows,
@@ -173,7 +172,7 @@ impl NonlinearOptions {
     }
 
     /// Checks that the numbers make sense.
-    pub(crate) fn validate(&self) -> crate::Result<()> {
+    pub(crate) fn validate(&self) -> crate::model::errors::Result<()> {
         let checks = [
             ("step tolerance", self.step_tolerance, false),
             ("SLSQP x tolerance", self.slsqp_xtol_rel, false),
@@ -183,7 +182,7 @@ impl NonlinearOptions {
         for (index, (what, v, infinite_ok)) in checks.into_iter().enumerate() {
             let finite_ok = v.is_finite() || (infinite_ok && v.is_infinite());
             if !(finite_ok && v > 0.0) {
-                return Err(crate::Error::NonFinite {
+                return Err(crate::model::errors::Error::NonFinite {
                     what,
                     index,
                     value: v,
@@ -191,32 +190,5 @@ impl NonlinearOptions {
             }
         }
         Ok(())
-    }
-}
-
-/// # Nonlinear settings
-impl Options {
-    /// Sets [`Options::nonlinear`].
-    pub fn with_nonlinear(mut self, nonlinear: NonlinearOptions) -> Self {
-        self.nonlinear = nonlinear;
-        self
-    }
-
-    /// Forces a solver ([`NonlinearOptions::force`]); `None` restores the selection.
-    pub fn with_force(mut self, solver: Option<SolverChoice>) -> Self {
-        self.nonlinear.force = solver;
-        self
-    }
-
-    /// Allows the soft mode ([`NonlinearOptions::soft`]).
-    pub fn with_soft(mut self, soft: bool) -> Self {
-        self.nonlinear.soft = soft;
-        self
-    }
-
-    /// Sets the SLSQP objective ([`NonlinearOptions::objective`]).
-    pub fn with_objective(mut self, objective: Objective) -> Self {
-        self.nonlinear.objective = objective;
-        self
     }
 }

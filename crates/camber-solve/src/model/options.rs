@@ -2,6 +2,8 @@
 //! SLSQP and the DOF analysis).
 
 use crate::model::errors::{Error, Result};
+use crate::model::nonlinear::{NonlinearOptions, SolverChoice};
+use crate::model::objective::Objective;
 
 /// Tolerances and thresholds of a solve.
 ///
@@ -27,7 +29,7 @@ pub struct Options {
     /// Whether consistent dependent rows may be dropped (otherwise [`Error::Redundant`]).
     pub drop_redundant: bool,
     /// Settings of the nonlinear solvers and of the selection ([`crate::solve()`]).
-    pub nonlinear: crate::model::nonlinear::NonlinearOptions,
+    pub nonlinear: NonlinearOptions,
 }
 
 impl Default for Options {
@@ -38,7 +40,7 @@ impl Default for Options {
             dense_max_unknowns: 200,
             dense_analysis_max_entries: 1 << 22,
             drop_redundant: true,
-            nonlinear: crate::model::nonlinear::NonlinearOptions::default(),
+            nonlinear: NonlinearOptions::default(),
         }
     }
 }
@@ -88,5 +90,32 @@ impl Options {
             }
         }
         Ok(())
+    }
+}
+
+/// # Nonlinear settings
+impl Options {
+    /// Sets [`Options::nonlinear`].
+    pub fn with_nonlinear(mut self, nonlinear: NonlinearOptions) -> Self {
+        self.nonlinear = nonlinear;
+        self
+    }
+
+    /// Forces a solver ([`NonlinearOptions::force`]); `None` restores the selection.
+    pub fn with_force(mut self, solver: Option<SolverChoice>) -> Self {
+        self.nonlinear.force = solver;
+        self
+    }
+
+    /// Allows the soft mode ([`NonlinearOptions::soft`]).
+    pub fn with_soft(mut self, soft: bool) -> Self {
+        self.nonlinear.soft = soft;
+        self
+    }
+
+    /// Sets the SLSQP objective ([`NonlinearOptions::objective`]).
+    pub fn with_objective(mut self, objective: Objective) -> Self {
+        self.nonlinear.objective = objective;
+        self
     }
 }

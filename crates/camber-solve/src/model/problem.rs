@@ -104,6 +104,29 @@ pub struct Problem {
     pub(crate) spans: Vec<(usize, usize)>,
     /// The evaluations a solve may still spend ([`Problem::start_budget`]).
     pub(crate) budget: Budget,
+    /// Changed by every change of structure: blocks, bindings, bounds, weights, residual
+    /// blocks, priorities (see [`Problem::stamps`]).
+    shape_stamp: u64,
+    /// Changed by every residual object replaced in place ([`Problem::replace_residual`]).
+    residual_stamp: u64,
+}
+
+/// A new stamp, distinct from every stamp handed out before in this process.
+fn next_stamp() -> u64 {
+    static NEXT: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(1);
+    NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed)
+}
+
+/// What changed in a problem, as two stamps ([`Problem::stamps`]): a plan kept between solves
+/// compares them with those it was made at.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Stamps {
+    /// Changed by every change of structure (blocks, bindings, bounds, weights, residual
+    /// blocks added or taken back, priorities); values alone never change it.
+    pub shape: u64,
+    /// Changed by every residual object replaced in place (same rows and blocks, other
+    /// coefficients or constants).
+    pub residuals: u64,
 }
 
 /// # Construction
@@ -127,6 +150,7 @@ impl Problem {
     /// # Ok::<(), camber_solve::Error>(())
     /// ```
     pub fn reserve(&mut self, blocks: usize, unknowns: usize, residuals: usize) {
+        self.touch();
         self.blocks.reserve(blocks);
         self.values.reserve(unknowns);
         self.bindings.reserve(unknowns);
@@ -150,6 +174,7 @@ impl Problem {
         }
         check_finite("block value", values)?;
         let start = self.values.len();
+        self.touch();
         self.values.extend_from_slice(values);
         self.blocks.push((start, values.len()));
         for _ in values {
@@ -167,6 +192,7 @@ impl Problem {
     /// [`Error::NonFinite`] for a NaN or infinite value.
     pub fn add_aux(&mut self, value: f64) -> Result<AuxId> {
         check_finite("auxiliary value", &[value])?;
+        self.touch();
         self.aux_values.push(value);
         self.aux_weights.push(1.0);
         self.aux_bounds.push((f64::NEG_INFINITY, f64::INFINITY));
@@ -253,6 +279,7 @@ impl Problem {
             });
         }
         let (dim, affine) = (residual.dim(), residual.is_affine());
+        self.touch();
         let spans_at = self.spans.len();
         self.spans.extend_from_slice(&spans);
         self.residuals.push(ResidualBlock {
@@ -305,8 +332,13 @@ impl Problem {
     ) -> usize {
         let mut changed = 0;
         for rb in self.residuals.iter_mut().filter(|rb| rb.owner == owner) {
-            rb.priority = priority;
-            changed += 1;
+            if rb.priority != priority {
+                rb.priority = priority;
+                changed += 1;
+            }
+        }
+        if changed > 0 {
+            self.touch();
         }
         changed
     }
@@ -399,6 +431,7 @@ impl Problem {
     pub fn truncate_residuals(&mut self, count: usize) {
         if let Some(first) = self.residuals.get(count) {
             self.spans.truncate(first.spans_at);
+            self.shape_stamp = next_stamp();
         }
         self.residuals.truncate(count);
     }
@@ -449,6 +482,7 @@ impl Problem {
     /// [`Error::UnknownBlock`] for a block this problem did not issue.
     pub fn fix_block(&mut self, block: BlockId) -> Result<()> {
         let (start, len) = self.block_range(block)?;
+        self.touch();
         for b in &mut self.bindings[start..start + len] {
             *b = Binding::Fixed;
         }
@@ -527,6 +561,7 @@ impl Problem {
         for m in members {
             self.binding(*m)?;
         }
+        self.touch();
         if representative_free {
             let (mut sum, mut total) = (0.0, 0.0);
             for u in std::iter::once(&representative).chain(members) {
@@ -561,8 +596,8 @@ impl Problem {
         direction: &[f64],
         t0: f64,
     ) -> Result<AuxId> {
-        crate::linalg::sparse::check_len("elimination bases", targets.len(), bases.len())?;
-        crate::linalg::sparse::check_len("elimination direction", targets.len(), direction.len())?;
+        crate::model::errors::check_len("elimination bases", targets.len(), bases.len())?;
+        crate::model::errors::check_len("elimination direction", targets.len(), direction.len())?;
         for u in targets.iter().chain(bases) {
             self.binding(*u)?;
         }
@@ -603,6 +638,7 @@ impl Problem {
                 &mut self.aux_bounds[a.0]
             }
         };
+        self.shape_stamp = next_stamp();
         if lower > upper {
             let unknown = match var {
                 Var::Unknown(u) => u.0,
@@ -635,10 +671,101 @@ impl Problem {
                 value: weight,
             });
         }
+        self.touch();
         match var {
             Var::Unknown(u) => self.weights[u.0] = weight,
             Var::Aux(a) => self.aux_weights[a.0] = weight,
         }
+        Ok(())
+    }
+}
+
+/// # Changes of structure and of residuals
+impl Problem {
+    /// Marks a change of structure.
+    fn touch(&mut self) {
+        self.shape_stamp = next_stamp();
+    }
+
+    /// The stamps of the problem's structure and residual objects: equal stamps mean nothing
+    /// but values changed in between (see [`Stamps`]).
+    ///
+    /// ```
+    /// use camber_solve::Problem;
+    /// let mut p = Problem::new();
+    /// let b = p.add_block(&[1.0, 2.0])?;
+    /// let before = p.stamps();
+    /// p.set_block_values(b, &[3.0, 4.0])?;
+    /// assert_eq!(p.stamps(), before); // values only
+    /// p.fix_block(b)?;
+    /// assert_ne!(p.stamps().shape, before.shape);
+    /// # Ok::<(), camber_solve::Error>(())
+    /// ```
+    pub fn stamps(&self) -> Stamps {
+        Stamps {
+            shape: self.shape_stamp,
+            residuals: self.residual_stamp,
+        }
+    }
+
+    /// Replaces the residual object of a residual block by another of the same rows, blocks and
+    /// affinity (a dimension's new value, a pin's new target): a change of values, which a
+    /// plan kept between solves takes without being made again.
+    ///
+    /// ```
+    /// use std::sync::Arc;
+    /// use camber_solve::{scalar::cst, ConstraintId, Problem, Residual, Scalar};
+    /// /// x = v.
+    /// #[derive(Debug)]
+    /// struct Is(f64);
+    /// impl Residual for Is {
+    ///     fn name(&self) -> &str { "is" }
+    ///     fn dim(&self) -> usize { 1 }
+    ///     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) { out[0] = x[0][0] - cst(self.0); }
+    ///     fn is_affine(&self) -> bool { true }
+    /// }
+    /// let mut p = Problem::new();
+    /// let b = p.add_block(&[0.0])?;
+    /// let r = p.add_residual(Is(1.0), &[b], ConstraintId(1))?;
+    /// let shape = p.stamps().shape;
+    /// p.replace_residual(r, Arc::new(Is(2.0)))?;
+    /// assert_eq!(p.stamps().shape, shape);
+    /// let mut g = [0.0];
+    /// p.evaluate_at(&[0.0], &mut g)?;
+    /// assert!((g[0] + 2.0).abs() < 1e-15);
+    /// # Ok::<(), camber_solve::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`Error::UnknownUnknown`] for a residual block this problem did not issue;
+    /// [`Error::BlockShape`] when the new residual differs in rows, blocks or affinity.
+    pub fn replace_residual(
+        &mut self,
+        residual: ResidualId,
+        with: Arc<dyn DynResidual>,
+    ) -> Result<()> {
+        let count = self.residuals.len();
+        let rb = self
+            .residuals
+            .get(residual.0)
+            .ok_or(Error::UnknownUnknown {
+                index: residual.0,
+                len: count,
+            })?;
+        let found: SmallVec<[usize; 8]> = self.spans_of(rb).iter().map(|(_, l)| *l).collect();
+        if with.dim() != rb.dim
+            || with.is_affine() != rb.affine
+            || !with.accepts_block_sizes(&found)
+        {
+            return Err(Error::BlockShape {
+                residual: with.name().to_owned(),
+                owner: rb.owner,
+                expected: with.block_sizes().unwrap_or_default(),
+                found: found.to_vec(),
+            });
+        }
+        self.residuals[residual.0].residual = with;
+        self.residual_stamp = next_stamp();
         Ok(())
     }
 }
@@ -690,7 +817,7 @@ impl Problem {
     /// [`Error::UnknownBlock`], [`Error::Dimension`], [`Error::NonFinite`].
     pub fn set_block_values(&mut self, block: BlockId, values: &[f64]) -> Result<()> {
         let (start, len) = self.block_range(block)?;
-        crate::linalg::sparse::check_len("block values", len, values.len())?;
+        crate::model::errors::check_len("block values", len, values.len())?;
         check_finite("block value", values)?;
         self.values[start..start + len].copy_from_slice(values);
         Ok(())
@@ -753,8 +880,8 @@ impl Problem {
     /// # Errors
     /// [`Error::Dimension`] for wrong lengths, [`Error::NonFiniteResidual`] for a NaN result.
     pub fn evaluate_at(&self, x: &[f64], g: &mut [f64]) -> Result<()> {
-        crate::linalg::sparse::check_len("unknowns", self.values.len(), x.len())?;
-        crate::linalg::sparse::check_len("residual rows", self.num_rows(), g.len())?;
+        crate::model::errors::check_len("unknowns", self.values.len(), x.len())?;
+        crate::model::errors::check_len("residual rows", self.num_rows(), g.len())?;
         let mut row = 0;
         let mut slices = SmallVec::new();
         for rb in &self.residuals {
@@ -800,6 +927,7 @@ impl Problem {
     }
 
     fn binding_mut(&mut self, unknown: UnknownId) -> Result<&mut Binding> {
+        self.shape_stamp = next_stamp();
         let len = self.bindings.len();
         self.bindings
             .get_mut(unknown.0)

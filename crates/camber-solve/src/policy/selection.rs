@@ -625,7 +625,7 @@ fn solve_whole_with(
 /// (Jᵀg = 0) while g ≠ 0, so no step, however small, reduces every residual: the constraints
 /// conflict there. The test is relative, ‖Jᵀg‖ ≤ [`LEAST_SQUARES_COSINE`]·‖J‖_F·‖g‖: the
 /// cosine between g and its best approximation from the range of J.
-fn at_least_squares_point(j: &crate::SparseMatrix, g: &[f64]) -> Result<bool> {
+fn at_least_squares_point(j: &crate::linalg::sparse::SparseMatrix, g: &[f64]) -> Result<bool> {
     let mut jtg = vec![0.0; j.ncols()];
     let mut frobenius = 0.0;
     for (i, gi) in g.iter().enumerate() {

@@ -21,7 +21,8 @@ use faer::linalg::solvers::Solve;
 use faer::sparse::{SparseColMat, SymbolicSparseColMat};
 use faer::{MatMut, Side};
 
-use crate::linalg::sparse::{check_len, SparseMatrix};
+use crate::linalg::sparse::SparseMatrix;
+use crate::model::errors::check_len;
 use crate::model::errors::{Error, Result};
 use crate::model::problem::Problem;
 

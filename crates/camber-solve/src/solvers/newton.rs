@@ -195,8 +195,8 @@ pub(crate) fn run(
 ) -> Result<NewtonRun> {
     let n = ev.cols();
     let m = ev.rows();
-    crate::linalg::sparse::check_len("Newton start", n, start.len())?;
-    crate::linalg::sparse::check_len("Newton reference", n, reference.len())?;
+    crate::model::errors::check_len("Newton start", n, start.len())?;
+    crate::model::errors::check_len("Newton reference", n, reference.len())?;
     let settings = &options.nonlinear;
     let inner_tol = 0.1 * options.tolerance;
     ws.z.clear();
@@ -427,8 +427,8 @@ impl Factors<'_> {
             Factors::MinNorm(f) => f.solve(g, dz),
             Factors::Borrowed(f) => f.solve(g, dz),
             Factors::Square(lu) => {
-                crate::linalg::sparse::check_len("right-hand side", lu.order(), g.len())?;
-                crate::linalg::sparse::check_len("step", lu.order(), dz.len())?;
+                crate::model::errors::check_len("right-hand side", lu.order(), g.len())?;
+                crate::model::errors::check_len("step", lu.order(), dz.len())?;
                 lu.step(g, dz);
                 Ok(())
             }

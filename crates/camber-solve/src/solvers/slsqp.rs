@@ -137,8 +137,8 @@ pub(crate) fn run(
     let all_rows = ev.rows();
     let m = rows.map_or(all_rows, <[usize]>::len);
     crate::model::nonlinear::slsqp_supports(n, m)?;
-    crate::linalg::sparse::check_len("SLSQP start", n, start.len())?;
-    crate::linalg::sparse::check_len("SLSQP reference", n, reference.len())?;
+    crate::model::errors::check_len("SLSQP start", n, start.len())?;
+    crate::model::errors::check_len("SLSQP reference", n, reference.len())?;
     let rows = match rows {
         Some(subset) => {
             let mut position = vec![None; all_rows];

@@ -158,8 +158,8 @@ pub(crate) fn run(
     epsilon: f64,
     max_iterations: usize,
 ) -> Result<(Vec<f64>, LmRun)> {
-    crate::linalg::sparse::check_len("soft start", ev.cols(), start.len())?;
-    crate::linalg::sparse::check_len("soft reference", ev.cols(), reference.len())?;
+    crate::model::errors::check_len("soft start", ev.cols(), start.len())?;
+    crate::model::errors::check_len("soft reference", ev.cols(), reference.len())?;
     let mut z = start.to_vec();
     ev.clamp(&mut z);
     let (mut iterations, mut cost) =

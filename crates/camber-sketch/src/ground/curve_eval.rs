@@ -22,7 +22,7 @@
 //! carries the other control points through its derivatives.
 //!
 //! Hermite and composite curves are cubic B-splines whose control points Q are a fixed linear
-//! map Q = M·X of their blocks X (nodes and tangents, [`crate::hermite_chain`]). The basis keeps
+//! map Q = M·X of their blocks X (nodes and tangents, [`crate::ground::hermite_chain`]). The basis keeps
 //! M and reads the blocks: C⁽ᵏ⁾(u) = Σᵣ N⁽ᵏ⁾ᵣ(u)·Σⱼ Mᵣⱼ·Xⱼ, and at a fixed parameter the
 //! coefficient of block j is Σᵣ N⁽ᵏ⁾ᵣ(u)·Mᵣⱼ — still constants, so those constraints stay
 //! affine.
@@ -36,8 +36,8 @@ use camber_solve::Scalar;
 use smallvec::SmallVec;
 use std::sync::Arc;
 
-use crate::entity::Entity;
-use crate::hermite_chain::MapRow;
+use crate::ground::entity::Entity;
+use crate::ground::hermite_chain::MapRow;
 
 /// The basis values of one evaluation: rows k = 0 … order of p + 1 derivatives dᵏRⱼ/duᵏ.
 type BasisRows<T> = SmallVec<[T; 32]>;
@@ -624,7 +624,7 @@ mod tests {
     #[test]
     fn the_point_alone_agrees_with_the_full_evaluation_through_the_map(
     ) -> Result<(), Box<dyn std::error::Error>> {
-        use crate::hermite_chain::{HermiteChain, Join};
+        use crate::ground::hermite_chain::{HermiteChain, Join};
         use nalgebra::Vector2;
         let nodes = vec![
             Point2::new(0.0, 0.0),

@@ -25,16 +25,16 @@
 
 use camber_solve::ConstraintId;
 
-use crate::component::check::ContactTarget;
-use crate::component::starts::{cross, least, Shape};
+use crate::constraints::check::ContactTarget;
 use crate::constraints::{
     Constraint, DirectionalTangentAt, EndTangent, PointAtParameter, StartTangent,
 };
-use crate::errors::{Error, Result};
-use crate::ids::{EntityId, PointRef};
+use crate::ground::errors::{Error, Result};
+use crate::ground::ids::{EntityId, PointRef};
+use crate::ground::vocabulary::{Contact, FixTarget, Sense, TangentForm, Target};
+use crate::session::solve::SketchReport;
+use crate::session::starts::{cross, least, Shape};
 use crate::sketch::Sketch;
-use crate::solve::SketchReport;
-use crate::vocabulary::{Contact, FixTarget, Sense, TangentForm, Target};
 
 /// Halvings of a round's move tried when its linear solve fails.
 const MAX_HALVINGS: i32 = 4;

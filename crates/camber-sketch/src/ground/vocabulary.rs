@@ -10,7 +10,7 @@
 use nalgebra::Point2;
 use serde::{Deserialize, Serialize};
 
-use crate::ids::{EntityId, PointRef};
+use crate::ground::ids::{EntityId, PointRef};
 
 /// Whether a curve tangent must point along the given direction or against it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, Serialize, Deserialize)]
@@ -242,4 +242,16 @@ impl From<PointPair> for PairForm {
             },
         }
     }
+}
+
+/// What an argument of a custom constraint is, as its residual declares it (see
+/// `constraints::custom`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum ArgKind {
+    /// A point (x, y).
+    Point,
+    /// One number: a radius, another constraint's free parameter, or an own parameter.
+    Scalar,
+    /// A whole curve.
+    Curve,
 }

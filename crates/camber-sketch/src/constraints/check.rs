@@ -13,11 +13,11 @@ use std::fmt::Debug;
 
 use camber_solve::ConstraintId;
 
-use crate::entity::Entity;
-use crate::errors::{Error, Result};
-use crate::ids::EntityId;
-use crate::lookup::EntityLookup;
-use crate::vocabulary::{CircleSide, Contact, LineSide, Rotation, Sense};
+use crate::ground::entity::Entity;
+use crate::ground::errors::{Error, Result};
+use crate::ground::ids::EntityId;
+use crate::ground::lookup::EntityLookup;
+use crate::ground::vocabulary::{CircleSide, Contact, LineSide, Rotation, Sense};
 
 /// Samples of the crossing check on each side of a contact.
 const SIDE_SAMPLES: usize = 24;

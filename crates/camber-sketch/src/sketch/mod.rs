@@ -7,6 +7,8 @@
 //! entities they touch as dirty, and [`Sketch::solve`] solves only the components that contain a
 //! dirty entity.
 
+pub mod warnings;
+
 use std::collections::{BTreeMap, BTreeSet};
 
 use camber_geom::{BSplineCurve2, BezierCurve2, NurbsCurve2};
@@ -18,15 +20,15 @@ use petgraph::visit::NodeIndexable;
 use crate::component::problem::build;
 use crate::component::{Component, ComponentProblem};
 use crate::constraints::Constraint;
-use crate::entity::{combine, Entity};
+use crate::ground::entity::{combine, Entity};
 
 /// How many rounding units ε·M above the exact residual [`Sketch::solve_options`] allows: 2⁸,
 /// room for the few operations a residual row takes and for Newton's stop at a tenth of the
 /// tolerance.
 pub const ROUNDING_HEADROOM: f64 = 256.0;
-use crate::errors::{Error, Result};
-use crate::ids::{EntityId, PointRef};
-use crate::lookup::EntityLookup;
+use crate::ground::errors::{Error, Result};
+use crate::ground::ids::{EntityId, PointRef};
+use crate::ground::lookup::EntityLookup;
 
 /// A node of the sketch graph.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -91,9 +93,9 @@ impl EntityLookup for Sketch {
 
 /// # Construction
 impl Sketch {
-    /// An empty sketch with the default solver options ([`crate::solve::default_options`]).
+    /// An empty sketch with the default solver options ([`crate::component::policy::default_options`]).
     pub fn new() -> Self {
-        Self::with_options(crate::solve::default_options())
+        Self::with_options(crate::component::policy::default_options())
     }
 
     /// An empty sketch solved with `options` (tolerances, dense/sparse thresholds).
@@ -238,7 +240,7 @@ impl Sketch {
     /// [`Error::NonFinite`] for `to`; [`Error::WrongEntityKind`] for `Start`/`End` references
     /// (they are combinations, move a control point instead); id errors. Nothing changes then.
     pub fn set_point(&mut self, r: PointRef, to: Point2<f64>) -> Result<()> {
-        crate::entity::check_point("point", 0, &to)?;
+        crate::ground::entity::check_point("point", 0, &to)?;
         let e = self.lookup(r.entity())?;
         let index = match (r, e) {
             (PointRef::Point(_), Entity::Point(_)) => 0,
@@ -703,12 +705,12 @@ impl Sketch {
     ) -> Result<ComponentProblem> {
         // The component's entities, found by binary search in a short list instead of the
         // sketch's map at every one of the many lookups below.
-        let lookup = crate::lookup::ComponentEntities::new(self, &comp.entities);
+        let lookup = crate::ground::lookup::ComponentEntities::new(self, &comp.entities);
         let mut compiled = Vec::with_capacity(comp.constraints.len());
         for id in &comp.constraints {
             let pieces = self.constraint(*id)?.compile(&lookup)?;
             let pieces = if self.priority(*id) > 0 {
-                crate::component::piece::as_rows(&lookup, pieces)?
+                crate::constraints::piece::as_rows(&lookup, pieces)?
             } else {
                 pieces
             };

@@ -16,9 +16,9 @@
 //!
 //! Rational curves (the quotient rule mixes the weights in), Hermite and composite curves
 //! (their blocks are mapped to control points) and unclamped ends are left to the general
-//! evaluation ([`crate::curve_eval::CurveBasis::at`]): [`end_derivative`] answers `None`.
+//! evaluation ([`crate::ground::curve_eval::CurveBasis::at`]): [`end_derivative`] answers `None`.
 
-use crate::entity::{Entity, Terms};
+use crate::ground::entity::{Entity, Terms};
 
 /// The highest derivative order computed here (the joints read up to C″).
 pub(crate) const MAX_ORDER: usize = 2;
@@ -104,7 +104,7 @@ mod tests {
     #![allow(clippy::unwrap_used)] // a failed unwrap is a failed test
 
     use super::*;
-    use crate::curve_eval::CurveBasis;
+    use crate::ground::curve_eval::CurveBasis;
     use camber_geom::{BSplineCurve2, BezierCurve2, KnotVector, NurbsCurve2};
     use nalgebra::Point2;
     use proptest::prelude::*;

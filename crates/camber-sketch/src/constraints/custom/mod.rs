@@ -21,351 +21,29 @@
 //! "params": {"gap": 2}}` (points only), or with `"args": [{"curve": 0}, {"param": 0.5}, …]`;
 //! a [`crate::file::CustomRegistry`] decodes it by name.
 
+mod args;
+mod residual;
+
 use std::any::Any;
 use std::sync::Arc;
 
-use camber_solve::scalar::cst;
-use camber_solve::{ConstraintId, DynResidual, Residual, Scalar};
+use camber_solve::{ConstraintId, Residual};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 use smallvec::SmallVec;
 
+pub use args::{Arg, ArgKind, Args, CurveArg, Layout};
+pub use residual::CustomResidual;
+use args::ArgSlot;
+use residual::{Boxed, Erased, Plain, PlainErased, Typed};
+
 use super::compiler::finite;
 use super::glyph::{self, Glyph};
 use super::{Compiler, ConstraintKind, Entities};
-use crate::component::piece::Slot;
-use crate::curve_eval::CurveBasis;
-use crate::errors::{Error, Result};
-use crate::ids::{EntityId, PointRef};
-use crate::lookup::EntityLookup;
-
-/// One argument of a custom constraint: what its residual reads.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case", deny_unknown_fields)]
-pub enum Arg {
-    /// A point: a point entity, a control point, a line end, a circle centre, or the end of a
-    /// curve clamped there (a block of two: x, y).
-    Point(PointRef),
-    /// The radius of a circle entity (a block of one).
-    Radius(EntityId),
-    /// A whole curve: its control points (a block of two each), evaluated with the curve's
-    /// degree, knots and weights as they are when the component is built.
-    Curve(EntityId),
-    /// The `index`-th free parameter of another constraint (a free contact parameter; a block
-    /// of one).
-    FreeOf(u64, usize),
-    /// A free parameter of the constraint's own, starting at this value (a block of one); a
-    /// successful solve stores the solved value here.
-    Param(f64),
-}
-
-/// What an argument is, as a residual declares it.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum ArgKind {
-    /// A point (x, y).
-    Point,
-    /// One number: a radius, another constraint's free parameter, or an own parameter.
-    Scalar,
-    /// A whole curve.
-    Curve,
-}
-
-impl Arg {
-    /// The kind of value the argument gives the residual.
-    pub fn kind(&self) -> ArgKind {
-        match self {
-            Arg::Point(_) => ArgKind::Point,
-            Arg::Radius(_) | Arg::FreeOf(..) | Arg::Param(_) => ArgKind::Scalar,
-            Arg::Curve(_) => ArgKind::Curve,
-        }
-    }
-
-    /// The `index`-th free parameter of another constraint.
-    pub fn free_of(constraint: ConstraintId, index: usize) -> Self {
-        Arg::FreeOf(constraint.0, index)
-    }
-}
-
-/// Where each argument sits among the blocks a custom residual reads, fixed when the component
-/// is built.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Layout {
-    slots: Vec<ArgSlot>,
-    sizes: Vec<usize>,
-}
-
-#[derive(Debug, Clone, PartialEq)]
-enum ArgSlot {
-    Point(usize),
-    Scalar(usize),
-    Curve { first: usize, basis: Box<CurveBasis> },
-}
-
-/// The arguments of a custom constraint at the scalar type `T`, in the order the constraint
-/// lists them. Each accessor expects the kind its residual declared for that argument
-/// ([`CustomResidual::arg_kinds`], checked when the constraint is added); asked for another
-/// kind or a missing index, it reads NaN.
-#[derive(Debug)]
-pub struct Args<'a, T> {
-    x: &'a [&'a [T]],
-    layout: &'a Layout,
-}
-
-impl<'a, T: Scalar> Args<'a, T> {
-    /// The number of arguments.
-    pub fn len(&self) -> usize {
-        self.layout.slots.len()
-    }
-
-    /// Whether there are none.
-    pub fn is_empty(&self) -> bool {
-        self.layout.slots.is_empty()
-    }
-
-    /// Argument `i` as a point (x, y).
-    pub fn point(&self, i: usize) -> [T; 2] {
-        match self.layout.slots.get(i) {
-            Some(ArgSlot::Point(b)) => [self.x[*b][0], self.x[*b][1]],
-            _ => [cst(f64::NAN); 2],
-        }
-    }
-
-    /// Argument `i` as one number (a radius or a parameter).
-    pub fn scalar(&self, i: usize) -> T {
-        match self.layout.slots.get(i) {
-            Some(ArgSlot::Scalar(b)) => self.x[*b][0],
-            _ => cst(f64::NAN),
-        }
-    }
-
-    /// Argument `i` as a curve.
-    pub fn curve(&self, i: usize) -> CurveArg<'a, T> {
-        match self.layout.slots.get(i) {
-            Some(ArgSlot::Curve { first, basis }) => CurveArg {
-                basis: Some(basis),
-                points: &self.x[*first..*first + basis.count()],
-            },
-            _ => CurveArg {
-                basis: None,
-                points: &[],
-            },
-        }
-    }
-
-    /// Every block read, in order (a point two numbers, a scalar one, a curve one block per
-    /// control point): what a plain [`camber_solve::Residual`] would get.
-    pub fn blocks(&self) -> &'a [&'a [T]] {
-        self.x
-    }
-}
-
-/// A curve argument at the scalar type `T`: its control points as unknowns, its degree, knots
-/// and weights as data.
-#[derive(Debug, Clone, Copy)]
-pub struct CurveArg<'a, T> {
-    basis: Option<&'a CurveBasis>,
-    points: &'a [&'a [T]],
-}
-
-impl<T: Scalar> CurveArg<'_, T> {
-    /// The parametric domain [a, b] (NaN for a missing curve).
-    pub fn domain(&self) -> (f64, f64) {
-        self.basis.map_or((f64::NAN, f64::NAN), CurveBasis::domain)
-    }
-
-    /// The number of control points.
-    pub fn len(&self) -> usize {
-        self.points.len()
-    }
-
-    /// Whether it has none (a missing curve).
-    pub fn is_empty(&self) -> bool {
-        self.points.is_empty()
-    }
-
-    /// Control point `j`.
-    pub fn control_point(&self, j: usize) -> [T; 2] {
-        self.points
-            .get(j)
-            .map_or([cst(f64::NAN); 2], |p| [p[0], p[1]])
-    }
-
-    /// C(u) (u clamped to the domain).
-    pub fn point(&self, u: T) -> [T; 2] {
-        self.derivatives(u)[0]
-    }
-
-    /// C(u), C′(u) and C″(u) (u clamped to the domain).
-    pub fn derivatives(&self, u: T) -> [[T; 2]; 3] {
-        match self.basis {
-            Some(b) => b.eval2(self.points, u),
-            None => [[cst(f64::NAN); 2]; 3],
-        }
-    }
-}
-
-/// A custom constraint's residual over typed arguments, written once generically over the
-/// scalar type; its exact Jacobian comes from dual numbers like every built-in's.
-///
-/// ```
-/// use camber_sketch::constraints::custom::{Arg, ArgKind, Args, Custom, CustomResidual};
-/// use camber_sketch::{PointRef, Sketch};
-/// use camber_geom::BezierCurve2;
-/// use camber_solve::Scalar;
-/// use nalgebra::Point2;
-/// /// The curve passes through the point at its own free parameter s: C(s) − P = 0.
-/// #[derive(Debug)]
-/// struct Through;
-/// impl CustomResidual for Through {
-///     fn name(&self) -> &str { "through" }
-///     fn dim(&self) -> usize { 2 }
-///     fn arg_kinds(&self) -> Vec<ArgKind> { vec![ArgKind::Curve, ArgKind::Point, ArgKind::Scalar] }
-///     fn eval<T: Scalar>(&self, a: &Args<'_, T>, out: &mut [T]) {
-///         let (c, p) = (a.curve(0).point(a.scalar(2)), a.point(1));
-///         out[0] = c[0] - p[0];
-///         out[1] = c[1] - p[1];
-///     }
-/// }
-/// let mut s = Sketch::new();
-/// let c = s.add_bezier(BezierCurve2::try_new(vec![Point2::new(0.0, 0.0), Point2::new(1.0, 1.0), Point2::new(2.0, 0.0)])?)?;
-/// let p = s.add_point(Point2::new(1.0, 1.0))?;
-/// let id = s.add_constraint(Custom::with_args(Through, vec![Arg::Curve(c), Arg::Point(PointRef::Point(p)), Arg::Param(0.5)]))?;
-/// s.solve()?;
-/// let Some(Arg::Param(u)) = s.constraint(id)?.as_custom().map(|k| k.args()[2]) else { panic!() };
-/// let (on, q) = (s.curve_point(c, u)?, s.point(PointRef::Point(p))?);
-/// assert!((on - q).norm() < 1e-10);
-/// # Ok::<(), camber_sketch::Error>(())
-/// ```
-pub trait CustomResidual: std::fmt::Debug + Send + Sync + 'static {
-    /// A short name used in reports.
-    fn name(&self) -> &str;
-    /// Rows it contributes.
-    fn dim(&self) -> usize;
-    /// The kind of each argument it reads, in order (checked against the constraint's
-    /// arguments when it is added).
-    fn arg_kinds(&self) -> Vec<ArgKind>;
-    /// Writes the residual into `out` (`dim()` entries).
-    fn eval<T: Scalar>(&self, args: &Args<'_, T>, out: &mut [T]);
-    /// Whether the residual is affine in the unknowns it reads.
-    fn is_affine(&self) -> bool {
-        false
-    }
-}
-
-/// The residual of one build: a user residual with its arguments' places.
-#[derive(Debug)]
-struct Built<R> {
-    inner: Arc<R>,
-    layout: Layout,
-}
-
-impl<R: CustomResidual> Residual for Built<R> {
-    fn name(&self) -> &str {
-        self.inner.name()
-    }
-    fn dim(&self) -> usize {
-        self.inner.dim()
-    }
-    fn block_sizes(&self) -> Option<Vec<usize>> {
-        Some(self.layout.sizes.clone())
-    }
-    fn is_affine(&self) -> bool {
-        self.inner.is_affine()
-    }
-    fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
-        self.inner.eval(
-            &Args {
-                x,
-                layout: &self.layout,
-            },
-            out,
-        );
-    }
-}
-
-/// A plain [`camber_solve::Residual`] over point (and scalar) blocks as a custom residual.
-#[derive(Debug)]
-struct Plain<R>(R);
-
-impl<R: Residual> CustomResidual for Plain<R> {
-    fn name(&self) -> &str {
-        self.0.name()
-    }
-    fn dim(&self) -> usize {
-        self.0.dim()
-    }
-    fn arg_kinds(&self) -> Vec<ArgKind> {
-        // Checked to be Some(…) of 1s and 2s before the constraint is accepted.
-        self.0
-            .block_sizes()
-            .unwrap_or_default()
-            .iter()
-            .map(|n| if *n == 2 { ArgKind::Point } else { ArgKind::Scalar })
-            .collect()
-    }
-    fn eval<T: Scalar>(&self, args: &Args<'_, T>, out: &mut [T]) {
-        self.0.eval(args.blocks(), out);
-    }
-    fn is_affine(&self) -> bool {
-        self.0.is_affine()
-    }
-}
-
-/// The object-safe face of a user residual: it makes the residual of one build.
-trait Erased: std::fmt::Debug + Send + Sync {
-    fn name(&self) -> &str;
-    /// The declared argument kinds (`None`: a plain residual that declares no block sizes).
-    fn arg_kinds(&self) -> Option<Vec<ArgKind>>;
-    fn build(&self, layout: Layout) -> Arc<dyn DynResidual>;
-    fn as_any(&self) -> &dyn Any;
-}
-
-#[derive(Debug)]
-struct Typed<R>(Arc<R>);
-
-impl<R: CustomResidual> Erased for Typed<R> {
-    fn name(&self) -> &str {
-        self.0.name()
-    }
-    fn arg_kinds(&self) -> Option<Vec<ArgKind>> {
-        Some(self.0.arg_kinds())
-    }
-    fn build(&self, layout: Layout) -> Arc<dyn DynResidual> {
-        Arc::new(Built {
-            inner: self.0.clone(),
-            layout,
-        })
-    }
-    fn as_any(&self) -> &dyn Any {
-        &*self.0
-    }
-}
-
-#[derive(Debug)]
-struct PlainErased<R>(Arc<Plain<R>>);
-
-impl<R: Residual> Erased for PlainErased<R> {
-    fn name(&self) -> &str {
-        self.0 .0.name()
-    }
-    fn arg_kinds(&self) -> Option<Vec<ArgKind>> {
-        let sizes = self.0 .0.block_sizes()?;
-        sizes
-            .iter()
-            .all(|n| *n == 1 || *n == 2)
-            .then(|| self.0.arg_kinds())
-    }
-    fn build(&self, layout: Layout) -> Arc<dyn DynResidual> {
-        Arc::new(Built {
-            inner: self.0.clone(),
-            layout,
-        })
-    }
-    fn as_any(&self) -> &dyn Any {
-        &self.0 .0
-    }
-}
-
+use crate::constraints::piece::Slot;
+use crate::ground::errors::{Error, Result};
+use crate::ground::ids::PointRef;
+use crate::ground::lookup::EntityLookup;
 /// A user-written constraint (see the module documentation).
 ///
 /// ```
@@ -421,6 +99,49 @@ impl Custom {
     pub fn with_args<R: CustomResidual>(residual: R, args: Vec<Arg>) -> Self {
         Self {
             residual: Some(Arc::new(Typed(Arc::new(residual)))),
+            args,
+            file_form: None,
+        }
+    }
+
+    /// A custom constraint with a boxed residual ([`camber_solve::DynResidual`], for residuals
+    /// that give their own derivatives rather than through dual numbers: a residual written in
+    /// another language, say) reading `args` in order, whose kinds it declares in `kinds`
+    /// (checked against `args` when the constraint is added). It reads the blocks a plain
+    /// residual would (a point two numbers, a radius or parameter one), and a curve argument as
+    /// one block of two per control point; its Jacobian columns follow those blocks in order.
+    ///
+    /// ```
+    /// use std::sync::Arc;
+    /// use camber_sketch::{Arg, ArgKind, Custom, PointRef, Sketch};
+    /// use camber_solve::{Residual, Scalar};
+    /// use nalgebra::Point2;
+    /// /// q.x − p.x − 1 = 0, boxed as camber-solve's object-safe face.
+    /// #[derive(Debug)]
+    /// struct UnitApart;
+    /// impl Residual for UnitApart {
+    ///     fn name(&self) -> &str { "unit apart" }
+    ///     fn dim(&self) -> usize { 1 }
+    ///     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) { out[0] = x[1][0] - x[0][0] - T::one(); }
+    /// }
+    /// let mut s = Sketch::new();
+    /// let (p, q) = (s.add_point(Point2::new(0.0, 0.0))?, s.add_point(Point2::new(3.0, 0.0))?);
+    /// let args = vec![Arg::Point(PointRef::Point(p)), Arg::Point(PointRef::Point(q))];
+    /// s.add_constraint(Custom::boxed(Arc::new(UnitApart), vec![ArgKind::Point; 2], args))?;
+    /// s.solve()?;
+    /// assert!((s.point(PointRef::Point(q))?.x - s.point(PointRef::Point(p))?.x - 1.0).abs() < 1e-12);
+    /// # Ok::<(), camber_sketch::Error>(())
+    /// ```
+    pub fn boxed(
+        residual: Arc<dyn camber_solve::DynResidual>,
+        kinds: Vec<ArgKind>,
+        args: Vec<Arg>,
+    ) -> Self {
+        Self {
+            residual: Some(Arc::new(Boxed {
+                inner: residual,
+                kinds,
+            })),
             args,
             file_form: None,
         }

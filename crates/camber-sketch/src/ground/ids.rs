@@ -82,3 +82,6 @@ impl PointRef {
         }
     }
 }
+
+/// The constraint id owning the rows that pin a dragged point.
+pub const DRAG_CONSTRAINT: ConstraintId = ConstraintId(u64::MAX);

@@ -16,7 +16,7 @@
 //!
 //! Hermite and composite curves ([`HermiteChain`]) have nodes and tangent vectors as their
 //! blocks; their Bézier control points are a fixed linear map of those blocks, so the same
-//! holds with cⱼ summed through that map ([`crate::hermite_chain`]).
+//! holds with cⱼ summed through that map ([`crate::ground::hermite_chain`]).
 //!
 //! [`Entity::coefficients`] returns those cⱼ (only the p + 1 that can be non-zero), which makes
 //! every constraint at a *given* parameter a constant-coefficient combination of control-point
@@ -27,10 +27,10 @@ use camber_geom::{BSplineCurve2, BezierCurve2, NurbsCurve2};
 use nalgebra::Point2;
 use smallvec::SmallVec;
 
-use crate::curve_eval::CurveBasis;
-use crate::errors::{Error, Result};
-use crate::hermite_chain::HermiteChain;
-use crate::ids::{EntityId, PointRef};
+use crate::ground::curve_eval::CurveBasis;
+use crate::ground::errors::{Error, Result};
+use crate::ground::hermite_chain::HermiteChain;
+use crate::ground::ids::{EntityId, PointRef};
 
 /// A linear combination Σ cⱼ·Pⱼ over an entity's points: (point index, coefficient) pairs.
 pub type Terms = SmallVec<[(usize, f64); 8]>;
@@ -71,7 +71,7 @@ pub enum Entity {
     Hermite(HermiteChain),
     /// A composite curve: a chain of n cubic Hermite segments on [0, n] whose joins are shared
     /// nodes (C0) and, at smooth joins, shared tangents (C1); blocks are the nodes, then the
-    /// tangents ([`crate::hermite_chain`]).
+    /// tangents ([`crate::ground::hermite_chain`]).
     Composite(HermiteChain),
 }
 

@@ -7,7 +7,7 @@
 
 use camber_solve::ConstraintId;
 
-use crate::ids::{EntityId, PointRef};
+use crate::ground::ids::{EntityId, PointRef};
 
 /// Everything that can go wrong when editing, solving or dragging a [`crate::Sketch`].
 ///
@@ -271,9 +271,9 @@ pub enum Error {
         /// The residual's name.
         name: String,
         /// The argument kinds the residual declares.
-        expected: Vec<crate::constraints::custom::ArgKind>,
+        expected: Vec<crate::ground::vocabulary::ArgKind>,
         /// The argument kinds given.
-        found: Vec<crate::constraints::custom::ArgKind>,
+        found: Vec<crate::ground::vocabulary::ArgKind>,
     },
     /// A constraint reads a free parameter another constraint does not have.
     #[error("{constraint} reads free parameter {index} of {of}, which it does not have")]
@@ -325,7 +325,7 @@ pub enum Error {
 
 /// A constraint in words; the drag's own pin row is "the drag target", never its internal id.
 fn constraint_name(id: ConstraintId) -> String {
-    if id == crate::component::DRAG_CONSTRAINT {
+    if id == crate::ground::ids::DRAG_CONSTRAINT {
         "the drag target".to_owned()
     } else {
         id.to_string()

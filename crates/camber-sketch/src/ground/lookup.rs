@@ -1,9 +1,9 @@
 //! Looking up entities by id: what compiling a constraint, building a component's problem and
 //! drawing a glyph need of a sketch (or of a drag session's snapshot, or of a picture's view).
 
-use crate::entity::Entity;
-use crate::errors::Result;
-use crate::ids::EntityId;
+use crate::ground::entity::Entity;
+use crate::ground::errors::Result;
+use crate::ground::ids::EntityId;
 
 /// Read access to entities by id.
 ///

@@ -54,7 +54,7 @@ use nalgebra::{Point2, SVector, Vector2};
 use serde::{Deserialize, Serialize};
 use smallvec::SmallVec;
 
-use crate::errors::{Error, Result};
+use crate::ground::errors::{Error, Result};
 
 /// How two neighbouring segments of a composite curve meet at their shared node.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -135,10 +135,10 @@ impl HermiteChain {
             });
         }
         for (i, p) in nodes.iter().enumerate() {
-            crate::entity::check_point("node", i, p)?;
+            crate::ground::entity::check_point("node", i, p)?;
         }
         for (i, t) in tangents.iter().enumerate() {
-            crate::entity::check_finite2("tangent", i, [t.x, t.y])?;
+            crate::ground::entity::check_finite2("tangent", i, [t.x, t.y])?;
         }
         let mut blocks = nodes;
         blocks.extend(tangents.iter().map(|t| Point2::from(*t)));

@@ -4,7 +4,7 @@
 //! and writes its contribution as pieces: bindings (fixed entities and points, eliminated
 //! tangents), constant-coefficient combinations of entity points (affine rows), and general
 //! residuals over slots (points, radii, free parameters) with an optional check of the solved
-//! state. The builder ([`super::problem`]) turns pieces into blocks, bindings and residuals of
+//! state. The builder ([`crate::component::problem`]) turns pieces into blocks, bindings and residuals of
 //! one component's [`camber_solve::Problem`]; it knows pieces, not kinds.
 
 use std::sync::Arc;
@@ -12,8 +12,8 @@ use std::sync::Arc;
 use camber_solve::{BlockId, ConstraintId, DynResidual};
 use smallvec::SmallVec;
 
-use super::check::SolvedCheck;
-use crate::ids::EntityId;
+use crate::constraints::check::SolvedCheck;
+use crate::ground::ids::EntityId;
 
 /// A combination Σ c·P over points of several entities: (entity, point index, coefficient).
 pub(crate) type ETerms = SmallVec<[(EntityId, usize, f64); 8]>;
@@ -98,17 +98,19 @@ pub(crate) type Pieces = Vec<Piece>;
 /// The basis of a curve entity and the slots of all its control points, in order.
 ///
 /// # Errors
-/// [`crate::Error::UnknownEntity`]; [`crate::Error::WrongEntityKind`] for a non-curve.
+/// [`crate::ground::errors::Error::UnknownEntity`]; [`crate::ground::errors::Error::WrongEntityKind`] for a non-curve.
 pub(crate) fn curve_slots(
-    lookup: &dyn crate::lookup::EntityLookup,
+    lookup: &dyn crate::ground::lookup::EntityLookup,
     id: EntityId,
-) -> crate::Result<(crate::curve_eval::CurveBasis, Vec<Slot>)> {
+) -> crate::ground::errors::Result<(crate::ground::curve_eval::CurveBasis, Vec<Slot>)> {
     let e = lookup.lookup(id)?;
-    let basis = crate::curve_eval::CurveBasis::of(e).ok_or(crate::Error::WrongEntityKind {
-        entity: id,
-        expected: "curve",
-        found: e.kind_name(),
-    })?;
+    let basis = crate::ground::curve_eval::CurveBasis::of(e).ok_or(
+        crate::ground::errors::Error::WrongEntityKind {
+            entity: id,
+            expected: "curve",
+            found: e.kind_name(),
+        },
+    )?;
     let slots = (0..e.points().len()).map(|j| Slot::Point(id, j)).collect();
     Ok((basis, slots))
 }
@@ -118,11 +120,11 @@ pub(crate) fn curve_slots(
 /// an eliminated tangent its row form. A binding cannot give way; rows can.
 ///
 /// # Errors
-/// [`crate::Error::UnknownEntity`] for an entity the sketch does not hold.
+/// [`crate::ground::errors::Error::UnknownEntity`] for an entity the sketch does not hold.
 pub(crate) fn as_rows(
-    lookup: &dyn crate::lookup::EntityLookup,
+    lookup: &dyn crate::ground::lookup::EntityLookup,
     pieces: Pieces,
-) -> crate::Result<Pieces> {
+) -> crate::ground::errors::Result<Pieces> {
     let mut out = Pieces::new();
     let fixed_point = |e: EntityId, j: usize, at: nalgebra::Point2<f64>| {
         let mut terms = ETerms::new();
@@ -144,9 +146,9 @@ pub(crate) fn as_rows(
                 for (j, at) in entity.points().iter().enumerate() {
                     out.push(fixed_point(e, j, *at));
                 }
-                if let crate::Entity::Circle { radius, .. } = entity {
+                if let crate::ground::entity::Entity::Circle { radius, .. } = entity {
                     out.push(Piece::General {
-                        residual: Arc::new(crate::constraints::radius::RadiusValue::new(*radius)),
+                        residual: Arc::new(crate::residuals::affine::RadiusValue::new(*radius)),
                         slots: vec![Slot::Radius(e)],
                         check: None,
                     });

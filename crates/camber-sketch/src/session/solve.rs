@@ -6,9 +6,9 @@
 use camber_solve::SolveReport;
 
 use crate::component::policy::{self, Start};
-use crate::component::starts;
 use crate::component::Component;
-use crate::errors::Result;
+use crate::ground::errors::Result;
+use crate::session::starts;
 use crate::sketch::Sketch;
 
 pub use crate::component::policy::{default_options, penetration_tolerance, MAX_ACTIVE_ROWS};
@@ -45,7 +45,7 @@ pub struct SketchReport {
     /// Components that were solved (components without constraints are skipped).
     pub components: Vec<ComponentReport>,
     /// Near-degenerate input found in the sketch before the solve ([`Sketch::warnings`]).
-    pub warnings: Vec<crate::warnings::Warning>,
+    pub warnings: Vec<crate::sketch::warnings::Warning>,
     /// The residual tolerance the solve used ([`Sketch::solve_options`]): the options'
     /// tolerance, raised for sketches far from the origin to what double rounding can reach at
     /// their coordinates.
@@ -55,7 +55,7 @@ pub struct SketchReport {
 /// A component's solve report and the entities it moved, with their new values.
 type Solved = (
     SolveReport,
-    Vec<(crate::ids::EntityId, crate::entity::Entity)>,
+    Vec<(crate::ground::ids::EntityId, crate::ground::entity::Entity)>,
 );
 
 impl SketchReport {
@@ -176,7 +176,7 @@ impl Sketch {
             tolerance: options.tolerance,
             ..SketchReport::default()
         };
-        let clean: Vec<crate::ids::EntityId> = comps
+        let clean: Vec<crate::ground::ids::EntityId> = comps
             .iter()
             .flat_map(|c| c.entities.iter().copied())
             .collect();
@@ -260,7 +260,7 @@ impl Sketch {
 #[derive(Debug)]
 struct ComponentOutcome {
     report: ComponentReport,
-    updates: Vec<(crate::ids::EntityId, crate::entity::Entity)>,
+    updates: Vec<(crate::ground::ids::EntityId, crate::ground::entity::Entity)>,
     free: Vec<(camber_solve::ConstraintId, usize, f64)>,
 }
 

@@ -7,7 +7,7 @@ use camber_solve::DofAnalysis;
 
 pub use crate::component::problem::{EntityFreedom, ParameterFreedom};
 use crate::component::Component;
-use crate::errors::Result;
+use crate::ground::errors::Result;
 use crate::sketch::Sketch;
 
 /// The DOF analysis of one component at the current state.
@@ -27,7 +27,7 @@ pub struct ComponentAnalysis {
 
 impl ComponentAnalysis {
     /// Whether every point and radius of `entity` is determined by the constraints.
-    pub fn is_determined(&self, entity: crate::ids::EntityId) -> bool {
+    pub fn is_determined(&self, entity: crate::ground::ids::EntityId) -> bool {
         self.component.entities.contains(&entity)
             && !self.freedom.iter().any(|f| f.entity == entity)
     }

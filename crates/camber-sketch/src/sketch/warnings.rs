@@ -16,8 +16,8 @@
 use std::f64::consts::PI;
 
 use crate::constraints::Constraint;
-use crate::entity::Entity;
-use crate::ids::{ConstraintId, EntityId};
+use crate::ground::entity::Entity;
+use crate::ground::ids::{ConstraintId, EntityId};
 use crate::sketch::Sketch;
 
 /// Relative size below which a length counts as near zero.

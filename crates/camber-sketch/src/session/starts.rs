@@ -11,12 +11,12 @@
 
 use nalgebra::{Point2, Vector2};
 
-use super::check::{ContactSpec, ContactTarget};
-use super::problem::ComponentProblem;
-use crate::entity::Entity;
-use crate::errors::{Error, Result};
-use crate::lookup::EntityLookup;
-use crate::vocabulary::{CircleSide, Contact, LineSide, Rotation, Sense};
+use crate::component::problem::ComponentProblem;
+use crate::constraints::check::{ContactSpec, ContactTarget};
+use crate::ground::entity::Entity;
+use crate::ground::errors::{Error, Result};
+use crate::ground::lookup::EntityLookup;
+use crate::ground::vocabulary::{CircleSide, Contact, LineSide, Rotation, Sense};
 
 /// Starts tried after the given one fails, at most.
 pub const MAX_STARTS: usize = 8;

@@ -42,10 +42,10 @@ use smallvec::SmallVec;
 
 use crate::component::policy::{self, Start};
 use crate::component::{Component, ComponentProblem, DRAG_CONSTRAINT};
-use crate::entity::Entity;
-use crate::errors::{Error, Result};
-use crate::ids::{EntityId, PointRef};
-use crate::lookup::EntityLookup;
+use crate::ground::entity::Entity;
+use crate::ground::errors::{Error, Result};
+use crate::ground::ids::{EntityId, PointRef};
+use crate::ground::lookup::EntityLookup;
 use crate::sketch::Sketch;
 
 /// The entity shapes a session started from, as an [`EntityLookup`] (knots, weights and kinds
@@ -842,7 +842,7 @@ impl DragSession {
     /// [`Error::OrientationFlipped`] when the result would break a constraint (the session keeps
     /// its previous state).
     pub fn update(&mut self, target: Point2<f64>) -> Result<()> {
-        crate::entity::check_point("target", 0, &target)?;
+        crate::ground::entity::check_point("target", 0, &target)?;
         match self {
             DragSession::Affine(d) => d.update(target),
             DragSession::Nonlinear(d) => d.update(target),
@@ -909,7 +909,7 @@ impl DragSession {
     /// assert!(residuals[0].1 < 1e-12);
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
-    pub fn residuals(&self) -> Result<Vec<(crate::ids::ConstraintId, f64)>> {
+    pub fn residuals(&self) -> Result<Vec<(crate::ground::ids::ConstraintId, f64)>> {
         let c = self.common();
         let owners = match self {
             DragSession::Affine(d) => &d.row_owner,
@@ -918,7 +918,7 @@ impl DragSession {
         let problem = c.cp.problem();
         let mut g = vec![0.0; problem.num_rows()];
         problem.evaluate_at(&c.x, &mut g)?;
-        let mut worst: BTreeMap<crate::ids::ConstraintId, f64> = BTreeMap::new();
+        let mut worst: BTreeMap<crate::ground::ids::ConstraintId, f64> = BTreeMap::new();
         for (owner, v) in owners.iter().zip(&g) {
             if *owner == DRAG_CONSTRAINT {
                 continue;
@@ -976,7 +976,7 @@ impl DragSession {
 mod tests {
     use super::*;
     use crate::constraints::{Fixed, StartTangent};
-    use crate::vocabulary::{Sense, TangentForm};
+    use crate::ground::vocabulary::{Sense, TangentForm};
     use camber_geom::BezierCurve2;
 
     /// W1's cubic (P₃ fixed, start tangent along D) in the given form, dragged by P₁.
