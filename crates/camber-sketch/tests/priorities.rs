@@ -290,12 +290,9 @@ fn a_tier_the_ones_before_determine_leaves_unread_control_points_alone() {
     s.set_priority(apart, 3).unwrap();
     let report = s.solve().unwrap();
     assert_eq!(report.relaxed(), vec![moved_start, apart]);
-    for k in 1..3 {
-        assert!(
-            close(s.point(PointRef::Control(c, k)).unwrap(), start[k], 1e-12),
-            "P{k} moved to {:?}",
-            s.point(PointRef::Control(c, k)).unwrap()
-        );
+    for (k, was) in start.iter().enumerate().take(3).skip(1) {
+        let now = s.point(PointRef::Control(c, k)).unwrap();
+        assert!(close(now, *was, 1e-12), "P{k} moved to {now:?}");
     }
     assert!(close(
         s.point(PointRef::End(c)).unwrap(),
