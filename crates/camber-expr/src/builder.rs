@@ -108,6 +108,21 @@ impl Builder {
         self.push(Node::Const(value), Some(value))
     }
 
+    /// The input a node is exactly (1·x + 0), if it is one.
+    pub(crate) fn identity(&self, r: Reg) -> Option<Input> {
+        match self.nodes.get(r as usize)? {
+            Node::Lin {
+                start,
+                end,
+                constant,
+            } if *end == *start + 1 && constant.abs() <= 0.0 => {
+                let (input, c) = self.terms.get(*start as usize)?;
+                ((c - 1.0).abs() <= 0.0).then_some(*input)
+            }
+            _ => None,
+        }
+    }
+
     pub(crate) fn const_of(&self, r: Reg) -> Option<f64> {
         self.consts.get(r as usize).copied().flatten()
     }

@@ -350,20 +350,16 @@ impl<'t, 'b, S: Scope + ?Sized> Reader<'t, 'b, S> {
             let r = self.b.constant(*c, at)?;
             return Ok(Builder::scalar(r, at));
         }
-        let scope_err = |b: &Builder, message: String| Error::Scope {
+        let scope_err = |b: &Builder, at: usize, message: String| Error::Scope {
             column: b.col(at),
             message,
         };
-        match self.scope.value(name) {
-            Ok(Some(v)) => return self.b.value(&v, &[], at),
-            Ok(None) => {}
-            Err(m) => return Err(scope_err(self.b, m)),
-        }
-        // `K.radius`: a member of an object that has no value of its own.
+        // `K.radius`: a member of an object of the scope (a vector's `.x` is read later).
         if let Some(rest) = look.strip_prefix('.') {
             let mut r = rest;
             ws(&mut r);
             if r.starts_with(is_name_start) {
+                let member_at = self.at(r);
                 let member = self.name(&mut r)?;
                 match self.scope.member(name, member) {
                     Ok(Some(v)) => {
@@ -371,9 +367,14 @@ impl<'t, 'b, S: Scope + ?Sized> Reader<'t, 'b, S> {
                         return self.b.value(&v, &[], at);
                     }
                     Ok(None) => {}
-                    Err(m) => return Err(scope_err(self.b, m)),
+                    Err(m) => return Err(scope_err(self.b, member_at, m)),
                 }
             }
+        }
+        match self.scope.value(name) {
+            Ok(Some(v)) => return self.b.value(&v, &[], at),
+            Ok(None) => {}
+            Err(m) => return Err(scope_err(self.b, at, m)),
         }
         Err(Error::UnknownName {
             column: self.b.col(at),
@@ -406,7 +407,7 @@ impl<'t, 'b, S: Scope + ?Sized> Reader<'t, 'b, S> {
             .map(|a| match (a.ty, self.b.const_of(a.regs[0])) {
                 (Type::Vector, _) => CallArg::Vector,
                 (Type::Scalar, Some(c)) => CallArg::Const(c),
-                (Type::Scalar, None) => CallArg::Varying,
+                (Type::Scalar, None) => CallArg::Varying(self.b.identity(a.regs[0])),
             })
             .collect();
         let varying: Vec<Reg> = args

@@ -91,8 +91,9 @@ pub enum CallArg {
     /// A constant (the owner may expand the call, a curve point at a fixed parameter being
     /// linear in the control points).
     Const(f64),
-    /// A varying scalar (the call becomes a [`Term::Call`]).
-    Varying,
+    /// A varying scalar (the call becomes a [`Term::Call`]); when the argument is exactly one
+    /// input (`C(s)` for a free parameter s), that input.
+    Varying(Option<Input>),
     /// A vector (constant or not).
     Vector,
 }
