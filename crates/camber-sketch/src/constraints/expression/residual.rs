@@ -14,7 +14,7 @@ pub(crate) enum Function {
     /// C⁽ᵏ⁾(u) of a curve, u the call's one argument (two outputs); `blocks[j]` is the block of
     /// control point j.
     Curve {
-        basis: CurveBasis,
+        basis: Box<CurveBasis>,
         blocks: Vec<u32>,
         order: usize,
     },

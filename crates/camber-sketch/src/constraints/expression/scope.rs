@@ -145,7 +145,7 @@ impl<'c, 'a> SketchScope<'c, 'a> {
                     .collect();
                 let f = u32::try_from(self.functions.0.len()).unwrap_or(u32::MAX);
                 self.functions.0.push(Function::Curve {
-                    basis,
+                    basis: Box::new(basis),
                     blocks,
                     order,
                 });
