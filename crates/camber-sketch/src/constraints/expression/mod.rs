@@ -47,9 +47,9 @@ use serde::{Deserialize, Serialize};
 
 use super::glyph::{self, Glyph};
 use super::{Compiler, ConstraintKind, Entities};
-use crate::errors::{Error, Result};
-use crate::ids::{EntityId, PointRef};
-use crate::lookup::EntityLookup;
+use crate::ground::errors::{Error, Result};
+use crate::ground::ids::{EntityId, PointRef};
+use crate::ground::lookup::EntityLookup;
 
 pub mod residual;
 mod scope;
@@ -164,7 +164,7 @@ impl Expression {
         &self,
         lookup: &dyn EntityLookup,
     ) -> Result<(ExpressionResidual, Vec<ExprBlock>)> {
-        use crate::component::piece::Slot;
+        use crate::constraints::piece::Slot;
         let cx = Compiler::new(lookup);
         let parameters = |name: &str| lookup.parameter(name);
         let (residual, slots) = self.residual(&cx, &parameters)?;
@@ -191,7 +191,7 @@ impl Expression {
         &self,
         cx: &Compiler<'_>,
         parameters: &dyn Fn(&str) -> Option<f64>,
-    ) -> Result<(ExpressionResidual, Vec<crate::component::piece::Slot>)> {
+    ) -> Result<(ExpressionResidual, Vec<crate::constraints::piece::Slot>)> {
         for (name, a) in &self.args {
             check_name(name)?;
             if let ExprArg::Free(v) = a {

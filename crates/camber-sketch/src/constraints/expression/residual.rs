@@ -6,7 +6,7 @@ use camber_solve::{Residual, Scalar};
 use smallvec::SmallVec;
 
 use crate::constraints::arc_length::LengthOf;
-use crate::curve_eval::CurveBasis;
+use crate::ground::curve_eval::CurveBasis;
 
 /// A function of the sketch the tape calls.
 #[derive(Debug, Clone, PartialEq)]

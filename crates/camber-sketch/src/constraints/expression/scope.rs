@@ -14,11 +14,11 @@ use camber_expr::{CallArg, Input, Term, Value};
 
 use super::residual::{Function, Functions};
 use super::ExprArg;
-use crate::component::piece::{ETerms, Slot};
+use crate::constraints::piece::{ETerms, Slot};
 use crate::constraints::Compiler;
-use crate::entity::Entity;
-use crate::errors::Error;
-use crate::ids::{EntityId, PointRef};
+use crate::ground::entity::Entity;
+use crate::ground::errors::Error;
+use crate::ground::ids::{EntityId, PointRef};
 
 /// The names of one expression constraint during its compilation.
 pub(crate) struct SketchScope<'c, 'a> {
