@@ -279,6 +279,14 @@ pub enum Error {
     /// message names the column (and the row).
     #[error(transparent)]
     Expression(#[from] camber_expr::Error),
+    /// A value set on a constraint whose kind has none ([`crate::Sketch::set_value`]).
+    #[error("{constraint} ({kind}) has no value to set")]
+    NoValue {
+        /// The constraint.
+        constraint: ConstraintId,
+        /// Its kind.
+        kind: &'static str,
+    },
     /// A constraint reads a free parameter another constraint does not have.
     #[error("{constraint} reads free parameter {index} of {of}, which it does not have")]
     UnknownFreeParameter {

@@ -7,6 +7,7 @@
 //! entities they touch as dirty, and [`Sketch::solve`] solves only the components that contain a
 //! dirty entity.
 
+pub(crate) mod prepared;
 pub mod warnings;
 
 use std::collections::{BTreeMap, BTreeSet};
@@ -70,6 +71,9 @@ pub struct Sketch {
     weights: BTreeMap<(EntityId, usize), f64>,
     /// Priority tiers of constraints that may be relaxed; absent = 0 (required).
     priorities: BTreeMap<ConstraintId, Priority>,
+    /// The components compiled and solved by earlier solves, kept with their plans
+    /// ([`prepared`]).
+    pub(crate) prepared: prepared::Prepared,
 }
 
 impl Default for Sketch {
@@ -110,6 +114,7 @@ impl Sketch {
             options,
             weights: BTreeMap::new(),
             priorities: BTreeMap::new(),
+            prepared: prepared::Prepared::default(),
         }
     }
 }
@@ -260,7 +265,7 @@ impl Sketch {
         if let Some(slot) = self.entities.get_mut(&r.entity()) {
             slot.0 = updated;
         }
-        self.dirty.insert(r.entity());
+        self.touch(r.entity());
         self.revision += 1;
         Ok(())
     }
@@ -317,7 +322,7 @@ impl Sketch {
             });
         }
         self.weights.insert((r.entity(), index), weight);
-        self.dirty.insert(r.entity());
+        self.touch(r.entity());
         self.revision += 1;
         Ok(())
     }
@@ -347,6 +352,7 @@ impl Sketch {
             .remove(&id)
             .ok_or(Error::UnknownEntity { entity: id })?;
         self.graph.remove_node(node);
+        self.prepared.forget_entity(id);
         self.dirty.remove(&id);
         self.weights.retain(|(entity, _), _| *entity != id);
         self.revision += 1;
@@ -410,7 +416,7 @@ impl Sketch {
             }
         }
         self.weights.retain(|(entity, _), _| *entity != id);
-        self.dirty.insert(id);
+        self.touch(id);
         self.revision += 1;
         Ok(())
     }
@@ -472,7 +478,7 @@ impl Sketch {
             if let Some((_, en)) = self.entities.get(&e) {
                 self.graph.add_edge(node, *en, ());
             }
-            self.dirty.insert(e);
+            self.touch(e);
         }
         self.constraints.insert(id, (constraint, node));
         self.revision += 1;
@@ -520,9 +526,66 @@ impl Sketch {
             .ok_or(Error::UnknownConstraint { constraint: id })?;
         self.graph.remove_node(node);
         self.priorities.remove(&id);
-        self.dirty.extend(c.entities());
+        for e in c.entities() {
+            self.touch(e);
+        }
         self.revision += 1;
         Ok(c)
+    }
+}
+
+/// # Dimensions
+impl Sketch {
+    /// Sets the value of a dimension (the distance of a [`crate::constraints::Distance`], the
+    /// radius of a [`crate::constraints::Radius`], an angle, an arc length, …) and marks its
+    /// component for the next solve. The component a solve prepared is kept: the next
+    /// [`Sketch::solve`] replaces the constraint's residuals in place and re-solves that
+    /// component alone on its kept plan (docs/sketch.md, "Dimension edits").
+    ///
+    /// ```
+    /// use camber_sketch::constraints::{Distance, Fixed};
+    /// use camber_sketch::{PointRef, Sketch};
+    /// use nalgebra::Point2;
+    /// let mut s = Sketch::new();
+    /// let a = s.add_point(Point2::new(0.0, 0.0))?;
+    /// let b = s.add_point(Point2::new(1.0, 0.0))?;
+    /// s.add_constraint(Fixed::point(PointRef::Point(a)))?;
+    /// let d = s.add_constraint(Distance { a: PointRef::Point(a), b: PointRef::Point(b), distance: 1.0 })?;
+    /// s.solve()?;
+    /// s.set_value(d, 2.5)?;
+    /// assert_eq!(s.constraint(d)?.value(), Some(2.5));
+    /// s.solve()?;
+    /// assert!((s.point(PointRef::Point(b))?.x - 2.5).abs() < 1e-12);
+    /// # Ok::<(), camber_sketch::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`Error::UnknownConstraint`]; [`Error::NoValue`] for a kind without a value; the
+    /// validation errors of the kind for the new value (a negative distance, a non-finite
+    /// number, …). The sketch is unchanged then.
+    pub fn set_value(&mut self, id: ConstraintId, value: f64) -> Result<()> {
+        let (constraint, _) = self
+            .constraints
+            .get(&id)
+            .ok_or(Error::UnknownConstraint { constraint: id })?;
+        let mut edited = constraint.clone();
+        if !edited.set_value(value) {
+            return Err(Error::NoValue {
+                constraint: id,
+                kind: edited.kind_name(),
+            });
+        }
+        edited.compile(self)?;
+        let entities = edited.entities();
+        if let Some(slot) = self.constraints.get_mut(&id) {
+            slot.0 = edited;
+        }
+        self.prepared.edit(id);
+        for e in entities {
+            self.dirty.insert(e);
+        }
+        self.revision += 1;
+        Ok(())
     }
 }
 
@@ -686,6 +749,7 @@ impl Sketch {
     /// forced solver or the soft mode) for the following solves and drags. Marks nothing
     /// dirty.
     pub fn set_options(&mut self, options: Options) {
+        self.prepared.forget_all();
         self.options = options;
     }
 
@@ -727,8 +791,15 @@ impl Sketch {
 
     /// Marks an entity as changed, so that the next solve solves its component.
     pub(crate) fn mark_dirty(&mut self, id: EntityId) {
-        self.dirty.insert(id);
+        self.touch(id);
         self.revision += 1;
+    }
+
+    /// Marks an entity as changed by something other than a constraint's value: its prepared
+    /// component is dropped ([`prepared`]).
+    fn touch(&mut self, id: EntityId) {
+        self.prepared.forget_entity(id);
+        self.dirty.insert(id);
     }
 
     pub(crate) fn is_dirty(&self, comp: &Component) -> bool {
