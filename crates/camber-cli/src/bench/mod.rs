@@ -64,6 +64,14 @@ pub enum Workload {
     /// W5b: one ladder of cells (the rectangles' constraints in one component).
     #[value(alias = "w5b", alias = "W5B")]
     W5b,
+    /// W6: W5 with 1,000 rectangles solved, then one rectangle's width edited and the sketch
+    /// re-solved (the edit and the re-solve timed).
+    #[value(alias = "w6")]
+    W6,
+    /// W7: a drag of an interior control point of the W3 chain, N = 1,000 and 10,000 (each
+    /// update timed).
+    #[value(alias = "w7")]
+    W7,
     /// A: the DOF analysis (what `camber check` runs) of the W3 chain of N segments, of a
     /// chain of 10·N points held by distances and of the fully constrained W5b ladder of N
     /// cells.
@@ -73,7 +81,7 @@ pub enum Workload {
 
 impl Workload {
     /// Every workload, in table order.
-    pub const ALL: [Workload; 8] = [
+    pub const ALL: [Workload; 10] = [
         Workload::W1,
         Workload::W2,
         Workload::W3,
@@ -81,10 +89,12 @@ impl Workload {
         Workload::W4,
         Workload::W5,
         Workload::W5b,
+        Workload::W6,
+        Workload::W7,
         Workload::A,
     ];
 
-    /// "W1", "W2", "W3", "W3a", "W4", "W5", "W5b", "A".
+    /// "W1", "W2", "W3", "W3a", "W4", "W5", "W5b", "W6", "W7", "A".
     pub fn name(self) -> &'static str {
         match self {
             Workload::W1 => "W1",
@@ -94,6 +104,8 @@ impl Workload {
             Workload::W4 => "W4",
             Workload::W5 => "W5",
             Workload::W5b => "W5b",
+            Workload::W6 => "W6",
+            Workload::W7 => "W7",
             Workload::A => "A",
         }
     }
@@ -123,6 +135,12 @@ pub struct Plan {
     pub w4_components: usize,
     /// W4: solves of the whole sketch.
     pub w4_repeats: usize,
+    /// W6: rectangles in the sketch.
+    pub w6_rectangles: usize,
+    /// W6: width edits, each re-solved.
+    pub w6_edits: usize,
+    /// W7: chain lengths N dragged.
+    pub w7_sizes: Vec<usize>,
 }
 
 impl Plan {
@@ -137,6 +155,9 @@ impl Plan {
             chain_sizes: vec![10, 100, 1_000, 10_000],
             w4_components: 10_000,
             w4_repeats: 5,
+            w6_rectangles: 1_000,
+            w6_edits: 200,
+            w7_sizes: vec![1_000, 10_000],
         }
     }
 
@@ -151,6 +172,9 @@ impl Plan {
             chain_sizes: vec![10, 100],
             w4_components: 100,
             w4_repeats: 2,
+            w6_rectangles: 100,
+            w6_edits: 20,
+            w7_sizes: vec![100],
         }
     }
 
@@ -200,6 +224,8 @@ impl Plan {
                     .map(|&s| self.chain_repeats(s))
                     .sum(),
                 Workload::W4 => self.w4_repeats,
+                Workload::W6 => self.w6_edits,
+                Workload::W7 => self.w7_sizes.len() * 200,
                 Workload::A => {
                     3 * self
                         .chain_sizes
@@ -312,6 +338,8 @@ pub fn run(plan: &Plan, bar: &ProgressBar) -> Result<Vec<Row>> {
             Workload::W4 => rows.push(runners::w4(plan, bar)?),
             Workload::W5 => rows.extend(runners::rectangles(plan, false, bar)?),
             Workload::W5b => rows.extend(runners::rectangles(plan, true, bar)?),
+            Workload::W6 => rows.push(runners::w6(plan, bar)?),
+            Workload::W7 => rows.extend(runners::w7(plan, bar)?),
             Workload::A => rows.extend(runners::analysis(plan, bar)?),
         }
     }
