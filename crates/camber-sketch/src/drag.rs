@@ -69,6 +69,13 @@ impl Shapes {
     }
 }
 
+/// How far a drag target may lie from the centre of the sketch ([`Sketch::centre`]), in
+/// multiples of the sketch's scale ([`Sketch::scale`], the diagonal of its box, at least 1),
+/// both taken when the drag starts: a thousand sketches away is surely a slip of the hand or a
+/// hostile request, and would wreck the sketch's numbers. [`DragSession::update`] refuses
+/// farther targets with [`Error::DragTargetTooFar`], whatever the surface (editor, Python).
+pub const MAX_DRAG_REACH: f64 = 1000.0;
+
 /// Refinement rounds after each minimum-norm step.
 const REFINEMENT_STEPS: usize = 2;
 
@@ -112,6 +119,9 @@ struct Common {
     moved: bool,
     /// The current unknowns (all of them, fixed ones included).
     x: Vec<f64>,
+    /// The sketch's centre when the drag began, and the farthest a target may lie from it.
+    centre: Point2<f64>,
+    reach: f64,
 }
 
 /// The state of a drag on an affine component (see the module documentation).
@@ -394,6 +404,24 @@ fn dense_row(j: &camber_solve::SparseMatrix, i: usize, n: usize) -> Vec<f64> {
 
 /// # Dragging
 impl Sketch {
+    /// Where a drag target of `point` is measured from and how far it may lie from there
+    /// ([`MAX_DRAG_REACH`]): the sketch's centre for a position; the origin for the tangent
+    /// block of a Hermite or composite curve, whose value is ±3·(handle − node), so that a handle
+    /// within reach gives a tangent within 3·(reach + scale).
+    fn drag_limits(&self, point: PointRef) -> (Point2<f64>, f64) {
+        let (scale, centre) = (self.scale(), self.centre());
+        let reach = MAX_DRAG_REACH * scale;
+        let tangent = match point {
+            PointRef::Control(e, j) => self.lookup(e).is_ok_and(|e| e.is_tangent_block(j)),
+            _ => false,
+        };
+        if tangent {
+            (Point2::origin(), 3.0 * (reach + scale))
+        } else {
+            (centre, reach)
+        }
+    }
+
     /// Starts dragging a point (a point entity, a control point, a line end, a circle centre,
     /// or a curve end).
     ///
@@ -499,6 +527,7 @@ impl Sketch {
         };
         let nx = lin.x.len();
         let selected = rows.len() + mix.len();
+        let (centre, reach) = self.drag_limits(point);
         Ok(DragSession::Affine(AffineDrag {
             common: Common {
                 point,
@@ -507,6 +536,8 @@ impl Sketch {
                 shapes: Shapes::of(self, &comp)?,
                 moved: false,
                 x: lin.x,
+                centre,
+                reach,
             },
             z: lin.map.z0().to_vec(),
             g: lin.g,
@@ -558,6 +589,7 @@ impl Sketch {
         }
         let z = cp.problem.reduced_map()?.z0().to_vec();
         let x = cp.problem.values().to_vec();
+        let (centre, reach) = self.drag_limits(point);
         Ok(DragSession::Nonlinear(NonlinearDrag {
             common: Common {
                 point,
@@ -566,6 +598,8 @@ impl Sketch {
                 shapes: Shapes::of(self, comp)?,
                 moved: false,
                 x,
+                centre,
+                reach,
             },
             block,
             z,
@@ -838,14 +872,33 @@ impl DragSession {
     /// minimum norm from the current state, keeping every constraint.
     ///
     /// # Errors
-    /// [`Error::NonFinite`] for a bad target; [`Error::NotSatisfied`] or
+    /// [`Error::NonFinite`] for a bad target; [`Error::DragTargetTooFar`] for one farther than
+    /// [`MAX_DRAG_REACH`] sketch scales from the sketch's centre; [`Error::NotSatisfied`] or
     /// [`Error::OrientationFlipped`] when the result would break a constraint (the session keeps
     /// its previous state).
     pub fn update(&mut self, target: Point2<f64>) -> Result<()> {
         crate::entity::check_point("target", 0, &target)?;
+        let c = self.common();
+        if (target - c.centre).norm() > c.reach {
+            return Err(Error::DragTargetTooFar {
+                x: target.x,
+                y: target.y,
+                reach: c.reach,
+            });
+        }
         match self {
             DragSession::Affine(d) => d.update(target),
             DragSession::Nonlinear(d) => d.update(target),
+        }
+    }
+
+    /// Watches `cancel` in the solves of the following updates (a nonlinear component's update
+    /// stops at its next evaluation once it is raised, with the solver's
+    /// [`camber_solve::Error::Cancelled`]; an affine update is one linear step and does not
+    /// look). None stops watching.
+    pub fn set_cancel(&mut self, cancel: Option<camber_solve::CancelFlag>) {
+        if let DragSession::Nonlinear(d) = self {
+            d.options.cancel = cancel;
         }
     }
 

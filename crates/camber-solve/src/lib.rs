@@ -84,7 +84,7 @@ pub use linear::solve_linear;
 pub use lsq::{solve_least_squares, LsqOptions, LsqReport};
 pub use min_norm::MinNormFactorization;
 pub use normal::NormalCache;
-pub use options::Options;
+pub use options::{CancelFlag, Options};
 pub use priority::Priority;
 pub use problem::{Binding, Problem, ProblemState};
 pub use reduced::{Linearization, ReducedMap};

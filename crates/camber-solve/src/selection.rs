@@ -444,6 +444,7 @@ pub fn solve(problem: &mut Problem, options: &Options) -> Result<SolveReport> {
     // A budget started by the caller spans its several solves; otherwise this one has its own.
     let own_budget = !problem.budget.running();
     if own_budget {
+        problem.set_cancel(options.cancel.clone());
         problem.start_budget(options.nonlinear.max_evaluations);
     }
     let outcome = match solve_whole(problem, options) {
@@ -460,8 +461,14 @@ pub fn solve(problem: &mut Problem, options: &Options) -> Result<SolveReport> {
         }
         outcome => outcome,
     };
+    // A cancelled solve fails as cancelled, whatever its paths made of their refused charges.
+    let outcome = match outcome {
+        Err(_) if problem.budget.cancelled() => Err(Error::Cancelled),
+        outcome => outcome,
+    };
     if own_budget {
         problem.end_budget();
+        problem.set_cancel(None);
     }
     outcome
 }
