@@ -1,35 +1,29 @@
 //! Custom constraints written in Python, with exact derivatives from dual numbers.
 //!
 //! The user writes `residual(x)` over generic numbers (`x` a list of the argument values,
-//! points as two entries), returning `dim` values. camber wraps it as a plain
-//! [`camber_solve::Residual`] whose generic `eval::<T>` works for every scalar type the solver
-//! uses:
+//! points as two entries), returning `dim` values. camber wraps it as a boxed residual
+//! ([`camber_solve::DynResidual`], the object-safe face a problem stores) that gives its own
+//! derivatives, exactly, from num-dual's Python package:
 //!
-//! - at `f64` it calls `residual` with floats;
-//! - for first derivatives (`Dual64`, `DualSVec64<N>`) it calls `num_dual.jacobian(residual,
-//!   x)` once, which evaluates `residual` with num-dual's vector dual numbers: the exact
-//!   Jacobian J, never a finite difference;
-//! - for second derivatives (the hyper-dual types of Newton's Hessian terms) it calls
-//!   `num_dual.hessian` once per row, giving each row's exact Hessian Hᵢ.
+//! - values: `residual` called with floats;
+//! - the Jacobian: `num_dual.jacobian(residual, x)` once, which evaluates `residual` with
+//!   num-dual's vector dual numbers: the exact J, never a finite difference;
+//! - the weighted Hessian Σ λᵢ·Hᵢ of Newton's second-order terms: `num_dual.hessian` once per
+//!   row, each row's exact Hᵢ.
 //!
-//! The value at the dual point then follows from the exact Taylor polynomial at the real parts
-//! x₀: g(x₀ + δ) = g(x₀) + J·δ + ½·δᵀHᵢδ, evaluated in `T`, where δ holds the pure derivative
-//! parts of the dual arguments. A first-order dual number drops δ·δ, so this reproduces J
-//! exactly; a second-order one keeps it and reproduces H exactly. Results are cached for the
-//! last point, so the several dual passes of one Jacobian call Python once.
+//! Results are cached for the last point, so the values, Jacobian and Hessian of one iterate
+//! call Python once each at most.
 //!
 //! **Cost per evaluation**: one call of `residual` with floats for the values; one call with
 //! vector duals (length n, the number of unknowns read) for a Jacobian; `dim` calls for the
 //! Hessians. Python exceptions raised inside `residual` are kept and raised again when the
 //! solve returns (the solver meanwhile sees NaN).
 
-use std::any::TypeId;
-use std::sync::Mutex;
+use std::any::Any;
+use std::sync::{Arc, Mutex};
 
-use camber_sketch::{Arg, ArgKind, Args, Custom, CustomResidual};
-use camber_solve::scalar::{cst, re};
-use camber_solve::{Residual, Scalar};
-use num_dual::{Dual64, DualSVec64};
+use camber_sketch::{Arg, ArgKind, Custom};
+use camber_solve::DynResidual;
 use pyo3::prelude::*;
 
 use crate::errors;
@@ -52,25 +46,6 @@ pub fn raise_pending(_py: Python<'_>) -> PyResult<()> {
     match err {
         Some(e) => Err(e),
         None => Ok(()),
-    }
-}
-
-/// How many derivative orders the scalar type `T` carries: 0 for `f64`, 1 for the first-order
-/// dual numbers of Jacobians, 2 otherwise (the Hessian's hyper-dual and second-order types).
-fn order_of<T: Scalar>() -> u8 {
-    let t = TypeId::of::<T>();
-    if t == TypeId::of::<f64>() {
-        return 0;
-    }
-    macro_rules! first_order {
-        ($($n:literal),*) => {
-            t == TypeId::of::<Dual64>() $(|| t == TypeId::of::<DualSVec64<$n>>())*
-        };
-    }
-    if first_order!(1, 2, 3, 4, 5, 6, 7, 8) {
-        1
-    } else {
-        2
     }
 }
 
@@ -201,7 +176,35 @@ impl PyResidual {
     }
 }
 
-impl Residual for PyResidual {
+impl PyResidual {
+    /// The expansion at the flattened blocks `x` to `order`, or NaN values (the Python error
+    /// is kept for the end of the solve).
+    fn at(&self, x: &[&[f64]], order: u8) -> Option<Expansion> {
+        let flat: Vec<f64> = x.iter().flat_map(|b| b.iter().copied()).collect();
+        self.expansion(&flat, order)
+    }
+
+    fn check_out(
+        &self,
+        what: &'static str,
+        expected: usize,
+        found: usize,
+    ) -> camber_solve::Result<()> {
+        if expected == found {
+            Ok(())
+        } else {
+            Err(camber_solve::Error::Dimension {
+                what,
+                expected,
+                found,
+            })
+        }
+    }
+}
+
+/// The Python residual as camber-solve's object-safe face: values, Jacobian and weighted
+/// Hessian straight from its expansion (see the module documentation).
+impl DynResidual for PyResidual {
     fn name(&self) -> &str {
         &self.name
     }
@@ -211,41 +214,77 @@ impl Residual for PyResidual {
     fn block_sizes(&self) -> Option<Vec<usize>> {
         Some(self.sizes.clone())
     }
+    fn accepts_block_sizes(&self, _sizes: &[usize]) -> bool {
+        // Python reads the flattened arguments, whatever their blocks: a curve argument gives
+        // one block per control point, known only when the component is built.
+        true
+    }
     fn is_affine(&self) -> bool {
         self.affine
     }
-    fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
-        let flat: Vec<T> = x.iter().flat_map(|b| b.iter().copied()).collect();
-        let reals: Vec<f64> = flat.iter().map(|v| re(*v)).collect();
-        let order = order_of::<T>();
-        let Some(e) = self.expansion(&reals, order) else {
-            out.iter_mut().for_each(|o| *o = cst(f64::NAN));
-            return;
-        };
-        let n = flat.len();
-        if order == 0 {
-            for (o, v) in out.iter_mut().zip(&e.value) {
-                *o = cst(*v);
-            }
-            return;
+    fn values(&self, x: &[&[f64]], out: &mut [f64]) -> camber_solve::Result<()> {
+        self.check_out("residual output", self.dim, out.len())?;
+        match self.at(x, 0) {
+            Some(e) => out.copy_from_slice(&e.value),
+            None => out.fill(f64::NAN),
         }
-        // δ: the pure derivative parts of the arguments.
-        let delta: Vec<T> = flat.iter().zip(&reals).map(|(v, r)| *v - cst(*r)).collect();
-        for (i, o) in out.iter_mut().enumerate() {
-            let mut g: T = cst(e.value[i]);
-            for (j, d) in e.jacobian[i * n..(i + 1) * n].iter().zip(&delta) {
-                g += cst::<T>(*j) * *d;
+        Ok(())
+    }
+    fn jacobian(
+        &self,
+        x: &[&[f64]],
+        values: &mut [f64],
+        jac: &mut [f64],
+    ) -> camber_solve::Result<()> {
+        let n: usize = x.iter().map(|b| b.len()).sum();
+        self.check_out("residual output", self.dim, values.len())?;
+        self.check_out("Jacobian", self.dim * n, jac.len())?;
+        match self.at(x, 1) {
+            Some(e) => {
+                values.copy_from_slice(&e.value);
+                jac.copy_from_slice(&e.jacobian);
             }
-            if order == 2 {
-                let h = &e.hessians[i * n * n..(i + 1) * n * n];
-                for k in 0..n {
-                    for l in 0..n {
-                        g += cst::<T>(0.5 * h[k * n + l]) * delta[k] * delta[l];
-                    }
+            None => {
+                values.fill(f64::NAN);
+                jac.fill(f64::NAN);
+            }
+        }
+        Ok(())
+    }
+    fn weighted_hessian(
+        &self,
+        x: &[&[f64]],
+        weights: &[f64],
+        active: &[bool],
+        out: &mut [f64],
+    ) -> camber_solve::Result<bool> {
+        let n: usize = x.iter().map(|b| b.len()).sum();
+        self.check_out("Hessian weights", self.dim, weights.len())?;
+        self.check_out("Hessian", n * n, out.len())?;
+        self.check_out("active blocks", x.len(), active.len())?;
+        // Whether each flattened unknown belongs to an active block.
+        let live: Vec<bool> = x
+            .iter()
+            .zip(active)
+            .flat_map(|(b, a)| std::iter::repeat_n(*a, b.len()))
+            .collect();
+        out.fill(0.0);
+        let Some(e) = self.at(x, 2) else {
+            out.fill(f64::NAN);
+            return Ok(true);
+        };
+        for (i, w) in weights.iter().enumerate() {
+            let h = &e.hessians[i * n * n..(i + 1) * n * n];
+            for k in (0..n).filter(|k| live[*k]) {
+                for l in (0..n).filter(|l| live[*l]) {
+                    out[k * n + l] += w * h[k * n + l];
                 }
             }
-            *o = g;
         }
+        Ok(true)
+    }
+    fn as_any(&self) -> &dyn Any {
+        self
     }
 }
 
@@ -260,32 +299,6 @@ fn arg(obj: &Bound<'_, PyAny>) -> PyResult<Arg> {
     }
     serde_json::from_value(to_value(obj)?)
         .map_err(|e| errors::SketchError::new_err(format!("invalid custom argument: {e}")))
-}
-
-/// The custom residual of a constraint: the Python function over every block its arguments
-/// read, in order (a curve argument reads all its control points, x then y of each).
-#[derive(Debug)]
-struct PyCustom {
-    residual: PyResidual,
-    kinds: Vec<ArgKind>,
-}
-
-impl CustomResidual for PyCustom {
-    fn name(&self) -> &str {
-        &self.residual.name
-    }
-    fn dim(&self) -> usize {
-        self.residual.dim
-    }
-    fn arg_kinds(&self) -> Vec<ArgKind> {
-        self.kinds.clone()
-    }
-    fn eval<T: Scalar>(&self, args: &Args<'_, T>, out: &mut [T]) {
-        Residual::eval(&self.residual, args.blocks(), out);
-    }
-    fn is_affine(&self) -> bool {
-        self.residual.affine
-    }
 }
 
 /// A custom constraint calling `func` (see the module documentation). `func` receives the
@@ -305,20 +318,15 @@ pub fn custom(
         .iter()
         .map(|k| if *k == ArgKind::Point { 2 } else { 1 })
         .collect();
-    Ok(Custom::with_args(
-        PyCustom {
-            residual: PyResidual {
-                func,
-                name,
-                dim,
-                sizes,
-                affine,
-                cache: Mutex::new(None),
-            },
-            kinds,
-        },
-        args,
-    ))
+    let residual = PyResidual {
+        func,
+        name,
+        dim,
+        sizes,
+        affine,
+        cache: Mutex::new(None),
+    };
+    Ok(Custom::boxed(Arc::new(residual), kinds, args))
 }
 
 /// Values, Jacobian and weighted Hessian Σ λᵢ∇²gᵢ of a Python residual at x, computed exactly
@@ -336,7 +344,6 @@ pub fn custom_derivatives(
     dim: usize,
     weights: Vec<f64>,
 ) -> PyResult<(Vec<f64>, Vec<Vec<f64>>, Vec<Vec<f64>>)> {
-    use camber_solve::DynResidual;
     let n: usize = sizes.iter().sum();
     if n != x.len() || weights.len() != dim {
         return Err(errors::input(format!(

@@ -32,19 +32,23 @@
 //! conflicting constraints. [`Sketch::drag`] starts an interactive [`DragSession`].
 //!
 //! # Design
-//! The crate reads top to bottom, each layer using only the ones below it:
+//! The crate reads bottom to top, each layer using only the ones below it (a test reads the
+//! sources to keep it so; docs/architecture.md draws it):
 //!
-//! - [`sketch`]: the graph (entities and constraints as petgraph nodes, an edge from a
-//!   constraint to every entity it reads), components, the dirty set, editing; [`solve`],
-//!   [`analysis`], [`drag`] and [`displacement`] add its solving faces; [`mod@file`] its JSON form.
+//! - the ground (`ground/`): [`ids`], [`vocabulary`], [`errors`], [`entity`] and the evaluation of
+//!   its curves ([`curve_eval`], [`hermite_chain`]), [`lookup`];
+//! - [`residuals`]: residuals several kinds share;
 //! - [`constraints`]: one module per constraint kind (its entities, validation, rows, checks,
-//!   file form and glyph), the [`Constraint`] enum generated from their list, and user kinds
-//!   through [`Custom`].
+//!   file form and glyph), what kinds compile to (pieces, checks of a solved state), helpers
+//!   sibling kinds share, the [`Constraint`] enum generated from their list, and user kinds
+//!   through [`Custom`];
 //! - [`component`]: one connected component as a [`camber_solve::Problem`] built from the
-//!   kinds' pieces, the checks of a solved state, the active set of honest contact, and the one
-//!   solve policy used by solves and drags.
-//! - [`residuals`]: residuals several kinds share; [`curve_eval`], [`entity`], [`vocabulary`],
-//!   [`ids`]: the ground everything stands on.
+//!   kinds' pieces, the active set of honest contact, and the one solve policy used by solves
+//!   and drags;
+//! - [`sketch`]: the graph (entities and constraints as petgraph nodes, an edge from a
+//!   constraint to every entity it reads), components, the dirty set, editing, warnings;
+//! - the sessions (`session/`): [`solve`], [`drag`], [`analysis`] and [`displacement`], the
+//!   sketch's solving faces; [`mod@file`], its JSON form.
 //!
 //! Each entity point (control point, line end, circle centre) is one parameter block (x, y) of
 //! the problem, a circle's radius a block of one; knots and weights are data. `Fixed` binds
@@ -58,24 +62,18 @@
 //! norm, SLSQP or least squares; the component report's `solver` and `reason` say which ran.
 //! The standard benchmark sketches live in the `camber-workloads` crate.
 
-pub mod analysis;
+mod ground;
+mod session;
+
 pub mod component;
 pub mod constraints;
-mod curve_ends;
-pub mod curve_eval;
-pub mod displacement;
-pub mod drag;
-pub mod entity;
-pub mod errors;
 pub mod file;
-pub mod hermite_chain;
-pub mod ids;
-pub mod lookup;
 pub mod residuals;
 pub mod sketch;
-pub mod solve;
-pub mod vocabulary;
-pub mod warnings;
+
+pub use ground::{curve_eval, entity, errors, hermite_chain, ids, lookup, vocabulary};
+pub use session::{analysis, displacement, drag, solve};
+pub use sketch::warnings;
 
 pub use analysis::{ComponentAnalysis, EntityFreedom, ParameterFreedom};
 pub use camber_solve::Priority;

@@ -42,7 +42,7 @@ fn a_budget_does_not_change_a_solve_it_suffices_for() {
     // suffices gives the same answer as none.
     let text = include_str!("../../../examples/sketches/diffuser.json");
     let mut unlimited = with_budget(text, None);
-    let mut limited = with_budget(text, Some(camber_solve::nonlinear::DEFAULT_MAX_EVALUATIONS));
+    let mut limited = with_budget(text, Some(camber_solve::DEFAULT_MAX_EVALUATIONS));
     unlimited.solve().unwrap();
     limited.solve().unwrap();
     assert_eq!(to_json(&unlimited).unwrap(), to_json(&limited).unwrap());

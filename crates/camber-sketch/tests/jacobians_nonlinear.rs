@@ -57,7 +57,7 @@ fn check_step<R: camber_solve::Residual>(r: &R, blocks: &[Vec<f64>], step: f64) 
 /// x + δ·eᵢ along some coordinate i: a kink at x, where no difference quotient is a reference.
 /// Smooth residuals change by about 2δ·|∂²r| there, far below the threshold.
 fn kinked<R: camber_solve::Residual>(r: &R, blocks: &[Vec<f64>], delta: f64) -> bool {
-    use camber_solve::autodiff::{jacobian_with, JacobianMode};
+    use camber_solve::derive::autodiff::{jacobian_with, JacobianMode};
     let dim = r.dim();
     let n: usize = blocks.iter().map(Vec::len).sum();
     let jac_at = |moved: &[Vec<f64>]| -> Vec<f64> {
@@ -287,7 +287,7 @@ impl<R: camber_solve::Residual> camber_solve::Residual for Unnarrowed<R> {
 /// The weighted Hessian over the blocks a residual says it depends on (the p + 1 control points
 /// of u's span) equals the one over every block, exactly: the others contribute zeros.
 fn same_hessian<R: camber_solve::Residual>(r: R, blocks: &[Vec<f64>]) -> bool {
-    use camber_solve::hessian::weighted_hessian;
+    use camber_solve::derive::hessian::weighted_hessian;
     let refs: Vec<&[f64]> = blocks.iter().map(|b| &b[..]).collect();
     let n: usize = blocks.iter().map(Vec::len).sum();
     let weights: Vec<f64> = (0..r.dim()).map(|i| 0.7 - 0.4 * i as f64).collect();

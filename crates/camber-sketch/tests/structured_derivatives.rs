@@ -1,5 +1,5 @@
 //! The curve residuals' structured derivatives (the chain rule through the curve's point and
-//! derivatives, camber_solve::composed) against the hyper-dual reference over every unknown and
+//! derivatives, camber_solve::derive::composed) against the hyper-dual reference over every unknown and
 //! against central differences, at random control points, weights, parameters (inside spans, on
 //! knots, at and beyond the ends), multipliers and fixed/moving block patterns, for B-splines,
 //! NURBS and composite (Hermite-mapped) curves.
@@ -14,8 +14,8 @@ use camber_sketch::constraints::tangent_to_circle::CircleContact;
 use camber_sketch::curve_eval::CurveBasis;
 use camber_sketch::residuals::Param;
 use camber_sketch::{Entity, HermiteChain, Join};
-use camber_solve::autodiff::{jacobian_active, jacobian_with, JacobianMode};
-use camber_solve::hessian::{hyper_dual_hessian, weighted_hessian};
+use camber_solve::derive::autodiff::{jacobian_active, jacobian_with, JacobianMode};
+use camber_solve::derive::hessian::{hyper_dual_hessian, weighted_hessian};
 use camber_solve::Residual;
 use nalgebra::{Point2, Vector2};
 use proptest::prelude::*;

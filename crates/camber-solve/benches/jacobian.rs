@@ -2,7 +2,7 @@
 //! `DualSVec64<N>` pass per block and one pass for the whole residual.
 #![allow(missing_docs)] // criterion's macros generate undocumented items
 
-use camber_solve::autodiff::{jacobian_with, JacobianMode};
+use camber_solve::derive::autodiff::{jacobian_with, JacobianMode};
 use camber_solve::scalar::cst;
 use camber_solve::{Residual, Scalar};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};

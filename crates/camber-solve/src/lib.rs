@@ -35,12 +35,27 @@
 //! ```
 //!
 //! # Design
+//! The crate is six layers, each importing only the ones before it (docs/architecture.md
+//! draws them, and a test reads the sources to keep it so):
+//!
+//! 1. [`model`]: problems, ids, options, budget, reports, errors, the residual traits;
+//! 2. [`mod@derive`]: exact Jacobians and Hessians by dual numbers, the chain rule of composed
+//!    residuals, the blanket [`DynResidual`] face of every [`Residual`];
+//! 3. `linalg`: sparse matrices, the reduced map x = A·z + c, the evaluator, the minimum-norm
+//!    step, band and LU factorizations, projected conjugate gradients;
+//! 4. `analysis`: the DOF analysis (rank, redundant and conflicting rows, free unknowns);
+//! 5. `solvers`: linear, Newton, SLSQP, least squares, soft, priority tiers;
+//! 6. [`policy`]: the one decision of which solver runs, validation and write-back.
+//!
+//! Only `model`, `derive` and `policy` are public; what users need from the others is
+//! re-exported here.
+//!
 //! - Unknowns are reduced by an affine map x = A·z + c (fixed, merged and eliminated unknowns,
-//!   see [`problem`] and [`reduced`]); solves run over z with a diagonal weight W.
+//!   see [`Problem`] and [`ReducedMap`]); solves run over z with a diagonal weight W.
 //! - [`Residual`] is generic; its object-safe face [`DynResidual`] is blanket implemented and is
-//!   what the problem stores. Dual types stay inside [`autodiff`].
-//! - Jacobians are assembled sparse ([`SparseMatrix`]); the minimum-norm step
-//!   ([`MinNormFactorization`]) is dense for small problems and sparse (faer) for large ones.
+//!   what the problem stores. Dual types stay inside [`mod@derive`].
+//! - Jacobians are assembled sparse ([`SparseMatrix`]); the minimum-norm step is dense for
+//!   small problems and sparse (faer) for large ones.
 //! - Every fallible call returns [`Result`]; [`solve_linear`] never changes the problem on error.
 //! - [`solve_linear`] handles affine residuals only (nonlinear ones are refused with
 //!   [`Error::NonlinearNotAvailable`]); [`solve()`] selects the path from the DOF analysis:
@@ -48,62 +63,34 @@
 //!   (feature `nlopt`, on by default), and on request a soft least-squares compromise for
 //!   conflicting systems.
 
-mod accidental;
-pub mod analysis;
-pub mod autodiff;
-mod block_analysis;
-mod budget;
-pub mod composed;
-mod envelope;
-pub mod errors;
-mod free_columns;
-mod held_step;
-pub mod hessian;
-pub mod ids;
-pub mod linear;
-pub mod lsq;
-pub mod min_norm;
-pub mod normal;
-pub mod options;
-pub mod priority;
-pub mod problem;
-pub(crate) mod projected_cg;
-pub mod reduced;
-pub mod report;
-pub mod residual;
-pub mod scalar;
-pub mod sparse;
-pub mod structure;
-#[cfg(feature = "testing")]
-pub mod testing;
+pub mod derive;
+pub mod model;
+pub mod policy;
 
-pub use analysis::{Dependency, DofAnalysis};
-pub use errors::{Error, Result};
-pub use ids::{AuxId, BlockId, ConstraintId, ResidualId, UnknownId, Var};
-pub use linear::solve_linear;
-pub use lsq::{solve_least_squares, LsqOptions, LsqReport};
-pub use min_norm::MinNormFactorization;
-pub use normal::NormalCache;
-pub use options::{CancelFlag, Options};
-pub use priority::Priority;
-pub use problem::{Binding, Problem, ProblemState};
-pub use reduced::{Linearization, ReducedMap};
-pub use report::{ConstraintResidual, Selection, SolveReport, SolverKind, Status, TierOutcome};
-pub use residual::{DynResidual, Residual};
-pub use scalar::Scalar;
-pub use sparse::SparseMatrix;
-pub(crate) mod evaluator;
-pub(crate) mod lu_triangles;
-pub mod newton;
-pub mod nonlinear;
-pub mod objective;
-pub mod selection;
-#[cfg(feature = "nlopt")]
-pub(crate) mod slsqp;
-pub(crate) mod soft;
-pub(crate) mod sparse_lu;
-pub(crate) mod square;
-pub use newton::NewtonWorkspace;
-pub use nonlinear::{NonlinearOptions, SolverChoice};
-pub use objective::{Objective, UserObjective};
-pub use selection::{solve, solve_newton, solve_newton_from};
+mod analysis;
+mod linalg;
+mod solvers;
+
+#[cfg(feature = "testing")]
+pub use derive::testing;
+pub use model::scalar;
+
+pub use model::{
+    slsqp_supports, AuxId, Binding, BlockId, ConstraintId, ConstraintResidual, DynResidual, Error,
+    CancelFlag, NonlinearOptions, Objective, Options, Priority, Problem, ProblemState, Residual, ResidualId,
+    Result, Scalar, Selection, SolveReport, SolverChoice, SolverKind, Stamps, Status, TierOutcome,
+    UnknownId, UserObjective, Var, DEFAULT_MAX_EVALUATIONS, SLSQP_MAX_UNKNOWNS,
+};
+pub use policy::{solve, solve_newton, solve_newton_from};
+
+pub use analysis::structure;
+pub use analysis::{
+    analyze, analyze_rows, analyze_rows_sparse, Dependency, DependentRow, DofAnalysis, RowAnalysis,
+    StructureSummary, DENSE_ANALYSIS_MAX_ENTRIES,
+};
+pub use linalg::min_norm::MinNormFactorization;
+pub use linalg::reduced::{Linearization, ReducedMap};
+pub use linalg::sparse::SparseMatrix;
+pub use solvers::linear::solve_linear;
+pub use solvers::lsq::{solve_least_squares, LsqOptions, LsqReport};
+pub use solvers::newton::NewtonWorkspace;

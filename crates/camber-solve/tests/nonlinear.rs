@@ -465,7 +465,7 @@ fn issue_11_slsqp_is_refused_outside_its_limits() {
 
 #[test]
 fn issue_11_slsqp_limits() {
-    use camber_solve::nonlinear::{slsqp_supports, SLSQP_MAX_UNKNOWNS};
+    use camber_solve::{slsqp_supports, SLSQP_MAX_UNKNOWNS};
     assert!(slsqp_supports(3, 3).is_ok());
     assert!(slsqp_supports(SLSQP_MAX_UNKNOWNS, SLSQP_MAX_UNKNOWNS).is_ok());
     assert!(slsqp_supports(2, 3).is_err());

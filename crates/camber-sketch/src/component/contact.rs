@@ -7,14 +7,14 @@ use std::sync::Arc;
 
 use camber_solve::{BlockId, ConstraintId, MinNormFactorization};
 
-use super::check::{point_tangent, side_width, ContactSpec, ContactTarget};
-use super::piece::{curve_slots, Piece, Slot};
 use super::problem::ComponentProblem;
-use crate::errors::{Error, Result};
-use crate::lookup::EntityLookup;
+use crate::constraints::check::{point_tangent, side_width, ContactSpec, ContactTarget};
+use crate::constraints::piece::{curve_slots, Piece, Slot};
+use crate::ground::errors::{Error, Result};
+use crate::ground::lookup::EntityLookup;
+use crate::ground::vocabulary::{CircleSide, Contact, LineSide, Rotation};
 use crate::residuals::clearance::{Clearance, TangentSpeed, Target, SPEED_FLOOR};
 use crate::residuals::Param;
-use crate::vocabulary::{CircleSide, Contact, LineSide, Rotation};
 
 /// Components with at most this many reduced unknowns factorize J·W⁻¹·Jᵀ densely for the
 /// multipliers.
@@ -134,7 +134,8 @@ impl ComponentProblem {
                 ContactTarget::Circle {
                     circle, rotation, ..
                 } => {
-                    let Some(crate::Entity::Circle { center, .. }) = find(circle) else {
+                    let Some(crate::ground::entity::Entity::Circle { center, .. }) = find(circle)
+                    else {
                         continue;
                     };
                     let turn = (p[0] - center.x) * t[1] - (p[1] - center.y) * t[0];
@@ -144,7 +145,7 @@ impl ComponentProblem {
                     }
                 }
                 ContactTarget::Line { line, sense, .. } => {
-                    let Some(crate::Entity::Line([a, b])) = find(line) else {
+                    let Some(crate::ground::entity::Entity::Line([a, b])) = find(line) else {
                         continue;
                     };
                     sense.sign() * (t[0] * (b.x - a.x) + t[1] * (b.y - a.y)) < 0.0
@@ -266,7 +267,7 @@ impl ComponentProblem {
 mod tests {
     use super::*;
     use crate::constraints::{Fixed, TangentToLine};
-    use crate::vocabulary::{Contact, Sense};
+    use crate::ground::vocabulary::{Contact, Sense};
     use crate::{PointRef, Sketch};
     use camber_geom::BezierCurve2;
     use nalgebra::Point2;

@@ -19,8 +19,8 @@
 
 use camber_solve::{BlockId, ConstraintId};
 
-use super::piece::Piece;
-use crate::errors::Result;
+use crate::constraints::piece::Piece;
+use crate::ground::errors::Result;
 
 /// The merges of one component: which pieces became bindings and which were redundant.
 #[derive(Debug, Default)]
@@ -38,7 +38,7 @@ pub(crate) struct Merges {
 /// or `None` for any other piece.
 pub(crate) fn coincidence(
     piece: &Piece,
-    block: impl Fn(crate::ids::EntityId, usize) -> Result<BlockId>,
+    block: impl Fn(crate::ground::ids::EntityId, usize) -> Result<BlockId>,
 ) -> Result<Option<(BlockId, BlockId)>> {
     let Piece::Combination { terms, target, .. } = piece else {
         return Ok(None);
@@ -114,7 +114,7 @@ impl Classes<'_> {
 pub(crate) fn plan(
     pieces: &[(ConstraintId, &[Piece])],
     blocks: &[BlockId],
-    block: impl Fn(crate::ids::EntityId, usize) -> Result<BlockId> + Copy,
+    block: impl Fn(crate::ground::ids::EntityId, usize) -> Result<BlockId> + Copy,
     anchored: &[bool],
     targets: &[bool],
 ) -> Result<Merges> {

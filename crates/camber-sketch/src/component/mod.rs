@@ -1,23 +1,21 @@
 //! One connected component of a sketch as a solver problem.
 //!
-//! The sketch compiles each constraint into pieces (`piece`) ([`crate::constraints`]); this module
-//! turns a component's pieces into a [`camber_solve::Problem`] ([`problem`], with coincident
-//! points merged by `merge`), checks a solved state ([`check`]), keeps contacts honest with an
-//! active set of extra rows (`contact`), and runs the one solve policy every caller uses
-//! (`policy`): the sketch's solve and its drag sessions.
+//! The sketch compiles each constraint into pieces ([`crate::constraints`]); this module turns
+//! a component's pieces into a [`camber_solve::Problem`] ([`problem`], with coincident points
+//! merged by `merge`), keeps contacts honest with an active set of extra rows (`contact`), and
+//! runs the one solve policy every caller uses (`policy`): the sketch's solve and its drag
+//! sessions. The checks of a solved state ([`SolvedCheck`]) are the kinds' own, in
+//! [`crate::constraints`].
 
-pub mod check;
 pub(crate) mod contact;
 pub(crate) mod merge;
-pub(crate) mod piece;
 pub(crate) mod policy;
 pub mod problem;
-pub(crate) mod starts;
 
-pub use check::{ContactSpec, ContactTarget, SolvedCheck, SolvedState};
+pub use crate::constraints::check::{ContactSpec, ContactTarget, SolvedCheck, SolvedState};
 pub use problem::{ComponentProblem, DRAG_CONSTRAINT};
 
-use crate::ids::{ConstraintId, EntityId};
+use crate::ground::ids::{ConstraintId, EntityId};
 
 /// A connected component of the sketch graph: entities and the constraints between them,
 /// each sorted by id.

@@ -5,7 +5,7 @@
 //!    [`camber_solve::solve()`], whose selection runs from the DOF analysis (Newton minimum
 //!    norm, SLSQP within its limits, least squares). A warm start (a drag) first tries Newton
 //!    from the previous solution with the pull-back toward it, then that selection.
-//! 2. **Checks.** Tangent orientations, then every [`super::check::SolvedCheck`] on the solved
+//! 2. **Checks.** Tangent orientations, then every [`crate::constraints::check::SolvedCheck`] on the solved
 //!    entities (contacts keep their side and travel direction, no cusp).
 //! 3. **Active set of honest contact** ([`crate::residuals::clearance`]): a crossing adds the
 //!    clearance row on its side of the contact, a cusp the floor on the contact's tangent speed,
@@ -24,10 +24,10 @@ use camber_solve::{solve_linear, NewtonWorkspace, Options, SolveReport};
 
 use super::contact::ActiveRow;
 use super::problem::ComponentProblem;
-use crate::entity::Entity;
-use crate::errors::Result;
-use crate::ids::EntityId;
-use crate::lookup::EntityLookup;
+use crate::ground::entity::Entity;
+use crate::ground::errors::Result;
+use crate::ground::ids::EntityId;
+use crate::ground::lookup::EntityLookup;
 
 /// Active rows (clearances of contacts that crossed, speed floors of contacts that collapsed or
 /// started reversed) added per component solve before giving up.
@@ -114,7 +114,10 @@ impl ComponentProblem {
 
     /// Adds the constraints whose coincidence joined points already merged to a list of
     /// redundant constraints (sorted, without repeats).
-    pub(crate) fn name_merged_redundant(&self, redundant: &mut Vec<crate::ids::ConstraintId>) {
+    pub(crate) fn name_merged_redundant(
+        &self,
+        redundant: &mut Vec<crate::ground::ids::ConstraintId>,
+    ) {
         redundant.extend(self.merged_redundant.iter().copied());
         redundant.sort_unstable();
         redundant.dedup();

@@ -18,17 +18,16 @@ use camber_solve::{BlockId, ConstraintId, Problem, Var};
 use nalgebra::Point2;
 use smallvec::SmallVec;
 
-use super::check::SolvedCheck;
-use super::piece::{ETerms, Piece, Slot};
 use super::Component;
-use crate::entity::Entity;
-use crate::errors::{Error, Result};
-use crate::ids::{EntityId, PointRef};
-use crate::lookup::EntityLookup;
+use crate::constraints::check::SolvedCheck;
+use crate::constraints::piece::{ETerms, Piece, Slot};
+use crate::ground::entity::Entity;
+use crate::ground::errors::{Error, Result};
+use crate::ground::ids::{EntityId, PointRef};
+use crate::ground::lookup::EntityLookup;
 use crate::residuals::{DirectionCross, LineTangency, PointCombination};
 
-/// The constraint id owning the rows that pin a dragged point.
-pub const DRAG_CONSTRAINT: ConstraintId = ConstraintId(u64::MAX);
+pub use crate::ground::ids::DRAG_CONSTRAINT;
 
 /// Blocks of one entity.
 /// What of an entity can still move with its component's constraints held (to first order).
@@ -402,7 +401,7 @@ fn reads_other_free(piece: &Piece) -> bool {
 pub(crate) fn build(
     lookup: &dyn EntityLookup,
     component: &Component,
-    compiled: &[(ConstraintId, super::piece::Pieces)],
+    compiled: &[(ConstraintId, crate::constraints::piece::Pieces)],
     relaxable: &[ConstraintId],
     pin: Option<PointRef>,
 ) -> Result<ComponentProblem> {
@@ -667,7 +666,7 @@ pub(crate) fn build(
         for (j, c) in &t {
             terms.push((r.entity(), *j, *c));
         }
-        let at = crate::entity::combine(lookup.lookup(r.entity())?.points(), &t);
+        let at = crate::ground::entity::combine(lookup.lookup(r.entity())?.points(), &t);
         cp.add_piece(
             DRAG_CONSTRAINT,
             &Piece::Combination {
@@ -709,7 +708,7 @@ impl ComponentProblem {
 
     /// Which points and scalars of each entity can still move with the constraints held (to
     /// first order), given the free columns of the DOF analysis (reduced unknowns, see
-    /// [`camber_solve::analysis::RowAnalysis::free_columns`]): an unknown is free when its
+    /// [`camber_solve::RowAnalysis::free_columns`]): an unknown is free when its
     /// reduced form x = A·z + c reads a free column. Entities with nothing free are left out.
     ///
     /// # Errors
@@ -828,13 +827,15 @@ impl ComponentProblem {
             for b in &entry.free {
                 free.push(self.block_value(x, *b)?);
             }
-            entry.check.verify(&super::check::SolvedState {
-                owner: entry.owner,
-                solved: &map,
-                before,
-                free: &free,
-                penetration: tolerance,
-            })?;
+            entry
+                .check
+                .verify(&crate::constraints::check::SolvedState {
+                    owner: entry.owner,
+                    solved: &map,
+                    before,
+                    free: &free,
+                    penetration: tolerance,
+                })?;
         }
         Ok(())
     }

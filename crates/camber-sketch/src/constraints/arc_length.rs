@@ -17,10 +17,10 @@ use serde::{Deserialize, Serialize};
 use super::compiler::positive;
 use super::glyph::{self, Glyph};
 use super::{Compiler, ConstraintKind, Entities};
-use crate::curve_eval::CurveBasis;
-use crate::errors::Result;
-use crate::ids::EntityId;
-use crate::lookup::EntityLookup;
+use crate::ground::curve_eval::CurveBasis;
+use crate::ground::errors::Result;
+use crate::ground::ids::EntityId;
+use crate::ground::lookup::EntityLookup;
 use crate::residuals::curve::dot;
 
 /// Two successive rules agreeing to this relative difference end the choice of S.
@@ -180,14 +180,14 @@ impl Residual for LengthOf {
 }
 
 /// The distinct knots of a curve over its domain (its breakpoints), increasing.
-pub(crate) fn breakpoints(e: &crate::entity::Entity) -> Vec<f64> {
+pub(crate) fn breakpoints(e: &crate::ground::entity::Entity) -> Vec<f64> {
     let (a, b) = e.domain().unwrap_or((0.0, 1.0));
     let mut out = vec![a];
     let chain_knots;
     let knots: &[f64] = match e {
-        crate::entity::Entity::BSpline(c) => c.knots().as_slice(),
-        crate::entity::Entity::Nurbs(c) => c.knots().as_slice(),
-        crate::entity::Entity::Composite(c) => {
+        crate::ground::entity::Entity::BSpline(c) => c.knots().as_slice(),
+        crate::ground::entity::Entity::Nurbs(c) => c.knots().as_slice(),
+        crate::ground::entity::Entity::Composite(c) => {
             chain_knots = c.knots();
             chain_knots.as_slice()
         }

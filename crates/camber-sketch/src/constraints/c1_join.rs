@@ -5,13 +5,12 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::compiler::distinct;
-use super::glyph::{self, Glyph};
+use super::glyph::Glyph;
+use super::shared::joins::{join_mark, parametric_join};
 use super::{Compiler, ConstraintKind, Entities};
-use crate::component::piece::ETerms;
-use crate::errors::Result;
-use crate::ids::{EntityId, PointRef};
-use crate::lookup::EntityLookup;
+use crate::ground::errors::Result;
+use crate::ground::ids::EntityId;
+use crate::ground::lookup::EntityLookup;
 
 /// `first` ends where `second` starts, with equal first derivatives there (four rows).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -21,39 +20,6 @@ pub struct C1Join {
     pub first: EntityId,
     /// The curve that starts at the joint.
     pub second: EntityId,
-}
-
-/// Writes C₁⁽ᵏ⁾(b₁) − C₂⁽ᵏ⁾(a₂) = 0 for k = 0 … `order` (two affine rows each).
-pub(crate) fn parametric_join(
-    cx: &mut Compiler<'_>,
-    name: &'static str,
-    (first, second): (EntityId, EntityId),
-    order: usize,
-) -> Result<()> {
-    distinct(first, second)?;
-    let (_, b) = cx.domain(first)?;
-    let (a, _) = cx.domain(second)?;
-    let mut joint = ETerms::new();
-    cx.point_terms(PointRef::End(first), 1.0, &mut joint)?;
-    cx.point_terms(PointRef::Start(second), -1.0, &mut joint)?;
-    cx.combination(name, joint, [0.0; 2]);
-    for k in 1..=order {
-        let mut terms = cx.curve_derivative_terms(first, b, k)?;
-        for (e, j, c) in cx.curve_derivative_terms(second, a, k)? {
-            terms.push((e, j, -c));
-        }
-        cx.combination(name, terms, [0.0; 2]);
-    }
-    Ok(())
-}
-
-/// The glyph of a parametric join: its name beside the joint.
-pub(crate) fn join_mark(at: &dyn EntityLookup, first: EntityId, text: &'static str) -> Result<Vec<Glyph>> {
-    let b = glyph::domain_end(at, first, true)?;
-    Ok(vec![
-        glyph::tangent_arrow(at, first, b)?,
-        Glyph::Mark(glyph::curve_point(at, first, b)?, text),
-    ])
 }
 
 impl ConstraintKind for C1Join {

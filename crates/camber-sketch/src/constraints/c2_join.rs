@@ -6,12 +6,12 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::c1_join::{join_mark, parametric_join};
+use super::shared::joins::{join_mark, parametric_join};
 use super::glyph::Glyph;
 use super::{Compiler, ConstraintKind, Entities};
-use crate::errors::Result;
-use crate::ids::EntityId;
-use crate::lookup::EntityLookup;
+use crate::ground::errors::Result;
+use crate::ground::ids::EntityId;
+use crate::ground::lookup::EntityLookup;
 
 /// `first` ends where `second` starts, with equal first and second derivatives (six rows).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]

@@ -8,10 +8,10 @@ use serde::{Deserialize, Serialize};
 
 use super::glyph::{self, Glyph};
 use super::{Compiler, ConstraintKind, Entities};
-use crate::component::piece::ETerms;
-use crate::errors::Result;
-use crate::ids::PointRef;
-use crate::lookup::EntityLookup;
+use crate::constraints::piece::ETerms;
+use crate::ground::errors::Result;
+use crate::ground::ids::PointRef;
+use crate::ground::lookup::EntityLookup;
 
 /// Two points coincide: a − b = 0 (two rows).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]

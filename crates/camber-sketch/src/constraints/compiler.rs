@@ -11,15 +11,15 @@ use std::sync::Arc;
 use camber_solve::DynResidual;
 use nalgebra::{Point2, Vector2};
 
-use crate::component::check::SolvedCheck;
-use crate::component::piece::{curve_slots, ETerms, Piece, Pieces, Slot};
-use crate::curve_eval::CurveBasis;
-use crate::entity::{combine, Entity, Terms};
-use crate::errors::{Error, Result};
-use crate::ids::{EntityId, PointRef};
-use crate::lookup::EntityLookup;
+use crate::constraints::check::SolvedCheck;
+use crate::constraints::piece::{curve_slots, ETerms, Piece, Pieces, Slot};
+use crate::ground::curve_eval::CurveBasis;
+use crate::ground::entity::{combine, Entity, Terms};
+use crate::ground::errors::{Error, Result};
+use crate::ground::ids::{EntityId, PointRef};
+use crate::ground::lookup::EntityLookup;
+use crate::ground::vocabulary::Contact;
 use crate::residuals::Param;
-use crate::vocabulary::Contact;
 
 /// The compilation of one constraint: the entities it may read, and the pieces it wrote.
 pub struct Compiler<'a> {
@@ -76,6 +76,11 @@ impl<'a> Compiler<'a> {
             terms,
             target,
         });
+    }
+
+    /// The value of the sketch's named parameter `name`, if it has one.
+    pub(crate) fn parameter(&self, name: &str) -> Option<f64> {
+        self.lookup.parameter(name)
     }
 
     /// An entity.
@@ -258,9 +263,9 @@ impl<'a> Compiler<'a> {
 }
 
 /// The terms of C⁽ᵏ⁾(u) in closed form when u is an end of the domain of a clamped
-/// polynomial curve ([`crate::curve_ends`]); `None` where the general evaluation is needed.
+/// polynomial curve ([`crate::ground::curve_ends`]); `None` where the general evaluation is needed.
 fn end_terms(e: &Entity, u: f64, order: usize) -> Option<Terms> {
-    crate::curve_ends::end_derivative(e, crate::curve_ends::which_end(e, u)?, order)
+    crate::ground::curve_ends::end_derivative(e, crate::ground::curve_ends::which_end(e, u)?, order)
 }
 
 fn with_entity(id: EntityId, terms: &Terms, sign: f64, out: &mut ETerms) {
@@ -284,7 +289,7 @@ pub(crate) fn finite(what: &'static str, value: f64) -> Result<f64> {
 
 /// A finite, non-zero direction as an array.
 pub(crate) fn check_direction(what: &'static str, v: &Vector2<f64>) -> Result<[f64; 2]> {
-    crate::entity::check_finite2(what, 0, [v.x, v.y])?;
+    crate::ground::entity::check_finite2(what, 0, [v.x, v.y])?;
     if v.x.abs() <= 0.0 && v.y.abs() <= 0.0 {
         return Err(Error::ZeroDirection {
             what,

@@ -7,10 +7,10 @@ use serde::{Deserialize, Serialize};
 use super::compiler::distinct;
 use super::glyph::{self, Glyph};
 use super::{Compiler, ConstraintKind, Entities};
-use crate::component::piece::ETerms;
-use crate::errors::Result;
-use crate::ids::{EntityId, PointRef};
-use crate::lookup::EntityLookup;
+use crate::constraints::piece::ETerms;
+use crate::ground::errors::Result;
+use crate::ground::ids::{EntityId, PointRef};
+use crate::ground::lookup::EntityLookup;
 
 /// The two circles have the same centre (two rows).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]

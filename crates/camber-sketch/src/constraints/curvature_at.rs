@@ -11,11 +11,11 @@ use serde::{Deserialize, Serialize};
 use super::compiler::finite;
 use super::glyph::{self, Glyph};
 use super::{Compiler, ConstraintKind, Entities};
-use crate::component::piece::Slot;
-use crate::curve_eval::CurveBasis;
-use crate::errors::{Error, Result};
-use crate::ids::EntityId;
-use crate::lookup::EntityLookup;
+use crate::constraints::piece::Slot;
+use crate::ground::curve_eval::CurveBasis;
+use crate::ground::errors::{Error, Result};
+use crate::ground::ids::EntityId;
+use crate::ground::lookup::EntityLookup;
 use crate::residuals::curve::curvature;
 
 /// κ(u) = `curvature` (one row).

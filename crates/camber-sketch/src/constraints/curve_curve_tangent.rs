@@ -14,14 +14,14 @@ use serde::{Deserialize, Serialize};
 use super::compiler::distinct;
 use super::glyph::{self, Glyph};
 use super::{Compiler, ConstraintKind, Entities};
-use crate::component::check::{point_tangent, SolvedCheck, SolvedState};
-use crate::curve_eval::CurveBasis;
-use crate::errors::Result;
-use crate::ids::EntityId;
-use crate::lookup::EntityLookup;
-use super::angle::angle_between;
+use crate::constraints::check::{point_tangent, SolvedCheck, SolvedState};
+use crate::ground::curve_eval::CurveBasis;
+use crate::ground::errors::Result;
+use crate::ground::ids::EntityId;
+use crate::ground::lookup::EntityLookup;
+use super::shared::angles::angle_between;
 use crate::residuals::curve::{curve_at, curve_block_sizes, curve_support, Param};
-use crate::vocabulary::{Contact, Sense};
+use crate::ground::vocabulary::{Contact, Sense};
 
 /// Two curves touch: C₁(u) = C₂(v) and their tangents there are parallel with the given sense
 /// (C₁′·C₂′ > 0 for [`Sense::Agree`]); u and v may be free (three rows).

@@ -9,11 +9,11 @@ use serde::{Deserialize, Serialize};
 use super::compiler::check_direction;
 use super::glyph::{self, Glyph};
 use super::{Compiler, ConstraintKind, Entities};
-use crate::component::piece::Piece;
-use crate::errors::Result;
-use crate::ids::EntityId;
-use crate::lookup::EntityLookup;
-use crate::vocabulary::{xy_vector, Sense};
+use crate::constraints::piece::Piece;
+use crate::ground::errors::Result;
+use crate::ground::ids::EntityId;
+use crate::ground::lookup::EntityLookup;
+use crate::ground::vocabulary::{xy_vector, Sense};
 
 /// cross(C′(u), T) = 0 with sense·(C′(u)·T) > 0 (one row).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]

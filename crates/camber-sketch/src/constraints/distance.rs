@@ -9,10 +9,10 @@ use serde::{Deserialize, Serialize};
 use super::compiler::positive;
 use super::glyph::{self, Glyph};
 use super::{Compiler, ConstraintKind, Entities};
-use crate::component::piece::Slot;
-use crate::errors::{Error, Result};
-use crate::ids::PointRef;
-use crate::lookup::EntityLookup;
+use crate::constraints::piece::Slot;
+use crate::ground::errors::{Error, Result};
+use crate::ground::ids::PointRef;
+use crate::ground::lookup::EntityLookup;
 use crate::residuals::curve::{dot, sub};
 
 /// Two points are `distance` (> 0) apart (one row).

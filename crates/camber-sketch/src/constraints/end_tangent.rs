@@ -7,12 +7,12 @@ use nalgebra::Vector2;
 use serde::{Deserialize, Serialize};
 
 use super::glyph::{self, Glyph};
-use super::start_tangent::end_tangency;
+use super::shared::joins::end_tangency;
 use super::{Compiler, ConstraintKind, Entities};
-use crate::errors::Result;
-use crate::ids::{EntityId, PointRef};
-use crate::lookup::EntityLookup;
-use crate::vocabulary::{xy_vector, Sense, TangentForm};
+use crate::ground::errors::Result;
+use crate::ground::ids::{EntityId, PointRef};
+use crate::ground::lookup::EntityLookup;
+use crate::ground::vocabulary::{xy_vector, Sense, TangentForm};
 
 /// The end tangent C′(b) is parallel to T with the given sense.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]

@@ -7,13 +7,13 @@ use camber_solve::{Residual, Scalar};
 use serde::{Deserialize, Serialize};
 
 use super::glyph::Glyph;
-use super::horizontal::pair_mark;
+use super::shared::axes::pair_mark;
+use super::shared::axes::{pair_slots};
 use super::{Compiler, ConstraintKind, Entities};
-use crate::component::piece::Slot;
-use crate::errors::{Error, Result};
-use crate::lookup::EntityLookup;
+use crate::ground::errors::Result;
+use crate::ground::lookup::EntityLookup;
 use crate::residuals::curve::{dot, sub};
-use crate::vocabulary::PointPair;
+use crate::ground::vocabulary::PointPair;
 
 /// The two segments have the same length (one row).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -43,19 +43,6 @@ impl Residual for LengthsEqual {
         let (d1, d2) = (sub(x[1], x[0]), sub(x[3], x[2]));
         out[0] = dot(d1, d1).sqrt() - dot(d2, d2).sqrt();
     }
-}
-
-/// The single point blocks of a pair, refusing a pair of one point twice.
-pub(crate) fn pair_slots(cx: &Compiler<'_>, pair: PointPair) -> Result<[Slot; 2]> {
-    if let PointPair::Line(l) = pair {
-        cx.line(l)?;
-    }
-    let [a, b] = pair.points();
-    let ((ea, ja), (eb, jb)) = (cx.single_block(a)?, cx.single_block(b)?);
-    if (ea, ja) == (eb, jb) {
-        return Err(Error::SameEntity { entity: ea });
-    }
-    Ok([Slot::Point(ea, ja), Slot::Point(eb, jb)])
 }
 
 impl ConstraintKind for EqualLength {

@@ -8,10 +8,10 @@ use serde::{Deserialize, Serialize};
 use super::compiler::distinct;
 use super::glyph::{self, Glyph};
 use super::{Compiler, ConstraintKind, Entities};
-use crate::component::piece::Slot;
-use crate::errors::Result;
-use crate::ids::EntityId;
-use crate::lookup::EntityLookup;
+use crate::constraints::piece::Slot;
+use crate::ground::errors::Result;
+use crate::ground::ids::EntityId;
+use crate::ground::lookup::EntityLookup;
 
 /// The two circles' radii are equal (one row).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]

@@ -9,11 +9,11 @@ use serde::{Deserialize, Serialize};
 
 use super::glyph::{self, Glyph};
 use super::{Compiler, ConstraintKind, Entities};
-use crate::component::piece::{ETerms, Piece};
-use crate::errors::Result;
-use crate::ids::{EntityId, PointRef};
-use crate::lookup::EntityLookup;
-use crate::vocabulary::FixTarget;
+use crate::constraints::piece::{ETerms, Piece};
+use crate::ground::errors::Result;
+use crate::ground::ids::{EntityId, PointRef};
+use crate::ground::lookup::EntityLookup;
+use crate::ground::vocabulary::FixTarget;
 
 /// The target does not move.
 ///

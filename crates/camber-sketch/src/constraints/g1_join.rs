@@ -12,11 +12,11 @@ use serde::{Deserialize, Serialize};
 use super::compiler::check_direction;
 use super::glyph::{self, Glyph};
 use super::{Compiler, ConstraintKind, Entities};
-use crate::component::piece::{ETerms, Piece};
-use crate::errors::Result;
-use crate::ids::{EntityId, PointRef};
-use crate::lookup::EntityLookup;
-use crate::vocabulary::xy_vector;
+use crate::constraints::piece::{ETerms, Piece};
+use crate::ground::errors::Result;
+use crate::ground::ids::{EntityId, PointRef};
+use crate::ground::lookup::EntityLookup;
+use crate::ground::vocabulary::xy_vector;
 
 /// The end of `first` coincides with the start of `second`, and both tangents there are
 /// parallel to the fixed joint direction d and point along it (four rows).

@@ -8,14 +8,14 @@ use camber_solve::scalar::cst;
 use camber_solve::{Residual, Scalar};
 use serde::{Deserialize, Serialize};
 
-use super::g1_join_free::{joint_bases, joint_coincidence, verify_same_sense, TangentsParallel};
+use super::shared::joins::{joint_bases, joint_coincidence, verify_same_sense, TangentsParallel};
 use super::glyph::{self, Glyph};
 use super::{Compiler, ConstraintKind, Entities};
-use crate::component::check::{SolvedCheck, SolvedState};
-use crate::curve_eval::CurveBasis;
-use crate::errors::Result;
-use crate::ids::EntityId;
-use crate::lookup::EntityLookup;
+use crate::constraints::check::{SolvedCheck, SolvedState};
+use crate::ground::curve_eval::CurveBasis;
+use crate::ground::errors::Result;
+use crate::ground::ids::EntityId;
+use crate::ground::lookup::EntityLookup;
 use crate::residuals::curve::curvature;
 
 /// [`G1JoinFree`](super::G1JoinFree) plus equal signed curvature on both sides of the joint

@@ -4,10 +4,10 @@
 
 use nalgebra::{Point2, Vector2};
 
-use crate::entity::{combine, Entity};
-use crate::errors::{Error, Result};
-use crate::ids::{EntityId, PointRef};
-use crate::lookup::EntityLookup;
+use crate::ground::entity::{combine, Entity};
+use crate::ground::errors::{Error, Result};
+use crate::ground::ids::{EntityId, PointRef};
+use crate::ground::lookup::EntityLookup;
 
 /// A constraint's mark in the picture, in model coordinates.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -4,13 +4,13 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::glyph::{self, Glyph};
+use super::glyph::Glyph;
+use super::shared::axes::{pair_mark, axis_row};
 use super::{Compiler, ConstraintKind, Entities};
-use crate::component::piece::{ETerms, Piece};
-use crate::errors::{Error, Result};
-use crate::ids::EntityId;
-use crate::lookup::EntityLookup;
-use crate::vocabulary::PointPair;
+use crate::ground::errors::Result;
+use crate::ground::ids::EntityId;
+use crate::ground::lookup::EntityLookup;
+use crate::ground::vocabulary::PointPair;
 
 /// The two points of `of` have the same y (one row).
 ///
@@ -41,40 +41,6 @@ impl Horizontal {
             of: PointPair::Line(line),
         }
     }
-}
-
-/// Writes cross(b − a, d) = 0 for the pair (one affine row): `d` = (1, 0) levels them, (0, 1)
-/// stacks them.
-pub(crate) fn axis_row(
-    cx: &mut Compiler<'_>,
-    name: &'static str,
-    of: PointPair,
-    direction: [f64; 2],
-) -> Result<()> {
-    if let PointPair::Line(l) = of {
-        cx.line(l)?;
-    }
-    let [a, b] = of.points();
-    let mut terms = ETerms::new();
-    cx.point_terms(b, 1.0, &mut terms)?;
-    cx.point_terms(a, -1.0, &mut terms)?;
-    if a == b {
-        return Err(Error::SameEntity { entity: a.entity() });
-    }
-    cx.push(Piece::Cross {
-        name,
-        terms,
-        direction,
-        orient: None,
-    });
-    Ok(())
-}
-
-/// A text mark at the middle of a pair.
-pub(crate) fn pair_mark(at: &dyn EntityLookup, of: PointPair, text: &'static str) -> Result<Glyph> {
-    let [a, b] = of.points();
-    let (p, q) = (glyph::point(at, a)?, glyph::point(at, b)?);
-    Ok(Glyph::Mark(nalgebra::center(&p, &q), text))
 }
 
 impl ConstraintKind for Horizontal {

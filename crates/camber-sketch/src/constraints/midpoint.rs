@@ -5,11 +5,11 @@ use serde::{Deserialize, Serialize};
 
 use super::glyph::{self, Glyph};
 use super::{Compiler, ConstraintKind, Entities};
-use crate::component::piece::ETerms;
-use crate::errors::Result;
-use crate::ids::PointRef;
-use crate::lookup::EntityLookup;
-use crate::vocabulary::PointPair;
+use crate::constraints::piece::ETerms;
+use crate::ground::errors::Result;
+use crate::ground::ids::PointRef;
+use crate::ground::lookup::EntityLookup;
+use crate::ground::vocabulary::PointPair;
 
 /// `point` is the midpoint of `of` (two rows).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -33,7 +33,7 @@ impl ConstraintKind for Midpoint {
     }
 
     fn compile(&self, cx: &mut Compiler<'_>) -> Result<()> {
-        if let crate::vocabulary::PointPair::Line(l) = self.of {
+        if let crate::ground::vocabulary::PointPair::Line(l) = self.of {
             cx.line(l)?;
         }
         let [a, b] = self.of.points();

@@ -30,14 +30,17 @@
 use serde_json::Value;
 use smallvec::SmallVec;
 
-use crate::component::check::ContactSpec;
-use crate::component::piece::Pieces;
-use crate::errors::Result;
-use crate::ids::{ConstraintId, EntityId};
-use crate::lookup::EntityLookup;
+use crate::constraints::check::ContactSpec;
+use crate::constraints::piece::Pieces;
+use crate::ground::errors::Result;
+use crate::ground::ids::{ConstraintId, EntityId};
+use crate::ground::lookup::EntityLookup;
 
+pub mod check;
 pub mod compiler;
 pub mod glyph;
+pub(crate) mod piece;
+pub(crate) mod shared;
 
 pub use compiler::Compiler;
 pub use glyph::Glyph;
@@ -97,7 +100,7 @@ impl Entities {
     }
 
     /// Adds the entity of a point reference.
-    pub fn add_point(&mut self, r: crate::ids::PointRef) {
+    pub fn add_point(&mut self, r: crate::ground::ids::PointRef) {
         self.add(r.entity());
     }
 }
@@ -326,4 +329,6 @@ kinds! {
     C1Join => c1_join::C1Join,
     /// Two curves joined with equal first and second derivatives (six affine rows).
     C2Join => c2_join::C2Join,
+    /// Rows written as text over named sketch quantities (affine when the tape says so).
+    Expression => expression::Expression,
 }

@@ -4,12 +4,12 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::angle::line_angle;
+use super::shared::angles::line_angle;
 use super::glyph::{self, Glyph};
 use super::{Compiler, ConstraintKind, Entities};
-use crate::errors::Result;
-use crate::ids::EntityId;
-use crate::lookup::EntityLookup;
+use crate::ground::errors::Result;
+use crate::ground::ids::EntityId;
+use crate::ground::lookup::EntityLookup;
 
 /// Two line entities are perpendicular (one row).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]

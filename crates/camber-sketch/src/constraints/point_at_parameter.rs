@@ -6,10 +6,10 @@ use serde::{Deserialize, Serialize};
 
 use super::glyph::{self, Glyph};
 use super::{Compiler, ConstraintKind, Entities};
-use crate::errors::Result;
-use crate::ids::EntityId;
-use crate::lookup::EntityLookup;
-use crate::vocabulary::Target;
+use crate::ground::errors::Result;
+use crate::ground::ids::EntityId;
+use crate::ground::lookup::EntityLookup;
+use crate::ground::vocabulary::Target;
 
 /// C(u) = target (two rows).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -38,7 +38,7 @@ impl ConstraintKind for PointAtParameter {
         let mut terms = cx.curve_terms(self.curve, self.u, 0)?;
         let target = match self.target {
             Target::At(p) => {
-                crate::entity::check_point("target", 0, &p)?;
+                crate::ground::entity::check_point("target", 0, &p)?;
                 [p.x, p.y]
             }
             Target::Point(r) => {

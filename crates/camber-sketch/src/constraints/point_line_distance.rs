@@ -7,12 +7,12 @@ use serde::{Deserialize, Serialize};
 
 use super::compiler::positive;
 use super::glyph::{self, Glyph};
-use super::point_on_line::line_offset;
+use super::shared::lines::line_offset;
 use super::{Compiler, ConstraintKind, Entities};
-use crate::errors::Result;
-use crate::ids::{EntityId, PointRef};
-use crate::lookup::EntityLookup;
-use crate::vocabulary::LineSide;
+use crate::ground::errors::Result;
+use crate::ground::ids::{EntityId, PointRef};
+use crate::ground::lookup::EntityLookup;
+use crate::ground::vocabulary::LineSide;
 
 /// The point is `distance` from the line's infinite line, on `side` of A→B (one row).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]

@@ -9,10 +9,10 @@ use serde::{Deserialize, Serialize};
 use super::compiler::distinct;
 use super::glyph::{self, Glyph};
 use super::{Compiler, ConstraintKind, Entities};
-use crate::component::piece::Slot;
-use crate::errors::Result;
-use crate::ids::{EntityId, PointRef};
-use crate::lookup::EntityLookup;
+use crate::constraints::piece::Slot;
+use crate::ground::errors::Result;
+use crate::ground::ids::{EntityId, PointRef};
+use crate::ground::lookup::EntityLookup;
 use crate::residuals::curve::{dot, sub};
 
 /// The point lies on the circle: |P − c| = r (one row).

@@ -8,13 +8,13 @@ use serde::{Deserialize, Serialize};
 use super::compiler::distinct;
 use super::glyph::{self, Glyph};
 use super::{Compiler, ConstraintKind, Entities};
-use crate::component::piece::Slot;
-use crate::curve_eval::CurveBasis;
-use crate::errors::Result;
-use crate::ids::{EntityId, PointRef};
-use crate::lookup::EntityLookup;
+use crate::constraints::piece::Slot;
+use crate::ground::curve_eval::CurveBasis;
+use crate::ground::errors::Result;
+use crate::ground::ids::{EntityId, PointRef};
+use crate::ground::lookup::EntityLookup;
 use crate::residuals::curve::{curve_at, curve_block_sizes, curve_support, Param};
-use crate::vocabulary::Contact;
+use crate::ground::vocabulary::Contact;
 
 /// The point lies on the curve: C(u) = P (two rows, nonlinear when u is free).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]

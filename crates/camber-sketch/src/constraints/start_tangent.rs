@@ -12,14 +12,13 @@
 use nalgebra::Vector2;
 use serde::{Deserialize, Serialize};
 
-use super::compiler::check_direction;
 use super::glyph::{self, Glyph};
+use super::shared::joins::{end_tangency};
 use super::{Compiler, ConstraintKind, Entities};
-use crate::component::piece::Piece;
-use crate::errors::{Error, Result};
-use crate::ids::{EntityId, PointRef};
-use crate::lookup::EntityLookup;
-use crate::vocabulary::{xy_vector, Sense, TangentForm};
+use crate::ground::errors::Result;
+use crate::ground::ids::{EntityId, PointRef};
+use crate::ground::lookup::EntityLookup;
+use crate::ground::vocabulary::{xy_vector, Sense, TangentForm};
 
 /// The start tangent C′(a) is parallel to T with the given sense.
 ///
@@ -57,68 +56,6 @@ pub struct StartTangent {
     /// Row or elimination form.
     #[serde(default)]
     pub form: TangentForm,
-}
-
-/// Compiles an end tangency at the start (`at_end` false) or the end of the curve.
-pub(crate) fn end_tangency(
-    cx: &mut Compiler<'_>,
-    label: &'static str,
-    (curve, direction, sense, form): (EntityId, &Vector2<f64>, Sense, TangentForm),
-    at_end: bool,
-) -> Result<()> {
-    let d = check_direction("tangent", direction)?;
-    let (a, b) = cx.domain(curve)?;
-    let u = if at_end { b } else { a };
-    let orient = [sense.sign() * d[0], sense.sign() * d[1]];
-    let row = Piece::Cross {
-        name: label,
-        terms: cx.curve_terms(curve, u, 1)?,
-        direction: d,
-        orient: Some(orient),
-    };
-    match form {
-        TangentForm::Row => cx.push(row),
-        TangentForm::Elimination => {
-            let e = cx.entity(curve)?;
-            if let crate::entity::Entity::Hermite(chain) | crate::entity::Entity::Composite(chain) = e {
-                // The end tangent is itself a block of unknowns: T = t·s·d directly, t ≥ 0.
-                let target = if at_end {
-                    chain.blocks().len() - 1
-                } else {
-                    chain.node_count()
-                };
-                cx.push(Piece::Eliminate {
-                    curve,
-                    target,
-                    base: None,
-                    direction: orient,
-                    fallback: Box::new(row),
-                });
-                return Ok(());
-            }
-            if !e.is_clamped(at_end) {
-                return Err(Error::NotClampedEnd {
-                    entity: curve,
-                    end: if at_end { "end" } else { "start" },
-                });
-            }
-            let n = e.points().len();
-            // Start: P₁ = P₀ + t·s·T. End: Pₙ₋₁ = Pₙ − t·s·T.
-            let (target, base, direction) = if at_end {
-                (n - 2, n - 1, [-orient[0], -orient[1]])
-            } else {
-                (1, 0, orient)
-            };
-            cx.push(Piece::Eliminate {
-                curve,
-                target,
-                base: Some(base),
-                direction,
-                fallback: Box::new(row),
-            });
-        }
-    }
-    Ok(())
 }
 
 impl ConstraintKind for StartTangent {

@@ -13,25 +13,25 @@
 
 use std::sync::Arc;
 
-use camber_solve::composed::{InnerMap, Outer};
+use camber_solve::derive::composed::{InnerMap, Outer};
 use camber_solve::scalar::cst;
 use camber_solve::{Residual, Scalar};
 use serde::{Deserialize, Serialize};
 
 use super::glyph::{self, Glyph};
 use super::{Compiler, ConstraintKind, Entities};
-use crate::component::check::{point_tangent, ContactSpec, ContactTarget, SolvedCheck, SolvedState};
-use crate::component::piece::Slot;
-use crate::curve_eval::CurveBasis;
-use crate::entity::Entity;
-use crate::errors::{Error, Result};
-use crate::ids::EntityId;
-use crate::lookup::EntityLookup;
+use crate::constraints::check::{point_tangent, ContactSpec, ContactTarget, SolvedCheck, SolvedState};
+use crate::constraints::piece::Slot;
+use crate::ground::curve_eval::CurveBasis;
+use crate::ground::entity::Entity;
+use crate::ground::errors::{Error, Result};
+use crate::ground::ids::EntityId;
+use crate::ground::lookup::EntityLookup;
 use crate::residuals::curve::{
     composed_hessian, composed_jacobian, curve_at, curve_block_sizes, curve_support, dot, Blocks,
     ComposedCurve, Param,
 };
-use crate::vocabulary::{CircleSide, Contact, Rotation};
+use crate::ground::vocabulary::{CircleSide, Contact, Rotation};
 
 /// The curve touches the circle entity at u: |C(u) − c|² = r² and (C(u) − c)·C′(u) = 0,
 /// lying on `side` near the contact and running around it in `rotation` (two rows).

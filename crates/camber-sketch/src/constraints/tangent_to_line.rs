@@ -18,15 +18,15 @@ use serde::{Deserialize, Serialize};
 use super::compiler::distinct;
 use super::glyph::{self, Glyph};
 use super::{Compiler, ConstraintKind, Entities};
-use crate::component::check::{point_tangent, ContactSpec, ContactTarget, SolvedCheck, SolvedState};
-use crate::component::piece::Slot;
-use crate::curve_eval::CurveBasis;
-use crate::entity::Entity;
-use crate::errors::{Error, Result};
-use crate::ids::EntityId;
-use crate::lookup::EntityLookup;
+use crate::constraints::check::{point_tangent, ContactSpec, ContactTarget, SolvedCheck, SolvedState};
+use crate::constraints::piece::Slot;
+use crate::ground::curve_eval::CurveBasis;
+use crate::ground::entity::Entity;
+use crate::ground::errors::{Error, Result};
+use crate::ground::ids::EntityId;
+use crate::ground::lookup::EntityLookup;
 use crate::residuals::curve::{cross, curve_at, curve_block_sizes, curve_support, dot, sub, Param};
-use crate::vocabulary::{Contact, LineSide, Sense};
+use crate::ground::vocabulary::{Contact, LineSide, Sense};
 
 /// The curve touches the line entity (A, B) at u and runs along it with the given sense
 /// relative to B − A, lying on `side` near the contact (two rows).

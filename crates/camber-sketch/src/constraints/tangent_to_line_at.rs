@@ -10,11 +10,11 @@ use serde::{Deserialize, Serialize};
 use super::compiler::check_direction;
 use super::glyph::{self, Glyph};
 use super::{Compiler, ConstraintKind, Entities};
-use crate::component::piece::Piece;
-use crate::errors::Result;
-use crate::ids::EntityId;
-use crate::lookup::EntityLookup;
-use crate::vocabulary::{xy_point, xy_vector, Sense};
+use crate::constraints::piece::Piece;
+use crate::ground::errors::Result;
+use crate::ground::ids::EntityId;
+use crate::ground::lookup::EntityLookup;
+use crate::ground::vocabulary::{xy_point, xy_vector, Sense};
 
 /// C(u) lies on the fixed line through `point` along `direction`, and C′(u) is parallel to it
 /// with the given sense (two rows).
@@ -46,7 +46,7 @@ impl ConstraintKind for TangentToLineAt {
 
     fn compile(&self, cx: &mut Compiler<'_>) -> Result<()> {
         let d = check_direction("line", &self.direction)?;
-        crate::entity::check_point("line point", 0, &self.point)?;
+        crate::ground::entity::check_point("line point", 0, &self.point)?;
         let s = self.sense.sign();
         cx.push(Piece::Line {
             point: cx.curve_terms(self.curve, self.u, 0)?,

@@ -7,10 +7,10 @@ use serde::{Deserialize, Serialize};
 
 use super::glyph::{self, Glyph};
 use super::{Compiler, ConstraintKind, Entities};
-use crate::errors::Result;
-use crate::ids::EntityId;
-use crate::lookup::EntityLookup;
-use crate::vocabulary::xy_vector;
+use crate::ground::errors::Result;
+use crate::ground::ids::EntityId;
+use crate::ground::lookup::EntityLookup;
+use crate::ground::vocabulary::xy_vector;
 
 /// C′(u) = vector, direction and length (two rows).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -35,7 +35,7 @@ impl ConstraintKind for TangentVectorAt {
 
     fn compile(&self, cx: &mut Compiler<'_>) -> Result<()> {
         let terms = cx.curve_terms(self.curve, self.u, 1)?;
-        crate::entity::check_finite2("tangent vector", 0, [self.vector.x, self.vector.y])?;
+        crate::ground::entity::check_finite2("tangent vector", 0, [self.vector.x, self.vector.y])?;
         cx.combination(Self::LABEL, terms, [self.vector.x, self.vector.y]);
         Ok(())
     }

@@ -4,12 +4,12 @@
 use serde::{Deserialize, Serialize};
 
 use super::glyph::Glyph;
-use super::horizontal::{axis_row, pair_mark};
+use super::shared::axes::{axis_row, pair_mark};
 use super::{Compiler, ConstraintKind, Entities};
-use crate::errors::Result;
-use crate::ids::EntityId;
-use crate::lookup::EntityLookup;
-use crate::vocabulary::PointPair;
+use crate::ground::errors::Result;
+use crate::ground::ids::EntityId;
+use crate::ground::lookup::EntityLookup;
+use crate::ground::vocabulary::PointPair;
 
 /// The two points of `of` have the same x (one row).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]

@@ -5,12 +5,12 @@
 use serde::{Deserialize, Serialize};
 
 use super::glyph::Glyph;
-use super::horizontal::pair_mark;
-use super::horizontal_distance::axis_offset;
+use super::shared::axes::pair_mark;
+use super::shared::axes::axis_offset;
 use super::{Compiler, ConstraintKind, Entities};
-use crate::errors::Result;
-use crate::lookup::EntityLookup;
-use crate::vocabulary::PointPair;
+use crate::ground::errors::Result;
+use crate::ground::lookup::EntityLookup;
+use crate::ground::vocabulary::PointPair;
 
 /// b_y − a_y = `distance` for the pair (a, b) (one row).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]

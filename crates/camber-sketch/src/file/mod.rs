@@ -38,9 +38,9 @@ use serde_json::Value;
 
 use crate::constraints::custom::{Arg, Custom};
 use crate::constraints::Constraint;
-use crate::entity::Entity;
-use crate::errors::Error;
-use crate::ids::{ConstraintId, EntityId};
+use crate::ground::entity::Entity;
+use crate::ground::errors::Error;
+use crate::ground::ids::{ConstraintId, EntityId};
 use crate::sketch::Sketch;
 
 mod raw;

@@ -7,8 +7,8 @@ use nalgebra::{Point2, Vector2};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 
-use crate::entity::Entity;
-use crate::hermite_chain::{HermiteChain, Join};
+use crate::ground::entity::Entity;
+use crate::ground::hermite_chain::{HermiteChain, Join};
 
 pub(super) type Xy = [f64; 2];
 
@@ -183,7 +183,7 @@ impl RawShape {
         }
     }
 
-    pub(super) fn into_entity(self) -> crate::Result<Entity> {
+    pub(super) fn into_entity(self) -> crate::ground::errors::Result<Entity> {
         let pts = |v: Vec<Xy>| v.into_iter().map(pt).collect::<Vec<_>>();
         Ok(match self {
             RawShape::Point { at } => Entity::Point(pt(at)),

@@ -7,7 +7,8 @@
 //! - [`PointCombination`]: v − target = 0 (two rows);
 //! - [`DirectionCross`]: cross(v, d) = v_x·d_y − v_y·d_x = 0 (one row);
 //! - [`LineTangency`]: cross(v₀ − L₀, d) = 0 and cross(v₁, d) = 0, v₀ and v₁ being two
-//!   combinations over the same blocks (two rows).
+//!   combinations over the same blocks (two rows);
+//! - [`RadiusValue`]: r − R = 0 on a circle's radius block (one row).
 //!
 //! Their Jacobians are constant: ∂/∂Pⱼ of v is cⱼ·I₂.
 
@@ -240,6 +241,38 @@ impl Residual for LineTangency {
     }
 }
 
+/// r − R = 0: the radius block holds R (affine): the `radius` kind, and a fixed circle's
+/// radius held by a row.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RadiusValue {
+    radius: f64,
+}
+
+impl RadiusValue {
+    /// The residual r − `radius`.
+    pub fn new(radius: f64) -> Self {
+        Self { radius }
+    }
+}
+
+impl Residual for RadiusValue {
+    fn name(&self) -> &str {
+        "radius"
+    }
+    fn dim(&self) -> usize {
+        1
+    }
+    fn block_sizes(&self) -> Option<Vec<usize>> {
+        Some(vec![1])
+    }
+    fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+        out[0] = x[0][0] - cst::<T>(self.radius);
+    }
+    fn is_affine(&self) -> bool {
+        true
+    }
+}
+
 #[cfg(test)]
 mod tests {
     #![allow(clippy::unwrap_used)] // a failed unwrap is a failed test
@@ -249,7 +282,7 @@ mod tests {
 
     /// The structured Jacobian is the one automatic differentiation gives
     /// ([`DynResidual::jacobian`] does not take the shortcut): values to the bit, every entry
-    /// written; and [`camber_solve::autodiff::jacobian_active`] returns it.
+    /// written; and [`camber_solve::derive::autodiff::jacobian_active`] returns it.
     #[test]
     fn jacobians_by_hand_are_those_of_autodiff() {
         let blocks = [[0.3, -1.7], [2.0, 0.125], [-4.5, 3.3]];

@@ -57,7 +57,7 @@
 //!
 //! # The active-set loop
 //!
-//! Both are inequalities, and the solve treats them as an active set ([`crate::solve`]): the
+//! Both are inequalities, and the solve treats them as an active set ([`crate::session::solve`]): the
 //! component is first solved with the contact rows alone; if the result meets every
 //! inequality it is also the solution of the problem with them (an inactive inequality does not
 //! change a local minimum). If a contact crosses its target on one side, the nearest valid
@@ -83,7 +83,7 @@ use camber_solve::scalar::{cst, re};
 use camber_solve::{Residual, Scalar};
 use smallvec::SmallVec;
 
-use crate::curve_eval::CurveBasis;
+use crate::ground::curve_eval::CurveBasis;
 use crate::residuals::curve::{curve_at, curve_block_sizes, dot, Param};
 
 /// The fraction κ of its starting speed below which the tangent at a contact may not shrink

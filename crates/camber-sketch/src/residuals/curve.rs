@@ -8,18 +8,18 @@
 //!
 //! Such a residual is a small function f of the curve's point and derivatives at u (and of the
 //! other blocks' values): `Blocks` writes those inputs with their exact derivatives in floats
-//! into a [`camber_solve::composed::InnerMap`], so that the solver's Jacobians and Hessians
-//! differentiate only f by dual numbers ([`camber_solve::composed`]); `ComposedCurve`
+//! into a [`camber_solve::derive::composed::InnerMap`], so that the solver's Jacobians and Hessians
+//! differentiate only f by dual numbers ([`camber_solve::derive::composed`]); `ComposedCurve`
 //! names such a residual and gives it both structured derivatives.
 
 use std::ops::RangeInclusive;
 
-use camber_solve::composed::{self, InnerMap, Outer};
+use camber_solve::derive::composed::{self, InnerMap, Outer};
 use camber_solve::scalar::cst;
 use camber_solve::Scalar;
 use smallvec::SmallVec;
 
-use crate::curve_eval::CurveBasis;
+use crate::ground::curve_eval::CurveBasis;
 
 /// Where a curve residual takes its parameter.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -153,7 +153,7 @@ impl<'a> Blocks<'a> {
     /// Adds C⁽ᵏ⁾(u) for k in `orders` (at most 2; x then y of each) as inputs of `map`, the
     /// curve reading the blocks from `first` on (its parameter after them when it is
     /// [`Param::Block`]), with their derivatives in the control points and in u (see
-    /// [`camber_solve::composed`]); the same values as [`curve_at`] and
+    /// [`camber_solve::derive::composed`]); the same values as [`curve_at`] and
     /// [`CurveBasis::eval2`]. Returns the index of the block after the curve's (and u's), or
     /// `None` when the blocks are too few.
     pub(crate) fn curve(

@@ -1,0 +1,415 @@
+//! The error type of camber-sketch: one enum whose variants name the offending entity,
+//! constraint, index or value.
+//!
+//! Every fallible operation of [`crate::Sketch`] leaves the sketch exactly as it was when it
+//! returns an error: edits are validated before anything is stored, and solves write back only
+//! after every component has succeeded.
+
+use camber_solve::ConstraintId;
+
+use crate::ground::ids::{EntityId, PointRef};
+
+/// Everything that can go wrong when editing, solving or dragging a [`crate::Sketch`].
+///
+/// ```
+/// use camber_sketch::{EntityId, Error, Sketch};
+/// let sketch = Sketch::new();
+/// assert_eq!(
+///     sketch.entity(EntityId(4)).unwrap_err(),
+///     Error::UnknownEntity { entity: EntityId(4) }
+/// );
+/// ```
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum Error {
+    /// An entity id this sketch does not hold.
+    #[error("{entity} does not exist")]
+    UnknownEntity {
+        /// The id asked for.
+        entity: EntityId,
+    },
+    /// A constraint id this sketch does not hold.
+    #[error("{constraint} does not exist")]
+    UnknownConstraint {
+        /// The id asked for.
+        constraint: ConstraintId,
+    },
+    /// A control point index past the entity's points.
+    #[error("{entity} has {count} points, index {index} does not exist")]
+    UnknownPoint {
+        /// The entity.
+        entity: EntityId,
+        /// The index asked for.
+        index: usize,
+        /// How many points the entity has.
+        count: usize,
+    },
+    /// The entity is of a kind the operation does not accept (a parameter on a point, a
+    /// tangent of a circle, …).
+    #[error("{entity} is a {found}, expected {expected}")]
+    WrongEntityKind {
+        /// The entity.
+        entity: EntityId,
+        /// What the operation needs ("curve", "point", …).
+        expected: &'static str,
+        /// What the entity is.
+        found: &'static str,
+    },
+    /// A number that must be finite is NaN or infinite.
+    #[error("{what} {index} is not finite ({value})")]
+    NonFinite {
+        /// What the number is ("target", "parameter", "direction", …).
+        what: &'static str,
+        /// Its index in the input (coordinate index for points and vectors).
+        index: usize,
+        /// The offending value.
+        value: f64,
+    },
+    /// A tangent or line direction of zero length.
+    #[error("the {what} direction ({x}, {y}) has zero length")]
+    ZeroDirection {
+        /// Which direction ("tangent", "line", …).
+        what: &'static str,
+        /// Its x component.
+        x: f64,
+        /// Its y component.
+        y: f64,
+    },
+    /// A curve parameter outside the curve's domain.
+    #[error("parameter {value} is outside the domain [{min}, {max}] of {entity}")]
+    ParameterOutsideDomain {
+        /// The curve.
+        entity: EntityId,
+        /// The parameter.
+        value: f64,
+        /// Start of the domain.
+        min: f64,
+        /// End of the domain.
+        max: f64,
+    },
+    /// The elimination form of an end tangency needs the first (or last) two control points to
+    /// span the end tangent: a curve clamped at that end (degree ≥ 1). Hermite and composite
+    /// curves never give this error: their end tangent is itself a block of unknowns.
+    #[error("{entity} is not clamped at its {end} end; use the row form of the tangency")]
+    NotClampedEnd {
+        /// The curve.
+        entity: EntityId,
+        /// "start" or "end".
+        end: &'static str,
+    },
+    /// An entity whose points all lie on one place (a zero-length line, a curve whose control
+    /// points are all equal), or a curve of degree 0: it has no direction, so every tangent,
+    /// length and angle of it is undefined.
+    ///
+    /// ```
+    /// use camber_sketch::{EntityId, Error, Sketch};
+    /// use nalgebra::Point2;
+    /// let mut s = Sketch::new();
+    /// let p = Point2::new(1.0, 1.0);
+    /// assert_eq!(
+    ///     s.add_line(p, p).unwrap_err(),
+    ///     Error::DegenerateEntity { entity: EntityId(0), kind: "line", reason: "has zero length" }
+    /// );
+    /// ```
+    #[error("{entity} ({kind}) {reason}")]
+    DegenerateEntity {
+        /// The entity.
+        entity: EntityId,
+        /// Its kind ("line", "bezier", …).
+        kind: &'static str,
+        /// What is degenerate, in words.
+        reason: &'static str,
+    },
+    /// An entity cannot be removed while constraints read it.
+    #[error("{entity} is read by {constraint}")]
+    EntityInUse {
+        /// The entity.
+        entity: EntityId,
+        /// A constraint reading it.
+        constraint: ConstraintId,
+    },
+    /// The geometry kernel refused a curve (bad knots, weights, points, …).
+    #[error("geometry: {0}")]
+    Geometry(#[from] camber_geom::Error),
+    /// Dependent constraints whose values contradict each other; nothing was moved.
+    #[error("conflicting constraints: {}", ids(constraints))]
+    Conflicting {
+        /// The constraints owning an inconsistent dependent row.
+        constraints: Vec<ConstraintId>,
+    },
+    /// Consistent dependent constraints while the options forbid dropping them.
+    #[error("redundant constraints: {}", ids(constraints))]
+    Redundant {
+        /// The constraints owning a consistent dependent row.
+        constraints: Vec<ConstraintId>,
+    },
+    /// Constraints still violated after the solve; nothing was moved.
+    #[error("constraints not satisfied: {}", residuals(failed))]
+    NotSatisfied {
+        /// Each failing constraint with its largest absolute residual.
+        failed: Vec<(ConstraintId, f64)>,
+    },
+    /// A constraint that is not affine in the unknowns met a path that only takes affine ones
+    /// (the linear solver forced through the options).
+    #[error("{constraint} ({name}) is not affine and needs the nonlinear solver")]
+    NeedsNonlinear {
+        /// The constraint.
+        constraint: ConstraintId,
+        /// Its residual's name.
+        name: String,
+    },
+    /// The solve would reverse a tangency (a cusp): the tangent no longer points along the
+    /// recorded sense. Nothing was moved.
+    #[error("{constraint} would flip its tangent orientation (signed dot {dot})")]
+    OrientationFlipped {
+        /// The tangency constraint.
+        constraint: ConstraintId,
+        /// sense·(C′(u)·T) after the solve (≤ 0).
+        dot: f64,
+    },
+    /// The dragged point cannot move: it is fixed or fully determined by the constraints.
+    #[error("{point} cannot be dragged: it is fixed or determined by the constraints")]
+    NotDraggable {
+        /// The point asked for.
+        point: PointRef,
+    },
+    /// A drag target farther from the sketch's centre than [`crate::drag::MAX_DRAG_REACH`]
+    /// times its scale: a slip of the hand or a hostile request, refused before it wrecks the
+    /// sketch's numbers (the session keeps its state).
+    #[error(
+        "the drag target ({}, {}) is too far from the sketch (more than {} from its centre)",
+        number(*x), number(*y), number(*reach)
+    )]
+    DragTargetTooFar {
+        /// The target's x.
+        x: f64,
+        /// The target's y.
+        y: f64,
+        /// The largest distance from the centre allowed.
+        reach: f64,
+    },
+    /// A drag session finished on a sketch edited since the session began.
+    #[error("the sketch changed since the drag began (revision {expected}, now {found})")]
+    StaleSession {
+        /// The revision the session was built on.
+        expected: u64,
+        /// The sketch's revision now.
+        found: u64,
+    },
+    /// Any other failure of the constraint solver.
+    #[error("solver: {0}")]
+    Solve(camber_solve::Error),
+    /// A point weight that is not a positive finite number.
+    #[error("weight {value} of point {index} of entity {entity} is not a positive finite number")]
+    InvalidWeight {
+        /// The entity.
+        entity: EntityId,
+        /// The point's index in the entity.
+        index: usize,
+        /// The offending weight.
+        value: f64,
+    },
+    /// A number that must be positive (a radius, a distance) is not.
+    #[error("{what} {value} must be a positive finite number")]
+    NotPositive {
+        /// What the number is.
+        what: &'static str,
+        /// The offending value.
+        value: f64,
+    },
+    /// A constraint relating two entities (or points) was given the same one twice.
+    #[error("the constraint relates {entity} to itself")]
+    SameEntity {
+        /// The entity named twice.
+        entity: EntityId,
+    },
+    /// After the solve, the curve's tangent vanishes at a contact, or an oriented tangent
+    /// (a joint's, a recorded tangent direction's) collapses to zero length (a cusp). Nothing
+    /// was moved.
+    #[error(
+        "{constraint} would leave a cusp where it holds: the tangent vanishes (|C′| = {speed})"
+    )]
+    Cusp {
+        /// The contact constraint.
+        constraint: ConstraintId,
+        /// |C′(u)| at the contact.
+        speed: f64,
+    },
+    /// After the solve, the curve crosses the line or circle it should only touch, near the
+    /// contact. Nothing was moved.
+    #[error("{constraint}: the curve crosses its target at u = {parameter} by {depth}")]
+    ContactCrossed {
+        /// The contact constraint.
+        constraint: ConstraintId,
+        /// A curve parameter on the wrong side.
+        parameter: f64,
+        /// How far past the target it lies (length units, > 0).
+        depth: f64,
+    },
+    /// An entity or constraint id already taken (entities and constraints share one id space).
+    #[error("id {id} is already used by an entity or a constraint")]
+    DuplicateId {
+        /// The id asked for.
+        id: u64,
+    },
+    /// A method that needs fixed contact targets (iterative displacement) met a contact whose
+    /// circle or line may move.
+    #[error("{constraint} touches {entity}, which is not fixed")]
+    TargetNotFixed {
+        /// The contact.
+        constraint: ConstraintId,
+        /// Its circle or line.
+        entity: EntityId,
+    },
+    /// A custom constraint read from a sketch file whose kind no registry decoded.
+    #[error(
+        "the custom constraint kind \"{name}\" was not decoded (register it in a CustomRegistry)"
+    )]
+    UnresolvedCustom {
+        /// The kind name in the file.
+        name: String,
+    },
+    /// A custom constraint's plain residual does not declare its block sizes, so its
+    /// arguments cannot be checked.
+    #[error(
+        "the custom residual \"{name}\" does not declare its block sizes (Residual::block_sizes)"
+    )]
+    UndeclaredBlocks {
+        /// The residual's name.
+        name: String,
+    },
+    /// A custom constraint's arguments do not match what its residual reads.
+    #[error(
+        "the custom residual \"{name}\" reads {expected:?} but the constraint gives {found:?}"
+    )]
+    CustomArgs {
+        /// The residual's name.
+        name: String,
+        /// The argument kinds the residual declares.
+        expected: Vec<crate::ground::vocabulary::ArgKind>,
+        /// The argument kinds given.
+        found: Vec<crate::ground::vocabulary::ArgKind>,
+    },
+    /// A custom residual larger than a solve can hold: more rows than
+    /// [`crate::constraints::custom::MAX_CUSTOM_ROWS`], or a Jacobian block (rows × unknowns
+    /// read) of more than [`crate::constraints::custom::MAX_CUSTOM_JACOBIAN`] entries. Refused
+    /// before anything of that size is allocated.
+    #[error(
+        "the custom residual \"{name}\" declares {rows} rows over {unknowns} unknowns: at most {max_rows} rows and {max_entries} Jacobian entries (rows × unknowns) are allowed"
+    )]
+    CustomTooLarge {
+        /// The residual's name.
+        name: String,
+        /// The rows it declares.
+        rows: usize,
+        /// The unknowns its arguments read.
+        unknowns: usize,
+        /// The most rows allowed.
+        max_rows: usize,
+        /// The most Jacobian entries allowed.
+        max_entries: usize,
+    },
+    /// An expression (a constraint's rows, a dimension's value) the language refuses: its
+    /// message names the column (and the row).
+    #[error(transparent)]
+    Expression(#[from] camber_expr::Error),
+    /// A constraint reads a free parameter another constraint does not have.
+    #[error("{constraint} reads free parameter {index} of {of}, which it does not have")]
+    UnknownFreeParameter {
+        /// The constraint reading it.
+        constraint: ConstraintId,
+        /// The constraint asked.
+        of: ConstraintId,
+        /// The index asked for.
+        index: usize,
+    },
+    /// A constraint cannot be removed while another reads its free parameters.
+    #[error("{constraint} is read by {by}")]
+    ConstraintInUse {
+        /// The constraint.
+        constraint: ConstraintId,
+        /// A constraint reading it.
+        by: ConstraintId,
+    },
+    /// A list in an entity's data with the wrong number of entries (a composite curve's
+    /// `nodes`, `joins` or `tangents`, the blocks given to rebuild one).
+    ///
+    /// ```
+    /// use camber_sketch::hermite_chain::{HermiteChain, Join};
+    /// use camber_sketch::Error;
+    /// use nalgebra::{Point2, Vector2};
+    /// let e = HermiteChain::try_new(vec![Point2::origin()], vec![], vec![]).unwrap_err();
+    /// assert_eq!(e, Error::CountMismatch { field: "nodes", expected: 2, found: 1 });
+    /// assert_eq!(e.to_string(), "`nodes` has 1 entries, expected 2");
+    /// ```
+    #[error("`{field}` has {found} entries, expected {expected}")]
+    CountMismatch {
+        /// The field.
+        field: &'static str,
+        /// How many it needs (at least, for `nodes`).
+        expected: usize,
+        /// How many it has.
+        found: usize,
+    },
+    /// An option out of its range.
+    #[error("{what}: {detail}")]
+    InvalidOption {
+        /// Which option.
+        what: &'static str,
+        /// What was wrong, with the value.
+        detail: String,
+    },
+}
+
+/// A constraint in words; the drag's own pin row is "the drag target", never its internal id.
+fn constraint_name(id: ConstraintId) -> String {
+    if id == crate::ground::ids::DRAG_CONSTRAINT {
+        "the drag target".to_owned()
+    } else {
+        id.to_string()
+    }
+}
+
+/// "constraint 4, constraint 7" for a list of ids.
+fn ids(list: &[ConstraintId]) -> String {
+    list.iter()
+        .map(|&c| constraint_name(c))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// "constraint 4 (|g| = 1.000e-3), …" for failing constraints with their largest residual.
+fn residuals(list: &[(ConstraintId, f64)]) -> String {
+    list.iter()
+        .map(|&(c, g)| format!("{} (|g| = {g:.3e})", constraint_name(c)))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+impl From<camber_solve::Error> for Error {
+    fn from(e: camber_solve::Error) -> Self {
+        use camber_solve::Error as S;
+        match e {
+            S::Conflicting { constraints } => Error::Conflicting { constraints },
+            S::Redundant { constraints } => Error::Redundant { constraints },
+            S::NotSatisfied { failed } => Error::NotSatisfied { failed },
+            S::NonlinearNotAvailable { constraint, name } => {
+                Error::NeedsNonlinear { constraint, name }
+            }
+            other => Error::Solve(other),
+        }
+    }
+}
+
+/// Result with camber-sketch's [`Error`].
+pub type Result<T> = std::result::Result<T, Error>;
+
+/// A number for a message with few digits: plain between 1e-4 and 1e6, scientific outside
+/// (so that 1e308 is not printed with 309 digits).
+fn number(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() || (1e-4..1e6).contains(&x.abs()) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
+    }
+}

@@ -1,0 +1,770 @@
+//! The sketch: entities and constraints as nodes of a petgraph graph, connected components,
+//! the dirty set, and editing.
+//!
+//! The graph is bipartite: an entity node per entity, a constraint node per constraint, and an
+//! edge from a constraint to every entity it reads. Two entities share a component exactly when
+//! a chain of constraints links them; each component is an independent problem. Edits mark the
+//! entities they touch as dirty, and [`Sketch::solve`] solves only the components that contain a
+//! dirty entity.
+
+pub mod warnings;
+
+use std::collections::{BTreeMap, BTreeSet};
+
+use camber_geom::{BSplineCurve2, BezierCurve2, NurbsCurve2};
+use camber_solve::{ConstraintId, Options, Priority};
+use nalgebra::Point2;
+use petgraph::stable_graph::{NodeIndex, StableUnGraph};
+use petgraph::visit::NodeIndexable;
+
+use crate::component::problem::build;
+use crate::component::{Component, ComponentProblem};
+use crate::constraints::Constraint;
+use crate::ground::entity::{combine, Entity};
+
+/// How many rounding units ε·M above the exact residual [`Sketch::solve_options`] allows: 2⁸,
+/// room for the few operations a residual row takes and for Newton's stop at a tenth of the
+/// tolerance.
+pub const ROUNDING_HEADROOM: f64 = 256.0;
+use crate::ground::errors::{Error, Result};
+use crate::ground::ids::{EntityId, PointRef};
+use crate::ground::lookup::EntityLookup;
+
+/// A node of the sketch graph.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Node {
+    Entity(EntityId),
+    Constraint(ConstraintId),
+}
+
+/// A planar sketch of entities held by constraints.
+///
+/// ```
+/// use camber_sketch::constraints::{Fixed, PointAtParameter};
+/// use camber_sketch::{PointRef, Sketch, Target};
+/// use camber_geom::BezierCurve2;
+/// use nalgebra::Point2;
+/// let mut s = Sketch::new();
+/// let c = s.add_bezier(BezierCurve2::try_new(vec![
+///     Point2::new(0.0, 0.0), Point2::new(1.0, 1.0), Point2::new(2.0, 0.0),
+/// ])?)?;
+/// s.add_constraint(Fixed::point(PointRef::Start(c)))?;
+/// s.add_constraint(PointAtParameter { curve: c, u: 0.5, target: Target::At(Point2::new(1.0, 1.0)) })?;
+/// let report = s.solve()?;
+/// assert_eq!(report.components.len(), 1);
+/// // C(½) = ¼P₀ + ½P₁ + ¼P₂ reaches (1, 1); P₀ stays.
+/// let mid = s.curve_point(c, 0.5)?;
+/// assert!((mid.y - 1.0).abs() < 1e-12 && s.point(PointRef::Start(c))?.y.abs() < 1e-15);
+/// # Ok::<(), camber_sketch::Error>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct Sketch {
+    graph: StableUnGraph<Node, ()>,
+    entities: BTreeMap<EntityId, (Entity, NodeIndex)>,
+    constraints: BTreeMap<ConstraintId, (Constraint, NodeIndex)>,
+    next_id: u64,
+    dirty: BTreeSet<EntityId>,
+    revision: u64,
+    options: Options,
+    /// Weights of points in the minimum-norm metric, by (entity, point index); absent = 1.
+    weights: BTreeMap<(EntityId, usize), f64>,
+    /// Priority tiers of constraints that may be relaxed; absent = 0 (required).
+    priorities: BTreeMap<ConstraintId, Priority>,
+}
+
+impl Default for Sketch {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl EntityLookup for Sketch {
+    fn lookup(&self, id: EntityId) -> Result<&Entity> {
+        self.entities
+            .get(&id)
+            .map(|(e, _)| e)
+            .ok_or(Error::UnknownEntity { entity: id })
+    }
+
+    fn weight(&self, id: EntityId, index: usize) -> f64 {
+        self.weights.get(&(id, index)).copied().unwrap_or(1.0)
+    }
+}
+
+/// # Construction
+impl Sketch {
+    /// An empty sketch with the default solver options ([`crate::component::policy::default_options`]).
+    pub fn new() -> Self {
+        Self::with_options(crate::component::policy::default_options())
+    }
+
+    /// An empty sketch solved with `options` (tolerances, dense/sparse thresholds).
+    pub fn with_options(options: Options) -> Self {
+        Self {
+            graph: StableUnGraph::default(),
+            entities: BTreeMap::new(),
+            constraints: BTreeMap::new(),
+            next_id: 0,
+            dirty: BTreeSet::new(),
+            revision: 0,
+            options,
+            weights: BTreeMap::new(),
+            priorities: BTreeMap::new(),
+        }
+    }
+}
+
+/// # Entities
+impl Sketch {
+    /// Adds an entity (validated: finite points, positive radius).
+    ///
+    /// # Errors
+    /// [`Error::NonFinite`] or [`Error::Geometry`]; nothing is added then.
+    pub fn add_entity(&mut self, entity: Entity) -> Result<EntityId> {
+        self.add_entity_with_id(EntityId(self.next_id), entity)
+    }
+
+    /// Adds an entity under a given id (as a sketch file names it), validated like
+    /// [`Sketch::add_entity`]. Later automatic ids continue past the largest id used.
+    ///
+    /// ```
+    /// use camber_sketch::{EntityId, Error, Sketch, Entity};
+    /// use nalgebra::Point2;
+    /// let mut s = Sketch::new();
+    /// s.add_entity_with_id(EntityId(7), Entity::Point(Point2::new(1.0, 2.0)))?;
+    /// assert_eq!(s.add_point(Point2::origin())?, EntityId(8));
+    /// let again = s.add_entity_with_id(EntityId(7), Entity::Point(Point2::origin()));
+    /// assert_eq!(again, Err(Error::DuplicateId { id: 7 }));
+    /// # Ok::<(), camber_sketch::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`Error::DuplicateId`] when an entity or constraint already has that id; the
+    /// validation errors of [`Sketch::add_entity`]. Nothing is added then.
+    pub fn add_entity_with_id(&mut self, id: EntityId, entity: Entity) -> Result<EntityId> {
+        self.check_free_id(id.0)?;
+        entity.validate(id)?;
+        self.next_id = self.next_id.max(id.0.saturating_add(1));
+        let node = self.graph.add_node(Node::Entity(id));
+        self.entities.insert(id, (entity, node));
+        self.dirty.insert(id);
+        self.revision += 1;
+        Ok(id)
+    }
+
+    /// Adds a point.
+    ///
+    /// # Errors
+    /// As [`Sketch::add_entity`].
+    pub fn add_point(&mut self, p: Point2<f64>) -> Result<EntityId> {
+        self.add_entity(Entity::Point(p))
+    }
+
+    /// Adds a line through two points.
+    ///
+    /// # Errors
+    /// As [`Sketch::add_entity`].
+    pub fn add_line(&mut self, a: Point2<f64>, b: Point2<f64>) -> Result<EntityId> {
+        self.add_entity(Entity::Line([a, b]))
+    }
+
+    /// Adds a circle.
+    ///
+    /// # Errors
+    /// As [`Sketch::add_entity`].
+    pub fn add_circle(&mut self, center: Point2<f64>, radius: f64) -> Result<EntityId> {
+        self.add_entity(Entity::Circle { center, radius })
+    }
+
+    /// Adds a Bézier curve.
+    ///
+    /// # Errors
+    /// As [`Sketch::add_entity`].
+    pub fn add_bezier(&mut self, curve: BezierCurve2<f64>) -> Result<EntityId> {
+        self.add_entity(Entity::Bezier(curve))
+    }
+
+    /// Adds a B-spline curve.
+    ///
+    /// # Errors
+    /// As [`Sketch::add_entity`].
+    pub fn add_bspline(&mut self, curve: BSplineCurve2<f64>) -> Result<EntityId> {
+        self.add_entity(Entity::BSpline(curve))
+    }
+
+    /// Adds a NURBS curve (its weights stay fixed in every solve).
+    ///
+    /// # Errors
+    /// As [`Sketch::add_entity`].
+    pub fn add_nurbs(&mut self, curve: NurbsCurve2<f64>) -> Result<EntityId> {
+        self.add_entity(Entity::Nurbs(curve))
+    }
+
+    /// The entity with that id.
+    ///
+    /// # Errors
+    /// [`Error::UnknownEntity`].
+    pub fn entity(&self, id: EntityId) -> Result<&Entity> {
+        self.lookup(id)
+    }
+
+    /// Every entity, by id.
+    pub fn entities(&self) -> impl Iterator<Item = (EntityId, &Entity)> {
+        self.entities.iter().map(|(id, (e, _))| (*id, e))
+    }
+
+    /// The location of a point of the sketch (for `Start`/`End`, the curve point there).
+    ///
+    /// # Errors
+    /// [`Error::UnknownEntity`], [`Error::UnknownPoint`], [`Error::WrongEntityKind`].
+    pub fn point(&self, r: PointRef) -> Result<Point2<f64>> {
+        let e = self.lookup(r.entity())?;
+        let v = combine(e.points(), &e.resolve(r)?);
+        Ok(Point2::new(v[0], v[1]))
+    }
+
+    /// The curve point C(u) of a curve entity.
+    ///
+    /// # Errors
+    /// As [`Entity::coefficients`].
+    pub fn curve_point(&self, curve: EntityId, u: f64) -> Result<Point2<f64>> {
+        let e = self.lookup(curve)?;
+        let v = combine(e.points(), &e.coefficients(curve, u, 0)?);
+        Ok(Point2::new(v[0], v[1]))
+    }
+
+    /// Moves one point block (a point entity, a control point, a line end, a circle centre) to
+    /// `to`, marking the entity dirty. The constraints are not solved here.
+    ///
+    /// # Errors
+    /// [`Error::NonFinite`] for `to`; [`Error::WrongEntityKind`] for `Start`/`End` references
+    /// (they are combinations, move a control point instead); id errors. Nothing changes then.
+    pub fn set_point(&mut self, r: PointRef, to: Point2<f64>) -> Result<()> {
+        crate::ground::entity::check_point("point", 0, &to)?;
+        let e = self.lookup(r.entity())?;
+        let index = match (r, e) {
+            (PointRef::Point(_), Entity::Point(_)) => 0,
+            (PointRef::Control(_, i), _) => i,
+            _ => {
+                return Err(Error::WrongEntityKind {
+                    entity: r.entity(),
+                    expected: "point or control point",
+                    found: e.kind_name(),
+                })
+            }
+        };
+        e.resolve(PointRef::Control(r.entity(), index))?;
+        let mut pts = e.points().to_vec();
+        pts[index] = to;
+        let updated = e.with_points(&pts, &e.scalars())?;
+        if let Some(slot) = self.entities.get_mut(&r.entity()) {
+            slot.0 = updated;
+        }
+        self.dirty.insert(r.entity());
+        self.revision += 1;
+        Ok(())
+    }
+
+    /// Sets the weight w > 0 of a point or control point in the minimum-norm metric
+    /// Σ wᵢ‖ΔPᵢ‖²: solves and drag sessions move a point of weight w as if moving it cost w times
+    /// as much, so heavier points move less (w = 1 is the default; a very large w approaches
+    /// fixing the point without constraining it). Marks the entity dirty.
+    ///
+    /// ```
+    /// use camber_geom::BezierCurve2;
+    /// use camber_sketch::constraints::PointAtParameter;
+    /// use camber_sketch::{PointRef, Sketch, Target};
+    /// use nalgebra::Point2;
+    /// let mut s = Sketch::new();
+    /// let line = BezierCurve2::try_new(vec![Point2::new(0.0, 0.0), Point2::new(2.0, 0.0)])?;
+    /// let c = s.add_bezier(line)?;
+    /// s.set_weight(PointRef::Control(c, 0), 4.0)?;
+    /// s.add_constraint(PointAtParameter {
+    ///     curve: c,
+    ///     u: 0.5,
+    ///     target: Target::At(Point2::new(1.0, 1.0)),
+    /// })?;
+    /// s.solve()?;
+    /// // ½ΔP₀ + ½ΔP₁ = (0, 1) with ΔPᵢ ∝ 1/wᵢ: ΔP₀ = (0, 0.4), ΔP₁ = (0, 1.6).
+    /// assert!((s.point(PointRef::Control(c, 0))?.y - 0.4).abs() < 1e-12);
+    /// assert!((s.point(PointRef::Control(c, 1))?.y - 1.6).abs() < 1e-12);
+    /// # Ok::<(), camber_sketch::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`Error::UnknownEntity`], [`Error::UnknownPoint`], [`Error::WrongEntityKind`] for a
+    /// reference that is not a point or control point; [`Error::InvalidWeight`] for w ≤ 0 or
+    /// non-finite w. Nothing changes then.
+    pub fn set_weight(&mut self, r: PointRef, weight: f64) -> Result<()> {
+        let e = self.lookup(r.entity())?;
+        let index = match (r, e) {
+            (PointRef::Point(_), Entity::Point(_)) => 0,
+            (PointRef::Control(_, i), _) => i,
+            _ => {
+                return Err(Error::WrongEntityKind {
+                    entity: r.entity(),
+                    expected: "point or control point",
+                    found: e.kind_name(),
+                })
+            }
+        };
+        e.resolve(PointRef::Control(r.entity(), index))?;
+        if !(weight.is_finite() && weight > 0.0) {
+            return Err(Error::InvalidWeight {
+                entity: r.entity(),
+                index,
+                value: weight,
+            });
+        }
+        self.weights.insert((r.entity(), index), weight);
+        self.dirty.insert(r.entity());
+        self.revision += 1;
+        Ok(())
+    }
+
+    /// Removes an entity no constraint reads.
+    ///
+    /// # Errors
+    /// [`Error::UnknownEntity`]; [`Error::EntityInUse`] naming a constraint that reads it.
+    pub fn remove_entity(&mut self, id: EntityId) -> Result<Entity> {
+        let (_, node) = self
+            .entities
+            .get(&id)
+            .ok_or(Error::UnknownEntity { entity: id })?;
+        if let Some(Node::Constraint(c)) = self
+            .graph
+            .neighbors(*node)
+            .next()
+            .and_then(|n| self.graph.node_weight(n).copied())
+        {
+            return Err(Error::EntityInUse {
+                entity: id,
+                constraint: c,
+            });
+        }
+        let (e, node) = self
+            .entities
+            .remove(&id)
+            .ok_or(Error::UnknownEntity { entity: id })?;
+        self.graph.remove_node(node);
+        self.dirty.remove(&id);
+        self.weights.retain(|(entity, _), _| *entity != id);
+        self.revision += 1;
+        Ok(e)
+    }
+}
+
+/// # Replacing geometry
+impl Sketch {
+    /// Replaces an entity by another of the same kind (a curve after knot insertion or
+    /// refinement, degree elevation, …), keeping its id. Every constraint that reads it must
+    /// still be valid (a parameter still inside the domain, a control point index still
+    /// there): they are checked against the new entity, and any failure leaves the sketch as
+    /// it was. Point weights of the entity are dropped (the point indices may mean other
+    /// points now). Marks the entity dirty.
+    ///
+    /// ```
+    /// use camber_geom::{BSplineCurve2, KnotVector};
+    /// use camber_sketch::{Entity, Sketch};
+    /// use nalgebra::Point2;
+    /// let mut s = Sketch::new();
+    /// let pts = (0..4).map(|i| Point2::new(f64::from(i), 0.0)).collect();
+    /// let c = BSplineCurve2::try_new(3, KnotVector::clamped_uniform(3, 4)?, pts)?;
+    /// let id = s.add_bspline(c.clone())?;
+    /// let refined = c.insert_knot(0.5, 1)?;
+    /// s.set_entity(id, Entity::BSpline(refined))?;
+    /// assert_eq!(s.entity(id)?.points().len(), 5);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`Error::UnknownEntity`]; [`Error::WrongEntityKind`] for another kind; the validation
+    /// errors of the entity or of a constraint reading it. Nothing changes then.
+    pub fn set_entity(&mut self, id: EntityId, entity: Entity) -> Result<()> {
+        let old = self.lookup(id)?;
+        if std::mem::discriminant(old) != std::mem::discriminant(&entity) {
+            return Err(Error::WrongEntityKind {
+                entity: id,
+                expected: old.kind_name(),
+                found: entity.kind_name(),
+            });
+        }
+        entity.validate(id)?;
+        let previous = match self.entities.get_mut(&id) {
+            Some(slot) => std::mem::replace(&mut slot.0, entity),
+            None => return Err(Error::UnknownEntity { entity: id }),
+        };
+        let readers: Vec<ConstraintId> = self
+            .constraints
+            .iter()
+            .filter(|(_, (c, _))| c.entities().contains(&id))
+            .map(|(cid, _)| *cid)
+            .collect();
+        for cid in readers {
+            let outcome = self.constraint(cid).and_then(|c| c.compile(self));
+            if let Err(e) = outcome {
+                if let Some(slot) = self.entities.get_mut(&id) {
+                    slot.0 = previous;
+                }
+                return Err(e);
+            }
+        }
+        self.weights.retain(|(entity, _), _| *entity != id);
+        self.dirty.insert(id);
+        self.revision += 1;
+        Ok(())
+    }
+}
+
+impl Sketch {
+    /// Fails with [`Error::DuplicateId`] when an entity or a constraint already uses `id`.
+    fn check_free_id(&self, id: u64) -> Result<()> {
+        if self.entities.contains_key(&EntityId(id))
+            || self.constraints.contains_key(&ConstraintId(id))
+        {
+            Err(Error::DuplicateId { id })
+        } else {
+            Ok(())
+        }
+    }
+}
+
+/// # Constraints
+impl Sketch {
+    /// Adds a constraint after validating it against the current entities (ids, indices,
+    /// parameters inside the domains, finite numbers, non-zero directions, clamped ends for the
+    /// elimination form, a custom residual's declared arguments). Its entities become dirty;
+    /// nothing is solved here. Any kind converts: `s.add_constraint(Horizontal::line(l))`.
+    ///
+    /// # Errors
+    /// The validation errors; nothing is added then.
+    pub fn add_constraint(&mut self, constraint: impl Into<Constraint>) -> Result<ConstraintId> {
+        self.add_constraint_with_id(ConstraintId(self.next_id), constraint)
+    }
+
+    /// Adds a constraint under a given id (as a sketch file names it), validated like
+    /// [`Sketch::add_constraint`]. Entities and constraints share one id space; later automatic
+    /// ids continue past the largest id used.
+    ///
+    /// # Errors
+    /// [`Error::DuplicateId`] when an entity or constraint already has that id;
+    /// [`Error::UnknownConstraint`] for another constraint it reads that does not exist; the
+    /// validation errors of [`Sketch::add_constraint`]. Nothing is added then.
+    pub fn add_constraint_with_id(
+        &mut self,
+        id: ConstraintId,
+        constraint: impl Into<Constraint>,
+    ) -> Result<ConstraintId> {
+        let constraint = constraint.into();
+        self.check_free_id(id.0)?;
+        constraint.compile(self)?;
+        let mut entities = constraint.entities();
+        for other in constraint.reads_constraints() {
+            for e in self.constraint(other)?.entities() {
+                if !entities.contains(&e) {
+                    entities.push(e);
+                }
+            }
+        }
+        self.next_id = self.next_id.max(id.0.saturating_add(1));
+        let node = self.graph.add_node(Node::Constraint(id));
+        for e in entities {
+            if let Some((_, en)) = self.entities.get(&e) {
+                self.graph.add_edge(node, *en, ());
+            }
+            self.dirty.insert(e);
+        }
+        self.constraints.insert(id, (constraint, node));
+        self.revision += 1;
+        Ok(id)
+    }
+
+    /// The constraint with that id.
+    ///
+    /// # Errors
+    /// [`Error::UnknownConstraint`].
+    pub fn constraint(&self, id: ConstraintId) -> Result<&Constraint> {
+        self.constraints
+            .get(&id)
+            .map(|(c, _)| c)
+            .ok_or(Error::UnknownConstraint { constraint: id })
+    }
+
+    /// Every constraint, by id.
+    pub fn constraints(&self) -> impl Iterator<Item = (ConstraintId, &Constraint)> {
+        self.constraints.iter().map(|(id, (c, _))| (*id, c))
+    }
+
+    /// Removes a constraint; its entities become dirty.
+    ///
+    /// # Errors
+    /// [`Error::UnknownConstraint`]; [`Error::ConstraintInUse`] naming a constraint that reads
+    /// its free parameters.
+    pub fn remove_constraint(&mut self, id: ConstraintId) -> Result<Constraint> {
+        if !self.constraints.contains_key(&id) {
+            return Err(Error::UnknownConstraint { constraint: id });
+        }
+        if let Some((by, _)) = self
+            .constraints
+            .iter()
+            .find(|(_, (c, _))| c.reads_constraints().contains(&id))
+        {
+            return Err(Error::ConstraintInUse {
+                constraint: id,
+                by: *by,
+            });
+        }
+        let (c, node) = self
+            .constraints
+            .remove(&id)
+            .ok_or(Error::UnknownConstraint { constraint: id })?;
+        self.graph.remove_node(node);
+        self.priorities.remove(&id);
+        self.dirty.extend(c.entities());
+        self.revision += 1;
+        Ok(c)
+    }
+}
+
+/// # Priorities
+impl Sketch {
+    /// Gives a constraint a priority tier: 0 (the default) is required; a constraint of tier
+    /// 1, 2, … may be relaxed when the whole set cannot be met, the higher tiers first. The
+    /// solve then meets the tiers in order, each as closely as the tiers before allow (least
+    /// squares within their solutions), and its report names every relaxed constraint
+    /// ([`crate::SketchReport::relaxed`]). A constraint with a priority is always solved as
+    /// rows, never folded into the unknowns (a `fixed` point stays an unknown held by two
+    /// rows, a coincidence is not merged), so that it can give way. Marks its entities dirty.
+    ///
+    /// ```
+    /// use camber_sketch::constraints::{Distance, Fixed};
+    /// use camber_sketch::{PointRef, Sketch};
+    /// use nalgebra::Point2;
+    /// let mut s = Sketch::new();
+    /// let a = s.add_point(Point2::new(0.0, 0.0))?;
+    /// let b = s.add_point(Point2::new(1.0, 0.0))?;
+    /// s.add_constraint(Fixed::point(PointRef::Point(a)))?;
+    /// s.add_constraint(Fixed::point(PointRef::Point(b)))?;
+    /// // 2 apart cannot be met with both points fixed: as priority 1 it gives way.
+    /// let d = s.add_constraint(Distance { a: PointRef::Point(a), b: PointRef::Point(b), distance: 2.0 })?;
+    /// s.set_priority(d, 1)?;
+    /// let report = s.solve()?;
+    /// assert_eq!(report.relaxed(), vec![d]);
+    /// assert_eq!(s.point(PointRef::Point(b))?, Point2::new(1.0, 0.0));
+    /// # Ok::<(), camber_sketch::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`Error::UnknownConstraint`].
+    pub fn set_priority(&mut self, id: ConstraintId, priority: Priority) -> Result<()> {
+        let entities = self.constraint(id)?.entities();
+        if priority == 0 {
+            self.priorities.remove(&id);
+        } else {
+            self.priorities.insert(id, priority);
+        }
+        for e in entities {
+            self.mark_dirty(e);
+        }
+        Ok(())
+    }
+
+    /// A constraint's priority tier (0, required, unless [`Sketch::set_priority`] said
+    /// otherwise; 0 also for an unknown id).
+    pub fn priority(&self, id: ConstraintId) -> Priority {
+        self.priorities.get(&id).copied().unwrap_or(0)
+    }
+}
+
+/// # Components
+impl Sketch {
+    /// The connected components of the graph, each with its entities and constraints sorted by
+    /// id, ordered by their smallest entity id.
+    pub fn components(&self) -> Vec<Component> {
+        let mut seen = vec![false; self.graph.node_bound()];
+        let mut out = Vec::new();
+        let mut stack = Vec::new();
+        for (_, node) in self.entities.values() {
+            if seen[node.index()] {
+                continue;
+            }
+            let mut comp = Component {
+                entities: Vec::new(),
+                constraints: Vec::new(),
+            };
+            seen[node.index()] = true;
+            stack.push(*node);
+            while let Some(n) = stack.pop() {
+                match self.graph.node_weight(n) {
+                    Some(Node::Entity(e)) => comp.entities.push(*e),
+                    Some(Node::Constraint(c)) => comp.constraints.push(*c),
+                    None => {}
+                }
+                for m in self.graph.neighbors(n) {
+                    if !seen[m.index()] {
+                        seen[m.index()] = true;
+                        stack.push(m);
+                    }
+                }
+            }
+            comp.entities.sort_unstable();
+            comp.constraints.sort_unstable();
+            out.push(comp);
+        }
+        out
+    }
+
+    /// The component containing an entity.
+    ///
+    /// # Errors
+    /// [`Error::UnknownEntity`].
+    pub fn component_of(&self, entity: EntityId) -> Result<Component> {
+        self.lookup(entity)?;
+        self.components()
+            .into_iter()
+            .find(|c| c.entities.binary_search(&entity).is_ok())
+            .ok_or(Error::UnknownEntity { entity })
+    }
+
+    /// Entities changed since they were last solved.
+    pub fn dirty(&self) -> impl Iterator<Item = EntityId> + '_ {
+        self.dirty.iter().copied()
+    }
+
+    /// A counter that grows with every edit (used to detect stale drag sessions).
+    pub fn revision(&self) -> u64 {
+        self.revision
+    }
+
+    /// The solver options.
+    pub fn options(&self) -> &Options {
+        &self.options
+    }
+
+    /// The options solves, drags and analyses of this sketch use: [`Sketch::options`] with the
+    /// residual tolerance raised, for sketches far from the origin, to what double rounding
+    /// can reach at their coordinates: tol = max(tolerance, [`ROUNDING_HEADROOM`]·ε·M), M the
+    /// largest |coordinate| (or radius) of any entity and ε the machine epsilon. Residuals are
+    /// differences of coordinates, so they cannot be computed more exactly than ε·M: with the
+    /// default 10⁻¹⁰ nothing changes below M ≈ 1,760, and a rectangle at x = 10⁷ solves to
+    /// 5.7·10⁻⁷ instead of chasing 10⁻¹⁰ it can never reach. The solve report records the
+    /// tolerance used ([`crate::SketchReport::tolerance`]).
+    ///
+    /// ```
+    /// use camber_sketch::Sketch;
+    /// use nalgebra::Point2;
+    /// let mut s = Sketch::new();
+    /// s.add_point(Point2::new(1.0, 2.0))?;
+    /// assert_eq!(s.solve_options().tolerance, s.options().tolerance);
+    /// s.add_point(Point2::new(1e7, 0.0))?;
+    /// assert!(s.solve_options().tolerance > 5e-7);
+    /// # Ok::<(), camber_sketch::Error>(())
+    /// ```
+    pub fn solve_options(&self) -> Options {
+        let magnitude = self
+            .entities()
+            .flat_map(|(_, e)| {
+                let radius = match e {
+                    Entity::Circle { radius, .. } => radius.abs(),
+                    _ => 0.0,
+                };
+                e.points()
+                    .iter()
+                    .map(move |p| p.x.abs().max(p.y.abs()).max(radius))
+            })
+            .filter(|m| m.is_finite())
+            .fold(0.0, f64::max);
+        let floor = ROUNDING_HEADROOM * f64::EPSILON * magnitude;
+        let mut options = self.options.clone();
+        if floor > options.tolerance {
+            options.tolerance = floor;
+        }
+        options
+    }
+
+    /// Replaces the solver options (tolerances, thresholds, the nonlinear settings such as a
+    /// forced solver or the soft mode) for the following solves and drags. Marks nothing
+    /// dirty.
+    pub fn set_options(&mut self, options: Options) {
+        self.options = options;
+    }
+
+    /// Builds (without solving) the problem of the component containing `entity`.
+    ///
+    /// # Errors
+    /// [`Error::UnknownEntity`]; errors of compiling the constraints.
+    pub fn component_problem(&self, entity: EntityId) -> Result<ComponentProblem> {
+        let comp = self.component_of(entity)?;
+        self.build_component(&comp, None)
+    }
+
+    pub(crate) fn build_component(
+        &self,
+        comp: &Component,
+        pin: Option<PointRef>,
+    ) -> Result<ComponentProblem> {
+        // The component's entities, found by binary search in a short list instead of the
+        // sketch's map at every one of the many lookups below.
+        let lookup = crate::ground::lookup::ComponentEntities::new(self, &comp.entities);
+        let mut compiled = Vec::with_capacity(comp.constraints.len());
+        for id in &comp.constraints {
+            let pieces = self.constraint(*id)?.compile(&lookup)?;
+            let pieces = if self.priority(*id) > 0 {
+                crate::constraints::piece::as_rows(&lookup, pieces)?
+            } else {
+                pieces
+            };
+            compiled.push((*id, pieces));
+        }
+        let relaxable: Vec<ConstraintId> = comp
+            .constraints
+            .iter()
+            .copied()
+            .filter(|id| self.priority(*id) > 0)
+            .collect();
+        let mut cp = build(&lookup, comp, &compiled, &relaxable, pin)?;
+        if !relaxable.is_empty() && pin.is_some() {
+            // The cursor is a wish below every tier: the constraints are met first, the
+            // dragged point then comes as close to it as they allow.
+            cp.problem
+                .set_priority(crate::component::DRAG_CONSTRAINT, Priority::MAX);
+        }
+        for id in relaxable {
+            cp.problem.set_priority(id, self.priority(id));
+        }
+        Ok(cp)
+    }
+
+    /// Marks an entity as changed, so that the next solve solves its component.
+    pub(crate) fn mark_dirty(&mut self, id: EntityId) {
+        self.dirty.insert(id);
+        self.revision += 1;
+    }
+
+    pub(crate) fn is_dirty(&self, comp: &Component) -> bool {
+        comp.entities.iter().any(|e| self.dirty.contains(e))
+    }
+
+    /// Stores solved free parameters (contact parameters, a custom constraint's own) into
+    /// their constraints: (constraint, k, value) for the k-th free parameter of each.
+    pub(crate) fn store_free(&mut self, free: &[(ConstraintId, usize, f64)]) {
+        for (id, k, u) in free {
+            if let Some(slot) = self.constraints.get_mut(id) {
+                slot.0.set_free_parameter(*k, *u);
+            }
+        }
+    }
+
+    /// Writes solved entities and clears their dirty marks.
+    pub(crate) fn commit(&mut self, updates: Vec<(EntityId, Entity)>, clean: &[EntityId]) {
+        for (id, e) in updates {
+            if let Some(slot) = self.entities.get_mut(&id) {
+                slot.0 = e;
+            }
+        }
+        for id in clean {
+            self.dirty.remove(id);
+        }
+        self.revision += 1;
+    }
+}
