@@ -113,9 +113,9 @@ impl Sketch {
         cp.problem.set_cancel(options.cancel.clone());
         cp.problem.start_budget(options.nonlinear.max_evaluations);
         let outcome = match self.solve_from_each_start(cp, options) {
-            Err(_) if options.cancel.as_ref().is_some_and(|c| c.is_cancelled()) => {
-                Err(crate::ground::errors::Error::Solve(camber_solve::Error::Cancelled))
-            }
+            Err(_) if options.cancel.as_ref().is_some_and(|c| c.is_cancelled()) => Err(
+                crate::ground::errors::Error::Solve(camber_solve::Error::Cancelled),
+            ),
             outcome => outcome,
         };
         cp.problem.end_budget();
