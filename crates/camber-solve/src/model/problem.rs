@@ -415,7 +415,7 @@ impl Problem {
     /// Watches `cancel` in every evaluation charged from now on: once it is raised, the solve
     /// stops at its next evaluation with [`crate::Error::Cancelled`] ([`crate::Options::cancel`];
     /// a solve that starts its own budget sets it from its options).
-    pub fn set_cancel(&mut self, cancel: Option<crate::CancelFlag>) {
+    pub fn set_cancel(&mut self, cancel: Option<crate::model::options::CancelFlag>) {
         self.budget.set_cancel(cancel);
     }
 
