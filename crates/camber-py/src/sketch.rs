@@ -13,7 +13,9 @@ use pyo3::types::PyDict;
 
 use crate::arrays::{points, vector};
 use crate::curve::{AnyCurve, Curve};
+use crate::custom::Raised;
 use crate::errors;
+use crate::interrupt;
 use crate::json::{to_python, to_value};
 
 /// A point reference: an int (a point entity) or its file form (`{"point": 0}`,
@@ -60,13 +62,11 @@ impl Sketch {
         Self::default()
     }
 
-    /// Reads a sketch from its JSON text.
+    /// Reads a sketch from its JSON text (Ctrl-C stops a long read).
     #[staticmethod]
     fn from_json(py: Python<'_>, text: &str) -> PyResult<Self> {
-        let text = text.to_owned();
-        let inner = py
-            .detach(move || camber_sketch::file::from_json(&text))
-            .map_err(errors::file)?;
+        let inner =
+            interrupt::run(py, |_| camber_sketch::file::from_json(text))?.map_err(errors::file)?;
         Ok(Self { inner })
     }
 
@@ -250,13 +250,14 @@ impl Sketch {
     #[pyo3(signature = (residual, args, dim, name = "python".to_owned(), affine = false))]
     fn add_custom(
         &mut self,
+        py: Python<'_>,
         residual: Py<PyAny>,
         args: Vec<Bound<'_, PyAny>>,
         dim: usize,
         name: String,
         affine: bool,
     ) -> PyResult<u64> {
-        let c = crate::custom::custom(residual, &args, dim, name, affine)?;
+        let c = crate::custom::custom(py, residual, &args, dim, name, affine)?;
         Ok(self.inner.add_constraint(c).map_err(errors::sketch)?.0)
     }
 
@@ -307,30 +308,27 @@ impl Sketch {
 
     /// Solves the components changed since the last solve (every component with `all=True`).
     /// Returns a `SolveReport`; raises `SolveError` (the sketch unchanged) when a component
-    /// fails. The GIL is released during the solve.
+    /// fails, or the exception a custom residual raised when that made it fail. The GIL is
+    /// released during the solve; Ctrl-C stops it (`KeyboardInterrupt`, the sketch unchanged).
     #[pyo3(signature = (all = false))]
     fn solve(&mut self, py: Python<'_>, all: bool) -> PyResult<Py<PyAny>> {
+        let raised = Raised::of(&self.inner);
         let inner = &mut self.inner;
-        let report = py
-            .detach(|| {
-                if all {
-                    inner.solve_all()
-                } else {
-                    inner.solve()
-                }
-            })
-            .map_err(errors::solve);
-        crate::custom::raise_pending(py)?;
-        report_object(py, &report?)
+        let report = interrupt::run(py, |flag| {
+            cancellable(inner, flag, |s| if all { s.solve_all() } else { s.solve() })
+        });
+        let report = raised.finish(py, report, |e| errors::solve_in(inner, e))?;
+        report_object(py, &report)
     }
 
     /// The DOF analysis of every component: a list of {"component", "analysis": {"unknowns",
-    /// "rank", "dof", "redundant", "conflicting", …}}.
-    fn analyze(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
-        let inner = &self.inner;
-        let analysis = py.detach(|| inner.analyze()).map_err(errors::solve);
-        crate::custom::raise_pending(py)?;
-        to_python(py, &analysis?)
+    /// "rank", "dof", "redundant", "conflicting", …}}. Ctrl-C stops it.
+    fn analyze(&mut self, py: Python<'_>) -> PyResult<Py<PyAny>> {
+        let raised = Raised::of(&self.inner);
+        let inner = &mut self.inner;
+        let analysis = interrupt::run(py, |flag| cancellable(inner, flag, |s| s.analyze()));
+        let analysis = raised.finish(py, analysis, |e| errors::solve_in(inner, e))?;
+        to_python(py, &analysis)
     }
 
     /// Solves contacts with fixed circles and lines by iterative displacement (the blade-design
@@ -348,12 +346,12 @@ impl Sketch {
             tolerance,
             samples,
         };
+        let raised = Raised::of(&self.inner);
         let inner = &mut self.inner;
-        let run = py
-            .detach(|| inner.solve_by_displacement(&options))
-            .map_err(errors::solve);
-        crate::custom::raise_pending(py)?;
-        let run = run?;
+        let run = interrupt::run(py, |flag| {
+            cancellable(inner, flag, |s| s.solve_by_displacement(&options))
+        });
+        let run = raised.finish(py, run, |e| errors::solve_in(inner, e))?;
         let out = PyDict::new(py);
         out.set_item("rounds", run.rounds)?;
         out.set_item("converged", run.converged)?;
@@ -363,19 +361,23 @@ impl Sketch {
     }
 
     /// Starts dragging a point; `session.update(xy)` moves it, `session.finish()` writes the
-    /// dragged state back into this sketch.
+    /// dragged state back into this sketch. Ctrl-C stops a long start.
     fn drag(slf: Bound<'_, Self>, at: &Bound<'_, PyAny>) -> PyResult<DragSession> {
         let r = point_ref(at)?;
         let py = slf.py();
-        let session = {
-            let this = slf.borrow();
-            let inner = &this.inner;
-            py.detach(|| inner.drag(r)).map_err(errors::solve)
+        let (session, raised) = {
+            let mut this = slf.borrow_mut();
+            let raised = Raised::of(&this.inner);
+            let inner = &mut this.inner;
+            let session = interrupt::run(py, |flag| cancellable(inner, flag, |s| s.drag(r)));
+            let mut session = raised.finish(py, session, |e| errors::solve_in(inner, e))?;
+            session.set_cancel(None);
+            (session, raised)
         };
-        crate::custom::raise_pending(py)?;
         Ok(DragSession {
-            session: Some(session?),
+            session: Some(session),
             sketch: slf.unbind(),
+            raised,
         })
     }
 
@@ -388,11 +390,27 @@ impl Sketch {
     }
 }
 
+/// Runs `work` on `sketch` with `flag` as its solves' cancel flag, the sketch's options as
+/// they were afterwards.
+fn cancellable<T>(
+    sketch: &mut camber_sketch::Sketch,
+    flag: &camber_solve::CancelFlag,
+    work: impl FnOnce(&mut camber_sketch::Sketch) -> T,
+) -> T {
+    let before = sketch.options().cancel.clone();
+    sketch.set_options(sketch.options().clone().with_cancel(Some(flag.clone())));
+    let out = work(sketch);
+    sketch.set_options(sketch.options().clone().with_cancel(before));
+    out
+}
+
 /// An interactive drag of one point of a sketch (see `Sketch.drag`).
 #[pyclass(module = "camber._native")]
 pub struct DragSession {
     session: Option<camber_sketch::DragSession>,
     sketch: Py<Sketch>,
+    /// The exception slots of the Python residuals the drag runs.
+    raised: Raised,
 }
 
 impl DragSession {
@@ -405,13 +423,24 @@ impl DragSession {
 
 #[pymethods]
 impl DragSession {
-    /// Moves the dragged point towards `target` and re-solves its component (GIL released).
+    /// Moves the dragged point towards `target` and re-solves its component (GIL released,
+    /// Ctrl-C honoured). A target farther than a thousand sketch sizes from the sketch is
+    /// refused with `SolveError`; a refused update keeps the session's state.
     fn update(&mut self, py: Python<'_>, target: Vec<f64>) -> PyResult<()> {
         let p = xy(&target, "target")?;
-        let session = self.live()?;
-        let done = py.detach(|| session.update(p)).map_err(errors::solve);
-        crate::custom::raise_pending(py)?;
-        done
+        let session = self
+            .session
+            .as_mut()
+            .ok_or_else(|| errors::SolveError::new_err("the drag session is finished"))?;
+        let done = interrupt::run(py, |flag| {
+            session.set_cancel(Some(flag.clone()));
+            let done = session.update(p);
+            session.set_cancel(None);
+            done
+        });
+        let sketch = self.sketch.borrow(py);
+        self.raised
+            .finish(py, done, |e| errors::solve_in(&sketch.inner, e))
     }
 
     /// A point's coordinates in the dragged state.

@@ -7,6 +7,7 @@
 //! entities they touch as dirty, and [`Sketch::solve`] solves only the components that contain a
 //! dirty entity.
 
+mod describe;
 pub mod warnings;
 
 use std::collections::{BTreeMap, BTreeSet};
