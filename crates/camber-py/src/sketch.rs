@@ -424,9 +424,10 @@ impl DragSession {
 #[pymethods]
 impl DragSession {
     /// Moves the dragged point towards `target` and re-solves its component (GIL released,
-    /// Ctrl-C honoured). A target farther than a thousand sketch sizes from the sketch is
-    /// refused with `SolveError`; a refused update keeps the session's state.
-    fn update(&mut self, py: Python<'_>, target: Vec<f64>) -> PyResult<()> {
+    /// Ctrl-C honoured). Returns what changed: `{"moved": [entity ids], "residuals":
+    /// {constraint id: max |g|}}`. A target farther than a thousand sketch sizes from the
+    /// sketch is refused with `SolveError`; a refused update keeps the session's state.
+    fn update<'py>(&mut self, py: Python<'py>, target: Vec<f64>) -> PyResult<Bound<'py, PyDict>> {
         let p = xy(&target, "target")?;
         let session = self
             .session
@@ -434,13 +435,24 @@ impl DragSession {
             .ok_or_else(|| errors::SolveError::new_err("the drag session is finished"))?;
         let done = interrupt::run(py, |flag| {
             session.set_cancel(Some(flag.clone()));
-            let done = session.update(p);
+            let done = session.update(p).cloned();
             session.set_cancel(None);
             done
         });
-        let sketch = self.sketch.borrow(py);
-        self.raised
-            .finish(py, done, |e| errors::solve_in(&sketch.inner, e))
+        let update = {
+            let sketch = self.sketch.borrow(py);
+            self.raised
+                .finish(py, done, |e| errors::solve_in(&sketch.inner, e))?
+        };
+        let out = PyDict::new(py);
+        let moved: Vec<u64> = update.moved.iter().map(|id| id.0).collect();
+        out.set_item("moved", moved)?;
+        let residuals = PyDict::new(py);
+        for (id, r) in &update.residuals {
+            residuals.set_item(id.0, *r)?;
+        }
+        out.set_item("residuals", residuals)?;
+        Ok(out)
     }
 
     /// A point's coordinates in the dragged state.

@@ -43,7 +43,7 @@ impl Sketch {
     pub fn analyze(&self) -> Result<Vec<ComponentAnalysis>> {
         let mut out = Vec::new();
         for comp in self.components() {
-            let cp = self.build_component(&comp, None)?;
+            let cp = self.build_component(&comp)?;
             let mut analysis = cp.problem().analyze(&self.solve_options())?;
             cp.name_merged_redundant(&mut analysis.redundant);
             let conflicting = &analysis.conflicting;
