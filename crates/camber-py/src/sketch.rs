@@ -28,6 +28,17 @@ pub fn point_ref(obj: &Bound<'_, PyAny>) -> PyResult<PointRef> {
         .map_err(|e| errors::SketchError::new_err(format!("invalid point reference: {e}")))
 }
 
+/// A priority tier from its file form: an integer from 0 to 255.
+fn priority(v: &serde_json::Value) -> PyResult<u8> {
+    v.as_u64()
+        .and_then(|p| u8::try_from(p).ok())
+        .ok_or_else(|| {
+            errors::FileError::new_err(format!(
+                "priority: expected a priority tier, an integer from 0 (required) to 255, found {v}"
+            ))
+        })
+}
+
 fn xy(v: &[f64], what: &str) -> PyResult<Point2<f64>> {
     Ok(Point2::from(vector::<2>(v, what)?))
 }
@@ -222,7 +233,8 @@ impl Sketch {
     /// `sketch.add_constraint("tangent_to_circle", curve=0, circle=1, u={"free": 0.5},
     /// side="outside", rotation="clockwise")`. The kind's JSON is read by the library's own
     /// loader, so every kind and field the file format has is available and checked the same
-    /// way (errors name the bad field).
+    /// way (errors name the bad field). `priority=P` (0 required, the default; 1–255 a tier
+    /// that gives way to lower ones when not all can be met) is the file's `"priority"` field.
     #[pyo3(signature = (kind, **fields))]
     fn add_constraint(&mut self, kind: &str, fields: Option<&Bound<'_, PyDict>>) -> PyResult<u64> {
         let mut map = match fields {
@@ -232,9 +244,37 @@ impl Sketch {
             },
             None => serde_json::Map::new(),
         };
+        let priority = match map.remove("priority") {
+            None => 0,
+            Some(v) => priority(&v)?,
+        };
         map.insert("kind".into(), serde_json::Value::String(kind.to_owned()));
         let c = constraint_from_value(serde_json::Value::Object(map)).map_err(errors::file)?;
-        Ok(self.inner.add_constraint(c).map_err(errors::sketch)?.0)
+        let id = self.inner.add_constraint(c).map_err(errors::sketch)?;
+        if priority > 0 {
+            if let Err(e) = self.inner.set_priority(id, priority) {
+                // The constraint goes with its refused priority: nothing half added.
+                let _ = self.inner.remove_constraint(id);
+                return Err(errors::sketch(e));
+            }
+        }
+        Ok(id.0)
+    }
+
+    /// Sets a constraint's priority tier (0 required; 1–255 gives way to lower tiers when not
+    /// every constraint can be met).
+    fn set_priority(&mut self, id: u64, priority: u8) -> PyResult<()> {
+        self.inner
+            .set_priority(ConstraintId(id), priority)
+            .map_err(errors::sketch)
+    }
+
+    /// A constraint's priority tier (0 for a required one).
+    fn priority(&self, id: u64) -> PyResult<u8> {
+        self.inner
+            .constraint(ConstraintId(id))
+            .map_err(errors::sketch)?;
+        Ok(self.inner.priority(ConstraintId(id)))
     }
 
     /// Adds a custom constraint whose residual is the Python function `residual(x)`; returns
@@ -280,13 +320,19 @@ impl Sketch {
             .collect())
     }
 
-    /// A constraint's file form as a dict (`{"kind": …, …fields}`).
+    /// A constraint's file form as a dict (`{"kind": …, …fields}`, with `"priority"` when it
+    /// is not 0, as in a sketch file).
     fn constraint(&self, py: Python<'_>, id: u64) -> PyResult<Py<PyAny>> {
         let c = self
             .inner
             .constraint(ConstraintId(id))
             .map_err(errors::sketch)?;
-        to_python(py, &constraint_to_value(c).map_err(errors::file)?)
+        let mut value = constraint_to_value(c).map_err(errors::file)?;
+        let priority = self.inner.priority(ConstraintId(id));
+        if let (serde_json::Value::Object(map), true) = (&mut value, priority > 0) {
+            map.insert("priority".into(), priority.into());
+        }
+        to_python(py, &value)
     }
 
     /// Removes a constraint; returns its file form (custom constraints: their name).
