@@ -78,11 +78,7 @@ impl Sketch {
     /// [`crate::Error::ContactCrossed`], [`crate::Error::Cusp`], …); the sketch is unchanged
     /// then.
     pub fn solve(&mut self) -> Result<SketchReport> {
-        let comps: Vec<Component> = self
-            .components()
-            .into_iter()
-            .filter(|c| self.is_dirty(c))
-            .collect();
+        let comps = self.dirty_components();
         self.solve_components(comps)
     }
 

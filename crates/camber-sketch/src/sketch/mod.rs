@@ -678,6 +678,48 @@ impl Sketch {
         out
     }
 
+    /// The components holding a dirty entity, as [`Sketch::components`] gives them (entities
+    /// and constraints sorted, ordered by smallest entity id), found by walking the graph from
+    /// the dirty entities only: a re-solve after one edit costs the size of what it touches,
+    /// not of the sketch.
+    pub(crate) fn dirty_components(&self) -> Vec<Component> {
+        let mut seen = vec![false; self.graph.node_bound()];
+        let mut out = Vec::new();
+        let mut stack = Vec::new();
+        for id in &self.dirty {
+            let Some((_, node)) = self.entities.get(id) else {
+                continue;
+            };
+            if seen[node.index()] {
+                continue;
+            }
+            let mut comp = Component {
+                entities: Vec::new(),
+                constraints: Vec::new(),
+            };
+            seen[node.index()] = true;
+            stack.push(*node);
+            while let Some(n) = stack.pop() {
+                match self.graph.node_weight(n) {
+                    Some(Node::Entity(e)) => comp.entities.push(*e),
+                    Some(Node::Constraint(c)) => comp.constraints.push(*c),
+                    None => {}
+                }
+                for m in self.graph.neighbors(n) {
+                    if !seen[m.index()] {
+                        seen[m.index()] = true;
+                        stack.push(m);
+                    }
+                }
+            }
+            comp.entities.sort_unstable();
+            comp.constraints.sort_unstable();
+            out.push(comp);
+        }
+        out.sort_unstable_by_key(|c| c.entities.first().copied());
+        out
+    }
+
     /// The component containing an entity.
     ///
     /// # Errors
@@ -801,10 +843,6 @@ impl Sketch {
     fn touch(&mut self, id: EntityId) {
         self.prepared.forget_entity(id);
         self.dirty.insert(id);
-    }
-
-    pub(crate) fn is_dirty(&self, comp: &Component) -> bool {
-        comp.entities.iter().any(|e| self.dirty.contains(e))
     }
 
     /// Stores solved free parameters (contact parameters, a custom constraint's own) into
