@@ -89,6 +89,7 @@ pub use analysis::{
     analyze, analyze_rows, analyze_rows_sparse, mobility, multipliers, Dependency, DependentRow,
     DofAnalysis, Mobility, RowAnalysis, StructureSummary, DENSE_ANALYSIS_MAX_ENTRIES,
 };
+pub use linalg::min_norm::MinNormFactorization;
 pub use linalg::reduced::{Linearization, ReducedMap};
 pub use linalg::sparse::SparseMatrix;
 pub use solvers::lsq::{solve_least_squares, LsqOptions, LsqReport};

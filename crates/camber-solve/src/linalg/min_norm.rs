@@ -178,7 +178,6 @@ impl MinNormFactorization {
     }
 
     /// Whether the sparse backend is in use.
-    #[cfg(test)]
     pub fn is_sparse(&self) -> bool {
         matches!(self.backend, Backend::Sparse { .. })
     }
