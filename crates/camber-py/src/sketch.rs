@@ -335,23 +335,6 @@ impl Sketch {
         to_python(py, &value)
     }
 
-    /// Sets a dimension's value (a distance, a radius, an angle, an arc length, …); the next
-    /// `solve()` re-solves only its component, on the problem the last solve prepared.
-    fn set_value(&mut self, id: u64, value: f64) -> PyResult<()> {
-        self.inner
-            .set_value(ConstraintId(id), value)
-            .map_err(errors::sketch)
-    }
-
-    /// A dimension's value, or None for a kind without one.
-    fn value(&self, id: u64) -> PyResult<Option<f64>> {
-        Ok(self
-            .inner
-            .constraint(ConstraintId(id))
-            .map_err(errors::sketch)?
-            .value())
-    }
-
     /// Removes a constraint; returns its file form (custom constraints: their name).
     fn remove_constraint(&mut self, py: Python<'_>, id: u64) -> PyResult<Py<PyAny>> {
         let c = self

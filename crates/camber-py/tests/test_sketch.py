@@ -140,23 +140,3 @@ def test_entities_from_curve_objects():
     with pytest.raises(camber.SketchError, match="not a curve"):
         s.curve(circ)
     json.dumps(s.components())
-
-
-def test_a_dimension_edit_resolves_its_component_to_the_new_value():
-    s = camber.Sketch()
-    a = s.add_point([0.0, 0.0])
-    b = s.add_point([1.0, 0.0])
-    s.add_constraint("fixed", target={"point": {"point": a}})
-    d = s.add_constraint("distance", a={"point": a}, b={"point": b}, distance=1.0)
-    s.solve()
-    s.set_value(d, 2.5)
-    assert s.value(d) == 2.5
-    s.solve()
-    np.testing.assert_allclose(s.point({"point": b}), [2.5, 0.0], atol=1e-12)
-    fixed = next(c for c in s.constraint_ids() if c != d)
-    assert s.value(fixed) is None
-    with pytest.raises(camber.SketchError, match="no value"):
-        s.set_value(fixed, 1.0)
-    with pytest.raises(camber.SketchError):
-        s.set_value(d, float("nan"))
-    assert s.value(d) == 2.5

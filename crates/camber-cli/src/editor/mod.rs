@@ -48,7 +48,7 @@ use crate::sketch_file::{self, describe_error};
 use wire::{
     AnalysisJson, ComponentJson, ComponentReportJson, ConstraintRef, ConstraintResidualJson,
     DragMove, DragStart, DraggedJson, ErrorJson, MoveJson, ReportJson, SavedJson, SceneJson,
-    StateJson, ValueEdit,
+    StateJson,
 };
 
 /// The page, its script and its style sheet, built into the binary.
@@ -279,7 +279,6 @@ impl EditorState {
             ("POST", "/api/drag/end") => self.drag_end(),
             ("POST", "/api/drag/cancel") => self.drag_cancel(),
             ("POST", "/api/solve") => self.solve(),
-            ("POST", "/api/value") => self.set_value(body),
             ("POST", "/api/undo") => self.undo(),
             ("POST", "/api/save") => self.save(),
             (_, p) if ROUTES.contains(&p) => {
@@ -545,59 +544,24 @@ impl EditorState {
             )
         })?;
         self.committed(before)?;
-        let components = component_reports(&report);
+        let components: Vec<ComponentReportJson> = report
+            .components
+            .iter()
+            .map(|c| {
+                let r = &c.report;
+                ComponentReportJson {
+                    entities: c.component.entities.iter().map(|e| e.0).collect(),
+                    solver: crate::sketch_file::solver_name(r.solver).to_owned(),
+                    reason: r.reason.clone(),
+                    dof: Some(r.dof),
+                    residual: r.residuals.iter().fold(0.0_f64, |m, g| m.max(g.max_abs)),
+                    time_ms: r.elapsed.as_secs_f64() * 1e3,
+                }
+            })
+            .collect();
         self.report = Some(ReportJson {
             action: "solve",
             summary: format!("solved {} component(s)", components.len()),
-            components,
-        });
-        self.state_answer()
-    }
-
-    /// `POST /api/value`: sets a dimension's value and re-solves the sketch (only the edited
-    /// constraint's component is dirty, and it re-solves on the problem the last solve
-    /// prepared). A refused value or a failed solve leaves the sketch as it was.
-    fn set_value(&mut self, body: &[u8]) -> Answer {
-        let req: ValueEdit = parse(body)?;
-        self.no_drag("edit a value")?;
-        if req.constraint > MAX_EDITOR_ID {
-            return Err(Failure::new(
-                404,
-                format!("constraint {} does not exist", req.constraint),
-            ));
-        }
-        let before = self.sketch.clone();
-        let id = ConstraintId(req.constraint);
-        if let Err(e) = self.sketch.set_value(id, req.value) {
-            let status = match e {
-                camber_sketch::Error::UnknownConstraint { .. } => 404,
-                _ => 422,
-            };
-            return Err(Failure::new(
-                status,
-                format!("value refused: {}", describe_error(&before, &e)),
-            ));
-        }
-        let report = match self.sketch.solve() {
-            Ok(report) => report,
-            Err(e) => {
-                self.sketch = before;
-                return Err(Failure::new(
-                    422,
-                    format!("solve failed: {}", describe_error(&self.sketch, &e)),
-                ));
-            }
-        };
-        self.committed(before)?;
-        let components = component_reports(&report);
-        self.report = Some(ReportJson {
-            action: "value",
-            summary: format!(
-                "set constraint {} to {}; solved {} component(s)",
-                req.constraint,
-                crate::short_number(req.value),
-                components.len()
-            ),
             components,
         });
         self.state_answer()
@@ -653,27 +617,8 @@ impl EditorState {
     }
 }
 
-/// The report lines of a sketch solve, one per component.
-fn component_reports(report: &camber_sketch::SketchReport) -> Vec<ComponentReportJson> {
-    report
-        .components
-        .iter()
-        .map(|c| {
-            let r = &c.report;
-            ComponentReportJson {
-                entities: c.component.entities.iter().map(|e| e.0).collect(),
-                solver: crate::sketch_file::solver_name(r.solver).to_owned(),
-                reason: r.reason.clone(),
-                dof: Some(r.dof),
-                residual: r.residuals.iter().fold(0.0_f64, |m, g| m.max(g.max_abs)),
-                time_ms: r.elapsed.as_secs_f64() * 1e3,
-            }
-        })
-        .collect()
-}
-
 /// Every path the editor answers, for telling 405 from 404.
-const ROUTES: [&str; 13] = [
+const ROUTES: [&str; 12] = [
     "/",
     "/index.html",
     "/editor.js",
@@ -684,7 +629,6 @@ const ROUTES: [&str; 13] = [
     "/api/drag/end",
     "/api/drag/cancel",
     "/api/solve",
-    "/api/value",
     "/api/undo",
     "/api/save",
 ];
@@ -800,51 +744,5 @@ mod tests {
         assert_eq!(ed.handle("POST", "/api/solve", b"{}").status, 200);
         assert!(unsaved(&ed));
         assert_eq!(ed.version, 2);
-    }
-
-    #[test]
-    fn a_value_edit_resolves_to_the_new_dimension_and_bad_edits_change_nothing() {
-        let text = r#"{"version": 1,
-          "entities": [{"id": 0, "kind": "point", "at": [0, 0]}, {"id": 1, "kind": "point", "at": [1, 0]}],
-          "constraints": [
-            {"id": 2, "kind": "fixed", "target": {"point": {"point": 0}}},
-            {"id": 3, "kind": "distance", "a": {"point": 0}, "b": {"point": 1}, "distance": 1}
-          ]}"#;
-        let sketch = crate::sketch_file::parse(text).unwrap();
-        let mut ed = EditorState::new(sketch, "s.json".into(), None).unwrap();
-        let edit =
-            |ed: &mut EditorState, body: &str| ed.handle("POST", "/api/value", body.as_bytes());
-        assert_eq!(
-            edit(&mut ed, r#"{"constraint": 3, "value": 2.5}"#).status,
-            200
-        );
-        let b = ed.sketch.point(PointRef::Point(EntityId(1))).unwrap();
-        assert!((b.x - 2.5).abs() < 1e-12 && b.y.abs() < 1e-12, "{b}");
-        let version = ed.version;
-        // A kind without a value, a bad value, an unknown constraint, a malformed body.
-        assert_eq!(
-            edit(&mut ed, r#"{"constraint": 2, "value": 1}"#).status,
-            422
-        );
-        assert_eq!(
-            edit(&mut ed, r#"{"constraint": 3, "value": -1}"#).status,
-            422
-        );
-        assert_eq!(
-            edit(&mut ed, r#"{"constraint": 99, "value": 1}"#).status,
-            404
-        );
-        assert_eq!(edit(&mut ed, r#"{"constraint": 3}"#).status, 400);
-        assert_eq!(ed.version, version);
-        assert_eq!(
-            ed.sketch.constraint(ConstraintId(3)).unwrap().value(),
-            Some(2.5)
-        );
-        // Undo goes back to the old dimension and its geometry.
-        assert_eq!(ed.handle("POST", "/api/undo", b"{}").status, 200);
-        assert_eq!(
-            ed.sketch.constraint(ConstraintId(3)).unwrap().value(),
-            Some(1.0)
-        );
     }
 }

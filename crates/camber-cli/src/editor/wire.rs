@@ -32,17 +32,6 @@ pub struct DragMove {
     pub to: [f64; 2],
 }
 
-/// `POST /api/value`: a dimension's new value (`Sketch::set_value`); the sketch is then
-/// re-solved.
-#[derive(Debug, Clone, Copy, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct ValueEdit {
-    /// The constraint id.
-    pub constraint: u64,
-    /// Its new value.
-    pub value: f64,
-}
-
 /// One entity as drawn: its points (control points, line ends, circle centre, the point), the
 /// radius of a circle, the sampled polyline of a curve.
 #[derive(Debug, Clone, PartialEq, Serialize)]
