@@ -194,7 +194,10 @@ where
     let mut slopes = Vec::with_capacity(parameters.len() - 1);
     let mut errors = Vec::with_capacity(parameters.len() - 1);
     for k in 0..parameters.len() - 1 {
-        let (u, s) = ((parameters[k], parameters[k + 1]), (lengths[k], lengths[k + 1]));
+        let (u, s) = (
+            (parameters[k], parameters[k + 1]),
+            (lengths[k], lengths[k + 1]),
+        );
         let slope = interval_slopes(curve, u, s, &mut meter)?;
         errors.push(measure(curve, &nodes, u, s, slope, &mut meter)?);
         slopes.push(slope);
@@ -230,7 +233,10 @@ where
                 let s_mid = lengths[k] + rule(curve, &nodes, u0, mid, &mut meter)?;
                 new_parameters.push(mid);
                 new_lengths.push(s_mid);
-                for (u, s) in [((u0, mid), (lengths[k], s_mid)), ((mid, u1), (s_mid, lengths[k + 1]))] {
+                for (u, s) in [
+                    ((u0, mid), (lengths[k], s_mid)),
+                    ((mid, u1), (s_mid, lengths[k + 1])),
+                ] {
                     let slope = interval_slopes(curve, u, s, &mut meter)?;
                     new_errors.push(measure(curve, &nodes, u, s, slope, &mut meter)?);
                     new_slopes.push(slope);
