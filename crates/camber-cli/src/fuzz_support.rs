@@ -16,6 +16,8 @@
 //! - [`editor`]: a script of requests to [`EditorState::handle`] on a bundled sketch; no
 //!   answer is a 500 (an internal failure), every answer to an API path is JSON, and the state
 //!   stays readable.
+//! - [`toolkit`]: one or two curves and some numbers through every curve-toolkit operation
+//!   under a small work budget (see [`mod@toolkit`] for its promises).
 //!
 //! The work per input is bounded here (input size, entity and constraint counts, degrees,
 //! repeat counts, the evaluations a solve may spend), so that one input cannot take the
@@ -30,6 +32,9 @@ use crate::commands::op::{Op, Output};
 use crate::commands::{check, eval, render, render_curve, solve, surface as surface_cmd};
 use crate::curve_file::Curve;
 use crate::editor::EditorState;
+
+mod toolkit;
+pub use toolkit::{toolkit, TOOLKIT_WORK};
 
 /// The largest input any target reads, in bytes (libFuzzer's `-max_len` should not exceed it).
 pub const MAX_INPUT: usize = 64 * 1024;

@@ -407,17 +407,28 @@ impl<const D: usize> Prepared<D> {
     }
 }
 
+/// What the point search does on meeting a tangential contact.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum OnTangent {
+    /// Keep it and go on.
+    Keep,
+    /// Stop and return `None`: the caller looks for overlaps first (inside a coincident
+    /// stretch every contact is tangential, and refining them all would be wasted).
+    Stop,
+}
+
 /// The points [`intersect_curves`] finds, without the stretches of `a` in `excluded` (sorted,
 /// disjoint parameter intervals of `a` already known to overlap `b`): piece pairs whose `a`
-/// piece lies inside one are dropped, and so are contacts found inside one.
+/// piece lies inside one are dropped, and so are contacts found inside one. `None` when
+/// `on_tangent` is [`OnTangent::Stop`] and a tangential contact was found.
 pub(super) fn intersect_excluding<const D: usize, A, B>(
     a: &A,
     b: &B,
     opts: &CurveCurveOptions,
     prepared: &Prepared<D>,
-    excluded: &[(f64, f64)],
+    (excluded, on_tangent): (&[(f64, f64)], OnTangent),
     meter: &mut Meter<'_>,
-) -> Result<Vec<CurvePairPoint<D>>>
+) -> Result<Option<Vec<CurvePairPoint<D>>>>
 where
     A: ParametricCurve<f64, D> + ?Sized,
     B: ParametricCurve<f64, D> + ?Sized,
@@ -491,6 +502,9 @@ where
                 }
             }
         }
+        if hit.tangential && on_tangent == OnTangent::Stop {
+            return Ok(None);
+        }
         found.add(hit, |candidate, kept| {
             // The closer of two seeds' answers, and between gaps equal to rounding the one
             // with the more parallel tangents (a touch located sharply).
@@ -509,7 +523,7 @@ where
     }
     let mut found = found.into_points();
     found.sort_by(|x, y| x.parameter_a.total_cmp(&y.parameter_a));
-    Ok(found)
+    Ok(Some(found))
 }
 
 /// Contacts kept distinct: a new one within `merge` of a kept one (on the first curve) is the

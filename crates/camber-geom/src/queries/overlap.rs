@@ -1,10 +1,11 @@
 //! Curve–curve intersection with overlaps: where two curves coincide along a stretch, the
 //! stretch is reported as a pair of parameter intervals instead of (too many) points.
 //!
-//! **Points first.** The point search of [`super::intersect_curves`] runs first. Inside a
-//! stretch where the curves coincide every contact it finds is tangential, so when none of its
-//! contacts is tangential (and it did not run out of candidates) there is no overlap longer
-//! than a leaf and the points are the answer.
+//! **Points first.** The point search of [`super::intersect_curves`] runs first, and stops at
+//! its first tangential contact. Inside a stretch where the curves coincide every contact is
+//! tangential, so when none is (and the search did not run out of candidates) there is no
+//! overlap longer than a leaf and the points are the answer; otherwise the overlaps are looked
+//! for before any more contacts are refined.
 //!
 //! **Finding overlaps.** Otherwise curve `a` is sampled (33 parameters per Bézier piece, ends
 //! included); a sample is *on* `b` when its distance to `b` is within the tolerance — measured
@@ -24,7 +25,9 @@
 
 use nalgebra::Point;
 
-use super::curve_curve::{foot, intersect_excluding, CurveCurveOptions, CurvePairPoint, Prepared};
+use super::curve_curve::{
+    foot, intersect_excluding, CurveCurveOptions, CurvePairPoint, OnTangent, Prepared,
+};
 use super::pieces::RationalPiece;
 use crate::budget::Meter;
 use crate::curve::ParametricCurve;
@@ -92,26 +95,28 @@ where
     let mut meter = opts
         .budget
         .meter("curve intersection", prepared.default_limit());
-    let first = intersect_excluding(a, b, opts, &prepared, &[], &mut meter);
-    match &first {
-        Ok(points) if !points.iter().any(|p| p.tangential) => {
+    let first = intersect_excluding(a, b, opts, &prepared, (&[], OnTangent::Stop), &mut meter);
+    match first {
+        Ok(Some(points)) => {
             return Ok(CurveIntersections {
-                points: first?,
+                points,
                 overlaps: Vec::new(),
             })
         }
-        Ok(_) | Err(Error::TooManyCandidates { .. }) => {}
-        Err(e) => return Err(e.clone()),
+        Ok(None) | Err(Error::TooManyCandidates { .. }) => {}
+        Err(e) => return Err(e),
     }
     let overlaps = find_overlaps(a, b, opts, &prepared, &mut meter)?;
-    if overlaps.is_empty() {
-        return first.map(|points| CurveIntersections {
-            points,
-            overlaps: Vec::new(),
-        });
-    }
     let excluded: Vec<(f64, f64)> = overlaps.iter().map(|o| o.a).collect();
-    let points = intersect_excluding(a, b, opts, &prepared, &excluded, &mut meter)?;
+    let points = intersect_excluding(
+        a,
+        b,
+        opts,
+        &prepared,
+        (&excluded, OnTangent::Keep),
+        &mut meter,
+    )?
+    .unwrap_or_default();
     Ok(CurveIntersections { points, overlaps })
 }
 
@@ -136,13 +141,17 @@ where
         let mut start = (lo, f64::INFINITY);
         meter.charge(FOOT_SAMPLES as u64 + 1)?;
         for k in 0..=FOOT_SAMPLES {
-            let t = lo + (hi - lo) * k as f64 / FOOT_SAMPLES as f64;
+            // Clamped: lo + (hi − lo) may round above hi.
+            let t = (lo + (hi - lo) * k as f64 / FOOT_SAMPLES as f64).min(hi);
             let d = (b.point(t)? - p).norm();
             if d < start.1 {
                 start = (t, d);
             }
         }
-        let t = foot(b, p, start.0, (lo, hi), meter)?;
+        // At a piece's right end the curve reports the next piece's derivative: keep Newton
+        // a hair inside (the end itself was sampled above).
+        let inner = (lo, hi - (hi - lo) * 1e-12);
+        let t = foot(b, p, start.0.min(inner.1), inner, meter)?;
         let d = (b.point(t)? - p).norm();
         let found = if d < start.1 { (t, d) } else { start };
         if best.is_none_or(|(_, bd)| found.1 < bd) {
@@ -174,7 +183,8 @@ where
     let mut params: Vec<f64> = Vec::new();
     for piece in &prepared.a {
         for k in 0..=SAMPLES_PER_PIECE {
-            let s = piece.start + (piece.end - piece.start) * k as f64 / SAMPLES_PER_PIECE as f64;
+            let s = (piece.start + (piece.end - piece.start) * k as f64 / SAMPLES_PER_PIECE as f64)
+                .min(piece.end);
             if params.last().is_none_or(|l| s > *l) {
                 params.push(s);
             }
