@@ -509,11 +509,25 @@ pub(crate) fn fit_to_tolerance_at<T: Scalar, const D: usize>(
     tolerance: f64,
     meter: &mut Meter<'_>,
 ) -> Result<Fit<T, D>> {
+    fit_on_knots(points, parameters, degree, tolerance, &[], meter)
+}
+
+/// [`fit_to_tolerance_at`] starting from the interior knots `initial` (sorted, inside (0, 1),
+/// each repeated at most `degree` times, every span holding data) instead of one polynomial
+/// span: the spans it splits are between distinct knots, and the initial multiplicities stay.
+pub(crate) fn fit_on_knots<T: Scalar, const D: usize>(
+    points: &[Point<T, D>],
+    parameters: &[T],
+    degree: usize,
+    tolerance: f64,
+    initial: &[T],
+    meter: &mut Meter<'_>,
+) -> Result<Fit<T, D>> {
     check_data(points, degree)?;
     let parameters = parameters.to_vec();
     let p = degree;
     let units = u64::try_from(points.len()).unwrap_or(u64::MAX);
-    let mut interior: Vec<T> = Vec::new();
+    let mut interior: Vec<T> = initial.to_vec();
     loop {
         let mut knots = vec![T::zero(); p + 1];
         knots.extend_from_slice(&interior);
@@ -544,9 +558,13 @@ pub(crate) fn fit_to_tolerance_at<T: Scalar, const D: usize>(
                     .unwrap_or(true)
             })
             .collect();
-        // Spans (between consecutive breaks) whose data are too far.
+        // Spans (between consecutive distinct breaks) whose data are too far.
         let mut breaks = vec![T::zero()];
-        breaks.extend_from_slice(&interior);
+        for &k in &interior {
+            if breaks.last().is_some_and(|&l| k > l) {
+                breaks.push(k);
+            }
+        }
         breaks.push(T::one());
         let mut added = Vec::new();
         for w in breaks.windows(2) {

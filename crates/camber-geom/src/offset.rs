@@ -3,28 +3,29 @@
 //!
 //! The offset of C at signed distance d is O(u) = C(u) + d·n(u), with n = (−C′_y, C′_x)/|C′|
 //! the unit normal to the left of the direction of travel (d > 0 offsets to the left). Except
-//! for lines and circles O is not a (rational) polynomial, so it is approximated.
+//! for lines and circles O is not a (rational) polynomial, so it is approximated by a cubic
+//! B-spline F(s), s = (u − a)/(b − a).
 //!
-//! **Sections.** O′ = C′·(1 − dκ) (κ the signed curvature): wherever C′ or κ jumps — at every
-//! knot of a quadratic B-spline, at a G1 joint that is not C1 — O′ jumps too, and a smooth cubic
-//! fit can only follow that with ever more control points (the error falls like the spacing, not
-//! its fourth power). So the curve is cut at those breakpoints into *sections* (a breakpoint is
-//! a cut when |O′| or its direction differs on the two sides by more than 10⁻⁶ relative,
-//! the left side read just before it), each section is approximated on its own, and the
-//! approximations are joined at triple knots (C0 in the parameter, G1 in shape where C is G1).
-//! Corners of C (tangent jumps) are not cut: the exact offset has a gap there, which the fit
-//! bridges.
+//! **Knots where O is less smooth.** O′ = C′·(1 − dκ) (κ the signed curvature), so O is as
+//! smooth as C′ and κ: where C′ or κ jumps — at every knot of a quadratic B-spline, at a G1
+//! joint that is not C1 — O′ jumps, and where only C‴ jumps (a simple knot of a cubic) O″ does.
+//! A smooth cubic follows such a jump only with ever more control points (its error falls like
+//! the spacing, or its square, instead of its fourth power: a quadratic B-spline's offset at
+//! 10⁻⁶ used to end at 1.7·10⁻⁴ with 6,145 control points). So every breakpoint of C becomes a
+//! knot of F whose multiplicity matches O there: 3 (C0) where O′ or the tangent direction of C
+//! jumps, 2 (C1) where O″ jumps, 1 otherwise — the two sides compared just before and at the
+//! breakpoint, a jump being a relative difference above 10⁻⁶. At a corner of C (a tangent jump)
+//! the exact offset has a gap, which the fit bridges across its triple knot.
 //!
-//! **Fitting a section.** O is sampled at parameters spread evenly over every piece of the
-//! section, the samples are fitted by a cubic B-spline F to half the tolerance with the
-//! section's normalized parameter (see [`crate::fit`]), and the error max |F(s) − O(u)| is
-//! measured at seven parameters between each pair of samples. Until it is within the tolerance
-//! the section's sampling is doubled (at most eight times); the error reported is the measured
-//! one either way, the largest over the sections.
+//! **Fitting.** O is sampled at parameters spread evenly over every piece, the samples are fitted
+//! by least squares on those knots to half the tolerance (spans whose data are too far are split
+//! further, see [`crate::fit`]), and the error max |F(s) − O(u)| is measured at seven parameters
+//! between each pair of samples. Until it is within the tolerance the sampling is doubled (at
+//! most eight times); the error reported is the measured one either way.
 //!
 //! The offset is not trimmed: where |d| exceeds the radius of curvature it has cusps and loops,
-//! and across a corner of C (a breakpoint where the tangent jumps) the exact offset has a gap
-//! that the fit bridges; in both cases the measured error says how well the fit follows O.
+//! and across a corner of C the fit bridges the gap; in both cases the measured error says how
+//! well the fit follows O.
 //!
 //! ```
 //! use camber_geom::offset::offset;
@@ -41,11 +42,10 @@
 use nalgebra::{Point2, Vector2};
 
 use crate::bspline::BSplineCurve;
-use crate::budget::{default_limit, Budget, Meter};
+use crate::budget::{default_limit, Budget};
 use crate::curve::ParametricCurve;
 use crate::errors::{Error, Result};
-use crate::fit::fit_to_tolerance_at;
-use crate::knots::KnotVector;
+use crate::fit::fit_on_knots;
 use crate::scalar::{cst, from_usize, re, Scalar};
 
 /// An offset curve and how far it is from the exact offset.
@@ -63,7 +63,7 @@ const START_SAMPLES: usize = 8;
 const MAX_DOUBLINGS: usize = 8;
 /// Measurement points between consecutive samples.
 const CHECKS_BETWEEN: usize = 8;
-/// A relative jump of O′ above this at a breakpoint cuts the curve there.
+/// A relative difference above this between the two sides of a breakpoint is a jump.
 const JUMP: f64 = 1e-6;
 /// How far before a breakpoint its left side is read, as a fraction of the piece on its left.
 const LEFT_LIMIT: f64 = 1e-9;
@@ -84,49 +84,46 @@ where
     Ok(p + Vector2::new(-d.y, d.x) * (distance / speed))
 }
 
-/// O′ = C′·(1 − dκ) at u, in f64 (to compare the two sides of a breakpoint).
-fn offset_derivative<T, C>(curve: &C, distance: f64, u: T) -> Result<Vector2<f64>>
-where
-    T: Scalar,
-    C: ParametricCurve<T, 2> + ?Sized,
-{
-    let [_, d1, d2] = curve.second_order(u)?;
-    let (x1, y1, x2, y2) = (re(d1.x), re(d1.y), re(d2.x), re(d2.y));
-    let speed2 = x1 * x1 + y1 * y1;
-    if speed2 <= 0.0 {
-        return Ok(Vector2::zeros());
-    }
-    let kappa = (x1 * y2 - y1 * x2) / (speed2 * speed2.sqrt());
-    Ok(Vector2::new(x1, y1) * (1.0 - distance * kappa))
+/// Whether two vectors differ by more than [`JUMP`] of the larger.
+fn jumps(x: &Vector2<f64>, y: &Vector2<f64>) -> bool {
+    (x - y).norm() > JUMP * x.norm().max(y.norm())
 }
 
-/// Whether the offset is cut at the interior breakpoint `u` (piece on its left starting at
-/// `before`): the tangent direction of C is continuous there (else it is a corner, bridged),
-/// and O′ jumps.
-fn is_cut<T, C>(curve: &C, distance: f64, before: T, u: T) -> Result<bool>
+/// The multiplicity of the fit's knot at the interior breakpoint `u` (the piece on its left
+/// starting at `before`): 3 where the tangent direction of C or O′ = C′·(1 − dκ) jumps, 2 where
+/// only O″ can (C‴ jumps), 1 otherwise.
+fn multiplicity<T, C>(curve: &C, distance: f64, before: T, u: T) -> Result<usize>
 where
     T: Scalar,
     C: ParametricCurve<T, 2> + ?Sized,
 {
     let left_u = u - (u - before) * cst::<T>(LEFT_LIMIT);
-    let (tl, tr) = (curve.derivative(left_u)?, curve.derivative(u)?);
-    let (tl, tr) = (
-        Vector2::new(re(tl.x), re(tl.y)),
-        Vector2::new(re(tr.x), re(tr.y)),
-    );
-    let (nl, nr) = (tl.norm(), tr.norm());
+    let mut sides = [[Vector2::<f64>::zeros(); 4]; 2];
+    for (side, at) in sides.iter_mut().zip([left_u, u]) {
+        let mut d = [nalgebra::SVector::<T, 2>::zeros(); 4];
+        curve.derivatives_into(at, &mut d)?;
+        for (v, w) in side.iter_mut().zip(&d) {
+            *v = Vector2::new(re(w.x), re(w.y));
+        }
+    }
+    let ([_, l1, l2, l3], [_, r1, r2, r3]) = (sides[0], sides[1]);
+    let (nl, nr) = (l1.norm(), r1.norm());
     if nl <= 0.0 || nr <= 0.0 {
-        return Ok(false);
+        return Ok(3);
     }
-    let sine = (tl.x * tr.y - tl.y * tr.x) / (nl * nr);
-    if sine.abs() > 1e-7 || tl.dot(&tr) <= 0.0 {
-        return Ok(false);
+    // O′ = C′·(1 − dκ), κ = (x′y″ − y′x″)/|C′|³.
+    let o1 = |c1: &Vector2<f64>, c2: &Vector2<f64>| {
+        let kappa = (c1.x * c2.y - c1.y * c2.x) / c1.norm().powi(3);
+        c1 * (1.0 - distance * kappa)
+    };
+    let direction = jumps(&(l1 / nl), &(r1 / nr));
+    if direction || jumps(&o1(&l1, &l2), &o1(&r1, &r2)) {
+        return Ok(3);
     }
-    let (ol, or) = (
-        offset_derivative(curve, distance, left_u)?,
-        offset_derivative(curve, distance, u)?,
-    );
-    Ok((ol - or).norm() > JUMP * ol.norm().max(or.norm()))
+    if jumps(&l2, &r2) || jumps(&l3, &r3) {
+        return Ok(2);
+    }
+    Ok(1)
 }
 
 /// The offset of the planar `curve` at signed `distance` (length units; positive to the left
@@ -184,74 +181,29 @@ where
     breaks.push(b);
     let mut meter = budget.meter("offset", default_limit(breaks.len()));
     meter.charge(0)?;
-    // Sections: runs of pieces between cuts.
-    let mut sections: Vec<&[T]> = Vec::new();
-    let mut first = 0;
-    for k in 1..breaks.len() - 1 {
-        meter.charge(4)?;
-        if is_cut(curve, re(distance), breaks[k - 1], breaks[k])? {
-            sections.push(&breaks[first..=k]);
-            first = k;
-        }
-    }
-    sections.push(&breaks[first..]);
-    let mut knots: Vec<T> = Vec::new();
-    let mut points: Vec<Point2<T>> = Vec::new();
-    let mut max_error = 0.0_f64;
-    for section in sections {
-        let piece = offset_section(curve, distance, tolerance, section, &mut meter)?;
-        max_error = max_error.max(piece.max_error);
-        // The section's curve on [0, 1] mapped onto its share of [0, 1].
-        let (c, d) = (section[0], section[section.len() - 1]);
-        let (lo, hi) = ((c - a) / (b - a), (d - a) / (b - a));
-        let map = |k: T| lo + (hi - lo) * k;
-        let own = piece.curve.knots().as_slice();
-        if knots.is_empty() {
-            knots.extend(own[..own.len() - 4].iter().map(|&k| map(k)));
-            points.extend_from_slice(piece.curve.control_points());
-        } else {
-            // The joint: a triple knot (C0), the shared end point kept once.
-            knots.extend(own[4..own.len() - 4].iter().map(|&k| map(k)));
-            points.extend_from_slice(&piece.curve.control_points()[1..]);
-        }
-        // The section's end knots (four, or three at a joint) follow the next section's
-        // start: push the end value three times now, once more at the very end.
-        knots.extend(std::iter::repeat_n(map(T::one()), 3));
-    }
-    knots.push(T::one());
-    if let Some(first) = knots.first_mut() {
-        *first = T::zero();
-    }
-    let curve = BSplineCurve::try_new(3, KnotVector::new_unchecked(knots), points)?;
-    Ok(OffsetCurve { curve, max_error })
-}
-
-/// The offset of one section (its breakpoints `breaks`, at least two) as a cubic B-spline on
-/// [0, 1] in the section's normalized parameter, with the error measured.
-fn offset_section<T, C>(
-    curve: &C,
-    distance: T,
-    tolerance: f64,
-    breaks: &[T],
-    meter: &mut Meter<'_>,
-) -> Result<OffsetCurve<T>>
-where
-    T: Scalar,
-    C: ParametricCurve<T, 2> + ?Sized,
-{
-    let (a, b) = (breaks[0], breaks[breaks.len() - 1]);
     let normalize = |u: T| (u - a) / (b - a);
+    // The fit's knots at the breakpoints, each as often as O's continuity there asks.
+    let mut knots: Vec<T> = Vec::new();
+    for k in 1..breaks.len() - 1 {
+        meter.charge(8)?;
+        let times = multiplicity(curve, re(distance), breaks[k - 1], breaks[k])?;
+        knots.extend(std::iter::repeat_n(normalize(breaks[k]), times));
+    }
     let mut per_piece = START_SAMPLES;
     let mut best: Option<OffsetCurve<T>> = None;
     for _ in 0..=MAX_DOUBLINGS {
-        let mut params = Vec::new();
+        // Charged before anything is allocated for the samples.
+        let count = (breaks.len() - 1)
+            .saturating_mul(per_piece)
+            .saturating_add(1);
+        meter.charge(u64::try_from(count).unwrap_or(u64::MAX))?;
+        let mut params = Vec::with_capacity(count);
         for w in breaks.windows(2) {
             for j in 0..per_piece {
                 params.push(w[0] + (w[1] - w[0]) * from_usize::<T>(j) / from_usize::<T>(per_piece));
             }
         }
         params.push(b);
-        meter.charge(u64::try_from(params.len()).unwrap_or(u64::MAX))?;
         let points = params
             .iter()
             .map(|&u| offset_point(curve, distance, u))
@@ -261,7 +213,7 @@ where
         if let Some(last) = fit_params.last_mut() {
             *last = T::one();
         }
-        let fit = fit_to_tolerance_at(&points, &fit_params, 3, tolerance * 0.5, meter)?;
+        let fit = fit_on_knots(&points, &fit_params, 3, tolerance * 0.5, &knots, &mut meter)?;
         let mut worst = fit.max_error;
         for w in params.windows(2) {
             meter.charge(2 * (CHECKS_BETWEEN as u64 - 1))?;

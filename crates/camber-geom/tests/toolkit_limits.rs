@@ -21,11 +21,13 @@ use camber_geom::curve::MAX_DERIVATIVE_ORDER;
 use camber_geom::fit::{fit_to_tolerance_with, ParameterMethod};
 use camber_geom::offset::{offset, offset_with};
 use camber_geom::queries::{
-    closest_point, curve_distance, intersect_curves, intersect_curves_with_overlaps,
-    CurveCurveOptions,
+    closest_point, closest_point_with, curve_distance, intersect_curves,
+    intersect_curves_with_overlaps, CurveCurveOptions, QueryOptions,
 };
-use camber_geom::{BSplineCurve2, BezierCurve2, Error, KnotVector, NurbsCurve2, ParametricCurve};
-use nalgebra::Point2;
+use camber_geom::{
+    BSplineCurve2, BezierCurve2, Error, HermiteCurve2, KnotVector, NurbsCurve2, ParametricCurve,
+};
+use nalgebra::{Point2, Vector2};
 use reference::Reference;
 
 /// A wavy clamped B-spline of `degree` through `n` control points on x ∈ [0, n/4].
@@ -45,7 +47,21 @@ fn wave(degree: usize, n: usize) -> BSplineCurve2<f64> {
 }
 
 #[test]
-fn a_huge_derivative_order_is_refused_before_allocating() {
+fn huge_orders_and_counts_are_refused_before_allocating() {
+    // Sample counts and subdivisions from outside are checked before anything is sized.
+    let h = HermiteCurve2::try_new(
+        Point2::new(0.0, 0.0),
+        Point2::new(1.0, 0.0),
+        Vector2::new(1.0, 1.0),
+        Vector2::new(1.0, -1.0),
+    )
+    .unwrap();
+    assert!(matches!(h.subdivided(1 << 40), Err(Error::TooLarge { .. })));
+    let many = QueryOptions::default().with_samples_per_piece(usize::MAX);
+    assert!(matches!(
+        closest_point_with(&h, &Point2::new(0.5, 1.0), &many),
+        Err(Error::TooLarge { .. })
+    ));
     let c = wave(3, 8);
     // 2⁴⁰ orders would be 17 TB of vectors; the order is checked first.
     assert_eq!(
@@ -222,7 +238,7 @@ fn quadratic_spline_offsets_meet_the_tolerance_with_few_points() {
         // And it is the exact offset point at the matching parameter.
         let u = a + (b - a) * s;
         let (q, t) = c.point_and_derivative(u).unwrap();
-        let exact = q + nalgebra::Vector2::new(-t.y, t.x) * (d / t.norm());
+        let exact = q + Vector2::new(-t.y, t.x) * (d / t.norm());
         assert!((p - exact).norm() <= tol, "s = {s}");
     }
 }

@@ -116,6 +116,13 @@ impl ArcLengthMap {
         self.inner.max_error()
     }
 
+    /// The tolerance the map was made to: the one asked for, or, when that was below what
+    /// f64 resolves on the curve, that floor (compare it with what you asked).
+    #[getter]
+    fn tolerance(&self) -> f64 {
+        self.inner.tolerance()
+    }
+
     /// The number of interpolation nodes.
     #[getter]
     fn node_count(&self) -> usize {
