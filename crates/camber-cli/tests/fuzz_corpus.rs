@@ -55,6 +55,11 @@ fn editor_corpus_replays() {
 }
 
 #[test]
+fn expression_corpus_replays() {
+    replay("expression", fuzz_support::expression);
+}
+
+#[test]
 fn toolkit_corpus_replays() {
     replay("toolkit", fuzz_support::toolkit);
 }
