@@ -13,13 +13,13 @@
 //! - [`curve`]: curve file bytes → load → evaluate, draw, and every `camber op` at a few
 //!   parameters; every result saves to a file that loads again.
 //! - [`surface`]: a surface case → G1 deformation → report and plot.
-//! - [`expression`]: rows of expression text compiled against a fixed sketch, evaluated,
+//! - [`expression()`]: rows of expression text compiled against a fixed sketch, evaluated,
 //!   differentiated, added and solved.
 //! - [`editor`]: a script of requests to [`EditorState::handle`] on a bundled sketch; no
 //!   answer is a 500 (an internal failure), every answer to an API path is JSON, and the state
 //!   stays readable.
-//! - [`toolkit`]: one or two curves and some numbers through every curve-toolkit operation
-//!   under a small work budget (see [`mod@toolkit`] for its promises).
+//! - [`toolkit()`]: one or two curves and some numbers through every curve-toolkit operation
+//!   under a small work budget; its documentation lists the promises checked.
 //!
 //! The work per input is bounded here (input size, entity and constraint counts, degrees,
 //! repeat counts, the evaluations a solve may spend), so that one input cannot take the

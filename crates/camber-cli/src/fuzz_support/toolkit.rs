@@ -6,16 +6,7 @@
 //! `{"tolerance": 1e-9, "distance": 0.1, "order": 3, "at": [0.5], "lengths": [1.0],
 //! "point": [0, 0]}`, where `null` stands for NaN (JSON has none).
 //!
-//! The promises checked (a broken one panics):
-//! - every operation returns (the budget bounds it) with an error or a finite answer;
-//! - a derivative order above the cap is an error, never an allocation;
-//! - the arc length is at least the chord between the ends; a map's error is within the
-//!   tolerance it reports; a parameter at a length lies in the domain;
-//! - a knot removal's bound is within its tolerance; an offset's and a fit's error are finite;
-//! - intersections lie within the tolerance on both curves, overlap intervals inside both
-//!   domains; a distance is finite and not negative;
-//! - `camber op split` either refuses a parameter or writes pieces that `camber eval`
-//!   evaluates at their ends and middle (op and eval agree), and that load again.
+//! The promises checked are listed on [`toolkit`].
 
 use std::path::PathBuf;
 
@@ -68,7 +59,21 @@ fn pieces(c: &Curve) -> &dyn BezierPieces<2> {
     }
 }
 
-/// A toolkit input's bytes (see the module documentation).
+/// A toolkit input's bytes: a stream of JSON values, a curve file's object (curve A),
+/// optionally a second one (curve B), then optionally an object of numbers, each optional:
+/// `{"tolerance": 1e-9, "distance": 0.1, "order": 3, "at": [0.5], "lengths": [1.0],
+/// "point": [0, 0]}`, where `null` stands for NaN (JSON has none).
+///
+/// The promises checked (a broken one panics):
+/// - every operation returns (the budget bounds it) with an error or a finite answer;
+/// - a derivative order above the cap is an error, never an allocation;
+/// - the arc length is at least the chord between the ends; a map's error is within the
+///   tolerance it reports; a parameter at a length lies in the domain;
+/// - a knot removal's bound is within its tolerance; an offset's and a fit's error are finite;
+/// - intersections lie within the tolerance on both curves, overlap intervals inside both
+///   domains; a distance is finite and not negative;
+/// - `camber op split` either refuses a parameter or writes pieces that `camber eval`
+///   evaluates at their ends and middle (op and eval agree), and that load again.
 ///
 /// # Panics
 /// When an operation breaks a promise on this input (the fuzzer's finding).
