@@ -58,3 +58,8 @@ fn editor_corpus_replays() {
 fn expression_corpus_replays() {
     replay("expression", fuzz_support::expression);
 }
+
+#[test]
+fn toolkit_corpus_replays() {
+    replay("toolkit", fuzz_support::toolkit);
+}

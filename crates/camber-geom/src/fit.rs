@@ -36,6 +36,7 @@ use nalgebra::{DMatrix, Point, SVector};
 
 use crate::banded::BandedMatrix;
 use crate::bspline::BSplineCurve;
+use crate::budget::{default_limit, Budget, Meter};
 use crate::curve::{check_points, ParametricCurve};
 use crate::errors::{Error, Result};
 use crate::knots::{check_degree, KnotVector};
@@ -442,7 +443,8 @@ fn least_squares<T: Scalar, const D: usize>(
 /// parameter), with as few knots as the span splitting finds: it starts from one polynomial
 /// span and splits, between their middle data parameters, the spans whose data are too far,
 /// refitting by least squares with fixed ends each time; if a span runs out of data to split,
-/// it interpolates. The result's `max_error` is measured, never above the tolerance.
+/// it interpolates. The result's `max_error` is measured, never above the tolerance. Runs
+/// under the default budget (see [`fit_to_tolerance_with`]).
 ///
 /// ```
 /// use camber_geom::fit::{fit_to_tolerance, ParameterMethod};
@@ -464,6 +466,19 @@ pub fn fit_to_tolerance<T: Scalar, const D: usize>(
     tolerance: f64,
     method: ParameterMethod,
 ) -> Result<Fit<T, D>> {
+    fit_to_tolerance_with(points, degree, tolerance, method, &Budget::default())
+}
+
+/// [`fit_to_tolerance`] under `budget`: each least-squares pass costs one work unit per data
+/// point, so the default limit allows thousands of passes; fails with
+/// [`Error::BudgetExhausted`] or [`Error::Cancelled`], operation "fitting".
+pub fn fit_to_tolerance_with<T: Scalar, const D: usize>(
+    points: &[Point<T, D>],
+    degree: usize,
+    tolerance: f64,
+    method: ParameterMethod,
+    budget: &Budget,
+) -> Result<Fit<T, D>> {
     if !tolerance.is_finite() {
         return Err(Error::NonFinite {
             what: "fitting tolerance",
@@ -476,26 +491,49 @@ pub fn fit_to_tolerance<T: Scalar, const D: usize>(
     }
     check_data(points, degree)?;
     let parameters = data_parameters(points, method)?;
-    fit_to_tolerance_at(points, &parameters, degree, tolerance)
+    let mut meter = budget.meter("fitting", default_limit(points.len()));
+    fit_to_tolerance_at(points, &parameters, degree, tolerance, &mut meter)
 }
 
 /// [`fit_to_tolerance`] with given parameters ū₀ = 0 < … < ū_m = 1 (checked as a knot-like
-/// sequence: finite, increasing, from 0 to 1) and a tolerance already checked.
+/// sequence: finite, increasing, from 0 to 1) and a tolerance already checked, charging one
+/// unit per data point and pass to `meter`.
+///
+/// Each pass measures every data point once and finds the data of every span by binary
+/// search in the (increasing) parameters, so a pass costs O(m log m) and the passes, which
+/// split every offending span at once, number about log m.
 pub(crate) fn fit_to_tolerance_at<T: Scalar, const D: usize>(
     points: &[Point<T, D>],
     parameters: &[T],
     degree: usize,
     tolerance: f64,
+    meter: &mut Meter<'_>,
+) -> Result<Fit<T, D>> {
+    fit_on_knots(points, parameters, degree, tolerance, &[], meter)
+}
+
+/// [`fit_to_tolerance_at`] starting from the interior knots `initial` (sorted, inside (0, 1),
+/// each repeated at most `degree` times, every span holding data) instead of one polynomial
+/// span: the spans it splits are between distinct knots, and the initial multiplicities stay.
+pub(crate) fn fit_on_knots<T: Scalar, const D: usize>(
+    points: &[Point<T, D>],
+    parameters: &[T],
+    degree: usize,
+    tolerance: f64,
+    initial: &[T],
+    meter: &mut Meter<'_>,
 ) -> Result<Fit<T, D>> {
     check_data(points, degree)?;
     let parameters = parameters.to_vec();
     let p = degree;
-    let mut interior: Vec<T> = Vec::new();
+    let units = u64::try_from(points.len()).unwrap_or(u64::MAX);
+    let mut interior: Vec<T> = initial.to_vec();
     loop {
         let mut knots = vec![T::zero(); p + 1];
         knots.extend_from_slice(&interior);
         knots.extend(std::iter::repeat_n(T::one(), p + 1));
         let count = interior.len() + p + 1;
+        meter.charge(units)?;
         if count >= points.len() {
             return interpolate_at(points, &parameters, p, None);
         }
@@ -509,27 +547,37 @@ pub(crate) fn fit_to_tolerance_at<T: Scalar, const D: usize>(
         if fit.max_error <= tolerance {
             return Ok(fit);
         }
-        // Spans (between consecutive breaks) whose data are too far.
+        meter.charge(units)?;
+        let far: Vec<bool> = points
+            .iter()
+            .zip(&parameters)
+            .map(|(q, &u)| {
+                fit.curve
+                    .point(u)
+                    .map(|c| re((c - q).norm()) > tolerance)
+                    .unwrap_or(true)
+            })
+            .collect();
+        // Spans (between consecutive distinct breaks) whose data are too far.
         let mut breaks = vec![T::zero()];
-        breaks.extend_from_slice(&interior);
+        for &k in &interior {
+            if breaks.last().is_some_and(|&l| k > l) {
+                breaks.push(k);
+            }
+        }
         breaks.push(T::one());
         let mut added = Vec::new();
         for w in breaks.windows(2) {
-            let inside: Vec<usize> = (0..points.len())
-                .filter(|&k| parameters[k] >= w[0] && parameters[k] <= w[1])
-                .collect();
-            let bad = inside.iter().any(|&k| {
-                fit.curve
-                    .point(parameters[k])
-                    .map(|c| re((c - points[k]).norm()) > tolerance)
-                    .unwrap_or(true)
-            });
-            let strictly: Vec<T> = inside
-                .iter()
-                .map(|&k| parameters[k])
-                .filter(|&u| u > w[0] && u < w[1])
-                .collect();
-            if bad && strictly.len() >= 2 {
+            // The data with w0 ≤ ū ≤ w1, and those strictly inside.
+            let lo = parameters.partition_point(|&u| u < w[0]);
+            let hi = parameters.partition_point(|&u| u <= w[1]);
+            if !far[lo..hi].iter().any(|&f| f) {
+                continue;
+            }
+            let inner_lo = parameters.partition_point(|&u| u <= w[0]);
+            let inner_hi = parameters.partition_point(|&u| u < w[1]);
+            let strictly = &parameters[inner_lo..inner_hi.max(inner_lo)];
+            if strictly.len() >= 2 {
                 let i = strictly.len() / 2;
                 added.push((strictly[i - 1] + strictly[i]) * cst::<T>(0.5));
             }

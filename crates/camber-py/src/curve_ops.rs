@@ -8,7 +8,8 @@ use camber_geom::arc_length::{self, ArcLengthMap as GeomArcLengthMap};
 use camber_geom::extend::{CurveEnd, ExtensionContinuity};
 use camber_geom::fit::{self, Fit, ParameterMethod};
 use camber_geom::queries::{
-    curve_distance, intersect_curves, BezierPieces, CurveCurveOptions, CurvePairPoint,
+    curve_distance, intersect_curves_with_overlaps, BezierPieces, CurveCurveOptions,
+    CurveIntersections, CurvePairPoint,
 };
 use numpy::{AllowTypeChange, PyArray1, PyArrayLike2};
 use pyo3::prelude::*;
@@ -69,17 +70,24 @@ pub fn length(
     .map_err(geometry)
 }
 
-/// The parameter at arc length s from the start, for one s or an array.
+/// The parameter at arc length s from the start, for one s or an array: one quadrature of
+/// the curve (an `ArcLengthTable`) serves every s.
 pub fn parameter_at_length(
     py: Python<'_>,
     c: &AnyCurve,
     s: &Bound<'_, PyAny>,
     tolerance: f64,
 ) -> PyResult<Py<PyAny>> {
+    let budget = camber_geom::Budget::default();
+    let table = py
+        .detach(
+            || crate::curve::each!(c, c => arc_length::ArcLengthTable::new(c, tolerance, &budget)),
+        )
+        .map_err(geometry)?;
     crate::curve::scalar_map(
         py,
         s,
-        |s| crate::curve::each!(c, c => arc_length::parameter_at_length(c, s, tolerance)),
+        |s| crate::curve::each!(c, c => table.parameter(c, s, &budget)),
     )
 }
 
@@ -108,6 +116,13 @@ impl ArcLengthMap {
         self.inner.max_error()
     }
 
+    /// The tolerance the map was made to: the one asked for, or, when that was below what
+    /// f64 resolves on the curve, that floor (compare it with what you asked).
+    #[getter]
+    fn tolerance(&self) -> f64 {
+        self.inner.tolerance()
+    }
+
     /// The number of interpolation nodes.
     #[getter]
     fn node_count(&self) -> usize {
@@ -117,7 +132,7 @@ impl ArcLengthMap {
     /// The parameter u(s) for arc lengths s (clamped to [0, length]): a float or an array.
     fn parameter(&self, py: Python<'_>, s: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
         let map = &self.inner;
-        crate::curve::scalar_map(py, s, |s| Ok(map.parameter(s)))
+        crate::curve::scalar_map(py, s, |s| map.parameter(s))
     }
 
     fn __repr__(&self) -> String {
@@ -199,7 +214,32 @@ fn same_dimension(a: &AnyCurve, b: &AnyCurve, what: &str) -> PyResult<()> {
     }
 }
 
-/// Every intersection of two curves of the same dimension, in order along `a`.
+/// The contacts and overlaps of two curves as dicts, in order along `a`: contacts as
+/// [`pair_dict`] with `"kind": "point"`, overlaps as `{"kind": "overlap", "interval_a":
+/// (s0, s1), "interval_b": (t0, t1)}`.
+fn intersection_dicts<'py, const D: usize>(
+    py: Python<'py>,
+    found: &CurveIntersections<D>,
+) -> PyResult<Vec<Bound<'py, PyDict>>> {
+    let mut out: Vec<(f64, Bound<'py, PyDict>)> = Vec::new();
+    for p in &found.points {
+        let d = pair_dict(py, p)?;
+        d.set_item("kind", "point")?;
+        out.push((p.parameter_a, d));
+    }
+    for o in &found.overlaps {
+        let d = PyDict::new(py);
+        d.set_item("kind", "overlap")?;
+        d.set_item("interval_a", o.a)?;
+        d.set_item("interval_b", o.b)?;
+        out.push((o.a.0, d));
+    }
+    out.sort_by(|x, y| x.0.total_cmp(&y.0));
+    Ok(out.into_iter().map(|(_, d)| d).collect())
+}
+
+/// Every intersection of two curves of the same dimension, in order along `a`: isolated
+/// contacts, and stretches where the curves coincide as parameter intervals.
 pub fn intersect<'py>(
     py: Python<'py>,
     a: &AnyCurve,
@@ -210,18 +250,16 @@ pub fn intersect<'py>(
     same_dimension(a, b, "intersect_curve")?;
     let opts = options(tolerance, max_candidates);
     match (pieces2(a), pieces2(b), pieces3(a), pieces3(b)) {
-        (Some(a), Some(b), _, _) => py
-            .detach(|| intersect_curves(a, b, &opts))
-            .map_err(geometry)?
-            .iter()
-            .map(|p| pair_dict(py, p))
-            .collect(),
-        (_, _, Some(a), Some(b)) => py
-            .detach(|| intersect_curves(a, b, &opts))
-            .map_err(geometry)?
-            .iter()
-            .map(|p| pair_dict(py, p))
-            .collect(),
+        (Some(a), Some(b), _, _) => intersection_dicts(
+            py,
+            &py.detach(|| intersect_curves_with_overlaps(a, b, &opts))
+                .map_err(geometry)?,
+        ),
+        (_, _, Some(a), Some(b)) => intersection_dicts(
+            py,
+            &py.detach(|| intersect_curves_with_overlaps(a, b, &opts))
+                .map_err(geometry)?,
+        ),
         _ => Err(input("intersect_curve: curves of different dimensions")),
     }
 }

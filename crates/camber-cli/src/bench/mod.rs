@@ -17,6 +17,7 @@
 //! ```
 
 mod runners;
+mod toolkit;
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -69,11 +70,15 @@ pub enum Workload {
     /// cells.
     #[value(alias = "a", alias = "analysis")]
     A,
+    /// T: the curve toolkit (arc length, arc-length map, knot removal, intersection, offset,
+    /// fitting) on curves of N control points.
+    #[value(alias = "t", alias = "toolkit")]
+    T,
 }
 
 impl Workload {
     /// Every workload, in table order.
-    pub const ALL: [Workload; 8] = [
+    pub const ALL: [Workload; 9] = [
         Workload::W1,
         Workload::W2,
         Workload::W3,
@@ -82,9 +87,10 @@ impl Workload {
         Workload::W5,
         Workload::W5b,
         Workload::A,
+        Workload::T,
     ];
 
-    /// "W1", "W2", "W3", "W3a", "W4", "W5", "W5b", "A".
+    /// "W1", "W2", "W3", "W3a", "W4", "W5", "W5b", "A", "T".
     pub fn name(self) -> &'static str {
         match self {
             Workload::W1 => "W1",
@@ -95,6 +101,7 @@ impl Workload {
             Workload::W5 => "W5",
             Workload::W5b => "W5b",
             Workload::A => "A",
+            Workload::T => "T",
         }
     }
 
@@ -123,11 +130,14 @@ pub struct Plan {
     pub w4_components: usize,
     /// W4: solves of the whole sketch.
     pub w4_repeats: usize,
+    /// T: control points N of the toolkit's curves.
+    pub toolkit_sizes: Vec<usize>,
 }
 
 impl Plan {
     /// WORKLOADS.md as written: W1 200 targets × 5 runs, W2 100 trials per representation and
-    /// δ, W3, W3a, W5 and W5b for N = 10, 100, 1,000, 10,000, W4 with 10,000 components.
+    /// δ, W3, W3a, W5 and W5b for N = 10, 100, 1,000, 10,000, W4 with 10,000 components; and
+    /// the toolkit workload T at N = 1,000, 10,000, 100,000 control points.
     pub fn standard() -> Self {
         Plan {
             mode: "standard",
@@ -137,11 +147,12 @@ impl Plan {
             chain_sizes: vec![10, 100, 1_000, 10_000],
             w4_components: 10_000,
             w4_repeats: 5,
+            toolkit_sizes: vec![1_000, 10_000, 100_000],
         }
     }
 
     /// A small run: W1 200 targets × 1 run, W2 10 trials, chains and rectangles N = 10 and 100,
-    /// W4 with 100 components.
+    /// W4 with 100 components, the toolkit at N = 100 and 1,000.
     pub fn quick() -> Self {
         Plan {
             mode: "quick",
@@ -151,6 +162,7 @@ impl Plan {
             chain_sizes: vec![10, 100],
             w4_components: 100,
             w4_repeats: 2,
+            toolkit_sizes: vec![100, 1_000],
         }
     }
 
@@ -207,6 +219,7 @@ impl Plan {
                         .map(|&s| self.chain_repeats(s))
                         .sum::<usize>()
                 }
+                Workload::T => toolkit::steps(self),
             };
         }
         n as u64
@@ -244,7 +257,7 @@ pub struct Row {
     pub failed: usize,
     /// Which solver finished each component, counted over the samples.
     pub solvers: BTreeMap<String, usize>,
-    /// W3/W3a/W5/W5b: the growth exponent log(t₂/t₁)/log(N₂/N₁) of the median from the previous size.
+    /// W3/W3a/W5/W5b/T: the growth exponent log(t₂/t₁)/log(N₂/N₁) of the median from the previous size.
     pub growth: Option<f64>,
     /// W1: moved / min-norm.
     pub moved_over_min_norm: Option<Ratio>,
@@ -313,6 +326,7 @@ pub fn run(plan: &Plan, bar: &ProgressBar) -> Result<Vec<Row>> {
             Workload::W5 => rows.extend(runners::rectangles(plan, false, bar)?),
             Workload::W5b => rows.extend(runners::rectangles(plan, true, bar)?),
             Workload::A => rows.extend(runners::analysis(plan, bar)?),
+            Workload::T => rows.extend(toolkit::toolkit(plan, bar)?),
         }
     }
     Ok(rows)
