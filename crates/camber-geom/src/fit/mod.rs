@@ -1,6 +1,6 @@
 //! Curves through and near data points: global interpolation, least-squares approximation
-//! with a given number of control points, and fitting to a tolerance with automatic knot
-//! placement. The results are clamped B-splines on [0, 1].
+//! with a given number of control points, and fitting to a tolerance with adaptive knots and
+//! as few control points as the search finds. The results are clamped B-splines on [0, 1].
 //!
 //! - **Parameters.** Each data point Q_k gets a parameter ū_k ∈ [0, 1]: equally spaced
 //!   ([`ParameterMethod::Uniform`]), proportional to the cumulative chord length
@@ -10,14 +10,17 @@
 //!   derivatives, C′(0) = D₀ and C′(1) = D₁ as two more rows and two more unknowns), knots by
 //!   averaging the parameters so that every span holds one (the system is then banded and
 //!   non-singular by the Schoenberg–Whitney theorem). Banded elimination solves it.
-//! - **Least squares** with n + 1 < m + 1 control points places knots so that every span holds
-//!   data (u_{p+j} interpolates between ū_{i−1} and ū_i with i = ⌊j·d⌋, d = (m + 1)/(n − p + 1)),
-//!   and minimises Σ |C(ū_k) − Q_k|² through the normal equations, optionally with the end
-//!   control points fixed on the end data points.
-//! - **Fitting to a tolerance** starts from one polynomial span and, while some data point is
-//!   farther than the tolerance from the curve point at its parameter, splits every offending
-//!   span between its middle data parameters and fits again; it ends in interpolation if the
-//!   spans run out of data.
+//! - **Least squares** with n + 1 < m + 1 control points minimises Σ |C(ū_k) − Q_k|² through
+//!   the banded normal equations, optionally with the end control points fixed on the end data
+//!   points. Its knots are averaged from the parameters ([`KnotPlacement::Averaged`]: every
+//!   span holds data) or placed adaptively ([`KnotPlacement::Adaptive`]: spread by the errors
+//!   of trial fits so that all spans err alike, with the parameters corrected to foot points).
+//! - **Fitting to a tolerance** refines the knots where the fit errs, then searches the
+//!   number of knots downwards with adaptively placed knots (see [`tolerance`] for the method);
+//!   it ends in interpolation only if the tolerance needs as many control points as points.
+//! - **Errors are distances.** The `max_error` of an approximation is the largest distance
+//!   from a data point to the curve (found by the toolkit's closest-point search, see
+//!   [`projection`]), not a residual at an assigned parameter.
 //!
 //! ```
 //! use camber_geom::fit::{interpolate, ParameterMethod};
@@ -32,11 +35,25 @@
 //! # Ok::<(), camber_geom::Error>(())
 //! ```
 
-use nalgebra::{DMatrix, Point, SVector};
+mod ends;
+mod interpolation;
+mod knot_placement;
+mod least_squares;
+pub mod projection;
+pub mod split;
+pub mod tolerance;
 
-use crate::banded::BandedMatrix;
+use nalgebra::Point;
+
+use ends::{EndCondition, Ends};
+pub use interpolation::interpolate;
+pub(crate) use interpolation::interpolate_at;
+use least_squares::clamped_knots;
+pub use split::{fit_split, JointContinuity, SplitAt, SplitFit};
+use tolerance::{ErrorMeasure, Problem};
+
 use crate::bspline::BSplineCurve;
-use crate::curve::{check_points, ParametricCurve};
+use crate::curve::check_points;
 use crate::errors::{Error, Result};
 use crate::knots::{check_degree, KnotVector};
 use crate::scalar::{cst, from_usize, re, Scalar};
@@ -130,148 +147,38 @@ fn check_data<T: Scalar, const D: usize>(points: &[Point<T, D>], degree: usize) 
     Ok(())
 }
 
-/// The basis values of the p + 1 functions non-zero at u, with the index of the first.
-fn basis_row<T: Scalar>(knots: &KnotVector<T>, degree: usize, u: T) -> (usize, Vec<T>) {
-    let span = knots.find_span(degree, u);
-    let mut values = vec![T::zero(); degree + 1];
-    knots.basis_functions(span, u, degree, &mut values);
-    (span - degree, values)
+/// How the interior knots of a least-squares fit are placed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum KnotPlacement {
+    /// Interpolated between the data parameters at equal steps of the data count, so every
+    /// span holds data: one least-squares solve.
+    Averaged,
+    /// Spread by the error density of trial fits (every span expected to err alike), with the
+    /// parameters corrected to foot points: a few solves, a smaller error for the same count.
+    #[default]
+    Adaptive,
 }
 
-/// The first derivatives of the p + 1 functions non-zero at u, with the index of the first.
-fn derivative_row<T: Scalar>(knots: &KnotVector<T>, degree: usize, u: T) -> (usize, Vec<T>) {
-    let span = knots.find_span(degree, u);
-    let mut values = vec![T::zero(); 2 * (degree + 1)];
-    knots.basis_function_derivatives(span, u, degree, 1, &mut values);
-    (span - degree, values.split_off(degree + 1))
-}
-
-/// Rows of control points as points, checking that they are finite.
-fn to_points<T: Scalar, const D: usize>(
-    solution: &DMatrix<T>,
-    what: &'static str,
-) -> Result<Vec<Point<T, D>>> {
-    let mut points = Vec::with_capacity(solution.nrows());
-    for r in 0..solution.nrows() {
-        let row: SVector<T, D> = SVector::from_fn(|c, _| solution[(r, c)]);
-        if row.iter().any(|&x| !re(x).is_finite()) {
-            return Err(Error::SingularSystem { what });
-        }
-        points.push(Point::from(row));
+/// Checks a fitting tolerance: finite and positive.
+fn check_tolerance(tolerance: f64) -> Result<()> {
+    if !tolerance.is_finite() {
+        return Err(Error::NonFinite {
+            what: "fitting tolerance",
+            index: 0,
+            value: tolerance,
+        });
     }
-    Ok(points)
-}
-
-/// max_k |C(ū_k) − Q_k|.
-fn max_error<T: Scalar, const D: usize>(
-    curve: &BSplineCurve<T, D>,
-    points: &[Point<T, D>],
-    parameters: &[T],
-) -> Result<f64> {
-    let mut worst = 0.0_f64;
-    for (q, &u) in points.iter().zip(parameters) {
-        worst = worst.max(re((curve.point(u)? - q).norm()));
+    if tolerance <= 0.0 {
+        return Err(Error::NonPositiveTolerance { value: tolerance });
     }
-    Ok(worst)
-}
-
-/// The clamped B-spline of `degree` through every point of `points` (at least degree + 1),
-/// parameterized by `method`, and, when `end_derivatives` = Some((D₀, D₁)), with C′(0) = D₀ and
-/// C′(1) = D₁ (length units per unit of the [0, 1] parameter: a unit tangent times the total
-/// chord length is a natural size).
-///
-/// Errors: those of [`data_parameters`], [`Error::TooFewDataPoints`],
-/// [`Error::DegreeTooHigh`], [`Error::NonFinite`] for a derivative, and
-/// [`Error::SingularSystem`] (possible only with end derivatives of degree 1).
-pub fn interpolate<T: Scalar, const D: usize>(
-    points: &[Point<T, D>],
-    degree: usize,
-    method: ParameterMethod,
-    end_derivatives: Option<(SVector<T, D>, SVector<T, D>)>,
-) -> Result<Fit<T, D>> {
-    check_data(points, degree)?;
-    let parameters = data_parameters(points, method)?;
-    interpolate_at(points, &parameters, degree, end_derivatives)
-}
-
-/// One row of an interpolation system: the first column and the values of the basis functions
-/// (or their derivatives) non-zero at its parameter, and its right-hand side.
-type CollocationRow<T, const D: usize> = ((usize, Vec<T>), SVector<T, D>);
-
-/// [`interpolate`] with given parameters (strictly increasing from 0 to 1).
-pub(crate) fn interpolate_at<T: Scalar, const D: usize>(
-    points: &[Point<T, D>],
-    parameters: &[T],
-    degree: usize,
-    end_derivatives: Option<(SVector<T, D>, SVector<T, D>)>,
-) -> Result<Fit<T, D>> {
-    let m = points.len() - 1;
-    let p = degree;
-    let (knots, size) = match &end_derivatives {
-        None => (KnotVector::from_parameters(p, parameters)?, m + 1),
-        Some((d0, d1)) => {
-            for (index, v) in d0.iter().chain(d1.iter()).enumerate() {
-                if !re(*v).is_finite() {
-                    return Err(Error::NonFinite {
-                        what: "end derivative coordinate",
-                        index,
-                        value: re(*v),
-                    });
-                }
-            }
-            // Each end parameter counted twice: one more knot span per end.
-            let mut augmented = Vec::with_capacity(m + 3);
-            augmented.push(parameters[0]);
-            augmented.extend_from_slice(parameters);
-            augmented.push(parameters[m]);
-            (KnotVector::from_parameters(p, &augmented)?, m + 3)
-        }
-    };
-    // The collocation rows (first column, values, right-hand side) in order, then the band
-    // they span: about the degree on each side of the diagonal.
-    let mut rows: Vec<CollocationRow<T, D>> = Vec::with_capacity(size);
-    for (k, (q, &u)) in points.iter().zip(parameters).enumerate() {
-        if let (Some((d0, _)), 1) = (&end_derivatives, k) {
-            rows.push((derivative_row(&knots, p, parameters[0]), *d0));
-        }
-        if let (Some((_, d1)), true) = (&end_derivatives, k == m) {
-            rows.push((derivative_row(&knots, p, parameters[m]), *d1));
-        }
-        rows.push((basis_row(&knots, p, u), q.coords));
-    }
-    let (mut kl, mut ku) = (0, 0);
-    for (r, ((first, values), _)) in rows.iter().enumerate() {
-        kl = kl.max(r.saturating_sub(*first));
-        ku = ku.max((first + values.len()).saturating_sub(r + 1));
-    }
-    let mut a = BandedMatrix::<T>::zeros(size, kl, ku);
-    let mut b = DMatrix::<T>::zeros(size, D);
-    let singular = Error::SingularSystem {
-        what: "interpolation",
-    };
-    for (r, ((first, values), rhs)) in rows.into_iter().enumerate() {
-        for (j, v) in values.into_iter().enumerate() {
-            a.set(r, first + j, v).ok_or(singular.clone())?;
-        }
-        for c in 0..D {
-            b[(r, c)] = rhs[c];
-        }
-    }
-    let solution = a.solve(b).ok_or(singular)?;
-    let control = to_points(&solution, "interpolation")?;
-    let curve = BSplineCurve::try_new(p, knots, control)?;
-    let max_error = max_error(&curve, points, parameters)?;
-    Ok(Fit {
-        curve,
-        parameters: parameters.to_vec(),
-        max_error,
-    })
+    Ok(())
 }
 
 /// The least-squares B-spline of `degree` with `control_points` control points
 /// (degree + 1 ≤ control_points ≤ number of data points) minimising Σ |C(ū_k) − Q_k|² over the
-/// data, with parameters by `method`; with `fixed_ends` the first and last control points are
-/// the first and last data points, so the curve starts and ends on them.
+/// data, with parameters by `method` and knots averaged from them; with `fixed_ends` the first
+/// and last control points are the first and last data points, so the curve starts and ends on
+/// them. `max_error` is the largest distance from a data point to the curve.
 ///
 /// ```
 /// use camber_geom::fit::{approximate, ParameterMethod};
@@ -296,6 +203,118 @@ pub fn approximate<T: Scalar, const D: usize>(
     method: ParameterMethod,
     fixed_ends: bool,
 ) -> Result<Fit<T, D>> {
+    approximate_with(
+        points,
+        control_points,
+        &FitOptions {
+            degree,
+            method,
+            knots: KnotPlacement::Averaged,
+            fixed_ends,
+        },
+    )
+}
+
+/// Settings of [`approximate_with`] and [`fit_to_tolerance_with`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct FitOptions {
+    /// The degree p (default 3).
+    pub degree: usize,
+    /// How the data get their first parameters (default [`ParameterMethod::Centripetal`]).
+    pub method: ParameterMethod,
+    /// How the knots are placed (default [`KnotPlacement::Adaptive`]; fitting to a tolerance
+    /// with averaged knots searches the count with averaged knots and parametric errors).
+    pub knots: KnotPlacement,
+    /// Whether the curve starts and ends on the first and last data points (default true).
+    pub fixed_ends: bool,
+}
+
+impl Default for FitOptions {
+    fn default() -> Self {
+        Self {
+            degree: 3,
+            method: ParameterMethod::Centripetal,
+            knots: KnotPlacement::Adaptive,
+            fixed_ends: true,
+        }
+    }
+}
+
+impl FitOptions {
+    /// Sets [`degree`](Self::degree).
+    pub fn with_degree(mut self, degree: usize) -> Self {
+        self.degree = degree;
+        self
+    }
+
+    /// Sets [`method`](Self::method).
+    pub fn with_method(mut self, method: ParameterMethod) -> Self {
+        self.method = method;
+        self
+    }
+
+    /// Sets [`knots`](Self::knots).
+    pub fn with_knots(mut self, knots: KnotPlacement) -> Self {
+        self.knots = knots;
+        self
+    }
+
+    /// Sets [`fixed_ends`](Self::fixed_ends).
+    pub fn with_fixed_ends(mut self, fixed_ends: bool) -> Self {
+        self.fixed_ends = fixed_ends;
+        self
+    }
+
+    /// The end conditions of the least-squares problems for `points`.
+    fn ends<T: Scalar, const D: usize>(&self, points: &[Point<T, D>]) -> Ends<T, D> {
+        match (self.fixed_ends, points.first(), points.last()) {
+            (true, Some(&a), Some(&b)) => Ends {
+                start: EndCondition::Fixed(a),
+                end: EndCondition::Fixed(b),
+            },
+            _ => Ends {
+                start: EndCondition::Free,
+                end: EndCondition::Free,
+            },
+        }
+    }
+
+    /// The error measure of the knot placement.
+    fn measure(&self) -> ErrorMeasure {
+        match self.knots {
+            KnotPlacement::Adaptive => ErrorMeasure::Projected,
+            KnotPlacement::Averaged => ErrorMeasure::Parametric,
+        }
+    }
+}
+
+/// The least-squares B-spline with `control_points` control points under `options`: with
+/// [`KnotPlacement::Averaged`] as [`approximate`]; with [`KnotPlacement::Adaptive`] the knots
+/// are spread by the error density of trial fits (from averaged knots, re-spread while the
+/// largest error drops) and the data parameters are corrected to foot points, so the same
+/// number of control points follows the data more closely.
+///
+/// ```
+/// use camber_geom::fit::{approximate_with, FitOptions, KnotPlacement};
+/// use nalgebra::Point2;
+/// // A sharp bend: adaptive knots gather at it.
+/// let pts: Vec<_> = (0..=200).map(|i| {
+///     let x = f64::from(i) / 100.0 - 1.0;
+///     Point2::new(x, (x * x + 1e-3).sqrt())
+/// }).collect();
+/// let averaged = approximate_with(&pts, 12, &FitOptions::default().with_knots(KnotPlacement::Averaged))?;
+/// let adaptive = approximate_with(&pts, 12, &FitOptions::default())?;
+/// assert!(adaptive.max_error < 0.5 * averaged.max_error);
+/// # Ok::<(), camber_geom::Error>(())
+/// ```
+///
+/// Errors: as [`approximate`].
+pub fn approximate_with<T: Scalar, const D: usize>(
+    points: &[Point<T, D>],
+    control_points: usize,
+    options: &FitOptions,
+) -> Result<Fit<T, D>> {
+    let degree = options.degree;
     check_data(points, degree)?;
     if control_points < degree + 1 {
         return Err(Error::TooFewControlPoints {
@@ -311,9 +330,29 @@ pub fn approximate<T: Scalar, const D: usize>(
             found: points.len(),
         });
     }
-    let parameters = data_parameters(points, method)?;
+    let parameters = data_parameters(points, options.method)?;
+    let ends = options.ends(points);
     let knots = spread_knots(&parameters, degree, control_points);
-    least_squares(points, &parameters, degree, knots, fixed_ends)
+    let curve = ends::solve(points, &parameters, degree, &knots, &ends)?;
+    let fit = match options.knots {
+        KnotPlacement::Averaged => {
+            // The distances move copies of the parameters: the fit keeps those it was made at.
+            let mut errors = Vec::with_capacity(points.len());
+            let mut feet = parameters.clone();
+            projection::parametric_distances(&curve, points, &parameters, &mut errors)?;
+            let max_error = projection::distances_to_curve(&curve, points, &mut feet, &mut errors)?;
+            Fit {
+                curve,
+                parameters,
+                max_error,
+            }
+        }
+        KnotPlacement::Adaptive => {
+            let problem = Problem::new(points, &parameters, degree, ends, options.measure());
+            problem.finish(problem.best_with_count(problem.averaged_knots(control_points))?)?
+        }
+    };
+    Ok(fit)
 }
 
 /// Knots for n + 1 control points over m + 1 parameters so that every span holds parameters
@@ -326,123 +365,23 @@ fn spread_knots<T: Scalar>(
     let p = degree;
     let m = parameters.len() - 1;
     let n = control_points - 1;
-    let mut knots = vec![T::zero(); p + 1];
+    let mut interior = Vec::new();
     if n > p {
         let d = (m + 1) as f64 / (n - p + 1) as f64;
         for j in 1..=n - p {
             let jd = j as f64 * d;
             let i = (jd.floor() as usize).clamp(1, m);
             let alpha = cst::<T>(jd - i as f64);
-            knots.push((T::one() - alpha) * parameters[i - 1] + alpha * parameters[i]);
+            interior.push((T::one() - alpha) * parameters[i - 1] + alpha * parameters[i]);
         }
     }
-    knots.extend(std::iter::repeat_n(T::one(), p + 1));
-    KnotVector::new_unchecked(knots)
+    clamped_knots(p, &interior)
 }
 
-/// The largest least-squares system (unknown control points) solved by a dense SVD when its
-/// normal equations are singular (a span without data): 2,000 unknowns is a 32 MB copy and a
-/// few seconds; beyond that a singular system is reported instead.
-const DENSE_FALLBACK_MAX: usize = 2_000;
-
-/// Least squares on given knots through the normal equations (SVD when a span without data
-/// makes them singular: the minimum-norm solution is taken).
-fn least_squares<T: Scalar, const D: usize>(
-    points: &[Point<T, D>],
-    parameters: &[T],
-    degree: usize,
-    knots: KnotVector<T>,
-    fixed_ends: bool,
-) -> Result<Fit<T, D>> {
-    let p = degree;
-    let n = knots.len() - p - 2;
-    let m = points.len() - 1;
-    let (first, last) = (points[0].coords, points[m].coords);
-    let unknowns: Vec<usize> = if fixed_ends && n >= 1 {
-        (1..n).collect()
-    } else {
-        (0..=n).collect()
-    };
-    let rows: Vec<usize> = if fixed_ends && n >= 1 {
-        (1..m).collect()
-    } else {
-        (0..=m).collect()
-    };
-    let mut control = vec![Point::<T, D>::origin(); n + 1];
-    if fixed_ends && n >= 1 {
-        control[0] = points[0];
-        control[n] = points[m];
-    }
-    if !unknowns.is_empty() && !rows.is_empty() {
-        let offset = unknowns[0];
-        let size = unknowns.len();
-        // Normal equations NᵀN x = Nᵀr, assembled row by row from the p + 1 non-zero basis
-        // values (NᵀN is banded with half-width p).
-        let mut normal = BandedMatrix::<T>::zeros(size, p, p);
-        let mut rhs_all = DMatrix::<T>::zeros(size, D);
-        for &k in &rows {
-            let (start, values) = basis_row(&knots, p, parameters[k]);
-            let mut rhs = points[k].coords;
-            let mut active: Vec<(usize, T)> = Vec::with_capacity(p + 1);
-            for (j, v) in values.into_iter().enumerate() {
-                let i = start + j;
-                if fixed_ends && i == 0 {
-                    rhs -= first * v;
-                } else if fixed_ends && i == n {
-                    rhs -= last * v;
-                } else {
-                    active.push((i - offset, v));
-                }
-            }
-            for &(i, vi) in &active {
-                for &(j, vj) in &active {
-                    // |i − j| ≤ p: both basis functions are non-zero at one parameter.
-                    normal.add(i, j, vi * vj).ok_or(Error::SingularSystem {
-                        what: "least-squares",
-                    })?;
-                }
-                for c in 0..D {
-                    rhs_all[(i, c)] += vi * rhs[c];
-                }
-            }
-        }
-        // Banded elimination first; a span without data makes NᵀN singular, and then the
-        // SVD's minimum-norm solution is taken, on a dense copy, so only for systems of at
-        // most DENSE_FALLBACK_MAX unknowns (larger ones report the singular system).
-        let solution = match normal.clone().solve(rhs_all.clone()) {
-            Some(x) if x.iter().all(|v| re(*v).is_finite()) => x,
-            _ if size <= DENSE_FALLBACK_MAX => normal
-                .to_dense()
-                .svd(true, true)
-                .solve(&rhs_all, cst::<T>(1e-13))
-                .map_err(|_| Error::SingularSystem {
-                    what: "least-squares",
-                })?,
-            _ => {
-                return Err(Error::SingularSystem {
-                    what: "least-squares",
-                })
-            }
-        };
-        let solved = to_points::<T, D>(&solution, "least-squares")?;
-        for (&i, q) in unknowns.iter().zip(solved) {
-            control[i] = q;
-        }
-    }
-    let curve = BSplineCurve::try_new(p, knots, control)?;
-    let max_error = max_error(&curve, points, parameters)?;
-    Ok(Fit {
-        curve,
-        parameters: parameters.to_vec(),
-        max_error,
-    })
-}
-
-/// A B-spline of `degree` within `tolerance` (length units, > 0) of every data point (at its
-/// parameter), with as few knots as the span splitting finds: it starts from one polynomial
-/// span and splits, between their middle data parameters, the spans whose data are too far,
-/// refitting by least squares with fixed ends each time; if a span runs out of data to split,
-/// it interpolates. The result's `max_error` is measured, never above the tolerance.
+/// A B-spline of `degree` within `tolerance` (length units, > 0) of every data point, with
+/// adaptive knots and as few control points as the search finds; see
+/// [`fit_to_tolerance_with`] (this is it with the default options of that degree and
+/// parameter method).
 ///
 /// ```
 /// use camber_geom::fit::{fit_to_tolerance, ParameterMethod};
@@ -457,30 +396,68 @@ fn least_squares<T: Scalar, const D: usize>(
 /// # Ok::<(), camber_geom::Error>(())
 /// ```
 ///
-/// Errors: [`Error::NonPositiveTolerance`], and those of [`approximate`].
+/// Errors: [`Error::NonPositiveTolerance`], [`Error::NonFinite`] for the tolerance, and those
+/// of [`approximate`].
 pub fn fit_to_tolerance<T: Scalar, const D: usize>(
     points: &[Point<T, D>],
     degree: usize,
     tolerance: f64,
     method: ParameterMethod,
 ) -> Result<Fit<T, D>> {
-    if !tolerance.is_finite() {
-        return Err(Error::NonFinite {
-            what: "fitting tolerance",
-            index: 0,
-            value: tolerance,
-        });
-    }
-    if tolerance <= 0.0 {
-        return Err(Error::NonPositiveTolerance { value: tolerance });
-    }
-    check_data(points, degree)?;
-    let parameters = data_parameters(points, method)?;
-    fit_to_tolerance_at(points, &parameters, degree, tolerance)
+    fit_to_tolerance_with(
+        points,
+        tolerance,
+        &FitOptions::default()
+            .with_degree(degree)
+            .with_method(method),
+    )
+}
+
+/// A B-spline within `tolerance` (length units, > 0) of every data point — the largest
+/// distance from a data point to the curve, `max_error`, is never above it — with as few
+/// control points as the search of [`tolerance`] finds: knots refined where the fit errs, then
+/// the count searched downwards with knots spread by the error density, parameters corrected
+/// to foot points. It interpolates only when the tolerance needs as many control points as
+/// there are points.
+///
+/// ```
+/// use camber_geom::fit::{fit_to_tolerance_with, FitOptions};
+/// use nalgebra::Point2;
+/// // A quarter ellipse, 200 points: a handful of control points hold it to 1e-5.
+/// let pts: Vec<_> = (0..200).map(|i| {
+///     let t = f64::from(i) / 199.0 * std::f64::consts::FRAC_PI_2;
+///     Point2::new(2.0 * t.cos(), t.sin())
+/// }).collect();
+/// let fit = fit_to_tolerance_with(&pts, 1e-5, &FitOptions::default())?;
+/// assert!(fit.max_error <= 1e-5);
+/// assert!(fit.curve.control_points().len() < 15);
+/// # Ok::<(), camber_geom::Error>(())
+/// ```
+///
+/// Errors: [`Error::NonPositiveTolerance`], [`Error::NonFinite`] for the tolerance, and those
+/// of [`approximate`].
+pub fn fit_to_tolerance_with<T: Scalar, const D: usize>(
+    points: &[Point<T, D>],
+    tolerance: f64,
+    options: &FitOptions,
+) -> Result<Fit<T, D>> {
+    check_tolerance(tolerance)?;
+    check_data(points, options.degree)?;
+    let parameters = data_parameters(points, options.method)?;
+    let problem = Problem::new(
+        points,
+        &parameters,
+        options.degree,
+        options.ends(points),
+        options.measure(),
+    );
+    problem.finish(problem.fit_to_tolerance(tolerance)?)
 }
 
 /// [`fit_to_tolerance`] with given parameters ū₀ = 0 < … < ū_m = 1 (checked as a knot-like
-/// sequence: finite, increasing, from 0 to 1) and a tolerance already checked.
+/// sequence: finite, increasing, from 0 to 1), a tolerance already checked, fixed ends, and
+/// the error measured at those parameters (they stay): the curve's parameterization follows
+/// the given one, as the offset needs.
 pub(crate) fn fit_to_tolerance_at<T: Scalar, const D: usize>(
     points: &[Point<T, D>],
     parameters: &[T],
@@ -488,56 +465,17 @@ pub(crate) fn fit_to_tolerance_at<T: Scalar, const D: usize>(
     tolerance: f64,
 ) -> Result<Fit<T, D>> {
     check_data(points, degree)?;
-    let parameters = parameters.to_vec();
-    let p = degree;
-    let mut interior: Vec<T> = Vec::new();
-    loop {
-        let mut knots = vec![T::zero(); p + 1];
-        knots.extend_from_slice(&interior);
-        knots.extend(std::iter::repeat_n(T::one(), p + 1));
-        let count = interior.len() + p + 1;
-        if count >= points.len() {
-            return interpolate_at(points, &parameters, p, None);
-        }
-        let fit = least_squares(
-            points,
-            &parameters,
-            p,
-            KnotVector::new_unchecked(knots),
-            true,
-        )?;
-        if fit.max_error <= tolerance {
-            return Ok(fit);
-        }
-        // Spans (between consecutive breaks) whose data are too far.
-        let mut breaks = vec![T::zero()];
-        breaks.extend_from_slice(&interior);
-        breaks.push(T::one());
-        let mut added = Vec::new();
-        for w in breaks.windows(2) {
-            let inside: Vec<usize> = (0..points.len())
-                .filter(|&k| parameters[k] >= w[0] && parameters[k] <= w[1])
-                .collect();
-            let bad = inside.iter().any(|&k| {
-                fit.curve
-                    .point(parameters[k])
-                    .map(|c| re((c - points[k]).norm()) > tolerance)
-                    .unwrap_or(true)
-            });
-            let strictly: Vec<T> = inside
-                .iter()
-                .map(|&k| parameters[k])
-                .filter(|&u| u > w[0] && u < w[1])
-                .collect();
-            if bad && strictly.len() >= 2 {
-                let i = strictly.len() / 2;
-                added.push((strictly[i - 1] + strictly[i]) * cst::<T>(0.5));
-            }
-        }
-        if added.is_empty() {
-            return interpolate_at(points, &parameters, p, None);
-        }
-        interior.extend(added);
-        interior.sort_by(|a, b| re(*a).total_cmp(&re(*b)));
-    }
+    let problem = Problem::new(
+        points,
+        parameters,
+        degree,
+        FitOptions::default().ends(points),
+        ErrorMeasure::Parametric,
+    );
+    let best = problem.fit_to_tolerance(tolerance)?;
+    Ok(Fit {
+        curve: best.curve,
+        parameters: best.parameters,
+        max_error: best.max_error,
+    })
 }
