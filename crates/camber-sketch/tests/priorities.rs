@@ -246,3 +246,57 @@ fn a_drag_target_is_a_wish_below_every_tier() {
     assert!((at.coords.norm() - 1.0).abs() < 1e-9, "{at:?}");
     assert!(at.y > 0.95, "{at:?}");
 }
+
+#[test]
+fn a_tier_the_ones_before_determine_leaves_unread_control_points_alone() {
+    // A cubic with a fixed start. Priority 1 puts its end at (1, 1); priority 2 wants the
+    // start at (1.5, 2) and priority 3 the ends 1 apart: both are settled by the tiers before
+    // (their rows have no freedom left) and relaxed. No constraint reads P₁ and P₂: they stay
+    // where they were (they were once thrown to 3e15 while every residual looked right).
+    let mut s = Sketch::new();
+    let start = [
+        Point2::new(0.0, 0.0),
+        Point2::new(1.0, 0.5),
+        Point2::new(2.0, 0.3),
+        Point2::new(3.0, 0.0),
+    ];
+    let c = s
+        .add_bezier(BezierCurve2::try_new(start.to_vec()).unwrap())
+        .unwrap();
+    s.add_constraint(Fixed::point(PointRef::Start(c))).unwrap();
+    let end = s
+        .add_constraint(PointAtParameter {
+            curve: c,
+            u: 1.0,
+            target: Target::At(Point2::new(1.0, 1.0)),
+        })
+        .unwrap();
+    let moved_start = s
+        .add_constraint(PointAtParameter {
+            curve: c,
+            u: 0.0,
+            target: Target::At(Point2::new(1.5, 2.0)),
+        })
+        .unwrap();
+    let apart = s
+        .add_constraint(Distance {
+            a: PointRef::Start(c),
+            b: PointRef::End(c),
+            distance: 1.0,
+        })
+        .unwrap();
+    s.set_priority(end, 1).unwrap();
+    s.set_priority(moved_start, 2).unwrap();
+    s.set_priority(apart, 3).unwrap();
+    let report = s.solve().unwrap();
+    assert_eq!(report.relaxed(), vec![moved_start, apart]);
+    for (k, was) in start.iter().enumerate().take(3).skip(1) {
+        let now = s.point(PointRef::Control(c, k)).unwrap();
+        assert!(close(now, *was, 1e-12), "P{k} moved to {now:?}");
+    }
+    assert!(close(
+        s.point(PointRef::End(c)).unwrap(),
+        Point2::new(1.0, 1.0),
+        1e-9
+    ));
+}

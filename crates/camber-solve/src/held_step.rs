@@ -13,6 +13,20 @@
 //! u = u₀ + N·y with y = −(A_t·N)⁺·(g_t + A_t·u₀), again by SVD. The two parts are orthogonal,
 //! so u is the least-norm step of the lexicographic problem.
 //!
+//! Both rank decisions are absolute: a singular value counts as zero when it is at most
+//! `rank_tolerance` times the *component's* scale s, the largest row norm of J·W^−½ over every
+//! row of every tier (or the matrix's own σ_max, if larger). A tier whose rows the held rows
+//! determine already has A_t·N made of rounding (singular values about 1e-17·s); measured
+//! against its own σ_max that rounding would count as rank, y would be rounding⁻¹·rhs, and N·y
+//! would throw the unknowns no row reads (most of N) to 1e16 and beyond while every residual
+//! stayed right. Against s it is zero, and y = 0.
+//!
+//! The SVDs are faer's (one-sided Jacobi-quality accuracy, singular values sorted). nalgebra
+//! 0.35's SVD was used first and returned, for a 2 × 4 matrix of rank 1 with a zero column,
+//! singular vectors whose recomposition missed the matrix by 0.18 (its convergence test with
+//! ε as the threshold, nalgebra issues 1072 and 1172): the held step then moved unknowns no
+//! row reads by a third of its length.
+//!
 //! For affine rows this lands on the lexicographic least-squares point in one step, to the
 //! rounding of the factorizations: no damping, no acceptance test on a cost that has stopped
 //! changing in its leading digits. That is what the iterative search of [`crate::priority`]
@@ -20,6 +34,39 @@
 //! with these steps when the component is dense-sized.
 
 use nalgebra::{DMatrix, DVector};
+
+/// A full SVD A = U·diag(σ)·Vᵀ: U m × m, V n × n, σ of length min(m, n), nonincreasing.
+struct FullSvd {
+    u: DMatrix<f64>,
+    sigma: Vec<f64>,
+    v: DMatrix<f64>,
+}
+
+impl FullSvd {
+    /// The SVD of `a` by faer; `None` when it does not converge.
+    fn new(a: &DMatrix<f64>) -> Option<Self> {
+        let (m, n) = a.shape();
+        let mat = faer::Mat::<f64>::from_fn(m, n, |i, j| a[(i, j)]);
+        let svd = mat.svd().ok()?;
+        let (u, v) = (svd.U(), svd.V());
+        let s = svd.S().column_vector();
+        Some(Self {
+            u: DMatrix::from_fn(m, m, |i, j| u[(i, j)]),
+            sigma: (0..m.min(n)).map(|i| s[i]).collect(),
+            v: DMatrix::from_fn(n, n, |i, j| v[(i, j)]),
+        })
+    }
+
+    /// σ_max (0 for an empty matrix).
+    fn top(&self) -> f64 {
+        self.sigma.first().copied().unwrap_or(0.0)
+    }
+
+    /// How many singular values exceed `floor`.
+    fn rank(&self, floor: f64) -> usize {
+        self.sigma.iter().take_while(|s| **s > floor).count()
+    }
+}
 
 /// The held rows of one linearization, factorized: the projector of a correction onto the
 /// held rows and the basis of their null space, in scaled unknowns.
@@ -37,9 +84,14 @@ pub(crate) struct HeldRows {
 impl HeldRows {
     /// Factorizes the held rows `j_held` (k × n, k may be 0 or exceed n) under the weights
     /// `weights` (positive, one per unknown). Singular values at most `rank_tolerance` times
-    /// the largest (and at least n·ε times it) count as zero. `None` when the SVD does not
-    /// converge.
-    pub(crate) fn new(j_held: &DMatrix<f64>, weights: &[f64], rank_tolerance: f64) -> Option<Self> {
+    /// `component_scale` (see [`row_scale`]) or times the largest, whichever is larger (and at
+    /// least n·ε times the largest), count as zero. `None` when the SVD does not converge.
+    pub(crate) fn new(
+        j_held: &DMatrix<f64>,
+        weights: &[f64],
+        rank_tolerance: f64,
+        component_scale: f64,
+    ) -> Option<Self> {
         let n = j_held.ncols();
         let k = j_held.nrows();
         let scale: Vec<f64> = weights.iter().map(|w| 1.0 / w.sqrt()).collect();
@@ -51,37 +103,16 @@ impl HeldRows {
                 null: DMatrix::identity(n, n),
             });
         }
-        // Padded with zero rows to at least n so that the SVD's Vᵀ is the full n × n basis.
-        let mut a = DMatrix::zeros(k.max(n), n);
-        for r in 0..k {
-            for c in 0..n {
-                a[(r, c)] = j_held[(r, c)] * scale[c];
-            }
-        }
-        let svd = nalgebra::linalg::SVD::try_new(a, true, true, f64::EPSILON, 0)?;
-        let (u, v_t) = (svd.u?, svd.v_t?);
-        let sigma = &svd.singular_values;
-        let top = sigma.max();
-        let floor = top * rank_tolerance.max(n as f64 * f64::EPSILON);
-        let kept: Vec<usize> = (0..sigma.len())
-            .filter(|i| top > 0.0 && sigma[*i] > floor)
-            .collect();
-        let dropped: Vec<usize> = (0..n).filter(|i| !kept.contains(i)).collect();
-        let mut v_over_sigma = DMatrix::zeros(kept.len(), n);
-        let mut u_kept = DMatrix::zeros(k, kept.len());
-        for (slot, i) in kept.iter().enumerate() {
-            for c in 0..n {
-                v_over_sigma[(slot, c)] = v_t[(*i, c)] / sigma[*i];
-            }
-            for r in 0..k {
-                u_kept[(r, slot)] = u[(r, *i)];
-            }
-        }
-        let null = DMatrix::from_fn(n, dropped.len(), |r, c| v_t[(dropped[c], r)]);
+        let a = DMatrix::from_fn(k, n, |r, c| j_held[(r, c)] * scale[c]);
+        let svd = FullSvd::new(&a)?;
+        let rank = svd.rank(zero_below(svd.top(), component_scale, rank_tolerance, n));
+        let v_over_sigma = DMatrix::from_fn(rank, n, |i, c| svd.v[(c, i)] / svd.sigma[i]);
+        let u = svd.u.columns(0, rank).into_owned();
+        let null = svd.v.columns(rank, n - rank).into_owned();
         Some(Self {
             scale,
             v_over_sigma,
-            u: u_kept,
+            u,
             null,
         })
     }
@@ -101,13 +132,16 @@ impl HeldRows {
 
     /// The tier's step Δ (see the module documentation) for the held misses `h`, the tier's
     /// rows `j_tier` (r × n) and residuals `g_tier`. Singular values of A_t·N at most
-    /// `rank_tolerance` times the largest count as zero. `None` when the SVD does not converge.
+    /// `rank_tolerance` times `component_scale` or times the largest, whichever is larger, count
+    /// as zero: a tier the held rows determine already does not move. `None` when the SVD does
+    /// not converge.
     pub(crate) fn tier_step(
         &self,
         h: &DVector<f64>,
         j_tier: &DMatrix<f64>,
         g_tier: &DVector<f64>,
         rank_tolerance: f64,
+        component_scale: f64,
     ) -> Option<DVector<f64>> {
         let n = self.scale.len();
         let u0 = self.particular(h);
@@ -119,14 +153,14 @@ impl HeldRows {
         if self.null.ncols() > 0 && j_tier.nrows() > 0 {
             let b = &a_t * &self.null;
             let rhs = -(g_tier + &a_t * &u0);
-            let svd = nalgebra::linalg::SVD::try_new(b, true, true, f64::EPSILON, 0)?;
-            let top = svd.singular_values.max();
-            let floor = top * rank_tolerance.max(n as f64 * f64::EPSILON);
-            let y = if top > 0.0 {
-                svd.solve(&rhs, floor).ok()?
-            } else {
-                DVector::zeros(self.null.ncols())
-            };
+            let svd = FullSvd::new(&b)?;
+            let rank = svd.rank(zero_below(svd.top(), component_scale, rank_tolerance, n));
+            // y = Σ over the kept singular triples of v_i·(u_iᵀ·rhs)/σ_i.
+            let mut y = DVector::zeros(self.null.ncols());
+            for i in 0..rank {
+                let weight = svd.u.column(i).dot(&rhs) / svd.sigma[i];
+                y.axpy(weight, &svd.v.column(i), 1.0);
+            }
             u += &self.null * y;
         }
         Some(self.unscale(u))
@@ -141,6 +175,27 @@ impl HeldRows {
     }
 }
 
+/// The scale s of the rank decisions: the largest row norm of J·W^−½ (`j` every row of the
+/// component, `weights` one per column).
+pub(crate) fn row_scale(j: &DMatrix<f64>, weights: &[f64]) -> f64 {
+    j.row_iter()
+        .map(|row| {
+            row.iter()
+                .zip(weights)
+                .map(|(v, w)| v * v / w)
+                .sum::<f64>()
+                .sqrt()
+        })
+        .fold(0.0, f64::max)
+}
+
+/// The largest singular value that counts as zero in a matrix of n columns whose largest is
+/// `top`, in a component of scale `scale`: `rank_tolerance`·max(top, scale), and at least
+/// n·ε·top (rounding of the SVD itself).
+fn zero_below(top: f64, scale: f64, rank_tolerance: f64, n: usize) -> f64 {
+    (rank_tolerance * top.max(scale)).max(n as f64 * f64::EPSILON * top)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -150,12 +205,12 @@ mod tests {
     #[test]
     fn a_tier_on_a_held_line_reaches_its_least_squares_point() {
         let held = DMatrix::from_row_slice(1, 2, &[1.0, 1.0]);
-        let rows = HeldRows::new(&held, &[1.0, 1.0], 1e-12).unwrap();
+        let rows = HeldRows::new(&held, &[1.0, 1.0], 1e-12, 1.0).unwrap();
         let z = [0.0, 0.0];
         let h = DVector::from_vec(vec![z[0] + z[1] - 2.0]);
         let tier = DMatrix::from_row_slice(2, 2, &[1.0, 0.0, 0.0, 1.0]);
         let g = DVector::from_vec(vec![z[0] - 3.0, z[1]]);
-        let step = rows.tier_step(&h, &tier, &g, 1e-12).unwrap();
+        let step = rows.tier_step(&h, &tier, &g, 1e-12, 1.0).unwrap();
         assert!((step[0] - 2.5).abs() < 1e-14 && (step[1] + 0.5).abs() < 1e-14);
     }
 
@@ -164,7 +219,7 @@ mod tests {
     #[test]
     fn the_correction_is_least_in_the_weighted_norm() {
         let held = DMatrix::from_row_slice(1, 2, &[1.0, 1.0]);
-        let rows = HeldRows::new(&held, &[1.0, 4.0], 1e-12).unwrap();
+        let rows = HeldRows::new(&held, &[1.0, 4.0], 1e-12, 1.0).unwrap();
         let d = rows.correction(&DVector::from_vec(vec![-1.0]));
         assert!(
             (d[0] - 0.8).abs() < 1e-15 && (d[1] - 0.2).abs() < 1e-15,
@@ -177,11 +232,11 @@ mod tests {
     #[test]
     fn dependent_held_rows_and_unread_unknowns() {
         let held = DMatrix::from_row_slice(3, 2, &[0.0, 1.0, 0.0, 1.0, 0.0, 2.0]);
-        let rows = HeldRows::new(&held, &[1.0, 1.0], 1e-12).unwrap();
+        let rows = HeldRows::new(&held, &[1.0, 1.0], 1e-12, 1.0).unwrap();
         let h = DVector::from_vec(vec![-1.0, -1.0, -2.0]);
         let tier = DMatrix::from_row_slice(1, 2, &[1.0, 0.0]);
         let g = DVector::from_vec(vec![-4.0]);
-        let step = rows.tier_step(&h, &tier, &g, 1e-12).unwrap();
+        let step = rows.tier_step(&h, &tier, &g, 1e-12, 1.0).unwrap();
         assert!((step[0] - 4.0).abs() < 1e-14 && (step[1] - 1.0).abs() < 1e-14);
     }
 }
