@@ -127,7 +127,7 @@ pub fn naca(code: &str, points: usize, spacing: Spacing) -> Option<Vec<Point2<f6
     }
     let mut out: Vec<Point2<f64>> = upper.into_iter().rev().collect();
     out.extend(lower.into_iter().skip(1));
-    if points % 2 == 0 {
+    if points.is_multiple_of(2) {
         out.remove(n + (n - 1) / 2);
     }
     Some(out)
