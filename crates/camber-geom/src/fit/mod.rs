@@ -16,11 +16,11 @@
 //!   span holds data) or placed adaptively ([`KnotPlacement::Adaptive`]: spread by the errors
 //!   of trial fits so that all spans err alike, with the parameters corrected to foot points).
 //! - **Fitting to a tolerance** refines the knots where the fit errs, then searches the
-//!   number of knots downwards with adaptively placed knots (see [`tolerance`] for the method);
+//!   number of knots downwards with adaptively placed knots (see [`fit_to_tolerance_with`]);
 //!   it ends in interpolation only if the tolerance needs as many control points as points.
 //! - **Errors are distances.** The `max_error` of an approximation is the largest distance
-//!   from a data point to the curve (found by the toolkit's closest-point search, see
-//!   [`projection`]), not a residual at an assigned parameter.
+//!   from a data point to the curve (found by the toolkit's closest-point search), not a
+//!   residual at an assigned parameter.
 //!
 //! ```
 //! use camber_geom::fit::{interpolate, ParameterMethod};
@@ -39,9 +39,9 @@ mod ends;
 mod interpolation;
 mod knot_placement;
 mod least_squares;
-pub mod projection;
+mod projection;
 pub mod split;
-pub mod tolerance;
+mod tolerance;
 
 use nalgebra::Point;
 
@@ -415,7 +415,7 @@ pub fn fit_to_tolerance<T: Scalar, const D: usize>(
 
 /// A B-spline within `tolerance` (length units, > 0) of every data point — the largest
 /// distance from a data point to the curve, `max_error`, is never above it — with as few
-/// control points as the search of [`tolerance`] finds: knots refined where the fit errs, then
+/// control points as the search finds: knots refined where the fit errs, then
 /// the count searched downwards with knots spread by the error density, parameters corrected
 /// to foot points. It interpolates only when the tolerance needs as many control points as
 /// there are points.

@@ -6,7 +6,8 @@
 //! The tangent T and curvature vector k at a joint are estimated from the data: the cubic
 //! interpolant (centripetal parameters) of up to seven data points around the joint is
 //! evaluated at the joint's point, T = C′/|C′| and k from C′ and C″. Each piece then holds
-//! its end control points as [`ends`](super::ends) describes, so both sides meet at the data
+//! its end control points (P₁ on the tangent line, and for G2 P₂ on the line that gives the
+//! curvature vector, see docs/geometry.md), so both sides meet at the data
 //! point with the same tangent direction (and curvature vector) by construction.
 
 use nalgebra::{Point, SVector};
