@@ -13,6 +13,8 @@
 //! - [`curve`]: curve file bytes → load → evaluate, draw, and every `camber op` at a few
 //!   parameters; every result saves to a file that loads again.
 //! - [`surface`]: a surface case → G1 deformation → report and plot.
+//! - [`expression`]: rows of expression text compiled against a fixed sketch, evaluated,
+//!   differentiated, added and solved.
 //! - [`editor`]: a script of requests to [`EditorState::handle`] on a bundled sketch; no
 //!   answer is a 500 (an internal failure), every answer to an API path is JSON, and the state
 //!   stays readable.
@@ -30,6 +32,9 @@ use crate::commands::op::{Op, Output};
 use crate::commands::{check, eval, render, render_curve, solve, surface as surface_cmd};
 use crate::curve_file::Curve;
 use crate::editor::EditorState;
+
+mod expression;
+pub use expression::expression;
 
 /// The largest input any target reads, in bytes (libFuzzer's `-max_len` should not exceed it).
 pub const MAX_INPUT: usize = 64 * 1024;

@@ -53,3 +53,8 @@ fn surface_corpus_replays() {
 fn editor_corpus_replays() {
     replay("editor", fuzz_support::editor);
 }
+
+#[test]
+fn expression_corpus_replays() {
+    replay("expression", fuzz_support::expression);
+}

@@ -275,6 +275,10 @@ pub enum Error {
         /// The argument kinds given.
         found: Vec<crate::constraints::custom::ArgKind>,
     },
+    /// An expression (a constraint's rows, a dimension's value) the language refuses: its
+    /// message names the column (and the row).
+    #[error(transparent)]
+    Expression(#[from] camber_expr::Error),
     /// A constraint reads a free parameter another constraint does not have.
     #[error("{constraint} reads free parameter {index} of {of}, which it does not have")]
     UnknownFreeParameter {

@@ -26,6 +26,12 @@ pub trait EntityLookup {
     fn weight(&self, _id: EntityId, _index: usize) -> f64 {
         1.0
     }
+
+    /// The value of the sketch's named parameter `name` (`None`: no such parameter), read by
+    /// expressions.
+    fn parameter(&self, _name: &str) -> Option<f64> {
+        None
+    }
 }
 
 /// The entities of one component, read once from a larger lookup (a sketch's map) into a short
@@ -65,6 +71,10 @@ impl EntityLookup for ComponentEntities<'_> {
 
     fn weight(&self, id: EntityId, index: usize) -> f64 {
         self.all.weight(id, index)
+    }
+
+    fn parameter(&self, name: &str) -> Option<f64> {
+        self.all.parameter(name)
     }
 }
 

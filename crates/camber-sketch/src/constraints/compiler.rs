@@ -78,6 +78,11 @@ impl<'a> Compiler<'a> {
         });
     }
 
+    /// The value of the sketch's named parameter `name`, if it has one.
+    pub(crate) fn parameter(&self, name: &str) -> Option<f64> {
+        self.lookup.parameter(name)
+    }
+
     /// An entity.
     pub(crate) fn entity(&self, id: EntityId) -> Result<&'a Entity> {
         self.lookup.lookup(id)

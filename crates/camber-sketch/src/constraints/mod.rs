@@ -326,4 +326,6 @@ kinds! {
     C1Join => c1_join::C1Join,
     /// Two curves joined with equal first and second derivatives (six affine rows).
     C2Join => c2_join::C2Join,
+    /// Rows written as text over named sketch quantities (affine when the tape says so).
+    Expression => expression::Expression,
 }
