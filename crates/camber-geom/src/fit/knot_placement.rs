@@ -238,7 +238,10 @@ mod tests {
         let k = d.equidistribute(5);
         assert_eq!(k.iter().filter(|&&t| t < 2.5 - 1e-12).count(), 3, "{k:?}");
         assert!((k[3] - 2.5).abs() < 1e-12, "{k:?}");
-        assert!((k[0] - 0.625).abs() < 1e-12 && (k[4] - 3.75).abs() < 1e-12, "{k:?}");
+        assert!(
+            (k[0] - 0.625).abs() < 1e-12 && (k[4] - 3.75).abs() < 1e-12,
+            "{k:?}"
+        );
     }
 
     #[test]
