@@ -13,7 +13,7 @@
 //! - [`curve`]: curve file bytes → load → evaluate, draw, and every `camber op` at a few
 //!   parameters; every result saves to a file that loads again.
 //! - [`surface`]: a surface case → G1 deformation → report and plot.
-//! - [`expression`]: rows of expression text compiled against a fixed sketch, evaluated,
+//! - [`expression()`]: rows of expression text compiled against a fixed sketch, evaluated,
 //!   differentiated, added and solved.
 //! - [`editor`]: a script of requests to [`EditorState::handle`] on a bundled sketch; no
 //!   answer is a 500 (an internal failure), every answer to an API path is JSON, and the state

@@ -48,7 +48,7 @@ pub enum JointContinuity {
 /// A fit in pieces split at features.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SplitFit<T: Scalar, const D: usize> {
-    /// The fit of every piece, in order; piece i covers data points joints[i − 1] … joints[i]
+    /// The fit of every piece, in order; piece i covers data points `joints[i − 1]` … `joints[i]`
     /// (the first starts at 0, the last ends at the last point).
     pub pieces: Vec<Fit<T, D>>,
     /// The data index of every joint.
