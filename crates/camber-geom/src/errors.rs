@@ -359,6 +359,24 @@ pub enum Error {
         /// Which system ("interpolation", "least-squares").
         what: &'static str,
     },
+    /// A fit cannot reach its tolerance: even the interpolant (or, at a joint of a split fit,
+    /// the most knots the data carry) errs more, as for a tolerance below the rounding of the
+    /// data.
+    #[error("the fit reaches {reached:e}, not the tolerance {tolerance:e}")]
+    ToleranceNotMet {
+        /// The tolerance asked for.
+        tolerance: f64,
+        /// The smallest largest error found.
+        reached: f64,
+    },
+    /// A fit is split at its first or last data point, where no piece could lie before or after.
+    #[error("split point {index} is not inside the data (points 1 to {last} − 1)")]
+    SplitPointAtEnd {
+        /// The data index asked for.
+        index: usize,
+        /// The index of the last data point.
+        last: usize,
+    },
     /// A knot value that is not an interior knot of the curve.
     #[error("{value} is not an interior knot of the curve")]
     KnotNotFound {

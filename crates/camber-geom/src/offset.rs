@@ -45,7 +45,7 @@ use crate::bspline::BSplineCurve;
 use crate::budget::{default_limit, Budget};
 use crate::curve::ParametricCurve;
 use crate::errors::{Error, Result};
-use crate::fit::fit_on_knots;
+use crate::fit::fit_at_parameters;
 use crate::scalar::{cst, from_usize, re, Scalar};
 
 /// An offset curve and how far it is from the exact offset.
@@ -213,7 +213,7 @@ where
         if let Some(last) = fit_params.last_mut() {
             *last = T::one();
         }
-        let fit = fit_on_knots(&points, &fit_params, 3, tolerance * 0.5, &knots, &mut meter)?;
+        let fit = fit_at_parameters(&points, &fit_params, 3, tolerance * 0.5, &knots, &mut meter)?;
         let mut worst = fit.max_error;
         for w in params.windows(2) {
             meter.charge(2 * (CHECKS_BETWEEN as u64 - 1))?;

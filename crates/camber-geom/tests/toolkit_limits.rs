@@ -18,7 +18,7 @@ use camber_geom::arc_length::{
 };
 use camber_geom::budget::Budget;
 use camber_geom::curve::MAX_DERIVATIVE_ORDER;
-use camber_geom::fit::{fit_to_tolerance_with, ParameterMethod};
+use camber_geom::fit::{fit_to_tolerance_with, FitOptions, ParameterMethod};
 use camber_geom::offset::{offset, offset_with};
 use camber_geom::queries::{
     closest_point, closest_point_with, curve_distance, intersect_curves,
@@ -389,10 +389,13 @@ fn run_all(budget: &Budget) -> Vec<(&'static str, Option<Error>)> {
         ),
         (
             "fitting",
-            err(
-                fit_to_tolerance_with(&points, 3, 1e-8, ParameterMethod::ChordLength, budget)
-                    .map(|_| ()),
-            ),
+            err(fit_to_tolerance_with(
+                &points,
+                1e-8,
+                &FitOptions::default().with_method(ParameterMethod::ChordLength),
+                budget,
+            )
+            .map(|_| ())),
         ),
         (
             "knot removal",

@@ -6,7 +6,9 @@
 
 use camber_geom::arc_length::{self, ArcLengthMap as GeomArcLengthMap};
 use camber_geom::extend::{CurveEnd, ExtensionContinuity};
-use camber_geom::fit::{self, Fit, ParameterMethod};
+use camber_geom::fit::{
+    self, Fit, FitOptions, JointContinuity, KnotPlacement, ParameterMethod, SplitAt, SplitFit,
+};
 use camber_geom::queries::{
     curve_distance, intersect_curves_with_overlaps, BezierPieces, CurveCurveOptions,
     CurveIntersections, CurvePairPoint,
@@ -355,11 +357,57 @@ pub fn interpolate(
     }
 }
 
+/// `"averaged"` or `"adaptive"`.
+fn knot_placement(word: &str) -> PyResult<KnotPlacement> {
+    match word.to_ascii_lowercase().as_str() {
+        "averaged" => Ok(KnotPlacement::Averaged),
+        "adaptive" => Ok(KnotPlacement::Adaptive),
+        _ => Err(input(format!(
+            "knots: expected \"averaged\" or \"adaptive\", found {word:?}"
+        ))),
+    }
+}
+
+/// `"G1"` or `"G2"` for the joints of a split fit.
+fn joint_continuity(word: &str) -> PyResult<JointContinuity> {
+    match word.to_ascii_uppercase().as_str() {
+        "G1" => Ok(JointContinuity::G1),
+        "G2" => Ok(JointContinuity::G2),
+        _ => Err(input(format!(
+            "joint: expected \"G1\" or \"G2\", found {word:?}"
+        ))),
+    }
+}
+
+/// `None`, `"leading_edge"`, or a list of data parameters in (0, 1) to split at.
+fn split_at(split: Option<&Bound<'_, PyAny>>) -> PyResult<Option<SplitAt>> {
+    let Some(split) = split else {
+        return Ok(None);
+    };
+    if split.is_none() {
+        return Ok(None);
+    }
+    if let Ok(word) = split.extract::<String>() {
+        return match word.to_ascii_lowercase().replace('-', "_").as_str() {
+            "leading_edge" | "le" => Ok(Some(SplitAt::LeadingEdge)),
+            _ => Err(input(format!(
+                "split: expected \"leading_edge\" or a list of parameters, found {word:?}"
+            ))),
+        };
+    }
+    let values: Vec<f64> = split.extract().map_err(|_| {
+        input("split: expected \"leading_edge\" or a list of parameters in (0, 1)".to_owned())
+    })?;
+    Ok(Some(SplitAt::Parameters(values)))
+}
+
 /// The least-squares B-spline of `degree` with `control_points` control points through the
-/// data points, its ends on the first and last data points when `fixed_ends`. Returns (curve,
-/// parameters, max_error).
+/// data points, its ends on the first and last data points when `fixed_ends`; `knots` is
+/// `"averaged"` (from the data parameters) or `"adaptive"` (spread by the errors of trial fits,
+/// parameters corrected to foot points). Returns (curve, parameters, max_error), max_error the
+/// largest distance from a data point to the curve.
 #[pyfunction]
-#[pyo3(signature = (points, degree, control_points, method = "chord_length", fixed_ends = true))]
+#[pyo3(signature = (points, degree, control_points, method = "chord_length", fixed_ends = true, knots = "averaged"))]
 pub fn approximate(
     py: Python<'_>,
     points: PyArrayLike2<'_, f64, AllowTypeChange>,
@@ -367,53 +415,141 @@ pub fn approximate(
     control_points: usize,
     method: &str,
     fixed_ends: bool,
+    knots: &str,
 ) -> PyResult<(Py<PyAny>, Py<PyAny>, f64)> {
-    let method = parameter_method(method)?;
+    let options = FitOptions {
+        degree,
+        method: parameter_method(method)?,
+        knots: knot_placement(knots)?,
+        fixed_ends,
+    };
     match columns(&points) {
         3 => {
             let pts = crate::arrays::points::<3>(&points, "points")?;
             let f = py
-                .detach(|| fit::approximate(&pts, degree, control_points, method, fixed_ends))
+                .detach(|| fit::approximate_with(&pts, control_points, &options))
                 .map_err(geometry)?;
             fit_tuple(py, f, AnyCurve::BSpline3)
         }
         _ => {
             let pts = crate::arrays::points::<2>(&points, "points")?;
             let f = py
-                .detach(|| fit::approximate(&pts, degree, control_points, method, fixed_ends))
+                .detach(|| fit::approximate_with(&pts, control_points, &options))
                 .map_err(geometry)?;
             fit_tuple(py, f, AnyCurve::BSpline2)
         }
     }
 }
 
-/// The B-spline of `degree` with the fewest control points (by increasing count) whose
-/// largest error at the data points is within `tolerance`. Returns (curve, parameters,
-/// max_error).
+/// A split fit as (list of curves, list of parameter arrays, max_error).
+fn split_tuple<const D: usize>(
+    py: Python<'_>,
+    f: SplitFit<f64, D>,
+    make: fn(camber_geom::BSplineCurve<f64, D>) -> AnyCurve,
+) -> PyResult<(Py<PyAny>, Py<PyAny>, f64)> {
+    let mut curves = Vec::with_capacity(f.pieces.len());
+    let mut params = Vec::with_capacity(f.pieces.len());
+    for piece in f.pieces {
+        curves.push(wrap(py, make(piece.curve))?);
+        params.push(PyArray1::from_vec(py, piece.parameters).into_any().unbind());
+    }
+    Ok((
+        pyo3::types::PyList::new(py, curves)?.into_any().unbind(),
+        pyo3::types::PyList::new(py, params)?.into_any().unbind(),
+        f.max_error,
+    ))
+}
+
+/// The B-spline of `degree` within `tolerance` of every data point (the largest distance from
+/// a data point to the curve, never above the tolerance) with as few control points as the
+/// adaptive search finds (`knots="adaptive"`; `"averaged"` searches the count with averaged
+/// knots and residuals at the parameters). Returns (curve, parameters, max_error).
+///
+/// With `split="leading_edge"` (the point of smallest x) or a list of data parameters in
+/// (0, 1), every piece between split points gets its own curve, and neighbouring curves share
+/// the joint's point and tangent direction (`joint="G1"`) and curvature (`joint="G2"`); then the
+/// result is (list of curves, list of parameter arrays, max_error).
 #[pyfunction]
-#[pyo3(signature = (points, degree, tolerance, method = "chord_length"))]
+#[pyo3(signature = (points, degree, tolerance, method = "chord_length", knots = "adaptive", split = None, joint = "G1"))]
+#[allow(clippy::too_many_arguments)] // the Python keyword arguments, one per option
 pub fn fit_to_tolerance(
     py: Python<'_>,
     points: PyArrayLike2<'_, f64, AllowTypeChange>,
     degree: usize,
     tolerance: f64,
     method: &str,
+    knots: &str,
+    split: Option<&Bound<'_, PyAny>>,
+    joint: &str,
 ) -> PyResult<(Py<PyAny>, Py<PyAny>, f64)> {
-    let method = parameter_method(method)?;
-    match columns(&points) {
-        3 => {
+    let options = FitOptions {
+        degree,
+        method: parameter_method(method)?,
+        knots: knot_placement(knots)?,
+        fixed_ends: true,
+    };
+    let joint = joint_continuity(joint)?;
+    let split = split_at(split)?;
+    match (columns(&points), split) {
+        (3, None) => {
             let pts = crate::arrays::points::<3>(&points, "points")?;
             let f = py
-                .detach(|| fit::fit_to_tolerance(&pts, degree, tolerance, method))
+                .detach(|| {
+                    fit::fit_to_tolerance_with(
+                        &pts,
+                        tolerance,
+                        &options,
+                        &camber_geom::Budget::default(),
+                    )
+                })
                 .map_err(geometry)?;
             fit_tuple(py, f, AnyCurve::BSpline3)
         }
-        _ => {
+        (3, Some(at)) => {
+            let pts = crate::arrays::points::<3>(&points, "points")?;
+            let f = py
+                .detach(|| {
+                    fit::fit_split(
+                        &pts,
+                        tolerance,
+                        &options,
+                        &at,
+                        joint,
+                        &camber_geom::Budget::default(),
+                    )
+                })
+                .map_err(geometry)?;
+            split_tuple(py, f, AnyCurve::BSpline3)
+        }
+        (_, None) => {
             let pts = crate::arrays::points::<2>(&points, "points")?;
             let f = py
-                .detach(|| fit::fit_to_tolerance(&pts, degree, tolerance, method))
+                .detach(|| {
+                    fit::fit_to_tolerance_with(
+                        &pts,
+                        tolerance,
+                        &options,
+                        &camber_geom::Budget::default(),
+                    )
+                })
                 .map_err(geometry)?;
             fit_tuple(py, f, AnyCurve::BSpline2)
+        }
+        (_, Some(at)) => {
+            let pts = crate::arrays::points::<2>(&points, "points")?;
+            let f = py
+                .detach(|| {
+                    fit::fit_split(
+                        &pts,
+                        tolerance,
+                        &options,
+                        &at,
+                        joint,
+                        &camber_geom::Budget::default(),
+                    )
+                })
+                .map_err(geometry)?;
+            split_tuple(py, f, AnyCurve::BSpline2)
         }
     }
 }

@@ -13,7 +13,7 @@ use std::path::PathBuf;
 use camber_geom::arc_length::{arc_length_map_with, arc_length_with, parameters_at_lengths};
 use camber_geom::budget::Budget;
 use camber_geom::curve::MAX_DERIVATIVE_ORDER;
-use camber_geom::fit::{fit_to_tolerance_with, ParameterMethod};
+use camber_geom::fit::{fit_to_tolerance_with, FitOptions, ParameterMethod};
 use camber_geom::offset::offset_with;
 use camber_geom::queries::{
     closest_point, curve_distance, intersect_curves_with_overlaps, BezierPieces, CurveCurveOptions,
@@ -205,9 +205,12 @@ fn reshape(a: &Curve, tolerance: f64, distance: f64, budget: &Budget) {
         .map(|k| c.point(lo + (hi - lo) * f64::from(k) / 24.0).ok())
         .collect();
     if let Some(points) = points {
-        if let Ok(f) =
-            fit_to_tolerance_with(&points, 3, tolerance, ParameterMethod::ChordLength, budget)
-        {
+        if let Ok(f) = fit_to_tolerance_with(
+            &points,
+            tolerance,
+            &FitOptions::default().with_method(ParameterMethod::ChordLength),
+            budget,
+        ) {
             // Below rounding the fit ends in interpolation, exact to rounding of the data.
             let scale = points.iter().map(|p| p.coords.amax()).fold(0.0, f64::max);
             assert!(
