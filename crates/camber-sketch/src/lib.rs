@@ -71,6 +71,7 @@ pub mod file;
 pub mod hermite_chain;
 pub mod ids;
 pub mod lookup;
+pub mod parameters;
 pub mod residuals;
 pub mod sketch;
 pub mod solve;
