@@ -107,9 +107,9 @@ pub fn solve_variants(
 ) -> Result<Vec<VariantResult>> {
     for n in table.names() {
         if base.parameter(n).is_none() {
-            return Err(Error::Expression(camber_expr::Error::UnknownName {
+            return Err(Error::Expression(camber_expr::Error::Scope {
                 column: 1,
-                name: n.clone(),
+                message: format!("the table's column `{n}` names no parameter of the sketch"),
             }));
         }
     }
