@@ -68,6 +68,7 @@ mod session;
 pub mod component;
 pub mod constraints;
 pub mod file;
+pub mod parameters;
 pub mod residuals;
 pub mod sketch;
 

@@ -14,3 +14,4 @@ pub mod render;
 pub mod render_curve;
 pub mod solve;
 pub mod surface;
+pub mod sweep;

@@ -95,6 +95,14 @@ pub enum FileError {
         /// The sketch's reason.
         source: Error,
     },
+    /// A named parameter the sketch refuses (a name that is not one).
+    #[error("parameter {name}: {source}")]
+    Parameter {
+        /// The parameter's name.
+        name: String,
+        /// The sketch's reason.
+        source: Error,
+    },
     /// A custom constraint whose kind no [`CustomRegistry`] entry knows.
     #[error("constraint {id}: custom kind \"{name}\" is not registered")]
     UnregisteredCustom {
@@ -295,9 +303,17 @@ pub fn from_json_with(
                 source,
             })?;
     }
+    for (name, value) in &raw.parameters {
+        sketch
+            .define_parameter(name, *value)
+            .map_err(|source| FileError::Parameter {
+                name: name.clone(),
+                source,
+            })?;
+    }
     for (i, mut value) in raw.constraints.into_iter().enumerate() {
         let priority = load_priority(i, &mut value)?;
-        let (id, constraint) = load_constraint(i, value, registry)?;
+        let (id, constraint, bindings) = load_constraint(i, value, registry, sketch.parameters())?;
         let kind = constraint.tag().to_owned();
         sketch
             .add_constraint_with_id(ConstraintId(id), constraint)
@@ -306,6 +322,7 @@ pub fn from_json_with(
                 kind: kind.clone(),
                 source,
             })?;
+        sketch.set_bindings(ConstraintId(id), bindings);
         if priority > 0 {
             sketch
                 .set_priority(ConstraintId(id), priority)
@@ -336,7 +353,51 @@ pub fn constraint_from_value(mut value: Value) -> std::result::Result<Constraint
     if let Value::Object(map) = &mut value {
         map.entry("id").or_insert(Value::from(0));
     }
-    load_constraint(0, value, &CustomRegistry::new()).map(|(_, c)| c)
+    load_constraint(
+        0,
+        value,
+        &CustomRegistry::new(),
+        &crate::parameters::Parameters::default(),
+    )
+    .map(|(_, c, _)| c)
+}
+
+/// Adds one constraint from its file form without an id (`{"kind": "distance", …}`), its
+/// numbers possibly expressions of the sketch's parameters (`"distance": "chord / 2"`, kept as
+/// bindings, see [`crate::parameters`]). Custom kinds are refused.
+///
+/// ```
+/// use camber_sketch::{file::add_constraint_from_value, Sketch};
+/// let mut s = Sketch::new();
+/// let a = s.add_point(nalgebra::Point2::new(0.0, 0.0))?;
+/// let b = s.add_point(nalgebra::Point2::new(1.0, 0.0))?;
+/// s.define_parameter("chord", 4.0)?;
+/// let id = add_constraint_from_value(&mut s, serde_json::json!(
+///     {"kind": "distance", "a": {"point": a.0}, "b": {"point": b.0}, "distance": "chord / 2"}))?;
+/// assert_eq!(s.parameters().bindings(id)[0].text, "chord / 2");
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+///
+/// # Errors
+/// As [`constraint_from_value`]; [`FileError::Constraint`] when the sketch refuses it.
+pub fn add_constraint_from_value(
+    sketch: &mut Sketch,
+    mut value: Value,
+) -> std::result::Result<ConstraintId, FileError> {
+    if let Value::Object(map) = &mut value {
+        map.entry("id").or_insert(Value::from(0));
+    }
+    let (_, c, bindings) = load_constraint(0, value, &CustomRegistry::new(), sketch.parameters())?;
+    let kind = c.tag().to_owned();
+    let id = sketch
+        .add_constraint(c)
+        .map_err(|source| FileError::Constraint {
+            id: 0,
+            kind,
+            source,
+        })?;
+    sketch.set_bindings(id, bindings);
+    Ok(id)
 }
 
 /// One constraint's file form without its id (`{"kind": …, …fields}`).
@@ -457,7 +518,8 @@ fn load_constraint(
     i: usize,
     mut value: Value,
     registry: &CustomRegistry,
-) -> std::result::Result<(u64, Constraint), FileError> {
+    parameters: &crate::parameters::Parameters,
+) -> std::result::Result<(u64, Constraint, Vec<crate::parameters::Binding>), FileError> {
     let shape = |path: String, message: String| FileError::Shape { path, message };
     let Value::Object(map) = &mut value else {
         return Err(shape(
@@ -494,28 +556,29 @@ fn load_constraint(
             ))
         }
     };
-    let constraint = match Constraint::load(&kind, value) {
-        Some(Ok(c)) => c,
-        Some(Err(e)) => {
-            let path = if e.path == "." {
-                format!("constraints[{i}]")
-            } else {
-                format!("constraints[{i}].{}", e.path)
-            };
-            return Err(shape(path, e.message));
-        }
-        None => {
-            return Err(shape(
-                format!("constraints[{i}].kind"),
-                format!(
-                    "unknown constraint kind `{kind}`, expected one of: {}",
-                    Constraint::TAGS.join(", ")
-                ),
-            ))
-        }
-    };
+    let (constraint, bindings) =
+        match crate::parameters::load_with_dimensions(&kind, value, parameters) {
+            Some(Ok(c)) => c,
+            Some(Err((path, message))) => {
+                let path = if path == "." {
+                    format!("constraints[{i}]")
+                } else {
+                    format!("constraints[{i}].{path}")
+                };
+                return Err(shape(path, message));
+            }
+            None => {
+                return Err(shape(
+                    format!("constraints[{i}].kind"),
+                    format!(
+                        "unknown constraint kind `{kind}`, expected one of: {}",
+                        Constraint::TAGS.join(", ")
+                    ),
+                ))
+            }
+        };
     let Constraint::Custom(custom) = constraint else {
-        return Ok((id, constraint));
+        return Ok((id, constraint, bindings));
     };
     let (name, params) = custom
         .file_form()
@@ -534,7 +597,7 @@ fn load_constraint(
             name: name.clone(),
             message,
         })?;
-    Ok((id, decoded.with_file_form(name, params).into()))
+    Ok((id, decoded.with_file_form(name, params).into(), bindings))
 }
 
 /// Writes a sketch as file text (one entity or constraint per line, a final newline), entities
@@ -560,9 +623,16 @@ pub fn to_json(sketch: &Sketch) -> std::result::Result<String, FileError> {
                 });
             }
         }
-        let body = c.save().map_err(|e| FileError::Syntax {
+        let mut body = c.save().map_err(|e| FileError::Syntax {
             message: e.to_string(),
         })?;
+        let bindings = sketch.parameters().bindings(id);
+        if !bindings.is_empty() {
+            body =
+                crate::parameters::with_texts(&body, bindings).map_err(|e| FileError::Syntax {
+                    message: e.to_string(),
+                })?;
+        }
         // {"id": N, "priority": P, "kind": …, …}: the kind's own form behind the id (and the
         // priority, when it is not the default 0).
         let priority = match sketch.priority(id) {
@@ -582,7 +652,16 @@ pub fn to_json(sketch: &Sketch) -> std::result::Result<String, FileError> {
         })
     };
     let entities: Vec<RawEntity> = entities;
-    let mut text = format!("{{\n  \"version\": {FORMAT_VERSION},\n  \"entities\": [");
+    let mut text = format!("{{\n  \"version\": {FORMAT_VERSION},\n");
+    if !sketch.parameters().is_empty() {
+        let values: std::collections::BTreeMap<&str, f64> = sketch
+            .parameters()
+            .iter()
+            .map(|(n, p)| (n, p.value))
+            .collect();
+        text.push_str(&format!("  \"parameters\": {},\n", enc(&values)?));
+    }
+    text.push_str("  \"entities\": [");
     for (i, e) in entities.iter().enumerate() {
         text.push_str(if i == 0 { "\n    " } else { ",\n    " });
         text.push_str(&enc(e)?);

@@ -70,6 +70,8 @@ pub struct Sketch {
     weights: BTreeMap<(EntityId, usize), f64>,
     /// Priority tiers of constraints that may be relaxed; absent = 0 (required).
     priorities: BTreeMap<ConstraintId, Priority>,
+    /// Named parameters and the dimensions bound to expressions of them.
+    pub(crate) parameters: crate::parameters::Parameters,
 }
 
 impl Default for Sketch {
@@ -88,6 +90,10 @@ impl EntityLookup for Sketch {
 
     fn weight(&self, id: EntityId, index: usize) -> f64 {
         self.weights.get(&(id, index)).copied().unwrap_or(1.0)
+    }
+
+    fn parameter(&self, name: &str) -> Option<f64> {
+        self.parameters.get(name).map(|p| p.value)
     }
 }
 
@@ -110,6 +116,7 @@ impl Sketch {
             options,
             weights: BTreeMap::new(),
             priorities: BTreeMap::new(),
+            parameters: crate::parameters::Parameters::default(),
         }
     }
 }
@@ -520,6 +527,7 @@ impl Sketch {
             .ok_or(Error::UnknownConstraint { constraint: id })?;
         self.graph.remove_node(node);
         self.priorities.remove(&id);
+        self.parameters.bindings.remove(&id);
         self.dirty.extend(c.entities());
         self.revision += 1;
         Ok(c)
@@ -733,6 +741,15 @@ impl Sketch {
             cp.problem.set_priority(id, self.priority(id));
         }
         Ok(cp)
+    }
+
+    /// Replaces a constraint's data by a value of the same kind reading the same entities (a
+    /// dimension re-evaluated).
+    pub(crate) fn replace_constraint_data(&mut self, id: ConstraintId, c: Constraint) {
+        if let Some(slot) = self.constraints.get_mut(&id) {
+            slot.0 = c;
+            self.revision += 1;
+        }
     }
 
     /// Marks an entity as changed, so that the next solve solves its component.
