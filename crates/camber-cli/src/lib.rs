@@ -68,6 +68,10 @@ use commands::{
 #[derive(Debug, Parser)]
 #[command(name = "camber", version, about, after_help = CURVE_FILE_HELP)]
 pub struct Cli {
+    /// The largest input file read, in MiB (default 64; at most 1048576). A 100,000-cell
+    /// ladder sketch is 95 MB of JSON: `camber --max-input-mib 200 solve ladder.json …`.
+    #[arg(long, global = true, value_name = "MIB", value_parser = clap::value_parser!(u64).range(1..=curve_file::MAX_INPUT_MIB_LIMIT))]
+    pub max_input_mib: Option<u64>,
     /// The subcommand to run.
     #[command(subcommand)]
     pub command: Command,
@@ -127,6 +131,9 @@ Example:    camber op blade.json split --at 0.5 -o front.json --second back.json
 
 /// Runs one parsed command line.
 pub fn run(cli: &Cli) -> Result<()> {
+    if let Some(mib) = cli.max_input_mib {
+        curve_file::set_input_limit(mib << 20);
+    }
     match &cli.command {
         Command::Eval(a) => eval::run(a),
         Command::Op(a) => op::run(a),

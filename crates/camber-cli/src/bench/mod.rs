@@ -259,6 +259,9 @@ pub struct Row {
     pub solvers: BTreeMap<String, usize>,
     /// W3/W3a/W5/W5b/T: the growth exponent log(t₂/t₁)/log(N₂/N₁) of the median from the previous size.
     pub growth: Option<f64>,
+    /// The size is that of the row before (`--sizes 10,10`): there is no growth to measure.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub same_size_as_previous: bool,
     /// W1: moved / min-norm.
     pub moved_over_min_norm: Option<Ratio>,
     /// W1: the median time of an empty timed section (two clock reads), seconds. Each W1
@@ -304,8 +307,41 @@ fn row(workload: Workload, case: String, times: &[Duration], valid: usize) -> Ro
         failed: 0,
         solvers: BTreeMap::new(),
         growth: None,
+        same_size_as_previous: false,
         moved_over_min_norm: None,
         timer_s: None,
+    }
+}
+
+/// Sets `r.growth` to the growth exponent log(t₂/t₁)/log(N₂/N₁) of its median from the row of
+/// size `previous_size` and median `previous_median`; between equal sizes there is none (the
+/// quotient would be ±∞ or NaN), and the row says so. No exponent either when a median is not
+/// a positive time.
+///
+/// ```
+/// use camber_cli::bench::{set_growth, Row, Workload};
+/// let mut r: Row = serde_json::from_str(r#"{"workload": "W3", "case": "N=100", "size": 100,
+///     "samples": 1, "median_s": 0.4, "p95_s": 0.4, "valid": 1, "failed": 0, "solvers": {},
+///     "growth": null, "moved_over_min_norm": null}"#)?;
+/// set_growth(&mut r, 10, 0.04);
+/// assert!((r.growth.unwrap() - 1.0).abs() < 1e-12);
+/// set_growth(&mut r, 100, 0.3);
+/// assert!(r.growth.is_none() && r.same_size_as_previous);
+/// # Ok::<(), serde_json::Error>(())
+/// ```
+pub fn set_growth(r: &mut Row, previous_size: usize, previous_median: f64) {
+    r.growth = None;
+    r.same_size_as_previous = false;
+    let Some(size) = r.size else {
+        return;
+    };
+    if size == previous_size {
+        r.same_size_as_previous = true;
+        return;
+    }
+    if r.median_s > 0.0 && previous_median > 0.0 && previous_size > 0 {
+        let g = (r.median_s / previous_median).ln() / (size as f64 / previous_size as f64).ln();
+        r.growth = g.is_finite().then_some(g);
     }
 }
 
@@ -368,6 +404,9 @@ fn notes(r: &Row) -> String {
     }
     if let Some(g) = r.growth {
         parts.push(format!("growth {g:.2}"));
+    }
+    if r.same_size_as_previous {
+        parts.push("no growth (same N as the row before)".to_owned());
     }
     if !r.solvers.is_empty() {
         let list: Vec<String> = r.solvers.iter().map(|(k, n)| format!("{k} {n}")).collect();

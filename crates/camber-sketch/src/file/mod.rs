@@ -44,6 +44,7 @@ use crate::ground::ids::{ConstraintId, EntityId};
 use crate::sketch::Sketch;
 
 mod raw;
+mod words;
 
 use raw::{RawEntity, RawShape, RawSketch};
 
@@ -277,9 +278,19 @@ pub fn from_json_with(
         }
         None => {}
     }
+    if !value.is_object() {
+        return Err(FileError::Shape {
+            path: ".".into(),
+            message: format!(
+                "expected a sketch: an object with \"version\", \"entities\" and \"constraints\", \
+                 found {}",
+                json_kind(&value)
+            ),
+        });
+    }
     let raw: RawSketch = serde_path_to_error::deserialize(value).map_err(|e| FileError::Shape {
         path: e.path().to_string(),
-        message: e.inner().to_string(),
+        message: words::plain_words(&e.inner().to_string()),
     })?;
     let mut sketch = Sketch::new();
     let entities = raw
@@ -470,20 +481,21 @@ fn load_entity(i: usize, mut value: Value) -> std::result::Result<RawEntity, Fil
         .map_err(|e| {
             // The path starts with the kind (the key of the keyed form): drop it.
             let path = e.path().to_string();
-            let message = e
-                .inner()
-                .to_string()
-                .replace("unknown variant", "unknown entity kind")
-                .replace(
-                    "expected fewer elements in array",
-                    "expected a point [x, y] of 2 numbers",
-                );
-            let inner = match path.split_once('.') {
-                Some((_, rest)) if !rest.is_empty() && rest != "?" => {
-                    format!("entities[{i}].{rest}")
-                }
-                _ if message.starts_with("unknown entity kind") => format!("entities[{i}].kind"),
-                _ => format!("entities[{i}]"),
+            let message = words::plain_words(&e.inner().to_string()).replace(
+                "expected fewer elements in array",
+                "expected a point [x, y] of 2 numbers",
+            );
+            let (inner, message) = match path.split_once('.') {
+                Some((_, rest)) if !rest.is_empty() && rest != "?" => (
+                    format!("entities[{i}].{rest}"),
+                    message.replace("unknown variant", "unknown value"),
+                ),
+                // The keyed form's only variant names are the entity kinds.
+                _ if message.starts_with("unknown variant") => (
+                    format!("entities[{i}].kind"),
+                    message.replace("unknown variant", "unknown entity kind"),
+                ),
+                _ => (format!("entities[{i}]"), message),
             };
             shape(inner, message)
         })?;
@@ -491,6 +503,18 @@ fn load_entity(i: usize, mut value: Value) -> std::result::Result<RawEntity, Fil
         id,
         shape: shape_of.into(),
     })
+}
+
+/// What a JSON value is, for messages: `null`, `an array`, `a number`, …
+fn json_kind(value: &Value) -> &'static str {
+    match value {
+        Value::Null => "null",
+        Value::Bool(_) => "true or false",
+        Value::Number(_) => "a number",
+        Value::String(_) => "a string",
+        Value::Array(_) => "an array",
+        Value::Object(_) => "an object",
+    }
 }
 
 /// A constraint's optional `"priority"` (0–255, 0 when absent), taken out of its object.
@@ -565,7 +589,10 @@ fn load_constraint(
                 } else {
                     format!("constraints[{i}].{path}")
                 };
-                return Err(shape(path, message));
+                return Err(shape(
+                    path,
+                    words::plain_words(&message).replace("unknown variant", "unknown value"),
+                ));
             }
             None => {
                 return Err(shape(

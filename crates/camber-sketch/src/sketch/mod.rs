@@ -587,7 +587,9 @@ impl Sketch {
 /// # Components
 impl Sketch {
     /// The connected components of the graph, each with its entities and constraints sorted by
-    /// id, ordered by their smallest entity id.
+    /// id, ordered by their smallest entity id; then, in id order, one component for each
+    /// constraint that reads no entity (a custom constraint of no arguments or of its own
+    /// parameters only), so that it is solved and analysed like any other.
     pub fn components(&self) -> Vec<Component> {
         let mut seen = vec![false; self.graph.node_bound()];
         let mut out = Vec::new();
@@ -618,6 +620,14 @@ impl Sketch {
             comp.entities.sort_unstable();
             comp.constraints.sort_unstable();
             out.push(comp);
+        }
+        for (id, (_, node)) in &self.constraints {
+            if !seen[node.index()] {
+                out.push(Component {
+                    entities: Vec::new(),
+                    constraints: vec![*id],
+                });
+            }
         }
         out
     }
@@ -758,8 +768,10 @@ impl Sketch {
         self.revision += 1;
     }
 
+    /// Whether a solve must look at the component: one of its entities changed, or it has none
+    /// (a constraint that reads no entity has no mark to set; it is cheap to check again).
     pub(crate) fn is_dirty(&self, comp: &Component) -> bool {
-        comp.entities.iter().any(|e| self.dirty.contains(e))
+        comp.entities.is_empty() || comp.entities.iter().any(|e| self.dirty.contains(e))
     }
 
     /// Stores solved free parameters (contact parameters, a custom constraint's own) into
