@@ -212,6 +212,9 @@ fn equal_sizes_have_no_growth_and_say_so() {
         .stdout
         .clone();
     let text = String::from_utf8(out).unwrap();
-    assert!(text.contains("no growth (same N as the row before)"), "{text}");
+    assert!(
+        text.contains("no growth (same N as the row before)"),
+        "{text}"
+    );
     assert!(!text.contains("inf") && !text.contains("NaN"), "{text}");
 }

@@ -123,7 +123,11 @@ mod tests {
             2.0_f64.powi(60),
         ] {
             let text = Readable(v).to_string();
-            assert_eq!(text.parse::<f64>().map(f64::to_bits), Ok(v.to_bits()), "{text}");
+            assert_eq!(
+                text.parse::<f64>().map(f64::to_bits),
+                Ok(v.to_bits()),
+                "{text}"
+            );
             assert!(text.len() <= 24, "{text}");
         }
     }

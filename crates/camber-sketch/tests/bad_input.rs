@@ -255,7 +255,10 @@ fn messages_print_extreme_numbers_in_short_form() {
         })
         .unwrap_err()
         .to_string();
-    assert!(err.contains("parameter 1e308 is outside the domain [0, 1]"), "{err}");
+    assert!(
+        err.contains("parameter 1e308 is outside the domain [0, 1]"),
+        "{err}"
+    );
     let err = Error::ContactCrossed {
         constraint: ConstraintId(3),
         parameter: 0.25,
@@ -270,5 +273,8 @@ fn messages_print_extreme_numbers_in_short_form() {
         upper: 1e20,
     })
     .to_string();
-    assert!(err.ends_with("would move to -1e300, outside [0, 1e20]"), "{err}");
+    assert!(
+        err.ends_with("would move to -1e300, outside [0, 1e20]"),
+        "{err}"
+    );
 }

@@ -320,7 +320,10 @@ fn a_custom_constraint_of_no_arguments_that_cannot_hold_is_a_conflict() {
     let mut s = Sketch::new();
     let p = s.add_point(Point2::new(1.0, 2.0)).unwrap();
     let id = s
-        .add_constraint(Constraint::Custom(Custom::new(Constant { value: 1.0 }, vec![])))
+        .add_constraint(Constraint::Custom(Custom::new(
+            Constant { value: 1.0 },
+            vec![],
+        )))
         .unwrap();
     let before = s.clone();
     match s.solve() {
@@ -337,10 +340,16 @@ fn a_custom_constraint_of_no_arguments_that_cannot_hold_is_a_conflict() {
     // One that holds (0 = 0) is satisfied, and said so.
     let mut s = Sketch::new();
     let id = s
-        .add_constraint(Constraint::Custom(Custom::new(Constant { value: 0.0 }, vec![])))
+        .add_constraint(Constraint::Custom(Custom::new(
+            Constant { value: 0.0 },
+            vec![],
+        )))
         .unwrap();
     let report = s.solve().unwrap();
-    assert!(report.components.iter().any(|c| c.component.constraints == vec![id]));
+    assert!(report
+        .components
+        .iter()
+        .any(|c| c.component.constraints == vec![id]));
 }
 
 /// s − 1 = 0 over one scalar argument s.
@@ -377,12 +386,7 @@ fn a_custom_constraint_over_its_own_parameter_only_is_solved() {
         )))
         .unwrap();
     s.solve().unwrap();
-    let Some(Arg::Param(v)) = s
-        .constraint(id)
-        .unwrap()
-        .as_custom()
-        .map(|c| c.args()[0])
-    else {
+    let Some(Arg::Param(v)) = s.constraint(id).unwrap().as_custom().map(|c| c.args()[0]) else {
         panic!("no parameter")
     };
     assert_abs_diff_eq!(v, 1.0, epsilon = 1e-12);

@@ -80,5 +80,8 @@ fn ten_thousand_slsqp_solves_leave_no_allocation_behind() {
     // The solve is right, too: the nearest point of the unit circle.
     let x = p.values();
     let (want_x, want_y) = (1.5 / 2.5_f64.sqrt(), 0.5 / 2.5_f64.sqrt());
-    assert!((x[0] - want_x).abs() < 1e-6 && (x[1] - want_y).abs() < 1e-6, "{x:?}");
+    assert!(
+        (x[0] - want_x).abs() < 1e-6 && (x[1] - want_y).abs() < 1e-6,
+        "{x:?}"
+    );
 }

@@ -54,9 +54,14 @@ fn expected_words(what: &str) -> String {
     if let Some(p) = primitive {
         return p.to_owned();
     }
-    let rust_type = ["struct variant ", "struct ", "unit struct ", "newtype struct "]
-        .iter()
-        .any(|p| kind.starts_with(p));
+    let rust_type = [
+        "struct variant ",
+        "struct ",
+        "unit struct ",
+        "newtype struct ",
+    ]
+    .iter()
+    .any(|p| kind.starts_with(p));
     if kind.starts_with("tuple variant ") || kind.starts_with("tuple struct ") {
         return match count {
             Some(n) => format!("an array of {n} values"),
