@@ -217,7 +217,7 @@ pub fn load(path: &Path) -> Result<Curve> {
 
 /// "64 MiB" for whole mebibytes, "1000 bytes" otherwise.
 fn describe_size(bytes: u64) -> String {
-    if bytes >= 1 << 20 && bytes % (1 << 20) == 0 {
+    if bytes >= 1 << 20 && bytes.is_multiple_of(1 << 20) {
         format!("{} MiB", bytes >> 20)
     } else {
         format!("{bytes} bytes")
