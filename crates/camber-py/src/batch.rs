@@ -59,7 +59,7 @@ fn run(job: Job) -> Outcome {
 /// With `parameters` (a dict name → list of values, all of one length n), `items` is one
 /// sketch (a `Sketch` or a path, left unchanged) solved for each of the n rows of values:
 /// one dict per variant, {"row", "ok", "max_residual", "error", every parameter's value, and
-/// "<constraint id>.<name>" for every solved free parameter of an expression constraint}.
+/// `"<constraint id>.<name>"` for every solved free parameter of an expression constraint}.
 #[pyfunction]
 #[pyo3(signature = (items, threads = None, parameters = None))]
 pub fn solve_many(
