@@ -368,7 +368,7 @@ pub fn constraint_from_value(mut value: Value) -> std::result::Result<Constraint
         0,
         value,
         &CustomRegistry::new(),
-        &crate::parameters::Parameters::default(),
+        &crate::sketch::parameters::Parameters::default(),
     )
     .map(|(_, c, _)| c)
 }
@@ -542,8 +542,8 @@ fn load_constraint(
     i: usize,
     mut value: Value,
     registry: &CustomRegistry,
-    parameters: &crate::parameters::Parameters,
-) -> std::result::Result<(u64, Constraint, Vec<crate::parameters::Binding>), FileError> {
+    parameters: &crate::sketch::parameters::Parameters,
+) -> std::result::Result<(u64, Constraint, Vec<crate::sketch::parameters::Binding>), FileError> {
     let shape = |path: String, message: String| FileError::Shape { path, message };
     let Value::Object(map) = &mut value else {
         return Err(shape(
@@ -581,7 +581,7 @@ fn load_constraint(
         }
     };
     let (constraint, bindings) =
-        match crate::parameters::load_with_dimensions(&kind, value, parameters) {
+        match crate::sketch::parameters::load_with_dimensions(&kind, value, parameters) {
             Some(Ok(c)) => c,
             Some(Err((path, message))) => {
                 let path = if path == "." {
@@ -655,10 +655,11 @@ pub fn to_json(sketch: &Sketch) -> std::result::Result<String, FileError> {
         })?;
         let bindings = sketch.parameters().bindings(id);
         if !bindings.is_empty() {
-            body =
-                crate::parameters::with_texts(&body, bindings).map_err(|e| FileError::Syntax {
+            body = crate::sketch::parameters::with_texts(&body, bindings).map_err(|e| {
+                FileError::Syntax {
                     message: e.to_string(),
-                })?;
+                }
+            })?;
         }
         // {"id": N, "priority": P, "kind": …, …}: the kind's own form behind the id (and the
         // priority, when it is not the default 0).

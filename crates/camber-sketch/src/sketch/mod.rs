@@ -7,6 +7,7 @@
 //! entities they touch as dirty, and [`Sketch::solve`] solves only the components that contain a
 //! dirty entity.
 
+pub mod parameters;
 pub mod warnings;
 
 use std::collections::{BTreeMap, BTreeSet};
@@ -71,7 +72,7 @@ pub struct Sketch {
     /// Priority tiers of constraints that may be relaxed; absent = 0 (required).
     priorities: BTreeMap<ConstraintId, Priority>,
     /// Named parameters and the dimensions bound to expressions of them.
-    pub(crate) parameters: crate::parameters::Parameters,
+    pub(crate) parameters: parameters::Parameters,
 }
 
 impl Default for Sketch {
@@ -116,7 +117,7 @@ impl Sketch {
             options,
             weights: BTreeMap::new(),
             priorities: BTreeMap::new(),
-            parameters: crate::parameters::Parameters::default(),
+            parameters: parameters::Parameters::default(),
         }
     }
 }

@@ -5,7 +5,7 @@
 use rayon::prelude::*;
 
 use crate::constraints::Constraint;
-use crate::errors::{Error, Result};
+use crate::ground::errors::{Error, Result};
 use crate::sketch::Sketch;
 
 /// Parameter values by column: `names[k]` takes `columns[k][i]` in variant i.

@@ -16,13 +16,9 @@ use std::collections::{BTreeMap, BTreeSet};
 use serde_json::Value;
 
 use crate::constraints::Constraint;
-use crate::errors::{Error, Result};
+use crate::ground::errors::{Error, Result};
 
 mod ordered;
-mod sketch_api;
-pub mod sweep;
-
-pub use sketch_api::ParameterChange;
 
 /// One named parameter.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -45,7 +41,7 @@ pub struct Binding {
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Parameters {
     pub(crate) values: BTreeMap<String, Parameter>,
-    pub(crate) bindings: BTreeMap<crate::ids::ConstraintId, Vec<Binding>>,
+    pub(crate) bindings: BTreeMap<crate::ground::ids::ConstraintId, Vec<Binding>>,
 }
 
 /// A scope of the parameters as constants, recording which it reads.
@@ -83,7 +79,7 @@ impl Parameters {
     }
 
     /// The bindings of a constraint's dimensions.
-    pub fn bindings(&self, id: crate::ids::ConstraintId) -> &[Binding] {
+    pub fn bindings(&self, id: crate::ground::ids::ConstraintId) -> &[Binding] {
         self.bindings.get(&id).map_or(&[], Vec::as_slice)
     }
 
@@ -127,7 +123,7 @@ impl Parameters {
     }
 
     /// Whether the text of any binding of `id` reads `name`.
-    pub(crate) fn binding_reads(&self, id: crate::ids::ConstraintId, name: &str) -> bool {
+    pub(crate) fn binding_reads(&self, id: crate::ground::ids::ConstraintId, name: &str) -> bool {
         self.bindings(id).iter().any(|b| mentions(&b.text, name))
     }
 }
@@ -161,7 +157,7 @@ enum Step<'a> {
 }
 
 /// The value at `path`, mutably.
-fn at_path<'v>(value: &'v mut Value, path: &str) -> Option<&'v mut Value> {
+pub(crate) fn at_path<'v>(value: &'v mut Value, path: &str) -> Option<&'v mut Value> {
     let mut v = value;
     for s in steps(path) {
         v = match s {

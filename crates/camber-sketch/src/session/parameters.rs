@@ -2,12 +2,12 @@
 //! expressions of them, and re-solve what reads them.
 
 use crate::constraints::Constraint;
-use crate::errors::{Error, Result};
-use crate::ids::{ConstraintId, EntityId};
+use crate::ground::errors::{Error, Result};
+use crate::ground::ids::{ConstraintId, EntityId};
+use crate::session::solve::SketchReport;
 use crate::sketch::Sketch;
-use crate::solve::SketchReport;
 
-use super::{apply, mentions, Binding, Parameter};
+use crate::sketch::parameters::{apply, at_path, mentions, Binding, Parameter, Parameters};
 
 /// What changing a parameter touched: the constraints that read it (their dimensions
 /// re-evaluated, their expressions recompiled) and the entities whose components re-solve.
@@ -41,7 +41,7 @@ fn check_name(name: &str) -> Result<()> {
 /// # Parameters
 impl Sketch {
     /// The sketch's parameters and the bindings of its dimensions.
-    pub fn parameters(&self) -> &super::Parameters {
+    pub fn parameters(&self) -> &Parameters {
         &self.parameters
     }
 
@@ -217,7 +217,7 @@ impl Sketch {
                 message: e.to_string(),
             })
         })?;
-        if !super::at_path(&mut value, path).is_some_and(|v| v.is_number()) {
+        if !at_path(&mut value, path).is_some_and(|v| v.is_number()) {
             return Err(Error::Expression(camber_expr::Error::Scope {
                 column: 1,
                 message: format!("`{path}` is not a number of a {} constraint", c.tag()),
