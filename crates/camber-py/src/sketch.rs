@@ -474,12 +474,24 @@ impl DragSession {
 #[pymethods]
 impl DragSession {
     /// Moves the dragged point towards `target` and re-solves its component (GIL released).
-    fn update(&mut self, py: Python<'_>, target: Vec<f64>) -> PyResult<()> {
+    /// Returns what changed: `{"moved": [entity ids], "residuals": {constraint id: max |g|}}`.
+    fn update<'py>(&mut self, py: Python<'py>, target: Vec<f64>) -> PyResult<Bound<'py, PyDict>> {
         let p = xy(&target, "target")?;
         let session = self.live()?;
-        let done = py.detach(|| session.update(p)).map_err(errors::solve);
+        let done = py
+            .detach(|| session.update(p).cloned())
+            .map_err(errors::solve);
         crate::custom::raise_pending(py)?;
-        done
+        let update = done?;
+        let out = PyDict::new(py);
+        let moved: Vec<u64> = update.moved.iter().map(|id| id.0).collect();
+        out.set_item("moved", moved)?;
+        let residuals = PyDict::new(py);
+        for (id, r) in &update.residuals {
+            residuals.set_item(id.0, *r)?;
+        }
+        out.set_item("residuals", residuals)?;
+        Ok(out)
     }
 
     /// A point's coordinates in the dragged state.

@@ -106,9 +106,13 @@ def test_drag_follows_the_start_tangent_and_finishes_into_the_sketch():
     s = camber.Sketch()
     c = s.add_bezier([[0, 0], 1.2 * d, [2.2, 0.9], [3.0, 0.0]])
     s.add_constraint("fixed", target={"point": {"control": [c, 3]}})
-    s.add_constraint("start_tangent", curve=c, direction=d, sense="agree", form="row")
+    tangent = s.add_constraint("start_tangent", curve=c, direction=d, sense="agree", form="row")
     drag = s.drag({"control": [c, 1]})
-    drag.update(1.2 * d + [0.0, 0.1])
+    moved = drag.update(1.2 * d + [0.0, 0.1])
+    # What the update changed: the curve, and the tangent's residual at the new state (the
+    # fixed point is a binding and has no rows).
+    assert moved["moved"] == [c]
+    assert list(moved["residuals"]) == [tangent] and moved["residuals"][tangent] < 1e-12
     p0, p1 = drag.point({"control": [c, 0]}), drag.point({"control": [c, 1]})
     t = p1 - p0
     assert abs(t[0] * d[1] - t[1] * d[0]) < 1e-12 and t @ d > 0

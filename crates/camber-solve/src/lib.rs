@@ -81,16 +81,15 @@ pub use model::{
     Result, Scalar, Selection, SolveReport, SolverChoice, SolverKind, Stamps, Status, TierOutcome,
     UnknownId, UserObjective, Var, DEFAULT_MAX_EVALUATIONS, SLSQP_MAX_UNKNOWNS,
 };
-pub use policy::{solve, solve_newton, solve_newton_from};
+pub use policy::{solve, solve_linear, solve_newton, solve_newton_from, Plan, Start};
 
 pub use analysis::structure;
 pub use analysis::{
-    analyze, analyze_rows, analyze_rows_sparse, Dependency, DependentRow, DofAnalysis, RowAnalysis,
-    StructureSummary, DENSE_ANALYSIS_MAX_ENTRIES,
+    analyze, analyze_rows, analyze_rows_sparse, mobility, multipliers, Dependency, DependentRow,
+    DofAnalysis, Mobility, RowAnalysis, StructureSummary, DENSE_ANALYSIS_MAX_ENTRIES,
 };
 pub use linalg::min_norm::MinNormFactorization;
 pub use linalg::reduced::{Linearization, ReducedMap};
 pub use linalg::sparse::SparseMatrix;
-pub use solvers::linear::solve_linear;
 pub use solvers::lsq::{solve_least_squares, LsqOptions, LsqReport};
 pub use solvers::newton::NewtonWorkspace;

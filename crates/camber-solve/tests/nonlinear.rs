@@ -405,7 +405,8 @@ fn affine_problems_take_the_linear_path() {
         .unwrap();
     let r = solve(&mut p, &Options::default()).unwrap();
     assert_eq!(r.solver, SolverKind::DenseMinNorm);
-    assert!(r.reason.starts_with("selection: affine"));
+    assert_eq!(r.selection, Selection::Affine);
+    assert!(r.reason.starts_with("all residuals affine"));
     let again = solve(&mut p, &Options::default()).unwrap();
     assert_eq!(again.status, Status::AlreadySatisfied);
 }

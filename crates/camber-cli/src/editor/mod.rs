@@ -156,15 +156,20 @@ impl Drag {
         &self,
     ) -> camber_sketch::Result<(Vec<ConstraintResidual>, Option<ConstraintResidual>)> {
         let residuals = self.session.residuals()?;
-        let worst = residuals.iter().filter(|(_, r)| *r > 0.0).fold(
-            None,
-            |best: Option<ConstraintResidual>, (id, r)| match best {
-                Some((_, b)) if b >= *r => best,
-                _ => Some((*id, *r)),
-            },
-        );
+        let worst = worst_of(&residuals);
         Ok((residuals, worst))
     }
+}
+
+/// The largest non-zero residual with its constraint (on a tie the smaller constraint id).
+fn worst_of(residuals: &[ConstraintResidual]) -> Option<ConstraintResidual> {
+    residuals.iter().filter(|(_, r)| *r > 0.0).fold(
+        None,
+        |best: Option<ConstraintResidual>, (id, r)| match best {
+            Some((_, b)) if b >= *r => best,
+            _ => Some((*id, *r)),
+        },
+    )
 }
 
 /// The largest entity or constraint id the editor accepts: 2^53 − 1, the largest integer a
@@ -469,40 +474,36 @@ impl EditorState {
             None => to,
         };
         let t = Instant::now();
-        let result = drag.session.update(target);
+        let result = drag.session.update(target).map(|_| ());
         let update_time = t.elapsed();
         drag.update_time += update_time;
-        if let Err(e) = result {
-            drag.refused += 1;
-            return Err(Failure::new(
-                422,
-                format!("move refused: {}", describe_error(&self.sketch, &e)),
-            ));
-        }
-        drag.updates += 1;
-        // The entities whose points the update moved, rebuilt from the session's points.
-        let mut moved = Vec::new();
-        for (id, e) in &drag.current {
-            let points = (0..e.points().len())
-                .map(|i| drag.session.point(PointRef::Control(*id, i)))
-                .collect::<std::result::Result<Vec<_>, _>>()
-                .map_err(|err| Failure::new(500, describe_error(&self.sketch, &err)))?;
-            if points.as_slice() != e.points() {
-                let rebuilt = e
-                    .with_points(&points, &e.scalars())
-                    .map_err(|err| Failure::new(500, describe_error(&self.sketch, &err)))?;
-                moved.push((*id, rebuilt));
+        let update = match result {
+            Ok(()) => drag.session.last_update().clone(),
+            Err(e) => {
+                drag.refused += 1;
+                return Err(Failure::new(
+                    422,
+                    format!("move refused: {}", describe_error(&self.sketch, &e)),
+                ));
             }
+        };
+        drag.updates += 1;
+        // Only the entities the update moved are read from the session; the residuals come
+        // with the update.
+        let mut moved = Vec::with_capacity(update.moved.len());
+        for id in &update.moved {
+            let e = drag
+                .session
+                .entity(*id)
+                .map_err(|err| Failure::new(500, describe_error(&self.sketch, &err)))?;
+            moved.push((*id, e));
         }
-        let changed: BTreeSet<EntityId> = moved.iter().map(|(id, _)| *id).collect();
+        let changed: BTreeSet<EntityId> = update.moved.iter().copied().collect();
         drag.current.extend(moved);
         let view = View::with_overrides(&self.sketch, &drag.current);
         let scene = SceneJson::of(&view, &self.conflicting, |id| changed.contains(&id))?;
-        // The residuals at the new state, so the panel never shows the ones from before the
-        // drag.
-        let (residuals, worst) = drag
-            .live_residuals()
-            .map_err(|err| Failure::new(500, describe_error(&self.sketch, &err)))?;
+        let residuals = update.residuals;
+        let worst = worst_of(&residuals);
         Ok(Response::json(
             200,
             &MoveJson {

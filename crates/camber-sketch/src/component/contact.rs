@@ -5,7 +5,7 @@
 
 use std::sync::Arc;
 
-use camber_solve::{BlockId, ConstraintId, MinNormFactorization};
+use camber_solve::{BlockId, ConstraintId};
 
 use super::problem::ComponentProblem;
 use crate::constraints::check::{point_tangent, side_width, ContactSpec, ContactTarget};
@@ -114,7 +114,7 @@ impl ComponentProblem {
     /// length; [`ComponentProblem::active_multipliers`] drops the floor again when it is not
     /// binding at the solution.
     pub(crate) fn reversed_contacts(&self, lookup: &dyn EntityLookup) -> Result<Vec<ActiveRow>> {
-        let x = self.problem.values().to_vec();
+        let x = self.problem.values();
         let mut out = Vec::new();
         let mut entities = None;
         for entry in &self.checks {
@@ -124,12 +124,12 @@ impl ComponentProblem {
             if out.contains(&ActiveRow::SpeedFloor { owner: entry.owner }) {
                 continue;
             }
-            let solved = entities.get_or_insert(self.entities_at(lookup, &x)?);
+            let solved = entities.get_or_insert(self.entities_at(lookup, x)?);
             let find = |id| solved.iter().find(|(e, _)| *e == id).map(|(_, e)| e);
             let Some(curve) = find(c.spec.curve) else {
                 continue;
             };
-            let (p, t) = point_tangent(curve, c.spec.curve, self.contact_value(&x, c.u)?)?;
+            let (p, t) = point_tangent(curve, c.spec.curve, self.contact_value(x, c.u)?)?;
             let reversed = match c.spec.target {
                 ContactTarget::Circle {
                     circle, rotation, ..
@@ -170,22 +170,15 @@ impl ComponentProblem {
         if count == 0 {
             return Ok(Vec::new());
         }
-        let lin = self.problem.linearize()?;
-        let (m, n) = (lin.jacobian.nrows(), lin.jacobian.ncols());
-        let z = lin.map.z0();
-        if z.len() != z_start.len() || count > m {
-            return Ok(vec![0.0; count]);
-        }
-        let w = lin.map.weights();
-        // project(v) with v = W·(z* − z₀) returns y = (J·W⁻¹·Jᵀ)⁻¹·J·(z* − z₀) = μ.
-        let v: Vec<f64> = (0..n).map(|k| w[k] * (z[k] - z_start[k])).collect();
-        let Ok(mut f) = MinNormFactorization::try_auto(&lin.jacobian, w, DENSE_MAX_UNKNOWNS) else {
+        let options = camber_solve::Options::default().with_dense_max_unknowns(DENSE_MAX_UNKNOWNS);
+        match camber_solve::multipliers(&self.problem, z_start, &options)? {
+            Some(mut mu) if count <= mu.len() => {
+                let m = mu.len();
+                Ok(mu.split_off(m - count))
+            }
             // Dependent rows: no multiplier to read, so no row is dropped.
-            return Ok(vec![0.0; count]);
-        };
-        let (mut out, mut mu) = (vec![0.0; n], vec![0.0; m]);
-        f.project(&v, &mut out, &mut mu)?;
-        Ok(mu.split_off(m - count))
+            _ => Ok(vec![0.0; count]),
+        }
     }
 
     /// Adds an active row, built against the problem's starting values (owned by the contact
@@ -309,10 +302,11 @@ mod tests {
     fn multiplier(row: ActiveRow) -> f64 {
         let (s, _) = dipping();
         let comp = s.components().remove(0);
-        let mut cp = s.build_component(&comp, None).unwrap();
+        let mut cp = s.build_component(&comp).unwrap();
         assert!(cp.add_active_row(&s, row).unwrap());
         let z0 = cp.problem().reduced_map().unwrap().z0().to_vec();
-        cp.solve_once(s.options()).unwrap();
+        cp.solve_once(s.options(), &camber_solve::Start::Cold)
+            .unwrap();
         cp.active_multipliers(&z0, 1).unwrap()[0]
     }
 

@@ -2,15 +2,15 @@
 //!
 //! The sketch compiles each constraint into pieces ([`crate::constraints`]); this module turns
 //! a component's pieces into a [`camber_solve::Problem`] ([`problem`], with coincident points
-//! merged by `merge`), keeps contacts honest with an active set of extra rows (`contact`), and
-//! runs the one solve policy every caller uses (`policy`): the sketch's solve and its drag
-//! sessions. The checks of a solved state ([`SolvedCheck`]) are the kinds' own, in
+//! merged by `merge`) with the policy's plan kept beside it, keeps contacts honest with an
+//! active set of extra rows (`contact`), and solves it (`solve`: the plan, then the checks of
+//! the solved geometry) for the sketch's solve and its drag sessions. The checks of a solved state ([`SolvedCheck`]) are the kinds' own, in
 //! [`crate::constraints`].
 
 pub(crate) mod contact;
 pub(crate) mod merge;
-pub(crate) mod policy;
 pub mod problem;
+pub(crate) mod solve;
 
 pub use crate::constraints::check::{ContactSpec, ContactTarget, SolvedCheck, SolvedState};
 pub use problem::{ComponentProblem, DRAG_CONSTRAINT};

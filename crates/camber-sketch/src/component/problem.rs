@@ -23,7 +23,7 @@ use crate::constraints::check::SolvedCheck;
 use crate::constraints::piece::{ETerms, Piece, Slot};
 use crate::ground::entity::Entity;
 use crate::ground::errors::{Error, Result};
-use crate::ground::ids::{EntityId, PointRef};
+use crate::ground::ids::EntityId;
 use crate::ground::lookup::EntityLookup;
 use crate::residuals::{DirectionCross, LineTangency, PointCombination};
 
@@ -162,6 +162,12 @@ pub struct ComponentProblem {
     pub(crate) merged: Vec<(BlockId, BlockId)>,
     /// Constraints whose coincidence joined points already merged (redundant).
     pub(crate) merged_redundant: Vec<ConstraintId>,
+    /// The policy's plan for this problem: what it keeps between solves (evaluator, Newton's
+    /// factorization patterns, the linear path's factorization), so that a change of values
+    /// re-solves without being prepared again.
+    pub(crate) plan: camber_solve::Plan,
+    /// Storage for the state a solve starts from (it goes back there on failure).
+    pub(crate) saved: camber_solve::ProblemState,
 }
 
 impl ComponentProblem {
@@ -395,15 +401,13 @@ fn reads_other_free(piece: &Piece) -> bool {
     matches!(piece, Piece::General { slots, .. } if slots.iter().any(|s| matches!(s, Slot::FreeOf(..))))
 }
 
-/// Builds the problem of `component` from its constraints' pieces, with the rows pinning
-/// `pin` (if any) at its current position last, owned by [`DRAG_CONSTRAINT`]. The coincidences
-/// of `relaxable` constraints (a priority above 0) stay rows: a merge could not give way.
+/// Builds the problem of `component` from its constraints' pieces. The coincidences of
+/// `relaxable` constraints (a priority above 0) stay rows: a merge could not give way.
 pub(crate) fn build(
     lookup: &dyn EntityLookup,
     component: &Component,
     compiled: &[(ConstraintId, crate::constraints::piece::Pieces)],
     relaxable: &[ConstraintId],
-    pin: Option<PointRef>,
 ) -> Result<ComponentProblem> {
     let mut cp = ComponentProblem {
         problem: Problem::new(),
@@ -416,6 +420,8 @@ pub(crate) fn build(
         checks: Vec::new(),
         merged: Vec::new(),
         merged_redundant: Vec::new(),
+        plan: camber_solve::Plan::new(),
+        saved: camber_solve::ProblemState::default(),
     };
     let mut entities: SmallVec<[&Entity; 16]> = SmallVec::with_capacity(component.entities.len());
     let (mut blocks_needed, mut unknowns_needed) = (0, 0);
@@ -660,22 +666,6 @@ pub(crate) fn build(
     for (id, piece) in &rows {
         cp.add_piece(*id, piece)?;
     }
-    if let Some(r) = pin {
-        let t = lookup.lookup(r.entity())?.resolve(r)?;
-        let mut terms = ETerms::new();
-        for (j, c) in &t {
-            terms.push((r.entity(), *j, *c));
-        }
-        let at = crate::ground::entity::combine(lookup.lookup(r.entity())?.points(), &t);
-        cp.add_piece(
-            DRAG_CONSTRAINT,
-            &Piece::Combination {
-                name: "drag",
-                terms,
-                target: at,
-            },
-        )?;
-    }
     Ok(cp)
 }
 
@@ -688,22 +678,62 @@ impl ComponentProblem {
     ) -> Result<Vec<(EntityId, Entity)>> {
         let mut out = Vec::with_capacity(self.component.entities.len());
         for id in &self.component.entities {
-            let e = lookup.lookup(*id)?;
-            let Some((points, scalar_blocks)) = self.entity_blocks(*id) else {
-                continue;
-            };
-            let mut pts = Vec::with_capacity(points.len());
-            for b in points {
-                let i = self.problem.unknown(*b, 0)?.index();
-                pts.push(Point2::new(x[i], x[i + 1]));
+            if self.entity_blocks(*id).is_some() {
+                out.push((*id, self.entity_at(lookup, *id, x)?));
             }
-            let mut scalars = Vec::with_capacity(scalar_blocks.len());
-            for b in scalar_blocks {
-                scalars.push(x[self.problem.unknown(*b, 0)?.index()]);
-            }
-            out.push((*id, e.with_points(&pts, &scalars)?));
         }
         Ok(out)
+    }
+
+    /// One entity of the component with its points (and radius) read from the unknowns `x`.
+    ///
+    /// # Errors
+    /// [`Error::UnknownEntity`] for an entity outside the component.
+    pub(crate) fn entity_at(
+        &self,
+        lookup: &dyn EntityLookup,
+        id: EntityId,
+        x: &[f64],
+    ) -> Result<Entity> {
+        let e = lookup.lookup(id)?;
+        let (points, scalar_blocks) = self
+            .entity_blocks(id)
+            .ok_or(Error::UnknownEntity { entity: id })?;
+        let mut pts = Vec::with_capacity(points.len());
+        for b in points {
+            let i = self.problem.unknown(*b, 0)?.index();
+            pts.push(Point2::new(x[i], x[i + 1]));
+        }
+        let mut scalars = Vec::with_capacity(scalar_blocks.len());
+        for b in scalar_blocks {
+            scalars.push(x[self.problem.unknown(*b, 0)?.index()]);
+        }
+        e.with_points(&pts, &scalars)
+    }
+
+    /// The entities whose unknowns differ between `before` and the problem's values, by
+    /// increasing id.
+    pub(crate) fn moved_entities_into(&self, before: &[f64], moved: &mut Vec<EntityId>) {
+        moved.clear();
+        for (id, b) in &self.layout {
+            let blocks = &self.blocks[b.start..b.start + b.points + b.scalars];
+            let differs = blocks.iter().any(|block| {
+                self.problem.block_values(*block).is_ok_and(|values| {
+                    let start = self
+                        .problem
+                        .unknown(*block, 0)
+                        .map_or(usize::MAX, |u| u.index());
+                    values.iter().enumerate().any(|(k, v)| {
+                        before
+                            .get(start + k)
+                            .is_none_or(|w| w.to_bits() != v.to_bits())
+                    })
+                })
+            });
+            if differs {
+                moved.push(*id);
+            }
+        }
     }
 
     /// Which points and scalars of each entity can still move with the constraints held (to

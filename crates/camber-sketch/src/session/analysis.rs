@@ -46,7 +46,7 @@ impl Sketch {
         // not once per component (which made a sketch of many components quadratic).
         let options = self.solve_options();
         for comp in self.components() {
-            let cp = self.build_component(&comp, None)?;
+            let cp = self.build_component(&comp)?;
             let mut analysis = cp.problem().analyze(&options)?;
             cp.name_merged_redundant(&mut analysis.redundant);
             let conflicting = &analysis.conflicting;

@@ -1,50 +1,39 @@
-//! Drag sessions: the interactive loop.
+//! Drag sessions: the interactive loop, on the dragged component's kept plan.
 //!
-//! **Affine components.** The component's problem is built once with the
-//! dragged point pinned by two extra rows, P − anchor = 0 (anchor = where the point was);
-//! the rows are analysed once, and the weighted minimum-norm factorization of the independent
-//! rows is cached. Moving the target to q changes only the right-hand side of the pin rows,
-//! by −(q − anchor), because every residual is affine and J does not change. So an update is:
+//! A session builds the dragged point's component once, with the policy's plan beside it
+//! ([`camber_solve::Plan`]), and pins the point to the cursor in one of two ways:
 //!
-//! 1. g ← g(z) with the pin rows shifted by −(q − anchor);
-//! 2. Δz = −W⁻¹Jᵀ(JW⁻¹Jᵀ)⁻¹g (two triangular solves, one product with Jᵀ, refined);
-//! 3. z ← z + Δz, x = A·z + c, residuals re-evaluated, orientations checked;
-//! 4. the new state is kept only if every row is within tolerance and no tangent flipped.
+//! - a point free in both directions that is one block of its own (a point entity, a control
+//!   point, a line end, a circle centre) is **fixed** in the problem, and each update sets the
+//!   fixed block to the target;
+//! - otherwise (a curve end that combines several control points, a point that can only slide
+//!   along one direction, a component with priorities) it is **pinned by rows**
+//!   a·(Σ cⱼ·Pⱼ − T) = 0 along its directions of freedom a, against a fixed target block T;
+//!   each update sets T.
 //!
-//! On a small component (J_z and the gain below with at most 4,096 entries each) steps 2 and 3
-//! are dense products worked out when the session starts: Δz = K·g with K's columns the
-//! refined steps for unit right-hand sides (the step is linear in g), and the rows
-//! g(z) = g(z₀) + J_z·(z − z₀) from the session's start z₀ (exact for affine rows, with the
-//! rounding of one product and no drift across updates). An update those products would refuse
-//! is redone by the factorization before it is refused.
+//! Either way an update changes values only, so it re-solves on the kept plan: for an affine
+//! component J does not change, and the plan's linear path answers from its kept factorization
+//! (for a small component a dense gain: one evaluation of g, one small product, one
+//! validation); for a nonlinear one the plan runs Newton minimum norm from the previous step's
+//! solution pulling toward it (so each step moves the rest of the sketch as little as it can),
+//! with the full selection as fallback, then the orientation and contact checks of a solve and
+//! the active set of honest contact (`component::solve`). An update that fails leaves the
+//! session at its previous state; the sketch itself is unchanged until [`DragSession::finish`].
 //!
-//! Each update starts from the current state of the session (the result of the previous
-//! update), so the displacement per mouse event is the minimum-norm one. Nothing allocates in
-//! an update on the dense backend (components of up to `dense_max_unknowns` reduced unknowns)
-//! as long as no residual reads more than 8 blocks. The sketch itself is unchanged until
-//! [`DragSession::finish`].
-//!
-//! **Nonlinear components.** J changes with the unknowns, so the problem is built once and only
-//! its values change. The dragged point (a single free block) is fixed in the problem and set
-//! to the target at each update; the component's solve policy (`component::policy`)
-//! then runs warm: Newton minimum norm starts from the previous step's solution and pulls
-//! toward it, so each step moves the rest of the sketch as little as it can, with the full
-//! selection as fallback, the orientation and contact checks of a solve, and the active set of
-//! honest contact (a step that would cross a target gets its clearance row instead of being
-//! refused). If that fails too, the session keeps its previous state.
+//! How the point can move ([`Freedom`]) comes from the constraints linearized at the session's
+//! start ([`camber_solve::mobility`]); for a point that slides on a nonlinear component the
+//! direction is taken again after every update (it turns as the point slides on a circle).
 
 use std::collections::BTreeMap;
 
-use camber_solve::analyze;
-use camber_solve::{MinNormFactorization, ReducedMap};
+use camber_solve::{BlockId, Options, Residual, ResidualId, Scalar, Start, UnknownId};
 use nalgebra::{Point2, Vector2};
 use smallvec::SmallVec;
 
-use crate::component::policy::{self, Start};
 use crate::component::{Component, ComponentProblem, DRAG_CONSTRAINT};
 use crate::ground::entity::Entity;
 use crate::ground::errors::{Error, Result};
-use crate::ground::ids::{EntityId, PointRef};
+use crate::ground::ids::{ConstraintId, EntityId, PointRef};
 use crate::ground::lookup::EntityLookup;
 use crate::sketch::Sketch;
 
@@ -69,238 +58,6 @@ impl Shapes {
     }
 }
 
-/// Refinement rounds after each minimum-norm step.
-const REFINEMENT_STEPS: usize = 2;
-
-/// An interactive drag of one point; see the module documentation.
-///
-/// ```
-/// use camber_sketch::constraints::Fixed;
-/// use camber_sketch::{PointRef, Sketch};
-/// use camber_geom::BezierCurve2;
-/// use nalgebra::Point2;
-/// let mut s = Sketch::new();
-/// let c = s.add_bezier(BezierCurve2::try_new(vec![
-///     Point2::new(0.0, 0.0), Point2::new(1.0, 1.0), Point2::new(2.0, 1.0), Point2::new(3.0, 0.0),
-/// ])?)?;
-/// s.add_constraint(Fixed::point(PointRef::End(c)))?;
-/// let mut drag = s.drag(PointRef::Control(c, 1))?;
-/// drag.update(Point2::new(1.2, 1.5))?;
-/// assert!((drag.point(PointRef::Control(c, 1))?.y - 1.5).abs() < 1e-12);
-/// assert!((s.point(PointRef::Control(c, 1))?.y - 1.0).abs() < 1e-15); // not yet committed
-/// drag.finish(&mut s)?;
-/// assert!((s.point(PointRef::Control(c, 1))?.y - 1.5).abs() < 1e-12);
-/// # Ok::<(), camber_sketch::Error>(())
-/// ```
-#[derive(Debug)]
-#[allow(clippy::large_enum_variant)] // one session per drag, made once and never moved in a loop
-pub enum DragSession {
-    /// A drag on an affine component: the cached minimum-norm factorization.
-    Affine(AffineDrag),
-    /// A drag on a nonlinear component: the component's solve policy, warm started.
-    Nonlinear(NonlinearDrag),
-}
-
-/// What every drag session holds.
-#[derive(Debug)]
-struct Common {
-    point: PointRef,
-    revision: u64,
-    cp: ComponentProblem,
-    /// The component's entities at the start (their shapes resolve point references).
-    shapes: Shapes,
-    moved: bool,
-    /// The current unknowns (all of them, fixed ones included).
-    x: Vec<f64>,
-}
-
-/// The state of a drag on an affine component (see the module documentation).
-#[derive(Debug)]
-pub struct AffineDrag {
-    common: Common,
-    map: ReducedMap,
-    /// The factorization of the kept constraint rows and the pin rows (absent when the point
-    /// cannot move at all).
-    factorization: Option<MinNormFactorization>,
-    /// Constraint rows of J kept (independent), and the two pin rows' positions in g.
-    rows: Vec<usize>,
-    row_owner: Vec<camber_solve::ConstraintId>,
-    pin: [usize; 2],
-    /// The directions the point can move in (unit, orthonormal; none, one or both axes): each
-    /// is one pin row m·(P − target) = 0.
-    mix: SmallVec<[[f64; 2]; 2]>,
-    /// The freedom those directions give.
-    freedom: Freedom,
-    anchor: [f64; 2],
-    tolerance: f64,
-    /// The update as one small affine map, for components small enough (see [`AffineGain`]).
-    gain: Option<AffineGain>,
-    // Current state (pin rows of g relative to the anchor) and scratch.
-    z: Vec<f64>,
-    g: Vec<f64>,
-    z_new: Vec<f64>,
-    x_new: Vec<f64>,
-    g_new: Vec<f64>,
-    g_sel: Vec<f64>,
-    dz: Vec<f64>,
-}
-
-/// The most entries of the dense matrices of an [`AffineGain`] (each of K and J_z).
-const GAIN_MAX_ENTRIES: usize = 4096;
-
-/// An affine update written out as dense products, for a small component.
-///
-/// The step is linear in the selected right-hand side: Δz = K·g_sel, where column j of K is the
-/// refined minimum-norm step for the unit right-hand side eⱼ (so every step stays in the range
-/// of W⁻¹Jᵀ, the minimum-norm one). The residuals are affine in z, so
-/// g(z) = g(z₀) + J_z·(z − z₀) with z₀ the state the session started from: no residual is
-/// evaluated through the problem and nothing drifts from one update to the next (the rounding
-/// is that of one product, as when the rows are evaluated). x = A·z + c comes from the map's
-/// terms flattened into one list. An update that this path would refuse is redone by the
-/// factorization (refined solve, rows evaluated) before it is refused.
-#[derive(Debug)]
-struct AffineGain {
-    /// K, n × k, row-major (row i gives Δzᵢ).
-    k: Vec<f64>,
-    /// k, the number of selected rows (K's columns).
-    selected: usize,
-    /// J_z, m × n, row-major.
-    jacobian: Vec<f64>,
-    /// z₀ and g(z₀).
-    z0: Vec<f64>,
-    g0: Vec<f64>,
-    /// x = A·z + c: for unknown i, `x_terms[x_ptr[i]..x_ptr[i + 1]]` as (column, coefficient)
-    /// and `x_const[i]`.
-    x_ptr: Vec<usize>,
-    x_terms: Vec<(usize, f64)>,
-    x_const: Vec<f64>,
-}
-
-impl AffineGain {
-    /// The gain of `factorization` (k selected rows) over the linearization `lin`; `None` when
-    /// no row is selected or the component is too large for dense matrices.
-    fn of(
-        factorization: &mut MinNormFactorization,
-        lin: &camber_solve::Linearization,
-    ) -> Result<Option<Self>> {
-        let (m, n, k) = (lin.g.len(), lin.map.len(), factorization.rows());
-        if k == 0
-            || n.saturating_mul(k) > GAIN_MAX_ENTRIES
-            || m.saturating_mul(n) > GAIN_MAX_ENTRIES
-        {
-            return Ok(None);
-        }
-        // Column j: the refined step for g_sel = e_j (J·col = −e_j); the step is linear in g_sel.
-        let mut gain = vec![0.0; n * k];
-        let (mut unit, mut col) = (vec![0.0; k], vec![0.0; n]);
-        for j in 0..k {
-            unit[j] = 1.0;
-            factorization.solve_refined(&unit, &mut col, REFINEMENT_STEPS, 0.0)?;
-            unit[j] = 0.0;
-            for (i, v) in col.iter().enumerate() {
-                gain[i * k + j] = *v;
-            }
-        }
-        let mut jacobian = vec![0.0; m * n];
-        for (i, row) in jacobian.chunks_exact_mut(n).enumerate() {
-            let (cols, vals) = lin.jacobian.row(i);
-            for (c, v) in cols.iter().zip(vals) {
-                row[*c] = *v;
-            }
-        }
-        let nx = lin.x.len();
-        let (mut x_ptr, mut x_terms, mut x_const) = (vec![0], Vec::new(), Vec::with_capacity(nx));
-        for i in 0..nx {
-            let (terms, c) = lin.map.row(i);
-            x_terms.extend_from_slice(terms);
-            x_ptr.push(x_terms.len());
-            x_const.push(c);
-        }
-        Ok(Some(Self {
-            k: gain,
-            selected: k,
-            jacobian,
-            z0: lin.map.z0().to_vec(),
-            g0: lin.g.clone(),
-            x_ptr,
-            x_terms,
-            x_const,
-        }))
-    }
-
-    /// Δz = K·g_sel, z_new = z + Δz, x_new = A·z_new + c and g_new = g(z₀) + J_z·(z_new − z₀).
-    ///
-    /// Each entry is one sum in a fixed order (z_new[i] = z[i] + Σⱼ K[i, j]·g_sel[j], j rising),
-    /// over rows stored contiguously, so the few dozen products of a small drag run without
-    /// scratch vectors or bounds checks.
-    fn step(
-        &self,
-        g_sel: &[f64],
-        z: &[f64],
-        z_new: &mut [f64],
-        x_new: &mut [f64],
-        g_new: &mut [f64],
-    ) {
-        for ((zn, z), row) in z_new
-            .iter_mut()
-            .zip(z)
-            .zip(self.k.chunks_exact(self.selected))
-        {
-            let mut acc = *z;
-            for (kv, s) in row.iter().zip(g_sel) {
-                acc += kv * s;
-            }
-            *zn = acc;
-        }
-        for ((x, c), ends) in x_new
-            .iter_mut()
-            .zip(&self.x_const)
-            .zip(self.x_ptr.windows(2))
-        {
-            let terms = &self.x_terms[ends[0]..ends[1]];
-            *x = c + terms.iter().map(|(k, a)| a * z_new[*k]).sum::<f64>();
-        }
-        let n = z_new.len();
-        for ((gn, g0), row) in g_new
-            .iter_mut()
-            .zip(&self.g0)
-            .zip(self.jacobian.chunks_exact(n))
-        {
-            *gn = g0
-                + row
-                    .iter()
-                    .zip(&*z_new)
-                    .zip(&self.z0)
-                    .map(|((a, zn), z0)| a * (zn - z0))
-                    .sum::<f64>();
-        }
-    }
-}
-
-/// The state of a drag on a nonlinear component: the component's solve policy runs from the
-/// previous step's solution, pulling toward it. A point free in both directions is fixed in the
-/// problem and moved to the target; a point that can only slide (on a curve, a circle, a ray)
-/// is pinned by one row along its current direction of freedom instead, so it follows the
-/// target's projection.
-#[derive(Debug)]
-pub struct NonlinearDrag {
-    common: Common,
-    block: camber_solve::BlockId,
-    /// The reduced unknowns of the current state.
-    z: Vec<f64>,
-    options: camber_solve::Options,
-    /// What the point can do at the current state.
-    freedom: Freedom,
-    /// The residual rows of the problem without the pin row.
-    base_rows: usize,
-    /// The constraint owning each of those rows.
-    row_owner: Vec<camber_solve::ConstraintId>,
-    /// Whether the component has constraints with priorities: the cursor is then a wish
-    /// below every tier (pin rows of the lowest priority, never a fixed block), so no
-    /// constraint gives way to it.
-    wish: bool,
-}
-
 /// How a dragged point can move under its constraints, at the state a session is in.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Freedom {
@@ -315,8 +72,8 @@ pub enum Freedom {
 
 impl Freedom {
     /// The freedom of a point whose achievable moves δP span the range of the symmetric 2 × 2
-    /// matrix `g` (see [`point_mobility`]), relative to the unconstrained mobility `scale`.
-    fn of(g: [[f64; 2]; 2], scale: f64) -> (Self, SmallVec<[[f64; 2]; 2]>) {
+    /// matrix `g` ([`camber_solve::mobility`]), relative to the unconstrained mobility `scale`.
+    fn of(g: [[f64; 2]; 2], scale: f64) -> Self {
         let (a, b, c) = (g[0][0], g[0][1], g[1][1]);
         let mean = 0.5 * (a + c);
         let radius = (0.25 * (a - c) * (a - c) + b * b).sqrt();
@@ -332,64 +89,155 @@ impl Freedom {
             Vector2::y()
         };
         if l2 > small {
-            (Freedom::Free, smallvec::smallvec![[1.0, 0.0], [0.0, 1.0]])
+            Freedom::Free
         } else if l1 > small {
-            (Freedom::Along(u), smallvec::smallvec![[u.x, u.y]])
+            Freedom::Along(u)
         } else {
-            (Freedom::Determined, SmallVec::new())
+            Freedom::Determined
+        }
+    }
+
+    /// The unit directions the pin rows hold the point along: both axes, the one direction,
+    /// or none.
+    fn axes(self) -> SmallVec<[[f64; 2]; 2]> {
+        match self {
+            Freedom::Free => SmallVec::from_slice(&[[1.0, 0.0], [0.0, 1.0]]),
+            Freedom::Along(u) => SmallVec::from_slice(&[[u.x, u.y]]),
+            Freedom::Determined => SmallVec::new(),
         }
     }
 }
 
-/// The mobility of the point whose coordinates have the Jacobian rows `e` (2 × n) under the
-/// independent constraint rows factorized in `f`: G = E·P_W·W⁻¹·Eᵀ, P_W the W-orthogonal
-/// projector onto the null space of the constraints. Its range is the set of moves δP the
-/// constraints allow (to first order); also returns the unconstrained scale E·W⁻¹·Eᵀ's trace.
-fn point_mobility(
-    e: [&[f64]; 2],
-    f: Option<&mut MinNormFactorization>,
-    weights: &[f64],
-) -> Result<([[f64; 2]; 2], f64)> {
-    let n = weights.len();
-    let mut g = [[0.0; 2]; 2];
-    let scale: f64 = e
-        .iter()
-        .map(|row| row.iter().zip(weights).map(|(v, w)| v * v / w).sum::<f64>())
-        .sum();
-    match f {
-        Some(f) => {
-            let (mut out, mut y) = (vec![0.0; n], vec![0.0; f.rows()]);
-            for k in 0..2 {
-                f.project(e[k], &mut out, &mut y)?;
-                for (i, row) in e.iter().enumerate() {
-                    g[i][k] = row.iter().zip(&out).map(|(a, b)| a * b).sum();
-                }
-            }
-        }
-        None => {
-            for i in 0..2 {
-                for k in 0..2 {
-                    g[i][k] = e[i]
-                        .iter()
-                        .zip(e[k])
-                        .zip(weights)
-                        .map(|((a, b), w)| a * b / w)
-                        .sum();
-                }
-            }
-        }
-    }
-    Ok((g, scale))
+/// a·(Σ cⱼ·Pⱼ − T) = 0 for each direction a: the pin of a dragged point (a combination of the
+/// point blocks it reads, all but the last) to the fixed target block T (the last), along the
+/// directions the point may move in. Affine.
+#[derive(Debug, Clone, PartialEq)]
+struct PinTo {
+    coeffs: SmallVec<[f64; 4]>,
+    axes: SmallVec<[[f64; 2]; 2]>,
 }
 
-/// Row `i` of a sparse matrix as a dense vector of `n` entries.
-fn dense_row(j: &camber_solve::SparseMatrix, i: usize, n: usize) -> Vec<f64> {
-    let mut out = vec![0.0; n];
-    let (cols, vals) = j.row(i);
-    for (c, v) in cols.iter().zip(vals) {
-        out[*c] = *v;
+impl Residual for PinTo {
+    fn name(&self) -> &str {
+        "drag"
     }
-    out
+    fn dim(&self) -> usize {
+        self.axes.len()
+    }
+    fn block_sizes(&self) -> Option<Vec<usize>> {
+        Some(vec![2; self.coeffs.len() + 1])
+    }
+    fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+        use camber_solve::scalar::cst;
+        let target = x[self.coeffs.len()];
+        let (mut vx, mut vy) = (T::zero(), T::zero());
+        for (c, p) in self.coeffs.iter().zip(x) {
+            vx += cst::<T>(*c) * p[0];
+            vy += cst::<T>(*c) * p[1];
+        }
+        let (dx, dy) = (vx - target[0], vy - target[1]);
+        for (o, a) in out.iter_mut().zip(&self.axes) {
+            *o = cst::<T>(a[0]) * dx + cst::<T>(a[1]) * dy;
+        }
+    }
+    fn is_affine(&self) -> bool {
+        true
+    }
+}
+
+/// How the session holds the point to the cursor (see the module documentation).
+#[derive(Debug, Clone)]
+enum Pin {
+    /// The point's own block, fixed and set to the target.
+    Block(BlockId),
+    /// Pin rows against the fixed target block.
+    Rows {
+        /// The target block T.
+        target: BlockId,
+        /// The pin's residual block.
+        residual: ResidualId,
+        /// Its combination coefficients.
+        coeffs: SmallVec<[f64; 4]>,
+    },
+    /// A determined point: nothing to pin, updates change nothing.
+    Held,
+}
+
+/// What an update changed: the entities it moved and every constraint's residual at the new
+/// state.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct DragUpdate {
+    /// The entities of the dragged component whose points (or radius) the update moved, by
+    /// increasing id.
+    pub moved: Vec<EntityId>,
+    /// Each constraint of the component with its residual (max |g| over its rows) at the new
+    /// state, by increasing id; the pin rows of the dragged point left out.
+    pub residuals: Vec<(ConstraintId, f64)>,
+}
+
+/// An interactive drag of one point; see the module documentation.
+///
+/// ```
+/// use camber_sketch::constraints::Fixed;
+/// use camber_sketch::{PointRef, Sketch};
+/// use camber_geom::BezierCurve2;
+/// use nalgebra::Point2;
+/// let mut s = Sketch::new();
+/// let c = s.add_bezier(BezierCurve2::try_new(vec![
+///     Point2::new(0.0, 0.0), Point2::new(1.0, 1.0), Point2::new(2.0, 1.0), Point2::new(3.0, 0.0),
+/// ])?)?;
+/// s.add_constraint(Fixed::point(PointRef::End(c)))?;
+/// let mut drag = s.drag(PointRef::Control(c, 1))?;
+/// let moved = drag.update(Point2::new(1.2, 1.5))?.moved.clone();
+/// assert_eq!(moved, vec![c]);
+/// assert!((drag.point(PointRef::Control(c, 1))?.y - 1.5).abs() < 1e-12);
+/// assert!((s.point(PointRef::Control(c, 1))?.y - 1.0).abs() < 1e-15); // not yet committed
+/// drag.finish(&mut s)?;
+/// assert!((s.point(PointRef::Control(c, 1))?.y - 1.5).abs() < 1e-12);
+/// # Ok::<(), camber_sketch::Error>(())
+/// ```
+#[derive(Debug)]
+pub struct DragSession {
+    point: PointRef,
+    revision: u64,
+    /// The component's problem and plan; its values are the session's current state.
+    cp: ComponentProblem,
+    /// The component's entities at the start (their shapes resolve point references).
+    shapes: Shapes,
+    options: Options,
+    moved: bool,
+    pin: Pin,
+    /// What the point can do at the current state.
+    freedom: Freedom,
+    /// The unknowns of the point's x and y, with the combination's coefficients.
+    unknowns: [Vec<(UnknownId, f64)>; 2],
+    /// Whether the component has constraints with priorities: the cursor is then a wish below
+    /// every tier (pin rows of the lowest priority), so no constraint gives way to it.
+    wish: bool,
+    /// The reduced unknowns at the session's start (a warm start's point before any update).
+    z_start: Vec<f64>,
+    /// The unknowns before an update (scratch: which entities it moved).
+    before: Vec<f64>,
+    /// What the last update changed (its storage reused by the next).
+    last: DragUpdate,
+}
+
+/// The mobility of the point with the unknown rows `unknowns` (see [`Freedom::of`]); a large
+/// component whose rows turn out dependent has no cheap answer and counts as free.
+fn freedom_of(
+    cp: &ComponentProblem,
+    unknowns: &[Vec<(UnknownId, f64)>; 2],
+    options: &Options,
+) -> Result<(Freedom, Vec<ConstraintId>)> {
+    // The dragged point's own pin rows are not among the constraints it moves under.
+    let pin = [DRAG_CONSTRAINT];
+    match camber_solve::mobility(&cp.problem, &[&unknowns[0], &unknowns[1]], &pin, options)? {
+        Some(m) => Ok((
+            Freedom::of([[m.gram[0], m.gram[1]], [m.gram[2], m.gram[3]]], m.scale),
+            m.conflicting,
+        )),
+        None => Ok((Freedom::Free, Vec::new())),
+    }
 }
 
 /// # Dragging
@@ -398,469 +246,235 @@ impl Sketch {
     /// or a curve end).
     ///
     /// # Errors
-    /// Id errors; [`Error::Conflicting`] when the component's constraints contradict each other;
-    /// [`Error::NotDraggable`] when the point is fixed or determined by the constraints (on a
-    /// nonlinear component: when it is not a single free point block).
+    /// Id errors; [`Error::Conflicting`] when the constraints of an affine component contradict
+    /// each other. A point the constraints determine (a fixed one, say) gives a session whose
+    /// [`DragSession::freedom`] is [`Freedom::Determined`] and whose updates change nothing.
     pub fn drag(&self, point: PointRef) -> Result<DragSession> {
         let e = self.lookup(point.entity())?;
-        e.resolve(point)?;
+        let terms = e.resolve(point)?;
         let comp = self.component_of(point.entity())?;
-        let plain = self.build_component(&comp, None)?;
-        if plain.nonlinear.is_some() {
-            return self.drag_nonlinear(point, &comp, plain);
-        }
-        let cp = self.build_component(&comp, Some(point))?;
-        let options = &self.solve_options();
-        let lin = cp.problem().linearize()?;
-        let (m, n) = (lin.g.len(), lin.map.len());
-        let pin = [m - 2, m - 1];
-        let weights = lin.map.weights().to_vec();
-        // As in a solve: small components are analysed up front (dependent constraint rows
-        // dropped; the pin rows come last, so they never hide a constraint row); large ones go
-        // straight to the sparse factorization of every row and are analysed only when it meets
-        // dependent rows.
-        let analysed_rows = |max_entries: usize| -> Result<Vec<usize>> {
-            if m.saturating_mul(n) > max_entries {
-                return Err(Error::Solve(camber_solve::Error::RankDeficient { rows: m }));
+        let mut cp = self.build_component(&comp)?;
+        let options = self.solve_options();
+        let mut unknowns: [Vec<(UnknownId, f64)>; 2] = [Vec::new(), Vec::new()];
+        let mut blocks: SmallVec<[BlockId; 4]> = SmallVec::new();
+        let mut coeffs: SmallVec<[f64; 4]> = SmallVec::new();
+        for (j, c) in &terms {
+            // A point merged into a coincident one moves with that one's unknowns.
+            let block = cp.merged_into(cp.point_block(point.entity(), *j)?);
+            for (k, row) in unknowns.iter_mut().enumerate() {
+                row.push((cp.problem.unknown(block, k)?, *c));
             }
-            let a = analyze(&lin, options.rank_tolerance, options.tolerance)?;
-            if !a.conflicting.is_empty() {
-                return Err(Error::Conflicting {
-                    constraints: a.conflicting,
-                });
-            }
-            Ok(a.rows
-                .independent
-                .into_iter()
-                .filter(|r| *r < m - 2)
-                .collect())
-        };
-        let factorize = |j: &camber_solve::SparseMatrix| {
-            MinNormFactorization::try_auto(j, &weights, options.dense_max_unknowns)
-        };
-        let (rows, constraints) = if m.saturating_mul(n) <= options.dense_analysis_max_entries {
-            let rows = analysed_rows(options.dense_analysis_max_entries)?;
-            let f = if rows.is_empty() {
-                None
-            } else {
-                Some(factorize(&lin.jacobian.select_rows(&rows))?)
-            };
-            (rows, f)
-        } else {
-            let all: Vec<usize> = (0..m - 2).collect();
-            match factorize(&lin.jacobian.select_rows(&all)) {
-                Ok(f) => (all, Some(f)),
-                Err(camber_solve::Error::RankDeficient { .. }) => {
-                    let rows = analysed_rows(usize::MAX)?;
-                    let f = factorize(&lin.jacobian.select_rows(&rows))?;
-                    (rows, Some(f))
-                }
-                Err(e) => return Err(e.into()),
-            }
-        };
-        // Where the point can go: the constraints' null space seen through the pin rows.
-        let (ex, ey) = (
-            dense_row(&lin.jacobian, pin[0], n),
-            dense_row(&lin.jacobian, pin[1], n),
-        );
-        let mut constraints = constraints;
-        let (g, scale) = point_mobility([&ex, &ey], constraints.as_mut(), &weights)?;
-        let (freedom, mix) = Freedom::of(g, scale);
-        let mut triplets = Vec::new();
-        for (k, r) in rows.iter().enumerate() {
-            let (cols, vals) = lin.jacobian.row(*r);
-            triplets.extend(cols.iter().zip(vals).map(|(c, v)| (k, *c, *v)));
-        }
-        for (k, u) in mix.iter().enumerate() {
-            for (c, (a, b)) in ex.iter().zip(&ey).enumerate() {
-                let v = u[0] * a + u[1] * b;
-                if v != 0.0 {
-                    triplets.push((rows.len() + k, c, v));
+            match blocks.iter().position(|b| *b == block) {
+                Some(at) => coeffs[at] += c,
+                None => {
+                    blocks.push(block);
+                    coeffs.push(*c);
                 }
             }
         }
-        let mut factorization = if mix.is_empty() {
-            None
-        } else {
-            let j = camber_solve::SparseMatrix::try_from_triplets(
-                rows.len() + mix.len(),
-                n,
-                &triplets,
-            )?;
-            Some(factorize(&j)?)
-        };
-        let anchor = {
-            let p = self.point(point)?;
-            [p.x, p.y]
-        };
-        let gain = match factorization.as_mut() {
-            Some(f) => AffineGain::of(f, &lin)?,
-            None => None,
-        };
-        let nx = lin.x.len();
-        let selected = rows.len() + mix.len();
-        Ok(DragSession::Affine(AffineDrag {
-            common: Common {
-                point,
-                revision: self.revision(),
-                cp,
-                shapes: Shapes::of(self, &comp)?,
-                moved: false,
-                x: lin.x,
-            },
-            z: lin.map.z0().to_vec(),
-            g: lin.g,
-            row_owner: lin.row_owner,
-            map: lin.map,
-            factorization,
-            pin,
-            mix,
-            freedom,
-            anchor,
-            tolerance: options.tolerance,
-            gain,
-            z_new: vec![0.0; n],
-            x_new: vec![0.0; nx],
-            g_new: vec![0.0; m],
-            g_sel: vec![0.0; selected],
-            dz: vec![0.0; n],
-            rows,
-        }))
-    }
-
-    /// A drag session on a nonlinear component (see [`NonlinearDrag`]).
-    fn drag_nonlinear(
-        &self,
-        point: PointRef,
-        comp: &Component,
-        mut cp: ComponentProblem,
-    ) -> Result<DragSession> {
-        let e = self.lookup(point.entity())?;
-        let (entity, index) = match e.resolve(point)?.as_slice() {
-            [(j, c)] if (c - 1.0).abs() <= 0.0 => (point.entity(), *j),
-            _ => return Err(Error::NotDraggable { point }),
-        };
-        let block = cp.point_block(entity, index)?;
-        // A point merged into a coincident one moves with that one's unknowns.
-        let block = cp.merged_into(block);
-        for k in 0..2 {
-            let u = cp.problem.unknown(block, k)?;
-            if !matches!(cp.problem.binding(u)?, camber_solve::Binding::Free) {
-                return Err(Error::NotDraggable { point });
-            }
-        }
-        let freedom = nonlinear_freedom(&cp, block, &self.solve_options())?;
-        let base_rows = cp.problem.num_residuals();
-        let row_owner = cp.problem.linearize()?.row_owner;
-        let wish = cp.problem.has_priorities();
-        if freedom == Freedom::Free && !wish {
-            cp.problem.fix_block(block)?;
-        }
-        let z = cp.problem.reduced_map()?.z0().to_vec();
-        let x = cp.problem.values().to_vec();
-        Ok(DragSession::Nonlinear(NonlinearDrag {
-            common: Common {
-                point,
-                revision: self.revision(),
-                cp,
-                shapes: Shapes::of(self, comp)?,
-                moved: false,
-                x,
-            },
-            block,
-            z,
-            options: self.solve_options(),
-            freedom,
-            base_rows,
-            row_owner,
-            wish,
-        }))
-    }
-}
-
-/// The freedom of a free point block of a nonlinear component at its current state: the
-/// mobility of its two unknowns under the linearized constraints (independent rows).
-fn nonlinear_freedom(
-    cp: &ComponentProblem,
-    block: camber_solve::BlockId,
-    options: &camber_solve::Options,
-) -> Result<Freedom> {
-    let lin = cp.problem.linearize()?;
-    let (m, n) = (lin.g.len(), lin.map.len());
-    let mut e = [vec![0.0; n], vec![0.0; n]];
-    for (k, row) in e.iter_mut().enumerate() {
-        let u = cp.problem.unknown(block, k)?;
-        match lin
-            .map
-            .vars()
-            .iter()
-            .position(|v| *v == camber_solve::Var::Unknown(u))
-        {
-            Some(i) => row[i] = 1.0,
-            None => return Ok(Freedom::Determined),
-        }
-    }
-    let rows: Vec<usize> = if m.saturating_mul(n) <= options.dense_analysis_max_entries {
-        analyze(&lin, options.rank_tolerance, options.tolerance)?
-            .rows
-            .independent
-    } else {
-        (0..m).collect()
-    };
-    let weights = lin.map.weights();
-    let mut f = if rows.is_empty() {
-        None
-    } else {
-        match MinNormFactorization::try_auto(
-            &lin.jacobian.select_rows(&rows),
-            weights,
-            options.dense_max_unknowns,
-        ) {
-            Ok(f) => Some(f),
-            // Dependent rows in a large component: no cheap answer; let the point try to move.
-            Err(camber_solve::Error::RankDeficient { .. }) => return Ok(Freedom::Free),
-            Err(e) => return Err(e.into()),
-        }
-    };
-    let (g, scale) = point_mobility([&e[0], &e[1]], f.as_mut(), weights)?;
-    Ok(Freedom::of(g, scale).0)
-}
-
-/// u·(P − target) = 0 over the dragged point's block: the pin of a point that can only slide,
-/// along its direction of freedom u (affine, one row).
-#[derive(Debug, Clone, PartialEq)]
-struct PinAlong {
-    u: [f64; 2],
-    target: [f64; 2],
-}
-
-impl camber_solve::Residual for PinAlong {
-    fn name(&self) -> &str {
-        "drag"
-    }
-    fn dim(&self) -> usize {
-        1
-    }
-    fn block_sizes(&self) -> Option<Vec<usize>> {
-        Some(vec![2])
-    }
-    fn eval<T: camber_solve::Scalar>(&self, x: &[&[T]], out: &mut [T]) {
-        use camber_solve::scalar::cst;
-        out[0] = cst::<T>(self.u[0]) * (x[0][0] - cst(self.target[0]))
-            + cst::<T>(self.u[1]) * (x[0][1] - cst(self.target[1]));
-    }
-    fn is_affine(&self) -> bool {
-        true
-    }
-}
-
-impl AffineDrag {
-    /// One affine update (see the module documentation): the pin rows along the point's
-    /// directions of freedom move by the target's shift; a determined point does not move.
-    fn update(&mut self, target: Point2<f64>) -> Result<()> {
-        if self.factorization.is_none() {
-            return Ok(());
-        }
-        let shift = [target.x - self.anchor[0], target.y - self.anchor[1]];
-        let k0 = self.rows.len();
-        for (k, r) in self.rows.iter().enumerate() {
-            self.g_sel[k] = self.g[*r];
-        }
-        let pin_now = [
-            self.g[self.pin[0]] - shift[0],
-            self.g[self.pin[1]] - shift[1],
-        ];
-        for (k, u) in self.mix.iter().enumerate() {
-            self.g_sel[k0 + k] = u[0] * pin_now[0] + u[1] * pin_now[1];
-        }
-        if let Some(gain) = self.gain.as_ref() {
-            gain.step(
-                &self.g_sel,
-                &self.z,
-                &mut self.z_new,
-                &mut self.x_new,
-                &mut self.g_new,
-            );
-            if self.worst(shift).1 <= self.tolerance {
-                return self.accept();
-            }
-            // Refused by the dense products: the factorization decides.
-        }
-        let Some(factorization) = self.factorization.as_mut() else {
-            return Ok(());
-        };
-        factorization.solve_refined(
-            &self.g_sel,
-            &mut self.dz,
-            REFINEMENT_STEPS,
-            0.01 * self.tolerance,
-        )?;
-        for ((zn, z), d) in self.z_new.iter_mut().zip(&self.z).zip(&self.dz) {
-            *zn = z + d;
-        }
-        self.map.expand(&self.z_new, &mut self.x_new)?;
-        self.common
-            .cp
-            .problem
-            .evaluate_at(&self.x_new, &mut self.g_new)?;
-        let worst = self.worst(shift);
-        if worst.1 > self.tolerance {
-            let owner = self
-                .row_owner
-                .get(worst.0)
-                .copied()
-                .unwrap_or(DRAG_CONSTRAINT);
-            return Err(Error::NotSatisfied {
-                failed: vec![(owner, worst.1)],
+        let (freedom, conflicting) = freedom_of(&cp, &unknowns, &options)?;
+        if cp.nonlinear.is_none() && !conflicting.is_empty() {
+            return Err(Error::Conflicting {
+                constraints: conflicting,
             });
         }
-        self.accept()
-    }
-
-    /// The largest |row| of `g_new` (NaN as infinite) with its row: every constraint row, and
-    /// the pin along each direction of freedom relative to the target's `shift`.
-    fn worst(&self, shift: [f64; 2]) -> (usize, f64) {
-        let mut worst = (0usize, 0.0_f64);
-        for (i, v) in self.g_new.iter().enumerate() {
-            if i == self.pin[0] || i == self.pin[1] {
-                continue;
-            }
-            if v.is_nan() || v.abs() > worst.1 {
-                worst = (i, if v.is_nan() { f64::INFINITY } else { v.abs() });
-            }
-        }
-        let pin_new = [
-            self.g_new[self.pin[0]] - shift[0],
-            self.g_new[self.pin[1]] - shift[1],
-        ];
-        for u in &self.mix {
-            let v = u[0] * pin_new[0] + u[1] * pin_new[1];
-            if v.is_nan() || v.abs() > worst.1 {
-                worst = (
-                    self.pin[0],
-                    if v.is_nan() { f64::INFINITY } else { v.abs() },
-                );
-            }
-        }
-        worst
-    }
-
-    /// Keeps the new state (z_new, x_new, g_new) when no tangent flipped or collapsed.
-    fn accept(&mut self) -> Result<()> {
-        self.common.cp.check_orientations(&self.x_new)?;
-        std::mem::swap(&mut self.z, &mut self.z_new);
-        std::mem::swap(&mut self.common.x, &mut self.x_new);
-        std::mem::swap(&mut self.g, &mut self.g_new);
-        self.common.moved = true;
-        Ok(())
-    }
-}
-
-impl NonlinearDrag {
-    /// One nonlinear update: the solve policy, warm started from the previous step; the state
-    /// is kept only when every constraint, orientation and contact check holds.
-    fn update(&mut self, target: Point2<f64>) -> Result<()> {
-        let u = match self.freedom {
-            Freedom::Determined => return Ok(()),
-            Freedom::Free => None,
-            Freedom::Along(u) => Some(u),
+        let wish = cp.problem.has_priorities();
+        let own_block = match (blocks.as_slice(), coeffs.as_slice()) {
+            ([b], [c]) if (c - 1.0).abs() <= 0.0 => Some(*b),
+            _ => None,
         };
-        let options = self.options.clone();
-        let cp = &mut self.common.cp;
-        let before = cp.problem.block_values(self.block)?.to_vec();
-        // The pin: rows along the directions the point may move (both axes for a free point
-        // whose cursor is a wish), or the free block set to the target.
-        let axes: SmallVec<[[f64; 2]; 2]> = match u {
-            Some(u) => SmallVec::from_slice(&[[u.x, u.y]]),
-            None if self.wish => SmallVec::from_slice(&[[1.0, 0.0], [0.0, 1.0]]),
-            None => SmallVec::new(),
-        };
-        let pinned_by_rows = !axes.is_empty();
-        if pinned_by_rows {
-            cp.problem.truncate_residuals(self.base_rows);
-            for axis in axes {
-                cp.problem.add_residual(
-                    PinAlong {
-                        u: axis,
-                        target: [target.x, target.y],
+        let free_block = own_block.filter(|b| {
+            (0..2).all(|k| {
+                cp.problem
+                    .unknown(*b, k)
+                    .and_then(|u| cp.problem.binding(u).cloned())
+                    .is_ok_and(|binding| binding == camber_solve::Binding::Free)
+            })
+        });
+        let pin = match (freedom, free_block) {
+            (Freedom::Determined, _) => Pin::Held,
+            (Freedom::Free, Some(b)) if !wish => {
+                cp.problem.fix_block(b)?;
+                Pin::Block(b)
+            }
+            _ => {
+                let at = crate::ground::entity::combine(e.points(), &terms);
+                let target = cp.problem.add_block(&at)?;
+                cp.problem.fix_block(target)?;
+                let mut read: SmallVec<[BlockId; 5]> = SmallVec::from_slice(&blocks);
+                read.push(target);
+                let residual = cp.problem.add_residual(
+                    PinTo {
+                        coeffs: coeffs.clone(),
+                        axes: freedom.axes(),
                     },
-                    &[self.block],
+                    &read,
                     DRAG_CONSTRAINT,
                 )?;
+                if wish {
+                    cp.problem
+                        .set_priority(DRAG_CONSTRAINT, camber_solve::Priority::MAX);
+                }
+                Pin::Rows {
+                    target,
+                    residual,
+                    coeffs,
+                }
             }
-            if self.wish {
-                cp.problem
-                    .set_priority(DRAG_CONSTRAINT, camber_solve::Priority::MAX);
-            }
-        } else {
-            cp.problem
-                .set_block_values(self.block, &[target.x, target.y])?;
-        }
-        let start = Start::Warm {
-            from: self.z.clone(),
-            toward: self.z.clone(),
         };
-        match policy::solve(cp, &self.common.shapes, &options, start) {
-            Ok(_) => {
-                self.z = cp.problem.reduced_map()?.z0().to_vec();
-                self.common.x.clear();
-                self.common.x.extend_from_slice(cp.problem.values());
-                self.common.moved = true;
-                if pinned_by_rows {
-                    // The direction of freedom turns as the point slides (on a circle, say).
-                    cp.problem.truncate_residuals(self.base_rows);
-                    self.freedom = nonlinear_freedom(cp, self.block, &options)?;
-                }
-                Ok(())
-            }
-            Err(e) => {
-                // The policy left the problem at its start: move the dragged block back too.
-                if pinned_by_rows {
-                    cp.problem.truncate_residuals(self.base_rows);
-                } else {
-                    cp.problem.set_block_values(self.block, &before)?;
-                }
-                Err(e)
-            }
-        }
+        let z_start = cp.problem.reduced_map()?.z0().to_vec();
+        Ok(DragSession {
+            point,
+            revision: self.revision(),
+            shapes: Shapes::of(self, &comp)?,
+            cp,
+            options,
+            moved: false,
+            pin,
+            freedom,
+            unknowns,
+            wish,
+            z_start,
+            before: Vec::new(),
+            last: DragUpdate::default(),
+        })
     }
 }
 
 impl DragSession {
-    fn common(&self) -> &Common {
-        match self {
-            DragSession::Affine(d) => &d.common,
-            DragSession::Nonlinear(d) => &d.common,
+    /// Moves the dragged point to `target` (or, when it can only slide, to the target's
+    /// projection on its direction of freedom) and every other free unknown by the weighted
+    /// minimum norm from the current state, keeping every constraint. Returns the entities
+    /// that moved and the residuals at the new state (kept in the session until the next
+    /// update: a drag allocates nothing per update on the way).
+    ///
+    /// # Errors
+    /// [`Error::NonFinite`] for a bad target; [`Error::NotSatisfied`],
+    /// [`Error::OrientationFlipped`], [`Error::ContactCrossed`], … when the result would break
+    /// a constraint (the session keeps its previous state).
+    pub fn update(&mut self, target: Point2<f64>) -> Result<&DragUpdate> {
+        crate::ground::entity::check_point("target", 0, &target)?;
+        let block = match &self.pin {
+            Pin::Held => {
+                self.last.moved.clear();
+                self.last.residuals = self.residuals()?;
+                return Ok(&self.last);
+            }
+            Pin::Block(b) => *b,
+            Pin::Rows { target, .. } => *target,
+        };
+        let previous = [
+            self.cp.problem.block_values(block)?[0],
+            self.cp.problem.block_values(block)?[1],
+        ];
+        self.before.clear();
+        self.before.extend_from_slice(self.cp.problem.values());
+        self.cp
+            .problem
+            .set_block_values(block, &[target.x, target.y])?;
+        // An affine component's step does not depend on where it starts.
+        let start = if self.cp.nonlinear.is_none() {
+            Start::Cold
+        } else {
+            let last = self.cp.plan.last_solution();
+            let from = if last.is_empty() {
+                self.z_start.clone()
+            } else {
+                last.to_vec()
+            };
+            Start::Warm {
+                toward: from.clone(),
+                from,
+            }
+        };
+        match crate::component::solve::solve(&mut self.cp, &self.shapes, &self.options, start) {
+            Ok(report) => {
+                self.moved = true;
+                self.cp
+                    .moved_entities_into(&self.before, &mut self.last.moved);
+                // The report has one entry per constraint: sorted by id, the pin left out.
+                let residuals = &mut self.last.residuals;
+                residuals.clear();
+                residuals.extend(
+                    report
+                        .residuals
+                        .iter()
+                        .filter(|r| r.constraint != DRAG_CONSTRAINT)
+                        .map(|r| (r.constraint, r.max_abs)),
+                );
+                residuals.sort_unstable_by_key(|(c, _)| *c);
+                residuals.dedup_by(|later, first| {
+                    let same = later.0 == first.0;
+                    if same {
+                        first.1 = first.1.max(later.1);
+                    }
+                    same
+                });
+                self.cp.plan.recycle(report);
+                if let (
+                    Pin::Rows {
+                        residual, coeffs, ..
+                    },
+                    Freedom::Along(_),
+                    true,
+                ) = (&self.pin, self.freedom, self.cp.nonlinear.is_some())
+                {
+                    // The direction of freedom turns as the point slides (on a circle, say).
+                    let (residual, coeffs) = (*residual, coeffs.clone());
+                    self.refresh_direction(residual, coeffs)?;
+                }
+                Ok(&self.last)
+            }
+            Err(e) => {
+                // The solve left the problem at its start: move the target back too.
+                self.cp.problem.set_block_values(block, &previous)?;
+                Err(e)
+            }
         }
     }
 
-    /// Moves the dragged point to `target` and every other free unknown by the weighted
-    /// minimum norm from the current state, keeping every constraint.
-    ///
-    /// # Errors
-    /// [`Error::NonFinite`] for a bad target; [`Error::NotSatisfied`] or
-    /// [`Error::OrientationFlipped`] when the result would break a constraint (the session keeps
-    /// its previous state).
-    pub fn update(&mut self, target: Point2<f64>) -> Result<()> {
-        crate::ground::entity::check_point("target", 0, &target)?;
-        match self {
-            DragSession::Affine(d) => d.update(target),
-            DragSession::Nonlinear(d) => d.update(target),
+    /// What the last update changed (empty before the first): the value
+    /// [`DragSession::update`] returned.
+    pub fn last_update(&self) -> &DragUpdate {
+        &self.last
+    }
+
+    /// Takes the point's direction of freedom again at the current state and turns its pin row
+    /// along it (a change of the pin's coefficients only).
+    fn refresh_direction(
+        &mut self,
+        residual: ResidualId,
+        coeffs: SmallVec<[f64; 4]>,
+    ) -> Result<()> {
+        let (freedom, _) = freedom_of(&self.cp, &self.unknowns, &self.options)?;
+        if let Freedom::Along(_) = freedom {
+            self.freedom = freedom;
+            self.cp.problem.replace_residual(
+                residual,
+                std::sync::Arc::new(PinTo {
+                    coeffs,
+                    axes: freedom.axes(),
+                }),
+            )?;
         }
+        Ok(())
     }
 
     /// The dragged point.
     pub fn dragged(&self) -> PointRef {
-        self.common().point
+        self.point
     }
 
     /// How the dragged point can move: freely, along one direction (it follows the target's
     /// projection there), or not at all (updates are calm no-ops).
     pub fn freedom(&self) -> Freedom {
-        match self {
-            DragSession::Affine(d) => d.freedom,
-            DragSession::Nonlinear(d) => d.freedom,
-        }
+        self.freedom
+    }
+
+    /// Whether the cursor is a wish below every priority tier of the component's constraints
+    /// (pin rows of the lowest priority): no constraint gives way to it.
+    pub fn is_wish(&self) -> bool {
+        self.wish
     }
 
     /// Every entity of the dragged component as it is now (points and radii).
@@ -868,8 +482,16 @@ impl DragSession {
     /// # Errors
     /// None in practice (the session's own entities).
     pub fn entities(&self) -> Result<Vec<(EntityId, Entity)>> {
-        let c = self.common();
-        c.cp.entities_at(&c.shapes, &c.x)
+        self.cp.entities_at(&self.shapes, self.cp.problem.values())
+    }
+
+    /// One entity of the dragged component as it is now.
+    ///
+    /// # Errors
+    /// [`Error::UnknownEntity`] for an entity outside the component.
+    pub fn entity(&self, id: EntityId) -> Result<Entity> {
+        self.cp
+            .entity_at(&self.shapes, id, self.cp.problem.values())
     }
 
     /// The free parameters of the component's constraints as they are now: (constraint, k,
@@ -877,9 +499,8 @@ impl DragSession {
     ///
     /// # Errors
     /// None in practice.
-    pub fn free_parameters(&self) -> Result<Vec<(camber_solve::ConstraintId, usize, f64)>> {
-        let c = self.common();
-        c.cp.free_at(&c.x)
+    pub fn free_parameters(&self) -> Result<Vec<(ConstraintId, usize, f64)>> {
+        self.cp.free_at(self.cp.problem.values())
     }
 
     /// How far each constraint of the dragged component is from satisfied at the session's
@@ -902,23 +523,20 @@ impl DragSession {
     /// s.add_constraint(Fixed::point(PointRef::Start(c)))?; // a binding, no residual row
     /// let mid = s.add_constraint(PointAtParameter { curve: c, u: 0.5, target: Target::At(Point2::new(1.0, 1.0)) })?;
     /// let mut drag = s.drag(PointRef::Control(c, 2))?;
-    /// drag.update(Point2::new(2.0, 1.0))?;
+    /// let update = drag.update(Point2::new(2.0, 1.0))?.clone();
     /// let residuals = drag.residuals()?;
+    /// assert_eq!(residuals, update.residuals);
     /// assert_eq!(residuals.len(), 1);
     /// assert_eq!(residuals[0].0, mid);
     /// assert!(residuals[0].1 < 1e-12);
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
-    pub fn residuals(&self) -> Result<Vec<(crate::ground::ids::ConstraintId, f64)>> {
-        let c = self.common();
-        let owners = match self {
-            DragSession::Affine(d) => &d.row_owner,
-            DragSession::Nonlinear(d) => &d.row_owner,
-        };
-        let problem = c.cp.problem();
+    pub fn residuals(&self) -> Result<Vec<(ConstraintId, f64)>> {
+        let problem = &self.cp.problem;
         let mut g = vec![0.0; problem.num_rows()];
-        problem.evaluate_at(&c.x, &mut g)?;
-        let mut worst: BTreeMap<crate::ground::ids::ConstraintId, f64> = BTreeMap::new();
+        problem.evaluate_at(problem.values(), &mut g)?;
+        let owners = problem.row_owners();
+        let mut worst: BTreeMap<ConstraintId, f64> = BTreeMap::new();
         for (owner, v) in owners.iter().zip(&g) {
             if *owner == DRAG_CONSTRAINT {
                 continue;
@@ -934,14 +552,14 @@ impl DragSession {
     /// # Errors
     /// [`Error::UnknownEntity`] for an entity outside the component, [`Error::UnknownPoint`].
     pub fn point(&self, r: PointRef) -> Result<Point2<f64>> {
-        let c = self.common();
+        let x = self.cp.problem.values();
         let e = r.entity();
         let mut s = [0.0; 2];
-        let terms = c.shapes.lookup(e)?.resolve(r)?;
+        let terms = self.shapes.lookup(e)?.resolve(r)?;
         for (j, k) in terms {
-            let i = c.cp.point_unknown(e, j)?;
-            s[0] += k * c.x[i];
-            s[1] += k * c.x[i + 1];
+            let i = self.cp.point_unknown(e, j)?;
+            s[0] += k * x[i];
+            s[1] += k * x[i + 1];
         }
         Ok(Point2::new(s[0], s[1]))
     }
@@ -952,18 +570,18 @@ impl DragSession {
     /// [`Error::StaleSession`] when the sketch was edited since the drag began; the sketch is
     /// unchanged then.
     pub fn finish(self, sketch: &mut Sketch) -> Result<()> {
-        let c = self.common();
-        if sketch.revision() != c.revision {
+        if sketch.revision() != self.revision {
             return Err(Error::StaleSession {
-                expected: c.revision,
+                expected: self.revision,
                 found: sketch.revision(),
             });
         }
-        if !c.moved {
+        if !self.moved {
             return Ok(());
         }
-        let updates = c.cp.entities_at(sketch, &c.x)?;
-        let free = c.cp.free_at(&c.x)?;
+        let x = self.cp.problem.values();
+        let updates = self.cp.entities_at(sketch, x)?;
+        let free = self.cp.free_at(x)?;
         let ids: Vec<EntityId> = updates.iter().map(|(id, _)| *id).collect();
         sketch.commit(updates, &ids);
         // Free parameters moved with the drag: the constraints keep the solved ones.
@@ -980,7 +598,7 @@ mod tests {
     use camber_geom::BezierCurve2;
 
     /// W1's cubic (P₃ fixed, start tangent along D) in the given form, dragged by P₁.
-    fn w1_session(form: TangentForm) -> (Sketch, EntityId, DragSession) {
+    fn w1(form: TangentForm) -> (Sketch, EntityId, Vector2<f64>) {
         let d = Vector2::new(30f64.to_radians().cos(), 30f64.to_radians().sin());
         let mut s = Sketch::new();
         let c = s
@@ -1003,48 +621,76 @@ mod tests {
             form,
         })
         .unwrap();
-        let session = s.drag(PointRef::Control(c, 1)).unwrap();
-        (s, c, session)
+        (s, c, d)
     }
 
-    /// The dense products give, update after update, the state the factorization gives (refined
-    /// solve, rows evaluated through the problem), in both tangent forms.
+    /// Each update of a drag on W1 in row form lands where a one-off solve from the same state
+    /// lands (the dragged point fixed at the target, the rest moved by the minimum norm): the
+    /// kept factorization and its dense gain give the step a fresh plan gives, update after
+    /// update.
     #[test]
-    fn the_dense_update_follows_the_factorization() {
-        for form in [TangentForm::Row, TangentForm::Elimination] {
-            let (_, c, mut fast) = w1_session(form);
-            let (_, _, mut slow) = w1_session(form);
-            let DragSession::Affine(d) = &mut slow else {
-                panic!("W1 is affine");
-            };
-            assert!(
-                d.gain.take().is_some(),
-                "a small component has the dense path"
-            );
-            let DragSession::Affine(d) = &fast else {
-                panic!("W1 is affine");
-            };
-            assert!(d.gain.is_some());
-            let p1 = fast.point(PointRef::Control(c, 1)).unwrap();
-            for k in 1..=100 {
-                let th = std::f64::consts::TAU * f64::from(k) / 100.0;
-                let target = p1 + 0.3 * Vector2::new(th.cos() - 1.0, th.sin());
-                fast.update(target).unwrap();
-                slow.update(target).unwrap();
-                for j in 0..4 {
-                    let (a, b) = (
-                        fast.point(PointRef::Control(c, j)).unwrap(),
-                        slow.point(PointRef::Control(c, j)).unwrap(),
-                    );
-                    assert!(
-                        (a - b).norm() < 1e-12,
-                        "{form:?} update {k} point {j}: {a} {b}"
-                    );
-                }
-                assert!((fast.point(PointRef::Control(c, 1)).unwrap() - target).norm() < 1e-12);
+    fn row_form_updates_match_a_fresh_solve_from_the_same_state() {
+        let (s, c, d) = w1(TangentForm::Row);
+        let mut drag = s.drag(PointRef::Control(c, 1)).unwrap();
+        assert_eq!(drag.freedom(), Freedom::Free);
+        let p1 = drag.point(PointRef::Control(c, 1)).unwrap();
+        for k in 1..=60 {
+            let th = std::f64::consts::TAU * f64::from(k) / 60.0;
+            let target = p1 + 0.3 * Vector2::new(th.cos() - 1.0, th.sin());
+            // The independent reference: the session's state as a sketch, the point set to the
+            // target and fixed, solved once.
+            let mut reference = s.clone();
+            for (id, e) in drag.entities().unwrap() {
+                reference.set_entity(id, e).unwrap();
             }
-            // The residuals the session reports come from the problem itself.
-            assert!(fast.residuals().unwrap().iter().all(|(_, r)| *r < 1e-12));
+            reference
+                .set_point(PointRef::Control(c, 1), target)
+                .unwrap();
+            reference
+                .add_constraint(Fixed::point(PointRef::Control(c, 1)))
+                .unwrap();
+            reference.solve().unwrap();
+            let update = drag.update(target).unwrap().clone();
+            assert_eq!(update.moved, vec![c]);
+            for j in 0..4 {
+                let (a, b) = (
+                    drag.point(PointRef::Control(c, j)).unwrap(),
+                    reference.point(PointRef::Control(c, j)).unwrap(),
+                );
+                assert!((a - b).norm() < 1e-12, "update {k} point {j}: {a} {b}");
+            }
+            let t = drag.point(PointRef::Control(c, 1)).unwrap()
+                - drag.point(PointRef::Control(c, 0)).unwrap();
+            assert!((t.x * d.y - t.y * d.x).abs() < 1e-12 && t.dot(&d) > 0.0);
+            assert!(update.residuals.iter().all(|(_, r)| *r < 1e-12));
+            assert_eq!(update.residuals, drag.residuals().unwrap());
+        }
+    }
+
+    /// In elimination form P₁ = P₀ + t·D, so pinning P₁ to the target q leaves P₀ = q − t·D and
+    /// the least move of the unknowns (P₀, t) minimises |q − t·D − P₀|² + (t − t₀)²: by hand,
+    /// t = (D·(q − P₀) + t₀)/2 for a unit D. Every update lands there, from where the last left.
+    #[test]
+    fn elimination_form_updates_move_by_the_hand_derived_minimum_norm() {
+        let (s, c, d) = w1(TangentForm::Elimination);
+        let mut drag = s.drag(PointRef::Control(c, 1)).unwrap();
+        let p1 = drag.point(PointRef::Control(c, 1)).unwrap();
+        for k in 1..=60 {
+            let th = std::f64::consts::TAU * f64::from(k) / 60.0;
+            let q = p1 + 0.3 * Vector2::new(th.cos() - 1.0, th.sin());
+            let p0 = drag.point(PointRef::Control(c, 0)).unwrap();
+            let t0 = (drag.point(PointRef::Control(c, 1)).unwrap() - p0).dot(&d);
+            let t = (d.dot(&(q - p0)) + t0) / 2.0;
+            let expected = q - t * d;
+            let update = drag.update(q).unwrap().clone();
+            assert_eq!(update.moved, vec![c]);
+            let (a, b) = (
+                drag.point(PointRef::Control(c, 0)).unwrap(),
+                drag.point(PointRef::Control(c, 1)).unwrap(),
+            );
+            assert!((a - expected).norm() < 1e-12, "update {k}: {a} {expected}");
+            assert!((b - q).norm() < 1e-12, "update {k}: {b} {q}");
+            assert!(update.residuals.iter().all(|(_, r)| *r < 1e-12));
         }
     }
 }

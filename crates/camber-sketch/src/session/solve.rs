@@ -1,17 +1,20 @@
 //! Solving a sketch component by component, atomically: every component to solve is built and
-//! solved on its own problem by the one policy of `component::policy`, and only when
+//! solved on its own problem (`component::solve`: camber-solve's policy, then the checks of the
+//! solved geometry), and only when
 //! all of them succeed are the results written back. On any error the sketch is exactly as
 //! before.
 
 use camber_solve::SolveReport;
 
-use crate::component::policy::{self, Start};
+use camber_solve::Start;
+
+use crate::component::solve as policy;
 use crate::component::Component;
 use crate::ground::errors::Result;
 use crate::session::starts;
 use crate::sketch::Sketch;
 
-pub use crate::component::policy::{default_options, penetration_tolerance, MAX_ACTIVE_ROWS};
+pub use crate::component::solve::{default_options, penetration_tolerance, MAX_ACTIVE_ROWS};
 
 /// The outcome of one component's solve.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
@@ -51,12 +54,6 @@ pub struct SketchReport {
     /// their coordinates.
     pub tolerance: f64,
 }
-
-/// A component's solve report and the entities it moved, with their new values.
-type Solved = (
-    SolveReport,
-    Vec<(crate::ground::ids::EntityId, crate::ground::entity::Entity)>,
-);
 
 impl SketchReport {
     /// The constraints left above tolerance because the whole set could not be met: those of
@@ -106,7 +103,7 @@ impl Sketch {
         &self,
         cp: &mut crate::component::ComponentProblem,
         options: &camber_solve::Options,
-    ) -> Result<Solved> {
+    ) -> Result<SolveReport> {
         // One evaluation budget for the whole attempt: the given start, its active-set rounds
         // and every other start share it, so a sketch that cannot be solved fails in bounded
         // time however many starts it has.
@@ -121,7 +118,7 @@ impl Sketch {
         &self,
         cp: &mut crate::component::ComponentProblem,
         options: &camber_solve::Options,
-    ) -> Result<Solved> {
+    ) -> Result<SolveReport> {
         let first = match policy::solve(cp, self, options, Start::Cold) {
             Ok(solved) => return Ok(solved),
             Err(e) => e,
@@ -137,14 +134,14 @@ impl Sketch {
             for (block, u) in &start {
                 cp.problem.set_block_values(*block, &[*u])?;
             }
-            if let Ok((mut r, solved)) = policy::solve(cp, self, options, Start::Cold) {
+            if let Ok(mut r) = policy::solve(cp, self, options, Start::Cold) {
                 r.reason = format!(
                     "{}; from contact start {} of {} after the given guesses failed",
                     r.reason,
                     k + 1,
                     count
                 );
-                return Ok((r, solved));
+                return Ok(r);
             }
         }
         cp.problem.restore(&initial);
@@ -210,8 +207,9 @@ impl Sketch {
         comp: Component,
         options: &camber_solve::Options,
     ) -> Result<ComponentOutcome> {
-        let mut cp = self.build_component(&comp, None)?;
-        let (r, updates) = self.solve_with_starts(&mut cp, options)?;
+        let mut cp = self.build_component(&comp)?;
+        let r = self.solve_with_starts(&mut cp, options)?;
+        let updates = cp.entities_at(self, cp.problem().values())?;
         let free = cp.free_at(cp.problem().values())?;
         Ok(ComponentOutcome {
             report: ComponentReport {

@@ -100,9 +100,9 @@ impl EntityLookup for Sketch {
 
 /// # Construction
 impl Sketch {
-    /// An empty sketch with the default solver options ([`crate::component::policy::default_options`]).
+    /// An empty sketch with the default solver options ([`crate::component::solve::default_options`]).
     pub fn new() -> Self {
-        Self::with_options(crate::component::policy::default_options())
+        Self::with_options(crate::component::solve::default_options())
     }
 
     /// An empty sketch solved with `options` (tolerances, dense/sparse thresholds).
@@ -714,14 +714,10 @@ impl Sketch {
     /// [`Error::UnknownEntity`]; errors of compiling the constraints.
     pub fn component_problem(&self, entity: EntityId) -> Result<ComponentProblem> {
         let comp = self.component_of(entity)?;
-        self.build_component(&comp, None)
+        self.build_component(&comp)
     }
 
-    pub(crate) fn build_component(
-        &self,
-        comp: &Component,
-        pin: Option<PointRef>,
-    ) -> Result<ComponentProblem> {
+    pub(crate) fn build_component(&self, comp: &Component) -> Result<ComponentProblem> {
         // The component's entities, found by binary search in a short list instead of the
         // sketch's map at every one of the many lookups below.
         let lookup = crate::ground::lookup::ComponentEntities::new(self, &comp.entities);
@@ -741,13 +737,7 @@ impl Sketch {
             .copied()
             .filter(|id| self.priority(*id) > 0)
             .collect();
-        let mut cp = build(&lookup, comp, &compiled, &relaxable, pin)?;
-        if !relaxable.is_empty() && pin.is_some() {
-            // The cursor is a wish below every tier: the constraints are met first, the
-            // dragged point then comes as close to it as they allow.
-            cp.problem
-                .set_priority(crate::component::DRAG_CONSTRAINT, Priority::MAX);
-        }
+        let mut cp = build(&lookup, comp, &compiled, &relaxable)?;
         for id in relaxable {
             cp.problem.set_priority(id, self.priority(id));
         }

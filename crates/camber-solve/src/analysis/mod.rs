@@ -8,7 +8,9 @@
 //!   can still move;
 //! - `accidental`: rows dependent only at the current values of a nonlinear problem, checked
 //!   again at a nearby configuration;
-//! - `certificate`: a cheap proof of full row rank that lets the analysis be skipped.
+//! - `certificate`: a cheap proof of full row rank that lets the analysis be skipped;
+//! - `mobility`: what the constraints leave free of a few combinations of unknowns (a dragged
+//!   point), and the multipliers of the rows at a solution.
 //!
 //! It stands on `model` and `linalg` and knows nothing of the solvers.
 
@@ -16,9 +18,11 @@ pub(crate) mod accidental;
 pub(crate) mod blocks;
 pub(crate) mod certificate;
 pub(crate) mod free_columns;
+pub(crate) mod mobility;
 pub(crate) mod rank;
 pub mod structure;
 
+pub use mobility::{mobility, multipliers, Mobility};
 pub use rank::{
     analyze, analyze_rows, analyze_rows_sparse, Dependency, DependentRow, DofAnalysis, RowAnalysis,
     StructureSummary, DENSE_ANALYSIS_MAX_ENTRIES,

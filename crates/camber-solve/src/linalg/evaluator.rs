@@ -126,6 +126,38 @@ impl Evaluator {
         })
     }
 
+    /// Takes the problem's values (and the constants of the map x = A·z + c, which hold the
+    /// fixed values) again, keeping everything its structure determines: the row owners, which
+    /// blocks move, the patterns of J and H and the triplets of the affine residuals. For a
+    /// problem whose structure has not changed since the evaluator was built
+    /// ([`crate::Problem::stamps`]).
+    ///
+    /// # Errors
+    /// Those of [`Problem::reduced_map`].
+    pub(crate) fn refresh(&mut self, problem: &Problem) -> Result<()> {
+        problem.reduced_map_into(&mut self.map)?;
+        self.lower.clear();
+        self.upper.clear();
+        for var in self.map.vars() {
+            let (lo, hi) = match var {
+                Var::Unknown(u) => problem.bounds.get(u.0).copied(),
+                Var::Aux(a) => problem.aux_bounds.get(a.0).copied(),
+            }
+            .unwrap_or((f64::NEG_INFINITY, f64::INFINITY));
+            self.lower.push(lo);
+            self.upper.push(hi);
+        }
+        self.x.resize(problem.num_unknowns(), 0.0);
+        Ok(())
+    }
+
+    /// Forgets the kept triplets of the affine residuals (their objects were replaced: other
+    /// coefficients, perhaps).
+    pub(crate) fn forget_residuals(&mut self) {
+        self.affine_triplets.clear();
+        self.affine_at.fill(None);
+    }
+
     /// Number of reduced unknowns n.
     pub(crate) fn cols(&self) -> usize {
         self.map.len()

@@ -258,6 +258,20 @@ impl Problem {
         Ok(())
     }
 
+    /// The reduced unknowns z as they are now, in the order of [`ReducedMap::vars`] (the own
+    /// variable of every free unknown, then every auxiliary), without building the map.
+    pub(crate) fn reduced_values_into(&self, z: &mut Vec<f64>) {
+        z.clear();
+        z.extend(
+            self.bindings
+                .iter()
+                .zip(&self.values)
+                .filter(|(b, _)| **b == Binding::Free)
+                .map(|(_, v)| *v),
+        );
+        z.extend_from_slice(&self.aux_values);
+    }
+
     /// Evaluates the residuals and their Jacobian over z at z₀ (autodiff through every residual
     /// block, chain rule through A, sparse assembly).
     ///

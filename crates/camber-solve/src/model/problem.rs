@@ -359,7 +359,7 @@ impl Problem {
 
 /// The values of a problem's unknowns and auxiliary unknowns at one moment, to go back to
 /// ([`Problem::state`], [`Problem::restore`]).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct ProblemState {
     values: Vec<f64>,
     aux_values: Vec<f64>,
@@ -442,6 +442,15 @@ impl Problem {
             values: self.values.clone(),
             aux_values: self.aux_values.clone(),
         }
+    }
+
+    /// Writes the current values into `state`, reusing its storage (a state taken at every
+    /// step of a drag allocates nothing).
+    pub fn save_state(&self, state: &mut ProblemState) {
+        state.values.clear();
+        state.values.extend_from_slice(&self.values);
+        state.aux_values.clear();
+        state.aux_values.extend_from_slice(&self.aux_values);
     }
 
     /// Goes back to a state taken from this problem (blocks and auxiliaries added since keep
@@ -872,6 +881,15 @@ impl Problem {
                 index: residual.0,
                 len,
             })
+    }
+
+    /// The constraint owning each residual row, in row order.
+    pub fn row_owners(&self) -> Vec<ConstraintId> {
+        let mut out = Vec::with_capacity(self.num_rows());
+        for rb in &self.residuals {
+            out.extend(std::iter::repeat_n(rb.owner, rb.dim));
+        }
+        out
     }
 
     /// Evaluates every residual at the unknowns `x` (a full vector, as [`Problem::values`]),

@@ -158,10 +158,22 @@ fn seconds<S: serde::Serializer>(d: &Duration, s: S) -> Result<S::Ok, S::Error> 
 
 /// max |g| per owning constraint, in order of first appearance.
 pub(crate) fn per_constraint(owners: &[ConstraintId], g: &[f64]) -> Vec<ConstraintResidual> {
+    let mut out = Vec::new();
+    per_constraint_into(owners, g, &mut out);
+    out
+}
+
+/// [`per_constraint`] into `out` (cleared first; its storage is reused, so a small component
+/// solved again and again allocates nothing here).
+pub(crate) fn per_constraint_into(
+    owners: &[ConstraintId],
+    g: &[f64],
+    out: &mut Vec<ConstraintResidual>,
+) {
     // The rows of one constraint are nearly always consecutive: one entry per run of rows
     // first, then runs of the same constraint folded into its first (the maximum does not
     // depend on the grouping).
-    let mut out: Vec<ConstraintResidual> = Vec::new();
+    out.clear();
     for (owner, gi) in owners.iter().zip(g) {
         match out.last_mut() {
             Some(last) if last.constraint == *owner => last.max_abs = last.max_abs.max(gi.abs()),
@@ -178,7 +190,7 @@ pub(crate) fn per_constraint(owners: &[ConstraintId], g: &[f64]) -> Vec<Constrai
             .enumerate()
             .all(|(k, r)| out[..k].iter().all(|q| q.constraint != r.constraint))
     {
-        return out;
+        return;
     }
     let mut order: Vec<(ConstraintId, usize)> = out
         .iter()
@@ -187,7 +199,7 @@ pub(crate) fn per_constraint(owners: &[ConstraintId], g: &[f64]) -> Vec<Constrai
         .collect();
     order.sort_unstable();
     if order.windows(2).all(|w| w[0].0 != w[1].0) {
-        return out;
+        return;
     }
     let mut keep = vec![true; out.len()];
     for group in order.chunk_by(|a, b| a.0 == b.0) {
@@ -202,7 +214,6 @@ pub(crate) fn per_constraint(owners: &[ConstraintId], g: &[f64]) -> Vec<Constrai
     }
     let mut flags = keep.iter();
     out.retain(|_| flags.next().copied().unwrap_or(true));
-    out
 }
 
 #[cfg(test)]

@@ -30,13 +30,14 @@ use crate::model::nonlinear::SolverChoice;
 use crate::model::options::Options;
 use crate::model::problem::Problem;
 use crate::model::report::{ConstraintResidual, Selection, SolveReport, SolverKind, Status};
-use crate::solvers::linear::solve_linear;
+use crate::policy::linear::LinearPath;
+use crate::policy::plan::{Plan, Start};
 use crate::solvers::newton::{self, NewtonWorkspace};
 use crate::solvers::soft;
 
 /// What the analysis at the start says, carried into every report.
 #[derive(Debug, Clone)]
-struct Start {
+struct Verdict {
     clock: Instant,
     z0: Vec<f64>,
     rows: usize,
@@ -54,15 +55,18 @@ struct Start {
     full_rank: bool,
 }
 
-impl Start {
+impl Verdict {
     /// The analysis at the problem's values, whether they already satisfy every residual,
     /// and the evaluator with its linearization there (map, residuals, Jacobian), which Newton
     /// takes over as its first iteration's instead of building and evaluating them again.
-    fn new(problem: &Problem, options: &Options) -> Result<(Self, bool, Primed)> {
+    fn new(
+        problem: &Problem,
+        options: &Options,
+        ev: &mut Evaluator,
+    ) -> Result<(Self, bool, Primed)> {
         let clock = Instant::now();
         options.validate()?;
         options.nonlinear.validate()?;
-        let mut ev = Evaluator::new(problem)?;
         let (m, n) = (ev.rows(), ev.cols());
         let z0 = ev.map.z0().to_vec();
         let mut g = vec![0.0; m];
@@ -123,7 +127,7 @@ impl Start {
                 full_rank: true,
             },
         };
-        Ok((start, satisfied && !pending, Primed { ev, z: z0, g }))
+        Ok((start, satisfied && !pending, Primed { z: z0, g }))
     }
 
     fn report(
@@ -170,9 +174,9 @@ impl Start {
     }
 }
 
-/// An evaluator linearized at `z`, with the residuals `g` there.
+/// The point `z` at which the solve's evaluator was just linearized, with the residuals `g`
+/// there: Newton's first iteration takes them over.
 struct Primed {
-    ev: Evaluator,
     z: Vec<f64>,
     g: Vec<f64>,
 }
@@ -200,29 +204,27 @@ fn commit(
     Ok(residuals)
 }
 
-/// Newton from `start` toward `reference`, validated and written back.
+/// Newton from `start` toward `reference`, validated and written back. `ev` holds the map of
+/// the problem as it is (the solve's evaluator); when it was just linearized at `start`,
+/// `primed` says so.
+#[allow(clippy::too_many_arguments)] // the parts of one solve, each a different thing
 fn newton_path(
     problem: &mut Problem,
     options: &Options,
     ws: &mut NewtonWorkspace,
+    ev: &mut Evaluator,
     start: &[f64],
     reference: &[f64],
     rows: Option<&[usize]>,
     primed: Option<Primed>,
 ) -> Result<(usize, bool, Vec<ConstraintResidual>, Vec<f64>)> {
-    // The map's constants follow the fixed values, so it is rebuilt at every call, unless the
-    // caller's evaluator was built (and linearized) just before on the same values.
-    let mut ev = match primed {
-        Some(p) => {
-            ws.prime(p.z, p.g);
-            p.ev
-        }
-        None => Evaluator::new(problem)?,
-    };
-    let run = newton::run(problem, &mut ev, ws, start, reference, rows, options);
+    if let Some(p) = primed {
+        ws.prime(p.z, p.g);
+    }
+    let run = newton::run(problem, ev, ws, start, reference, rows, options);
     ws.unprime();
     let run = run?;
-    let residuals = commit(problem, &mut ev, &ws.z, options)?;
+    let residuals = commit(problem, ev, &ws.z, options)?;
     Ok((run.iterations, run.stationary, residuals, ws.z.clone()))
 }
 
@@ -289,7 +291,7 @@ struct SlsqpInfo {
 fn soft_path(
     problem: &mut Problem,
     options: &Options,
-    start: &Start,
+    start: &Verdict,
     why: &str,
 ) -> Result<SolveReport> {
     let mut ev = Evaluator::new(problem)?;
@@ -368,51 +370,27 @@ fn soft_path(
 /// is not built; the errors of the forced solver otherwise. The problem's values are unchanged
 /// on every error.
 pub fn solve(problem: &mut Problem, options: &Options) -> Result<SolveReport> {
-    // A budget started by the caller spans its several solves; otherwise this one has its own.
-    let own_budget = !problem.budget.running();
-    if own_budget {
-        problem.start_budget(options.nonlinear.max_evaluations);
-    }
-    let outcome = match solve_whole(problem, options) {
-        Err(e @ (Error::Conflicting { .. } | Error::NotSolved { .. }))
-            if problem.has_priorities()
-                && options.nonlinear.force.is_none()
-                && !options.nonlinear.soft =>
-        {
-            // The tiers cannot be met on a spent budget: the whole set's failure stands.
-            match crate::solvers::lexicographic::solve(problem, options) {
-                Err(Error::BudgetSpent { .. }) => Err(e),
-                tiers => tiers,
-            }
-        }
-        outcome => outcome,
-    };
-    if own_budget {
-        problem.end_budget();
-    }
+    let mut plan = Plan::one_off();
+    let outcome = plan.solve(problem, options, &Start::Cold);
+    plan.release();
     outcome
 }
 
-/// [`solve`] for the whole set of constraints, priorities aside.
-fn solve_whole(problem: &mut Problem, options: &Options) -> Result<SolveReport> {
-    let mut ws = NewtonWorkspace::take_spare();
-    let outcome = solve_whole_with(problem, options, &mut ws);
-    ws.keep_as_spare();
-    outcome
-}
-
-/// [`solve_whole`] with the Newton workspace given.
-fn solve_whole_with(
+/// The selection from the analysis at the problem's values, for a problem that is not affine
+/// (or a forced solver): Newton, SLSQP, the rescue paths (see the module documentation).
+pub(crate) fn cold(
     problem: &mut Problem,
     options: &Options,
     ws: &mut NewtonWorkspace,
+    ev: &mut Evaluator,
+    linear: &mut LinearPath,
 ) -> Result<SolveReport> {
-    let (start, satisfied, primed) = Start::new(problem, options)?;
+    let (start, satisfied, primed) = Verdict::new(problem, options, ev)?;
     if satisfied {
         return start.already_satisfied(problem);
     }
     if let Some(choice) = options.nonlinear.force {
-        return forced(problem, options, &start, choice);
+        return forced(problem, options, &start, choice, ws, ev, linear);
     }
     if start.affine {
         if !start.conflicting.is_empty() {
@@ -423,9 +401,7 @@ fn solve_whole_with(
                 constraints: start.conflicting.clone(),
             });
         }
-        let mut report = solve_linear(problem, options)?;
-        report.reason = format!("selection: affine → linear minimum norm; {}", report.reason);
-        return Ok(report);
+        return linear.solve(problem, options);
     }
 
     let mut notes: Vec<String> = Vec::new();
@@ -435,6 +411,7 @@ fn solve_whole_with(
             problem,
             options,
             ws,
+            ev,
             &start.z0,
             &start.z0,
             rows,
@@ -503,10 +480,9 @@ fn solve_whole_with(
     }
 
     // Rescue: least squares from the start, then Newton from there toward the start.
-    let mut ev = Evaluator::new(problem)?;
     let (z_lm, lm) = soft::run(
         problem,
-        &mut ev,
+        ev,
         &start.z0,
         &start.z0,
         options.nonlinear.soft_epsilon,
@@ -514,7 +490,7 @@ fn solve_whole_with(
     )?;
     if lm.max_residual <= options.tolerance.sqrt() {
         if let Ok((iterations, _, residuals, z)) =
-            newton_path(problem, options, ws, &z_lm, &start.z0, None, None)
+            newton_path(problem, options, ws, ev, &z_lm, &start.z0, None, None)
         {
             let reason = format!(
                 "{} → Levenberg–Marquardt ({} iterations) then Newton minimum norm",
@@ -569,7 +545,7 @@ fn solve_whole_with(
             };
             if let Some(z1) = moved {
                 if let Ok((iterations, _, residuals, z)) =
-                    newton_path(problem, options, ws, &z1, &start.z0, None, None)
+                    newton_path(problem, options, ws, ev, &z1, &start.z0, None, None)
                 {
                     let reason = format!(
                         "{} → Newton minimum norm from a start moved off the singular one",
@@ -646,21 +622,23 @@ const LEAST_SQUARES_COSINE: f64 = 1e-6;
 fn forced(
     problem: &mut Problem,
     options: &Options,
-    start: &Start,
+    start: &Verdict,
     choice: SolverChoice,
+    ws: &mut NewtonWorkspace,
+    ev: &mut Evaluator,
+    linear: &mut LinearPath,
 ) -> Result<SolveReport> {
     let why = format!("forced {choice:?}");
     match choice {
         SolverChoice::Linear => {
-            let mut report = solve_linear(problem, options)?;
+            let mut report = linear.solve(problem, options)?;
             report.selection = Selection::Forced;
             report.reason = format!("{why}; {}", report.reason);
             Ok(report)
         }
         SolverChoice::Newton => {
-            let mut ws = NewtonWorkspace::new();
             let (iterations, _, residuals, z) =
-                newton_path(problem, options, &mut ws, &start.z0, &start.z0, None, None)?;
+                newton_path(problem, options, ws, ev, &start.z0, &start.z0, None, None)?;
             Ok(start.report(
                 SolverKind::Newton,
                 Selection::Forced,
@@ -690,6 +668,57 @@ fn forced(
         }
         SolverChoice::Soft => soft_path(problem, options, start, &why),
     }
+}
+
+/// The soft compromise for an affine problem the linear path found conflicting: the analysis
+/// at the start, then the soft mode.
+pub(crate) fn soft_for_affine(
+    problem: &mut Problem,
+    options: &Options,
+    ev: &mut Evaluator,
+) -> Result<SolveReport> {
+    let (start, _, _) = Verdict::new(problem, options, ev)?;
+    soft_path(problem, options, &start, "affine and conflicting")
+}
+
+/// Newton from `start` toward `reference` (reduced unknowns) with no analysis first: the warm
+/// path of drags and re-solves. The report's rank and DOF are those of the rows and unknowns.
+pub(crate) fn warm_newton(
+    problem: &mut Problem,
+    options: &Options,
+    ws: &mut NewtonWorkspace,
+    ev: &mut Evaluator,
+    start: &[f64],
+    reference: &[f64],
+) -> Result<SolveReport> {
+    let clock = Instant::now();
+    let z0 = ev.map.z0().to_vec();
+    let (iterations, stationary, residuals, z) =
+        newton_path(problem, options, ws, ev, start, reference, None, None)?;
+    let moved: Vec<f64> = z.iter().zip(&z0).map(|(a, b)| a - b).collect();
+    let n = z.len();
+    Ok(SolveReport {
+        status: Status::Solved,
+        solver: SolverKind::Newton,
+        selection: Selection::WarmStart,
+        reason: format!(
+            "warm-started Newton minimum norm{}",
+            if stationary {
+                ""
+            } else {
+                " (pull-back not fully converged)"
+            }
+        ),
+        iterations,
+        residuals,
+        displacement_norm: norm2(&moved),
+        rank: problem.num_rows().min(n),
+        dof: n.saturating_sub(problem.num_rows()),
+        redundant: Vec::new(),
+        conflicting: Vec::new(),
+        priorities: Vec::new(),
+        elapsed: clock.elapsed(),
+    })
 }
 
 /// Newton minimum norm from the current values, with the pull-back toward them; validated
@@ -741,36 +770,10 @@ pub fn solve_newton_from(
     start: &[f64],
     reference: &[f64],
 ) -> Result<SolveReport> {
-    let clock = Instant::now();
     options.validate()?;
     options.nonlinear.validate()?;
-    let z0 = problem.reduced_map()?.z0().to_vec();
-    let (iterations, stationary, residuals, z) =
-        newton_path(problem, options, workspace, start, reference, None, None)?;
-    let moved: Vec<f64> = z.iter().zip(&z0).map(|(a, b)| a - b).collect();
-    let n = z.len();
-    Ok(SolveReport {
-        status: Status::Solved,
-        solver: SolverKind::Newton,
-        selection: Selection::WarmStart,
-        reason: format!(
-            "warm-started Newton minimum norm{}",
-            if stationary {
-                ""
-            } else {
-                " (pull-back not fully converged)"
-            }
-        ),
-        iterations,
-        residuals,
-        displacement_norm: norm2(&moved),
-        rank: problem.num_rows().min(n),
-        dof: n.saturating_sub(problem.num_rows()),
-        redundant: Vec::new(),
-        conflicting: Vec::new(),
-        priorities: Vec::new(),
-        elapsed: clock.elapsed(),
-    })
+    let mut ev = Evaluator::new(problem)?;
+    warm_newton(problem, options, workspace, &mut ev, start, reference)
 }
 
 #[cfg(test)]

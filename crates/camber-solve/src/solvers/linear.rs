@@ -1,266 +1,186 @@
-//! The linear solve of an affine problem: analysis → minimum-norm step → re-evaluation →
-//! write-back on success.
+//! The linear solver: the weighted minimum-norm step Δz = −W⁻¹·Jᵀ·(J·W⁻¹·Jᵀ)⁻¹·g of the
+//! selected rows of a constant J, over a factorization kept for any number of right-hand sides.
+//!
+//! It is built once per J ([`LinearSolver::factorize`]) and then answers every g in two
+//! triangular solves and a product with Jᵀ, refined until the rows are met to rounding
+//! (`linalg::min_norm`). For a small J that is used again and again (a drag: J stays while the
+//! target moves), the step is written out once as a dense gain K, n × k with column j the refined
+//! step for the unit right-hand side eⱼ; the step being linear in g, Δz = K·g is then one small
+//! product ([`LinearSolver::with_gain`]). A step the gain gives that misses its rows is redone
+//! by the factorization ([`LinearSolver::step_refined`]).
+//!
+//! Which rows are selected, when J is refactorized and whether the result is kept is the
+//! policy's business.
 
-use std::borrow::Cow;
-use std::time::Instant;
-
-use crate::analysis;
 use crate::linalg::min_norm::{self, MinNormFactorization};
-use crate::linalg::reduced::Linearization;
+use crate::linalg::normal::NormalCache;
+use crate::linalg::sparse::SparseMatrix;
 use crate::model::errors::{Error, Result};
-use crate::model::options::Options;
-use crate::model::problem::Problem;
-use crate::model::report::{per_constraint, Selection, SolveReport, SolverKind, Status};
 
-/// Rounds of iterative refinement after the minimum-norm step (see
+/// Rounds of iterative refinement after a step (see
 /// [`MinNormFactorization::solve_refined`]).
-const REFINEMENT_STEPS: usize = 3;
+pub(crate) const REFINEMENT_STEPS: usize = 3;
 
-/// Solves a problem whose residuals are all affine by one weighted minimum-norm step over the
-/// reduced unknowns: Δz = −W⁻¹·Jᵀ·(J·W⁻¹·Jᵀ)⁻¹·g , after a DOF analysis
-/// that drops consistent dependent rows (if allowed) and refuses conflicting ones. The
-/// residuals are re-evaluated at the result, which is written back only if every constraint is
-/// within `options.tolerance` and every bound holds.
-///
-/// ```
-/// use camber_solve::{ConstraintId, Options, Problem, Residual, Scalar, solve_linear, Status};
-/// /// x = 3 on the first unknown of a block.
-/// #[derive(Debug)]
-/// struct XIs3;
-/// impl Residual for XIs3 {
-///     fn name(&self) -> &str { "x is 3" }
-///     fn dim(&self) -> usize { 1 }
-///     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
-///         out[0] = x[0][0] - camber_solve::scalar::cst(3.0);
-///     }
-///     fn is_affine(&self) -> bool { true }
-/// }
-/// let mut p = Problem::new();
-/// let b = p.add_block(&[0.0, 5.0])?;
-/// p.add_residual(XIs3, &[b], ConstraintId(9))?;
-/// let r = solve_linear(&mut p, &Options::default())?;
-/// assert_eq!(r.status, Status::Solved);
-/// assert!((p.values()[0] - 3.0).abs() < 1e-12 && (p.values()[1] - 5.0).abs() < 1e-15);
-/// # Ok::<(), camber_solve::Error>(())
-/// ```
-///
-/// # Errors
-/// [`Error::NonlinearNotAvailable`] for a residual that is not affine; [`Error::Conflicting`],
-/// [`Error::Redundant`], [`Error::RankDeficient`] from the analysis and factorization;
-/// [`Error::NotSatisfied`] and [`Error::OutOfBounds`] after the step; the problem's values are
-/// unchanged in every case.
-pub fn solve_linear(problem: &mut Problem, options: &Options) -> Result<SolveReport> {
-    let mut scratch = Scratch::take();
-    let outcome = solve_in(problem, options, &mut scratch);
-    scratch.keep();
-    outcome
+/// The most entries of the dense gain K (n × k) and of J (m × n) for which it is written out.
+pub(crate) const GAIN_MAX_ENTRIES: usize = 4096;
+
+/// The minimum-norm solver of one J (see the module documentation).
+#[derive(Debug)]
+pub(crate) struct LinearSolver {
+    /// The rows of J the steps satisfy (`None`: all of them).
+    rows: Option<Vec<usize>>,
+    /// The factorization of the selected rows (`None` when no row is selected).
+    factorization: Option<MinNormFactorization>,
+    /// K, n × k row major (row i gives Δzᵢ), when written out.
+    gain: Option<Vec<f64>>,
+    /// The selected rows of the right-hand side.
+    g_sel: Vec<f64>,
 }
 
-/// The storage of [`solve_linear`], kept per thread between solves of small problems: a sketch
-/// of many small components solves them one after another on each thread, and their
-/// allocations cost more than their arithmetic.
-struct Scratch {
-    lin: Linearization,
-    /// Δz, z, x(z), g(x(z)).
-    dz: Vec<f64>,
-    z: Vec<f64>,
-    x: Vec<f64>,
-    g: Vec<f64>,
-    /// The last success reason and what it was made of (dependent rows dropped, reduced
-    /// unknowns, dense, threshold): sketches solve many components of one size.
-    reason: Option<((bool, usize, bool, usize), String)>,
-}
-
-thread_local! {
-    static SCRATCH: std::cell::Cell<Option<Box<Scratch>>> = const { std::cell::Cell::new(None) };
-}
-
-/// Storage is kept for the next solve only up to this many rows or reduced unknowns (a large
-/// problem's allocations are small next to its arithmetic, and its memory is given back).
-const SCRATCH_MAX: usize = 4096;
-
-impl Scratch {
-    /// This thread's kept storage, or new storage (also when a solve is already using it).
-    fn take() -> Box<Self> {
-        SCRATCH.with(std::cell::Cell::take).unwrap_or_else(|| {
-            Box::new(Self {
-                lin: Linearization::empty(),
-                dz: Vec::new(),
-                z: Vec::new(),
-                x: Vec::new(),
-                g: Vec::new(),
-                reason: None,
-            })
+impl LinearSolver {
+    /// Factorizes the rows `rows` of J (all when `None`) with the weights W: dense when
+    /// `dense`, sparse otherwise (reusing `cache`'s ordering and pattern).
+    ///
+    /// # Errors
+    /// [`Error::RankDeficient`] when the selected rows are dependent; weight errors.
+    pub(crate) fn factorize(
+        j: &SparseMatrix,
+        weights: &[f64],
+        rows: Option<Vec<usize>>,
+        dense: bool,
+        cache: &mut NormalCache,
+    ) -> Result<Self> {
+        let selected = match &rows {
+            Some(rows) if rows.len() < j.nrows() => Some(j.select_rows(rows)),
+            _ => None,
+        };
+        let j_sel = selected.as_ref().unwrap_or(j);
+        let k = j_sel.nrows();
+        let factorization = if k == 0 {
+            None
+        } else if dense {
+            Some(MinNormFactorization::try_dense(j_sel, weights)?)
+        } else {
+            Some(MinNormFactorization::try_sparse_cached(
+                j_sel, weights, cache,
+            )?)
+        };
+        Ok(Self {
+            rows: rows.filter(|r| r.len() < j.nrows()),
+            factorization,
+            gain: None,
+            g_sel: vec![0.0; k],
         })
     }
 
-    /// Keeps the storage for this thread's next solve, if it is small.
-    fn keep(self: Box<Self>) {
-        if self.lin.g.capacity().max(self.dz.capacity()) <= SCRATCH_MAX {
-            SCRATCH.with(|s| s.set(Some(self)));
+    /// Writes the step out as the dense gain K when it is small enough (n·k and m·n at most
+    /// [`GAIN_MAX_ENTRIES`]); nothing otherwise.
+    ///
+    /// # Errors
+    /// Those of the refined solves.
+    pub(crate) fn with_gain(&mut self, m: usize) -> Result<()> {
+        let Some(f) = self.factorization.as_mut() else {
+            return Ok(());
+        };
+        let (n, k) = (f.cols(), f.rows());
+        if self.gain.is_some()
+            || n.saturating_mul(k) > GAIN_MAX_ENTRIES
+            || m.saturating_mul(n) > GAIN_MAX_ENTRIES
+        {
+            return Ok(());
+        }
+        let mut gain = vec![0.0; n * k];
+        let (mut unit, mut col) = (vec![0.0; k], vec![0.0; n]);
+        for j in 0..k {
+            unit[j] = 1.0;
+            f.solve_refined(&unit, &mut col, REFINEMENT_STEPS, 0.0)?;
+            unit[j] = 0.0;
+            for (i, v) in col.iter().enumerate() {
+                gain[i * k + j] = *v;
+            }
+        }
+        self.gain = Some(gain);
+        Ok(())
+    }
+
+    /// Whether the gain is written out.
+    pub(crate) fn has_gain(&self) -> bool {
+        self.gain.is_some()
+    }
+
+    /// Copies the selected rows of `g` into the solver's right-hand side.
+    fn select(&mut self, g: &[f64]) {
+        match &self.rows {
+            Some(rows) => {
+                for (s, r) in self.g_sel.iter_mut().zip(rows) {
+                    *s = g.get(*r).copied().unwrap_or(f64::NAN);
+                }
+            }
+            None => {
+                let k = self.g_sel.len();
+                self.g_sel.copy_from_slice(&g[..k]);
+            }
+        }
+    }
+
+    /// Δz by the gain when it is written out, by the refined factorization otherwise.
+    ///
+    /// # Errors
+    /// Dimension errors.
+    pub(crate) fn step(&mut self, g: &[f64], dz: &mut [f64], tolerance: f64) -> Result<()> {
+        if self.factorization.is_none() {
+            dz.fill(0.0);
+            return Ok(());
+        }
+        self.select(g);
+        match &self.gain {
+            Some(k) => {
+                let width = self.g_sel.len();
+                for (d, row) in dz.iter_mut().zip(k.chunks_exact(width)) {
+                    *d = row.iter().zip(&self.g_sel).map(|(a, b)| a * b).sum();
+                }
+                Ok(())
+            }
+            None => self.step_refined(g, dz, tolerance),
+        }
+    }
+
+    /// Δz by the refined factorization (never by the gain).
+    ///
+    /// # Errors
+    /// Dimension errors.
+    pub(crate) fn step_refined(&mut self, g: &[f64], dz: &mut [f64], tolerance: f64) -> Result<()> {
+        if self.factorization.is_none() {
+            dz.fill(0.0);
+            return Ok(());
+        }
+        self.select(g);
+        match self.factorization.as_mut() {
+            Some(f) => f.solve_refined(&self.g_sel, dz, REFINEMENT_STEPS, tolerance),
+            None => Ok(()),
         }
     }
 }
 
-/// [`solve_linear`] in the given storage.
-fn solve_in(
-    problem: &mut Problem,
-    options: &Options,
-    scratch: &mut Scratch,
-) -> Result<SolveReport> {
-    let start = Instant::now();
-    options.validate()?;
-    if let Some(rb) = problem.residuals.iter().find(|rb| !rb.residual.is_affine()) {
-        return Err(Error::NonlinearNotAvailable {
-            constraint: rb.owner,
-            name: rb.residual.name().to_owned(),
+/// [`LinearSolver`]'s step for a one-off solve of a small dense J (at most
+/// `min_norm::SMALL_ROWS` selected rows), factorized on the stack and not kept: for the many
+/// small components of a sketch solved once, building a solver costs more than the arithmetic.
+///
+/// # Errors
+/// [`Error::RankDeficient`] for dependent rows; dimension and weight errors.
+pub(crate) fn small_step(
+    j: &SparseMatrix,
+    weights: &[f64],
+    g: &[f64],
+    dz: &mut [f64],
+    tolerance: f64,
+) -> Result<()> {
+    if j.nrows() > min_norm::SMALL_ROWS {
+        return Err(Error::Dimension {
+            what: "rows of a small minimum-norm system",
+            expected: min_norm::SMALL_ROWS,
+            found: j.nrows(),
         });
     }
-    let Scratch {
-        lin,
-        dz,
-        z,
-        x,
-        g,
-        reason,
-    } = scratch;
-    problem.linearize_into(lin)?;
-    let lin = &*lin;
-    let (m, n) = (lin.g.len(), lin.map.len());
-
-    let dense_analysis = m.saturating_mul(n) <= options.dense_analysis_max_entries;
-    // The rows kept for the step (`None`: all of them).
-    let (rank, dof, redundant, rows) = if dense_analysis
-        && crate::analysis::certificate::certainly_full_row_rank_of(lin, options.rank_tolerance)
-    {
-        // Every row independent by the analysis' own test: its answer is known.
-        (m, n - m, Vec::new(), None)
-    } else if dense_analysis {
-        let a = analysis::analyze(lin, options.rank_tolerance, options.tolerance)?;
-        if !a.conflicting.is_empty() {
-            return Err(Error::Conflicting {
-                constraints: a.conflicting,
-            });
-        }
-        let dependent = !a.redundant.is_empty() || !a.partly_redundant.is_empty();
-        if dependent && !options.drop_redundant {
-            let mut constraints = a.redundant.clone();
-            constraints.extend(&a.partly_redundant);
-            return Err(Error::Redundant { constraints });
-        }
-        (a.rank, a.dof, a.redundant, Some(a.rows.independent))
-    } else {
-        (m.min(n), n.saturating_sub(m), Vec::new(), None)
-    };
-
-    let satisfied = lin.g.iter().all(|v| v.abs() <= options.tolerance);
-    let substitution_pending = lin
-        .x
-        .iter()
-        .zip(problem.values())
-        .any(|(a, b)| (a - b).abs() > 0.0);
-    if satisfied && !substitution_pending {
-        return Ok(SolveReport {
-            status: Status::AlreadySatisfied,
-            solver: SolverKind::None,
-            selection: Selection::AlreadySatisfied,
-            reason: "every residual is already within tolerance".to_owned(),
-            iterations: 0,
-            residuals: per_constraint(&lin.row_owner, &lin.g),
-            displacement_norm: 0.0,
-            rank,
-            dof,
-            redundant,
-            conflicting: Vec::new(),
-            priorities: Vec::new(),
-            elapsed: start.elapsed(),
-        });
-    }
-
-    dz.clear();
-    dz.resize(n, 0.0);
-    let dense = n <= options.dense_max_unknowns;
-    let kept = rows.as_ref().map_or(m, Vec::len);
-    if kept > 0 {
-        // Every row kept (the usual case): J and g as they are, no copy.
-        let (j, g) = match &rows {
-            Some(rows) if rows.len() < m => (
-                Cow::Owned(lin.jacobian.select_rows(rows)),
-                Cow::Owned(rows.iter().map(|i| lin.g[*i]).collect()),
-            ),
-            _ => (
-                Cow::Borrowed(&lin.jacobian),
-                Cow::Borrowed(lin.g.as_slice()),
-            ),
-        };
-        let weights = lin.map.weights();
-        let refine = 0.01 * options.tolerance;
-        if dense && kept <= min_norm::SMALL_ROWS {
-            min_norm::solve_small_refined(&j, weights, &g, dz, REFINEMENT_STEPS, refine)?;
-        } else {
-            let mut f = if dense {
-                MinNormFactorization::try_dense(&j, weights)?
-            } else {
-                MinNormFactorization::try_sparse(&j, weights)?
-            };
-            f.solve_refined(&g, dz, REFINEMENT_STEPS, refine)?;
-        }
-    }
-    z.clear();
-    z.extend(lin.map.z0().iter().zip(dz.iter()).map(|(a, b)| a + b));
-    x.clear();
-    x.resize(problem.num_unknowns(), 0.0);
-    lin.map.expand(z, x)?;
-    g.clear();
-    g.resize(m, 0.0);
-    problem.evaluate_at(x, g)?;
-    let residuals = per_constraint(&lin.row_owner, g);
-    let failed: Vec<_> = residuals
-        .iter()
-        .filter(|r| r.max_abs > options.tolerance || r.max_abs.is_nan())
-        .map(|r| (r.constraint, r.max_abs))
-        .collect();
-    if !failed.is_empty() {
-        return Err(Error::NotSatisfied { failed });
-    }
-    problem.apply_reduced(&lin.map, z)?;
-
-    let (solver, backend) = if dense {
-        (SolverKind::DenseMinNorm, "dense")
-    } else {
-        (SolverKind::SparseMinNorm, "sparse")
-    };
-    let key = (!redundant.is_empty(), n, dense, options.dense_max_unknowns);
-    let reason = match reason {
-        Some((k, text)) if *k == key => text.clone(),
-        _ => {
-            let dropped = if key.0 {
-                ", consistent redundant rows dropped"
-            } else {
-                ""
-            };
-            let text = format!(
-                "all residuals affine and full row rank{dropped}; {n} reduced unknowns → \
-                 {backend} (threshold {})",
-                options.dense_max_unknowns
-            );
-            *reason = Some((key, text.clone()));
-            text
-        }
-    };
-    Ok(SolveReport {
-        status: Status::Solved,
-        solver,
-        selection: Selection::Affine,
-        reason,
-        iterations: 1,
-        residuals,
-        displacement_norm: dz.iter().map(|v| v * v).sum::<f64>().sqrt(),
-        rank,
-        dof,
-        redundant,
-        conflicting: Vec::new(),
-        priorities: Vec::new(),
-        elapsed: start.elapsed(),
-    })
+    min_norm::solve_small_refined(j, weights, g, dz, REFINEMENT_STEPS, tolerance)
 }

@@ -106,6 +106,13 @@ impl NewtonWorkspace {
             .unwrap_or_default()
     }
 
+    /// Forgets the patterns kept for the sparse factorizations (the structure changed).
+    pub(crate) fn forget_patterns(&mut self) {
+        self.normal = crate::linalg::normal::NormalCache::default();
+        self.square.forget_sparse();
+        self.primed = None;
+    }
+
     /// Keeps this workspace for the next solve on this thread ([`NewtonWorkspace::take_spare`]):
     /// a sketch's small components, solved one after another, then allocate their vectors
     /// once instead of once each. A workspace grown past [`SPARE_MAX_UNKNOWNS`] is dropped, and

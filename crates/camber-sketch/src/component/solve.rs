@@ -1,29 +1,30 @@
-//! The one solve policy of a component, used by [`crate::Sketch::solve`] and by drag sessions
-//! on nonlinear components.
+//! A component's solve: camber-solve's policy ([`camber_solve::Plan`], kept with the
+//! component), then the checks of the solved geometry, and the active set of honest contact
+//! around them. Used by [`crate::Sketch::solve`] and by drag sessions.
 //!
-//! 1. **Path.** An affine component takes the linear minimum-norm path; any other goes to
-//!    [`camber_solve::solve()`], whose selection runs from the DOF analysis (Newton minimum
-//!    norm, SLSQP within its limits, least squares). A warm start (a drag) first tries Newton
-//!    from the previous solution with the pull-back toward it, then that selection.
-//! 2. **Checks.** Tangent orientations, then every [`crate::constraints::check::SolvedCheck`] on the solved
-//!    entities (contacts keep their side and travel direction, no cusp).
+//! 1. **Path.** The component's plan decides (linear minimum norm for an affine component;
+//!    Newton minimum norm, SLSQP within its limits or least squares from the DOF analysis
+//!    otherwise; priority tiers when the whole set cannot be met). A warm start (a drag) asks
+//!    it for Newton from the previous solution with the pull-back toward it first.
+//! 2. **Checks.** Tangent orientations, then every [`crate::constraints::check::SolvedCheck`]
+//!    on the solved entities (contacts keep their side and travel direction, no cusp).
 //! 3. **Active set of honest contact** ([`crate::residuals::clearance`]): a crossing adds the
 //!    clearance row on its side of the contact, a cusp the floor on the contact's tangent speed,
 //!    and the component is solved again from its start; a start whose contact tangents point
-//!    the wrong way tries Newton alone first, then with their floors, then the plain selection;
-//!    when every check passes, an active row whose multiplier says it does not bind is dropped
-//!    and the solve resumes from the current solution. The rows are appended to the problem
-//!    and taken back ([`camber_solve::Problem::truncate_residuals`]); the problem is never
-//!    rebuilt. At most [`MAX_ACTIVE_ROWS`] rows are added (besides the predicted floors) and a
-//!    row once dropped is not added again, so the loop ends.
+//!    the wrong way asks the plan for Newton alone first, then with their floors, then the
+//!    plain selection; when every check passes, an active row whose multiplier says it does
+//!    not bind is dropped and the solve resumes from the current solution. The rows are
+//!    appended to the problem and taken back ([`camber_solve::Problem::truncate_residuals`]);
+//!    the problem is never rebuilt. At most [`MAX_ACTIVE_ROWS`] rows are added (besides the
+//!    predicted floors) and a row once dropped is not added again, so the loop ends.
 //!
 //! On success the problem holds the solution; on any error it holds its starting values. Either
 //! way it ends with the rows it started with.
 
-use camber_solve::{solve_linear, NewtonWorkspace, Options, SolveReport};
+use camber_solve::{Options, SolveReport, SolverChoice, Start};
 
-use super::contact::ActiveRow;
-use super::problem::ComponentProblem;
+use crate::component::contact::ActiveRow;
+use crate::component::problem::ComponentProblem;
 use crate::ground::entity::Entity;
 use crate::ground::errors::Result;
 use crate::ground::ids::EntityId;
@@ -47,68 +48,13 @@ pub fn penetration_tolerance(options: &Options) -> f64 {
     (100.0 * options.tolerance).max(1e-9)
 }
 
-/// Where a solve starts.
-#[derive(Debug, Clone, PartialEq)]
-pub(crate) enum Start {
-    /// From the problem's values, with the selection of the DOF analysis.
-    Cold,
-    /// Newton from `from` (reduced unknowns, a previous solution) pulling toward `toward`,
-    /// with the selection as fallback (drag updates).
-    Warm { from: Vec<f64>, toward: Vec<f64> },
-}
-
 impl ComponentProblem {
-    /// One solve on the path the component calls for, with the tangent orientations checked;
+    /// One solve by the component's plan from `start`, with the tangent orientations checked;
     /// the problem holds the result.
-    pub(crate) fn solve_once(&mut self, options: &Options) -> Result<SolveReport> {
-        // Priorities need the selection's fallback to the tiers, affine or not.
-        let report = if self.nonlinear.is_some() || self.problem.has_priorities() {
-            camber_solve::solve(&mut self.problem, options)?
-        } else {
-            match solve_linear(&mut self.problem, options) {
-                Err(camber_solve::Error::RankDeficient { .. }) => {
-                    // The fast path skipped the analysis and met dependent rows: run it now
-                    // (sparse at this size) to drop redundant rows or name the conflicting
-                    // constraints.
-                    let full = options.clone().with_dense_analysis_max_entries(usize::MAX);
-                    solve_linear(&mut self.problem, &full)?
-                }
-                other => other?,
-            }
-        };
+    pub(crate) fn solve_once(&mut self, options: &Options, start: &Start) -> Result<SolveReport> {
+        let mut report = self.plan.solve(&mut self.problem, options, start)?;
         self.check_orientations(self.problem.values())?;
-        let mut report = report;
         self.name_merged_redundant(&mut report.redundant);
-        Ok(report)
-    }
-
-    /// Newton alone (no fallback), from the problem's values toward them.
-    fn solve_newton_only(&mut self, options: &Options) -> Result<SolveReport> {
-        let report = camber_solve::solve_newton(&mut self.problem, options)?;
-        self.check_orientations(self.problem.values())?;
-        Ok(report)
-    }
-
-    /// Newton from the reduced point `from` pulling toward `toward`, then the selection from
-    /// the problem's own values if it fails.
-    fn solve_warm(
-        &mut self,
-        options: &Options,
-        from: &[f64],
-        toward: &[f64],
-    ) -> Result<SolveReport> {
-        let mut ws = NewtonWorkspace::new();
-        let report = match camber_solve::solve_newton_from(
-            &mut self.problem,
-            options,
-            &mut ws,
-            from,
-            toward,
-        ) {
-            Ok(r) => r,
-            Err(_) => camber_solve::solve(&mut self.problem, options)?,
-        };
-        self.check_orientations(self.problem.values())?;
         Ok(report)
     }
 
@@ -126,7 +72,8 @@ impl ComponentProblem {
 
 /// Solves a built component by the policy of the module documentation: `before` holds the
 /// entities as they are before the solve (the problem's starting values), `start` says where
-/// Newton begins. Returns the report and the solved entities; the problem holds the solution.
+/// Newton begins. Returns the report; the problem holds the solution
+/// ([`ComponentProblem::entities_at`] reads the solved entities from it).
 ///
 /// # Errors
 /// The first failure that no active row answers ([`crate::Error::Conflicting`],
@@ -138,22 +85,22 @@ pub(crate) fn solve(
     before: &dyn EntityLookup,
     options: &Options,
     start: Start,
-) -> Result<(SolveReport, Vec<(EntityId, Entity)>)> {
-    let initial = cp.problem.state();
+) -> Result<SolveReport> {
+    let mut initial = std::mem::take(&mut cp.saved);
+    cp.problem.save_state(&mut initial);
     let base_rows = cp.problem.num_residuals();
     let outcome = active_set(cp, before, options, start, base_rows, &initial);
     let active = cp.problem.num_residuals().saturating_sub(base_rows);
     // The active rows are taken back either way: they belong to this solve only.
     cp.problem.truncate_residuals(base_rows);
     let outcome = match outcome {
-        Ok((report, solved)) if active > 0 => {
-            equality_dof(cp, options, report).map(|report| (report, solved))
-        }
+        Ok(report) if active > 0 => equality_dof(cp, options, report),
         other => other,
     };
     if outcome.is_err() {
         cp.problem.restore(&initial);
     }
+    cp.saved = initial;
     outcome
 }
 
@@ -180,7 +127,7 @@ fn active_set(
     start: Start,
     base_rows: usize,
     initial: &camber_solve::ProblemState,
-) -> Result<(SolveReport, Vec<(EntityId, Entity)>)> {
+) -> Result<SolveReport> {
     let forced = options.nonlinear.force.is_some();
     let reversed = cp.reversed_contacts(before)?;
     let (mut floors_on, mut plain_fallback) = (false, false);
@@ -188,8 +135,8 @@ fn active_set(
     let mut dropped: Vec<ActiveRow> = Vec::new();
     let mut added = 0;
     let (mut warm, reference) = match start {
-        Start::Cold => (None, None),
         Start::Warm { from, toward } => (Some(from), Some(toward)),
+        _ => (None, None),
     };
     let mut first = true;
     loop {
@@ -213,9 +160,18 @@ fn active_set(
             first && warm.is_none() && !forced && cp.nonlinear.is_some() && !reversed.is_empty();
         first = false;
         let solved = match warm.take() {
-            Some(z) => cp.solve_warm(options, &z, &z_start),
-            None if newton_only => cp.solve_newton_only(options),
-            None => cp.solve_once(options),
+            Some(z) => cp.solve_once(
+                options,
+                &Start::Warm {
+                    from: z,
+                    toward: z_start.clone(),
+                },
+            ),
+            None if newton_only => cp.solve_once(
+                &options.clone().with_force(Some(SolverChoice::Newton)),
+                &Start::Cold,
+            ),
+            None => cp.solve_once(options, &Start::Cold),
         };
         let mut report = match solved {
             Ok(r) => r,
@@ -239,8 +195,15 @@ fn active_set(
                 return Err(e);
             }
         };
-        let x = cp.problem.values().to_vec();
-        let solved = cp.entities_at(before, &x)?;
+        // The solved values and entities are read only by the checks of the solved state (and
+        // the active row a failed check asks for).
+        let (x, solved): (Vec<f64>, Vec<(EntityId, Entity)>) = if cp.checks.is_empty() {
+            (Vec::new(), Vec::new())
+        } else {
+            let x = cp.problem.values().to_vec();
+            let solved = cp.entities_at(before, &x)?;
+            (x, solved)
+        };
         let failure = match cp.check_solved(before, &solved, &x, penetration_tolerance(options)) {
             Ok(()) => {
                 let mu = if rows.is_empty() {
@@ -256,7 +219,7 @@ fn active_set(
                     .min_by(|a, b| a.1.total_cmp(b.1));
                 if let Some((k, _)) = slack {
                     dropped.push(rows.remove(k));
-                    warm = Some(cp.problem.reduced_map()?.z0().to_vec());
+                    warm = Some(cp.plan.last_solution().to_vec());
                     continue;
                 }
                 if !rows.is_empty() || !dropped.is_empty() {
@@ -267,7 +230,7 @@ fn active_set(
                         dropped.len()
                     );
                 }
-                return Ok((report, solved));
+                return Ok(report);
             }
             Err(e) => e,
         };
