@@ -60,8 +60,8 @@ use anyhow::Result;
 use clap::{Parser, Subcommand};
 
 use commands::{
-    batch, bench as bench_cmd, check, demo, edit, eval, intersect, op, render, render_curve, solve,
-    surface,
+    batch, bench as bench_cmd, check, demo, edit, eval, fit, intersect, op, render, render_curve,
+    solve, surface,
 };
 
 /// The camber command line: curve files, surface deformation and SVG pictures.
@@ -96,6 +96,9 @@ pub enum Command {
     /// reduce-degree, offset; fit and interpolate a points file.
     #[command(after_help = OP_HELP)]
     Op(op::OpArgs),
+    /// Fit a B-spline (or, split at the leading edge, a chain of them) within a tolerance of a
+    /// point file: JSON, two columns, or a Selig or Lednicer airfoil .dat file.
+    Fit(fit::FitArgs),
     /// Where two curve files meet (both parameters, tangential or not) and their closest pair.
     Intersect(intersect::IntersectArgs),
     /// Draw a curve file as SVG: the curve, its control polygon, optionally curvature combs.
@@ -137,6 +140,7 @@ pub fn run(cli: &Cli) -> Result<()> {
     match &cli.command {
         Command::Eval(a) => eval::run(a),
         Command::Op(a) => op::run(a),
+        Command::Fit(a) => fit::run(a),
         Command::Intersect(a) => intersect::run(a),
         Command::RenderCurve(a) => render_curve::run(a),
         Command::Surface(a) => surface::run(a),

@@ -60,6 +60,11 @@ fn expression_corpus_replays() {
 }
 
 #[test]
+fn fit_corpus_replays() {
+    replay("fit", fuzz_support::fit);
+}
+
+#[test]
 fn toolkit_corpus_replays() {
     replay("toolkit", fuzz_support::toolkit);
 }

@@ -7,6 +7,7 @@ pub mod check;
 pub mod demo;
 pub mod edit;
 pub mod eval;
+pub mod fit;
 pub mod geometry_op;
 pub mod intersect;
 pub mod op;
