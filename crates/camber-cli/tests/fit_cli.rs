@@ -112,7 +112,10 @@ fn lednicer_and_selig_files_give_the_same_curve() {
     let points = section();
     let a = dir.path().join("a.json");
     let b = dir.path().join("b.json");
-    for (input, out) in [(selig(dir.path(), &points), &a), (lednicer(dir.path(), &points), &b)] {
+    for (input, out) in [
+        (selig(dir.path(), &points), &a),
+        (lednicer(dir.path(), &points), &b),
+    ] {
         camber()
             .args(["fit", input.to_str().unwrap(), "--tolerance", "1e-4", "-o"])
             .arg(out)
@@ -160,7 +163,10 @@ fn a_split_fit_writes_pieces_that_meet_with_one_tangent_at_the_leading_edge() {
     let start = pieces[1].derivatives(0.0, 1).unwrap();
     assert!((end[0] - start[0]).norm() < 1e-12, "the pieces meet");
     let (t0, t1) = (end[1].normalize(), start[1].normalize());
-    assert!((t0 - t1).norm() < 1e-9, "one tangent direction: {t0} vs {t1}");
+    assert!(
+        (t0 - t1).norm() < 1e-9,
+        "one tangent direction: {t0} vs {t1}"
+    );
 }
 
 #[test]
@@ -172,7 +178,13 @@ fn bad_point_files_and_options_are_refused_with_one_line() {
         std::fs::write(&input, text).unwrap();
         failure(
             camber()
-                .args(["fit", input.to_str().unwrap(), "--tolerance", tolerance, "-o"])
+                .args([
+                    "fit",
+                    input.to_str().unwrap(),
+                    "--tolerance",
+                    tolerance,
+                    "-o",
+                ])
                 .arg(&out),
         )
     };

@@ -505,5 +505,7 @@ fn a_raised_input_limit_reads_beyond_64_mib() {
         .arg(&path)
         .assert()
         .success()
-        .stdout(predicate::str::contains("component 1 (entity 0; no constraints)"));
+        .stdout(predicate::str::contains(
+            "component 1 (entity 0; no constraints)",
+        ));
 }

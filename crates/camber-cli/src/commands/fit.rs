@@ -137,7 +137,10 @@ pub fn parse_point_file(text: &str) -> Result<Vec<Point2<f64>>> {
     let is_count = |v: f64| (1.0..=MAX_POINTS as f64).contains(&v) && v.fract() == 0.0;
     if is_count(a) && is_count(b) && (a + b) as usize == rows.len() - 1 {
         let upper = a as usize;
-        let pts: Vec<Point2<f64>> = rows[1..].iter().map(|&(_, x, y)| Point2::new(x, y)).collect();
+        let pts: Vec<Point2<f64>> = rows[1..]
+            .iter()
+            .map(|&(_, x, y)| Point2::new(x, y))
+            .collect();
         let (up, low) = pts.split_at(upper);
         let mut out: Vec<Point2<f64>> = up.iter().rev().copied().collect();
         // The lower surface starts at the same leading-edge point: keep it once.
@@ -145,7 +148,10 @@ pub fn parse_point_file(text: &str) -> Result<Vec<Point2<f64>>> {
         out.extend(low.iter().skip(skip));
         return Ok(out);
     }
-    Ok(rows.into_iter().map(|(_, x, y)| Point2::new(x, y)).collect())
+    Ok(rows
+        .into_iter()
+        .map(|(_, x, y)| Point2::new(x, y))
+        .collect())
 }
 
 /// Reads a point file.
@@ -188,8 +194,15 @@ pub fn run(args: &FitArgs) -> Result<()> {
                 JointArg::G1 => JointContinuity::G1,
                 JointArg::G2 => JointContinuity::G2,
             };
-            let fit = fit_split(&points, args.tolerance, &options, &at, joint, &Budget::default())
-                .with_context(context)?;
+            let fit = fit_split(
+                &points,
+                args.tolerance,
+                &options,
+                &at,
+                joint,
+                &Budget::default(),
+            )
+            .with_context(context)?;
             let counts: Vec<String> = fit
                 .pieces
                 .iter()
@@ -198,7 +211,9 @@ pub fn run(args: &FitArgs) -> Result<()> {
             let pieces = fit
                 .pieces
                 .into_iter()
-                .map(|p| serde_json::from_str(&Curve::BSpline(p.curve).to_json()?).map_err(Into::into))
+                .map(|p| {
+                    serde_json::from_str(&Curve::BSpline(p.curve).to_json()?).map_err(Into::into)
+                })
                 .collect::<Result<Vec<serde_json::Value>>>()?;
             let value = json!({
                 "pieces": pieces,
@@ -233,14 +248,24 @@ mod tests {
         assert_eq!(a.len(), 5);
         assert_eq!(parse_point_file(lednicer).unwrap(), a);
         assert_eq!(parse_point_file(columns).unwrap(), a);
-        assert_eq!(parse_point_file("[[1, 0.01], [0.5, 0.05], [0, 0], [0.5, -0.05], [1, -0.01]]").unwrap(), a);
+        assert_eq!(
+            parse_point_file("[[1, 0.01], [0.5, 0.05], [0, 0], [0.5, -0.05], [1, -0.01]]").unwrap(),
+            a
+        );
     }
 
     #[test]
     fn whole_numbers_that_do_not_count_the_rows_are_a_point() {
         // "2 3" cannot be Lednicer counts of the two rows after it: three points.
         let pts = parse_point_file("2 3\n4 5\n6 7\n").unwrap();
-        assert_eq!(pts, vec![Point2::new(2.0, 3.0), Point2::new(4.0, 5.0), Point2::new(6.0, 7.0)]);
+        assert_eq!(
+            pts,
+            vec![
+                Point2::new(2.0, 3.0),
+                Point2::new(4.0, 5.0),
+                Point2::new(6.0, 7.0)
+            ]
+        );
     }
 
     #[test]
@@ -248,7 +273,11 @@ mod tests {
         let err = |t: &str| parse_point_file(t).unwrap_err().to_string();
         assert_eq!(err(""), "no points");
         assert_eq!(err("name only\n"), "no points");
-        assert!(err("1 2\n3 nan\n").contains("line 2"), "{}", err("1 2\n3 nan\n"));
+        assert!(
+            err("1 2\n3 nan\n").contains("line 2"),
+            "{}",
+            err("1 2\n3 nan\n")
+        );
         assert!(err("1 2\n3 4 5\n").contains("line 2: expected two numbers"));
         assert!(err("1 2\n1e999 0\n").contains("line 2"));
     }

@@ -46,7 +46,11 @@ pub fn fit(data: &[u8]) {
     let budget = Budget::default().with_max_work(FIT_WORK);
     let options = FitOptions::default();
     if let Ok(fit) = fit_to_tolerance_with(&points, tolerance, &options, &budget) {
-        assert!(fit.max_error <= tolerance, "{} > {tolerance}", fit.max_error);
+        assert!(
+            fit.max_error <= tolerance,
+            "{} > {tolerance}",
+            fit.max_error
+        );
         check_within(&fit.curve, &points, tolerance);
     }
     let split = fit_split(
