@@ -31,90 +31,21 @@ pub fn save(path: &Path, sketch: &Sketch) -> Result<()> {
 }
 
 /// "constraint 4 (G1 join)", "the drag target" for the drag's own pin, or "constraint 4" when
-/// the id is not in the sketch.
+/// the id is not in the sketch ([`Sketch::describe_constraint`]).
 pub fn describe_constraint(sketch: &Sketch, id: ConstraintId) -> String {
-    if id == camber_sketch::DRAG_CONSTRAINT {
-        return "the drag target".to_owned();
-    }
-    match sketch.constraint(id) {
-        Ok(c) => format!("{id} ({})", c.kind_name()),
-        Err(_) => id.to_string(),
-    }
+    sketch.describe_constraint(id)
 }
 
 /// A comma-separated list of [`describe_constraint`], or "none".
 pub fn describe_constraints(sketch: &Sketch, ids: &[ConstraintId]) -> String {
-    if ids.is_empty() {
-        "none".to_owned()
-    } else {
-        ids.iter()
-            .map(|&id| describe_constraint(sketch, id))
-            .collect::<Vec<_>>()
-            .join(", ")
-    }
+    sketch.describe_constraints(ids)
 }
 
-/// A sketch error in plain words, naming constraints by id and kind.
+/// A sketch error in plain words, naming constraints by id and kind
+/// ([`Sketch::describe_error`]).
 pub fn describe_error(sketch: &Sketch, e: &Error) -> String {
-    match e {
-        Error::Conflicting { constraints } => format!(
-            "conflicting constraints: {}",
-            describe_constraints(sketch, constraints)
-        ),
-        Error::Redundant { constraints } => format!(
-            "redundant constraints: {}",
-            describe_constraints(sketch, constraints)
-        ),
-        Error::NotSatisfied { failed } => format!(
-            "constraints not satisfied: {}",
-            failed
-                .iter()
-                .map(|(id, g)| format!("{} (|g| = {g:.3e})", describe_constraint(sketch, *id)))
-                .collect::<Vec<_>>()
-                .join(", ")
-        ),
-        Error::OrientationFlipped { constraint, dot } => format!(
-            "{} would flip its tangent orientation (signed dot {dot:.3e})",
-            describe_constraint(sketch, *constraint)
-        ),
-        Error::Solve(camber_solve::Error::NotSolved {
-            tried, residuals, ..
-        }) => {
-            // Every constraint left above 1e-9, largest first, by id and kind.
-            let mut above: Vec<_> = residuals
-                .iter()
-                .filter(|r| r.max_abs > 1e-9 || r.max_abs.is_nan())
-                .collect();
-            above.sort_by(|a, b| b.max_abs.total_cmp(&a.max_abs));
-            let mut named: Vec<String> = above
-                .iter()
-                .take(NOT_SOLVED_LISTED)
-                .map(|r| {
-                    format!(
-                        "{} |g| = {:.3e}",
-                        describe_constraint(sketch, r.constraint),
-                        r.max_abs
-                    )
-                })
-                .collect();
-            if above.len() > NOT_SOLVED_LISTED {
-                named.push(format!("and {} more", above.len() - NOT_SOLVED_LISTED));
-            }
-            format!(
-                "not solved (nothing proves a conflict): {tried}; residual per constraint: {}",
-                if named.is_empty() {
-                    "none above 1e-9".to_owned()
-                } else {
-                    named.join(", ")
-                }
-            )
-        }
-        other => other.to_string(),
-    }
+    sketch.describe_error(e)
 }
-
-/// Constraints named one by one in a "not solved" message (the rest are counted).
-const NOT_SOLVED_LISTED: usize = 20;
 
 /// The solver of a report in the words the reports print (the JSON names): `dense_min_norm`,
 /// `sparse_min_norm`, `newton`, `slsqp`, `levenberg_marquardt`, and `none (nothing to solve)`

@@ -19,13 +19,14 @@ pub enum Params {
 }
 
 impl Params {
-    /// Reads a float or anything numpy converts to a 1-D float array.
+    /// Reads a float or anything numpy converts to a 1-D float array, in any memory layout
+    /// (a strided or reversed view such as `u[::2]` or `u[::-1]` is read element by element).
     pub fn extract(u: &Bound<'_, PyAny>) -> PyResult<Self> {
         if let Ok(x) = u.extract::<f64>() {
             return Ok(Params::One(x));
         }
         let a: PyArrayLike1<'_, f64, AllowTypeChange> = u.extract()?;
-        Ok(Params::Many(a.as_slice()?.to_vec()))
+        Ok(Params::Many(a.as_array().to_vec()))
     }
 
     /// The parameters as a slice.

@@ -2,16 +2,22 @@
 //!
 //! Each item is a `Sketch` (solved in place, like `Sketch.solve`) or a path to a sketch file
 //! (read and solved on the pool). One failure does not stop the others: every item gets its
-//! own result.
+//! own result, a Python exception raised by an item's custom residual included. The pool has
+//! at most one worker per core ([`workers`]); Ctrl-C stops the batch (the running solves at
+//! their next evaluation, the items not started at once) and raises `KeyboardInterrupt`,
+//! leaving every item as it was.
 
 use std::path::PathBuf;
 
 use camber_sketch::SketchReport;
+use camber_solve::CancelFlag;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use rayon::prelude::*;
 
+use crate::custom::Raised;
 use crate::errors;
+use crate::interrupt;
 use crate::sketch::{report_object, Sketch};
 
 enum Job {
@@ -24,7 +30,15 @@ struct Outcome {
     result: Result<SketchReport, String>,
 }
 
-fn run(job: Job) -> Outcome {
+/// Reads (for a path) and solves one item, watching `cancel`; an item not started when the
+/// flag is raised is not started at all.
+fn run(job: Job, cancel: &CancelFlag) -> Outcome {
+    if cancel.is_cancelled() {
+        return Outcome {
+            sketch: None,
+            result: Err("cancelled".to_owned()),
+        };
+    }
     let mut sketch = match job {
         Job::Sketch(s) => *s,
         Job::Path(p) => {
@@ -42,19 +56,34 @@ fn run(job: Job) -> Outcome {
             }
         }
     };
-    let result = sketch.solve_all().map_err(|e| e.to_string());
+    sketch.set_options(sketch.options().clone().with_cancel(Some(cancel.clone())));
+    let result = sketch.solve_all().map_err(|e| sketch.describe_error(&e));
+    sketch.set_options(sketch.options().clone().with_cancel(None));
     Outcome {
         sketch: Some(sketch),
         result,
     }
 }
 
-/// Solves independent sketches in parallel (rayon, `threads` workers; all cores when None).
+/// The workers of the pool: `threads` (all cores when None or 0), at most the cores the
+/// machine has (`std::thread::available_parallelism`): more threads than cores only add
+/// switching, and a count from a typing slip (`threads=10000`) would start that many threads.
+pub fn workers(threads: Option<usize>) -> usize {
+    let cores = std::thread::available_parallelism().map_or(1, std::num::NonZero::get);
+    match threads {
+        None | Some(0) => cores,
+        Some(n) => n.min(cores),
+    }
+}
+
+/// Solves independent sketches in parallel (rayon, `threads` workers, capped at the number of
+/// cores; all cores when None).
 ///
 /// `items` holds `Sketch` objects (solved in place on success) and paths of sketch files.
 /// Returns one dict per item, in order: {"ok": bool, "report": SolveReport or None,
-/// "error": message or None, "sketch": the solved Sketch (None when a file could not be
-/// read)}.
+/// "error": message or None, "exception": the exception a custom residual of the item raised
+/// when that made it fail, or None, "sketch": the solved Sketch (a failed item's unchanged;
+/// None when a file could not be read)}.
 ///
 /// With `parameters` (a dict name → list of values, all of one length n), `items` is one
 /// sketch (a `Sketch` or a path, left unchanged) solved for each of the n rows of values:
@@ -89,25 +118,64 @@ pub fn solve_many(
             jobs.push(Job::Path(path));
         }
     }
+    let raised: Vec<Raised> = items
+        .iter()
+        .map(|item| match item.cast::<Sketch>() {
+            Ok(s) => Raised::of(&s.borrow().inner),
+            Err(_) => Raised::default(),
+        })
+        .collect();
     let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(threads.unwrap_or(0))
+        .num_threads(workers(threads))
         .build()
         .map_err(|e| errors::CamberError::new_err(format!("cannot start the thread pool: {e}")))?;
-    let outcomes: Vec<Outcome> =
-        py.detach(|| pool.install(|| jobs.into_par_iter().map(run).collect()));
-    crate::custom::raise_pending(py)?;
+    let outcomes = interrupt::run(py, |cancel| {
+        pool.install(|| {
+            jobs.into_par_iter()
+                .map(|j| run(j, cancel))
+                .collect::<Vec<_>>()
+        })
+    });
+    // The exceptions stay on the failed items they belong to (items copied from one sketch
+    // share residuals, hence the look before the slots are emptied).
+    let exceptions: Vec<Option<(String, PyErr)>> = match &outcomes {
+        Ok(outcomes) => raised
+            .iter()
+            .zip(outcomes)
+            .map(|(r, o)| o.result.as_ref().err().and(r.peek(py)))
+            .collect(),
+        Err(_) => Vec::new(),
+    };
+    for r in &raised {
+        r.take();
+    }
+    let outcomes = outcomes?;
     let mut out = Vec::with_capacity(outcomes.len());
-    for (item, outcome) in items.iter().zip(outcomes) {
+    for ((item, outcome), exception) in items.iter().zip(outcomes).zip(exceptions) {
         let d = PyDict::new(py);
         d.set_item("ok", outcome.result.is_ok())?;
-        match &outcome.result {
-            Ok(r) => {
+        match (&outcome.result, exception) {
+            (Ok(r), _) => {
                 d.set_item("report", report_object(py, r)?)?;
                 d.set_item("error", py.None())?;
+                d.set_item("exception", py.None())?;
             }
-            Err(e) => {
+            (Err(e), None) => {
                 d.set_item("report", py.None())?;
                 d.set_item("error", e)?;
+                d.set_item("exception", py.None())?;
+            }
+            (Err(_), Some((name, exception))) => {
+                let value = exception.value(py);
+                d.set_item("report", py.None())?;
+                d.set_item(
+                    "error",
+                    format!(
+                        "custom constraint {name}: the residual raised {}",
+                        value.repr()?
+                    ),
+                )?;
+                d.set_item("exception", value)?;
             }
         }
         let sketch_obj: Py<PyAny> = match (item.cast::<Sketch>(), outcome.sketch) {

@@ -385,7 +385,7 @@ macro_rules! knotted_curve_methods {
 }
 
 /// A B-spline curve: `BSplineCurve(degree, knots, control_points)`; the knot vector has
-/// control points + degree + 1 entries. `BSplineCurve.clamped(degree, control_points)` makes
+/// control points + degree + 1 entries. `BSplineCurve.clamped_uniform(degree, control_points)` makes
 /// the clamped uniform knots on [0, 1].
 #[pyclass(name = "BSplineCurve", extends = Curve, frozen, module = "camber._native")]
 #[derive(Debug)]

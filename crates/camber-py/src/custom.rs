@@ -29,23 +29,82 @@ use pyo3::prelude::*;
 use crate::errors;
 use crate::json::to_value;
 
-/// The first Python error a residual raised during the current solve.
-static PENDING: Mutex<Option<PyErr>> = Mutex::new(None);
+/// Where a Python residual keeps the first exception it raised, until the call that ran it
+/// collects it ([`Raised`]). One slot per residual (clones of a sketch share it), so batch
+/// items and concurrent calls keep their errors apart.
+type Slot = Arc<Mutex<Option<PyErr>>>;
 
-fn keep(err: PyErr) {
-    if let Ok(mut slot) = PENDING.lock() {
-        if slot.is_none() {
-            *slot = Some(err);
-        }
+/// The exception slots of every Python residual of a sketch, gathered before a call runs and
+/// read after it ([`Raised::finish`]).
+#[derive(Debug, Default)]
+pub struct Raised(Vec<(String, Slot)>);
+
+impl Raised {
+    /// The slots of the Python residuals among `sketch`'s custom constraints.
+    pub fn of(sketch: &camber_sketch::Sketch) -> Self {
+        Self(
+            sketch
+                .constraints()
+                .filter_map(|(_, c)| c.as_custom())
+                .filter_map(|c| c.residual_any()?.downcast_ref::<PyResidual>())
+                .map(|r| (r.name.clone(), r.raised.clone()))
+                .collect(),
+        )
     }
-}
 
-/// Raises the error a Python residual raised during the last solve, if any.
-pub fn raise_pending(_py: Python<'_>) -> PyResult<()> {
-    let err = PENDING.lock().ok().and_then(|mut slot| slot.take());
-    match err {
-        Some(e) => Err(e),
-        None => Ok(()),
+    /// The first exception kept by any of the residuals, with the residual's name; every slot
+    /// is emptied.
+    pub fn take(&self) -> Option<(String, PyErr)> {
+        let mut first = None;
+        for (name, slot) in &self.0 {
+            let err = slot.lock().ok().and_then(|mut s| s.take());
+            if let (None, Some(err)) = (&first, err) {
+                first = Some((name.clone(), err));
+            }
+        }
+        first
+    }
+
+    /// The first exception kept, still in its slot (for batch items sharing residuals).
+    pub fn peek(&self, py: Python<'_>) -> Option<(String, PyErr)> {
+        self.0.iter().find_map(|(name, slot)| {
+            let s = slot.lock().ok()?;
+            s.as_ref().map(|e| (name.clone(), e.clone_ref(py)))
+        })
+    }
+
+    /// The outcome of a call that ran these residuals ([`crate::interrupt::run`]'s result): an
+    /// interrupted call raises the interrupt; a failed call raises the exception a residual
+    /// raised (the cause of its failure; `failure` converts the library's error otherwise); a
+    /// call that succeeded although a residual raised at some trial point, its answer checked
+    /// at a point where no residual raised, returns its result and issues a `RuntimeWarning`
+    /// naming the exception. Every slot is emptied.
+    pub fn finish<T, E>(
+        &self,
+        py: Python<'_>,
+        outcome: PyResult<Result<T, E>>,
+        failure: impl FnOnce(E) -> PyErr,
+    ) -> PyResult<T> {
+        let kept = self.take();
+        let outcome = outcome?;
+        match (outcome, kept) {
+            (Err(_), Some((_, err))) => Err(err),
+            (Err(e), None) => Err(failure(e)),
+            (Ok(v), None) => Ok(v),
+            (Ok(v), Some((name, err))) => {
+                let message = format!(
+                    "custom constraint {name}: the residual raised {} at a trial point; the \
+                     solve went on without that point and its answer is checked",
+                    err.value(py)
+                        .repr()
+                        .map(|r| r.to_string())
+                        .unwrap_or_default()
+                );
+                let category = py.get_type::<pyo3::exceptions::PyRuntimeWarning>();
+                PyErr::warn(py, &category, &std::ffi::CString::new(message)?, 1)?;
+                Ok(v)
+            }
+        }
     }
 }
 
@@ -69,6 +128,8 @@ pub struct PyResidual {
     sizes: Vec<usize>,
     affine: bool,
     cache: Mutex<Option<Expansion>>,
+    /// The first exception `func` raised since the last call collected it.
+    raised: Slot,
 }
 
 impl std::fmt::Debug for PyResidual {
@@ -169,7 +230,9 @@ impl PyResidual {
                 Some(e)
             }
             Err(err) => {
-                keep(err);
+                if let Ok(mut slot) = self.raised.lock() {
+                    slot.get_or_insert(err);
+                }
                 None
             }
         }
@@ -301,17 +364,39 @@ fn arg(obj: &Bound<'_, PyAny>) -> PyResult<Arg> {
         .map_err(|e| errors::SketchError::new_err(format!("invalid custom argument: {e}")))
 }
 
+/// `func` wrapped so that it always returns a list (`camber.custom.rows`).
+fn listed(py: Python<'_>, func: Py<PyAny>) -> PyResult<Py<PyAny>> {
+    Ok(py
+        .import("camber.custom")?
+        .getattr("rows")?
+        .call1((func,))?
+        .unbind())
+}
+
 /// A custom constraint calling `func` (see the module documentation). `func` receives the
 /// values of every argument in order, flattened: a point gives x, y; a radius, a free
 /// parameter or an own parameter one number; a curve (`{"curve": id}`) the coordinates of all
 /// its control points (x₀, y₀, x₁, y₁, …), its degree, knots and weights staying data.
+///
+/// `dim` is checked before anything is sized by it: at least 1, at most
+/// [`camber_sketch::constraints::custom::MAX_CUSTOM_ROWS`]. A one-row residual may return its
+/// number alone (`camber.custom.rows` wraps `func`).
 pub fn custom(
+    py: Python<'_>,
     func: Py<PyAny>,
     args: &[Bound<'_, PyAny>],
     dim: usize,
     name: String,
     affine: bool,
 ) -> PyResult<Custom> {
+    let max = camber_sketch::constraints::custom::MAX_CUSTOM_ROWS;
+    if dim == 0 || dim > max {
+        return Err(errors::SketchError::new_err(format!(
+            "custom constraint {name}: dim is {dim}, the number of rows its residual returns must \
+             be between 1 and {max}"
+        )));
+    }
+    let func = listed(py, func)?;
     let args: Vec<Arg> = args.iter().map(arg).collect::<PyResult<_>>()?;
     let kinds: Vec<ArgKind> = args.iter().map(Arg::kind).collect();
     let sizes = kinds
@@ -325,6 +410,7 @@ pub fn custom(
         sizes,
         affine,
         cache: Mutex::new(None),
+        raised: Slot::default(),
     };
     Ok(Custom::boxed(Arc::new(residual), kinds, args))
 }
@@ -353,12 +439,13 @@ pub fn custom_derivatives(
         )));
     }
     let r = PyResidual {
-        func,
+        func: listed(py, func)?,
         name: "check".into(),
         dim,
         sizes: sizes.clone(),
         affine: false,
         cache: Mutex::new(None),
+        raised: Slot::default(),
     };
     let mut blocks: Vec<&[f64]> = Vec::with_capacity(sizes.len());
     let mut at = 0;
@@ -372,7 +459,9 @@ pub fn custom_derivatives(
     let active = vec![true; sizes.len()];
     let done = DynResidual::jacobian(&r, &blocks, &mut values, &mut jac)
         .and_then(|()| DynResidual::weighted_hessian(&r, &blocks, &weights, &active, &mut hess));
-    raise_pending(py)?;
+    if let Some(err) = r.raised.lock().ok().and_then(|mut s| s.take()) {
+        return Err(err);
+    }
     done.map_err(|e| errors::SolveError::new_err(e.to_string()))?;
     Ok((
         values,

@@ -89,3 +89,9 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("SurfaceError", py.get_type::<SurfaceError>())?;
     Ok(())
 }
+
+/// A camber-sketch error of a solve, drag or analysis of `sketch` as a `SolveError`, its
+/// constraints named by id and kind as the CLI names them ("constraint 4 (distance)").
+pub fn solve_in(sketch: &camber_sketch::Sketch, e: camber_sketch::Error) -> PyErr {
+    SolveError::new_err(sketch.describe_error(&e))
+}

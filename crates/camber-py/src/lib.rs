@@ -27,6 +27,7 @@ pub mod curve_ops;
 pub mod custom;
 pub mod errors;
 pub mod expression;
+pub mod interrupt;
 pub mod json;
 pub mod sketch;
 pub mod surface;

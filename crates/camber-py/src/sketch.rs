@@ -13,7 +13,9 @@ use pyo3::types::PyDict;
 
 use crate::arrays::{points, vector};
 use crate::curve::{AnyCurve, Curve};
+use crate::custom::Raised;
 use crate::errors;
+use crate::interrupt;
 use crate::json::{to_python, to_value};
 
 /// A point reference: an int (a point entity) or its file form (`{"point": 0}`,
@@ -24,6 +26,17 @@ pub fn point_ref(obj: &Bound<'_, PyAny>) -> PyResult<PointRef> {
     }
     serde_json::from_value(to_value(obj)?)
         .map_err(|e| errors::SketchError::new_err(format!("invalid point reference: {e}")))
+}
+
+/// A priority tier from its file form: an integer from 0 to 255.
+fn priority(v: &serde_json::Value) -> PyResult<u8> {
+    v.as_u64()
+        .and_then(|p| u8::try_from(p).ok())
+        .ok_or_else(|| {
+            errors::FileError::new_err(format!(
+                "priority: expected a priority tier, an integer from 0 (required) to 255, found {v}"
+            ))
+        })
 }
 
 fn xy(v: &[f64], what: &str) -> PyResult<Point2<f64>> {
@@ -60,13 +73,11 @@ impl Sketch {
         Self::default()
     }
 
-    /// Reads a sketch from its JSON text.
+    /// Reads a sketch from its JSON text (Ctrl-C stops a long read).
     #[staticmethod]
     fn from_json(py: Python<'_>, text: &str) -> PyResult<Self> {
-        let text = text.to_owned();
-        let inner = py
-            .detach(move || camber_sketch::file::from_json(&text))
-            .map_err(errors::file)?;
+        let inner =
+            interrupt::run(py, |_| camber_sketch::file::from_json(text))?.map_err(errors::file)?;
         Ok(Self { inner })
     }
 
@@ -222,7 +233,8 @@ impl Sketch {
     /// `sketch.add_constraint("tangent_to_circle", curve=0, circle=1, u={"free": 0.5},
     /// side="outside", rotation="clockwise")`. The kind's JSON is read by the library's own
     /// loader, so every kind and field the file format has is available and checked the same
-    /// way (errors name the bad field).
+    /// way (errors name the bad field). `priority=P` (0 required, the default; 1–255 a tier
+    /// that gives way to lower ones when not all can be met) is the file's `"priority"` field.
     #[pyo3(signature = (kind, **fields))]
     fn add_constraint(&mut self, kind: &str, fields: Option<&Bound<'_, PyDict>>) -> PyResult<u64> {
         let mut map = match fields {
@@ -232,6 +244,10 @@ impl Sketch {
             },
             None => serde_json::Map::new(),
         };
+        let priority = match map.remove("priority") {
+            None => 0,
+            Some(v) => priority(&v)?,
+        };
         map.insert("kind".into(), serde_json::Value::String(kind.to_owned()));
         // A number given as a string is an expression of the sketch's parameters.
         let id = camber_sketch::file::add_constraint_from_value(
@@ -239,7 +255,30 @@ impl Sketch {
             serde_json::Value::Object(map),
         )
         .map_err(errors::file)?;
+        if priority > 0 {
+            if let Err(e) = self.inner.set_priority(id, priority) {
+                // The constraint goes with its refused priority: nothing half added.
+                let _ = self.inner.remove_constraint(id);
+                return Err(errors::sketch(e));
+            }
+        }
         Ok(id.0)
+    }
+
+    /// Sets a constraint's priority tier (0 required; 1–255 gives way to lower tiers when not
+    /// every constraint can be met).
+    fn set_priority(&mut self, id: u64, priority: u8) -> PyResult<()> {
+        self.inner
+            .set_priority(ConstraintId(id), priority)
+            .map_err(errors::sketch)
+    }
+
+    /// A constraint's priority tier (0 for a required one).
+    fn priority(&self, id: u64) -> PyResult<u8> {
+        self.inner
+            .constraint(ConstraintId(id))
+            .map_err(errors::sketch)?;
+        Ok(self.inner.priority(ConstraintId(id)))
     }
 
     /// Adds an expression constraint; returns its id. `rows` is a string or a list of strings
@@ -318,13 +357,14 @@ impl Sketch {
     #[pyo3(signature = (residual, args, dim, name = "python".to_owned(), affine = false))]
     fn add_custom(
         &mut self,
+        py: Python<'_>,
         residual: Py<PyAny>,
         args: Vec<Bound<'_, PyAny>>,
         dim: usize,
         name: String,
         affine: bool,
     ) -> PyResult<u64> {
-        let c = crate::custom::custom(residual, &args, dim, name, affine)?;
+        let c = crate::custom::custom(py, residual, &args, dim, name, affine)?;
         Ok(self.inner.add_constraint(c).map_err(errors::sketch)?.0)
     }
 
@@ -347,13 +387,19 @@ impl Sketch {
             .collect())
     }
 
-    /// A constraint's file form as a dict (`{"kind": …, …fields}`).
+    /// A constraint's file form as a dict (`{"kind": …, …fields}`, with `"priority"` when it
+    /// is not 0, as in a sketch file).
     fn constraint(&self, py: Python<'_>, id: u64) -> PyResult<Py<PyAny>> {
         let c = self
             .inner
             .constraint(ConstraintId(id))
             .map_err(errors::sketch)?;
-        to_python(py, &constraint_to_value(c).map_err(errors::file)?)
+        let mut value = constraint_to_value(c).map_err(errors::file)?;
+        let priority = self.inner.priority(ConstraintId(id));
+        if let (serde_json::Value::Object(map), true) = (&mut value, priority > 0) {
+            map.insert("priority".into(), priority.into());
+        }
+        to_python(py, &value)
     }
 
     /// Removes a constraint; returns its file form (custom constraints: their name).
@@ -375,30 +421,27 @@ impl Sketch {
 
     /// Solves the components changed since the last solve (every component with `all=True`).
     /// Returns a `SolveReport`; raises `SolveError` (the sketch unchanged) when a component
-    /// fails. The GIL is released during the solve.
+    /// fails, or the exception a custom residual raised when that made it fail. The GIL is
+    /// released during the solve; Ctrl-C stops it (`KeyboardInterrupt`, the sketch unchanged).
     #[pyo3(signature = (all = false))]
     fn solve(&mut self, py: Python<'_>, all: bool) -> PyResult<Py<PyAny>> {
+        let raised = Raised::of(&self.inner);
         let inner = &mut self.inner;
-        let report = py
-            .detach(|| {
-                if all {
-                    inner.solve_all()
-                } else {
-                    inner.solve()
-                }
-            })
-            .map_err(errors::solve);
-        crate::custom::raise_pending(py)?;
-        report_object(py, &report?)
+        let report = interrupt::run(py, |flag| {
+            cancellable(inner, flag, |s| if all { s.solve_all() } else { s.solve() })
+        });
+        let report = raised.finish(py, report, |e| errors::solve_in(inner, e))?;
+        report_object(py, &report)
     }
 
     /// The DOF analysis of every component: a list of {"component", "analysis": {"unknowns",
-    /// "rank", "dof", "redundant", "conflicting", …}}.
-    fn analyze(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
-        let inner = &self.inner;
-        let analysis = py.detach(|| inner.analyze()).map_err(errors::solve);
-        crate::custom::raise_pending(py)?;
-        to_python(py, &analysis?)
+    /// "rank", "dof", "redundant", "conflicting", …}}. Ctrl-C stops it.
+    fn analyze(&mut self, py: Python<'_>) -> PyResult<Py<PyAny>> {
+        let raised = Raised::of(&self.inner);
+        let inner = &mut self.inner;
+        let analysis = interrupt::run(py, |flag| cancellable(inner, flag, |s| s.analyze()));
+        let analysis = raised.finish(py, analysis, |e| errors::solve_in(inner, e))?;
+        to_python(py, &analysis)
     }
 
     /// Solves contacts with fixed circles and lines by iterative displacement (the blade-design
@@ -416,12 +459,12 @@ impl Sketch {
             tolerance,
             samples,
         };
+        let raised = Raised::of(&self.inner);
         let inner = &mut self.inner;
-        let run = py
-            .detach(|| inner.solve_by_displacement(&options))
-            .map_err(errors::solve);
-        crate::custom::raise_pending(py)?;
-        let run = run?;
+        let run = interrupt::run(py, |flag| {
+            cancellable(inner, flag, |s| s.solve_by_displacement(&options))
+        });
+        let run = raised.finish(py, run, |e| errors::solve_in(inner, e))?;
         let out = PyDict::new(py);
         out.set_item("rounds", run.rounds)?;
         out.set_item("converged", run.converged)?;
@@ -431,19 +474,23 @@ impl Sketch {
     }
 
     /// Starts dragging a point; `session.update(xy)` moves it, `session.finish()` writes the
-    /// dragged state back into this sketch.
+    /// dragged state back into this sketch. Ctrl-C stops a long start.
     fn drag(slf: Bound<'_, Self>, at: &Bound<'_, PyAny>) -> PyResult<DragSession> {
         let r = point_ref(at)?;
         let py = slf.py();
-        let session = {
-            let this = slf.borrow();
-            let inner = &this.inner;
-            py.detach(|| inner.drag(r)).map_err(errors::solve)
+        let (session, raised) = {
+            let mut this = slf.borrow_mut();
+            let raised = Raised::of(&this.inner);
+            let inner = &mut this.inner;
+            let session = interrupt::run(py, |flag| cancellable(inner, flag, |s| s.drag(r)));
+            let mut session = raised.finish(py, session, |e| errors::solve_in(inner, e))?;
+            session.set_cancel(None);
+            (session, raised)
         };
-        crate::custom::raise_pending(py)?;
         Ok(DragSession {
-            session: Some(session?),
+            session: Some(session),
             sketch: slf.unbind(),
+            raised,
         })
     }
 
@@ -456,11 +503,27 @@ impl Sketch {
     }
 }
 
+/// Runs `work` on `sketch` with `flag` as its solves' cancel flag, the sketch's options as
+/// they were afterwards.
+fn cancellable<T>(
+    sketch: &mut camber_sketch::Sketch,
+    flag: &camber_solve::CancelFlag,
+    work: impl FnOnce(&mut camber_sketch::Sketch) -> T,
+) -> T {
+    let before = sketch.options().cancel.clone();
+    sketch.set_options(sketch.options().clone().with_cancel(Some(flag.clone())));
+    let out = work(sketch);
+    sketch.set_options(sketch.options().clone().with_cancel(before));
+    out
+}
+
 /// An interactive drag of one point of a sketch (see `Sketch.drag`).
 #[pyclass(module = "camber._native")]
 pub struct DragSession {
     session: Option<camber_sketch::DragSession>,
     sketch: Py<Sketch>,
+    /// The exception slots of the Python residuals the drag runs.
+    raised: Raised,
 }
 
 impl DragSession {
@@ -473,16 +536,27 @@ impl DragSession {
 
 #[pymethods]
 impl DragSession {
-    /// Moves the dragged point towards `target` and re-solves its component (GIL released).
-    /// Returns what changed: `{"moved": [entity ids], "residuals": {constraint id: max |g|}}`.
+    /// Moves the dragged point towards `target` and re-solves its component (GIL released,
+    /// Ctrl-C honoured). Returns what changed: `{"moved": [entity ids], "residuals":
+    /// {constraint id: max |g|}}`. A target farther than a thousand sketch sizes from the
+    /// sketch is refused with `SolveError`; a refused update keeps the session's state.
     fn update<'py>(&mut self, py: Python<'py>, target: Vec<f64>) -> PyResult<Bound<'py, PyDict>> {
         let p = xy(&target, "target")?;
-        let session = self.live()?;
-        let done = py
-            .detach(|| session.update(p).cloned())
-            .map_err(errors::solve);
-        crate::custom::raise_pending(py)?;
-        let update = done?;
+        let session = self
+            .session
+            .as_mut()
+            .ok_or_else(|| errors::SolveError::new_err("the drag session is finished"))?;
+        let done = interrupt::run(py, |flag| {
+            session.set_cancel(Some(flag.clone()));
+            let done = session.update(p).cloned();
+            session.set_cancel(None);
+            done
+        });
+        let update = {
+            let sketch = self.sketch.borrow(py);
+            self.raised
+                .finish(py, done, |e| errors::solve_in(&sketch.inner, e))?
+        };
         let out = PyDict::new(py);
         let moved: Vec<u64> = update.moved.iter().map(|id| id.0).collect();
         out.set_item("moved", moved)?;

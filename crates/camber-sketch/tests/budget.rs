@@ -47,3 +47,37 @@ fn a_budget_does_not_change_a_solve_it_suffices_for() {
     limited.solve().unwrap();
     assert_eq!(to_json(&unlimited).unwrap(), to_json(&limited).unwrap());
 }
+
+#[test]
+fn a_raised_cancel_flag_stops_the_solve_unchanged_and_says_so() {
+    // No evaluation limit: only the flag, raised by another thread while the solve runs (as
+    // the Python package does on Ctrl-C), can end this solve early.
+    let mut s = with_budget(UNSOLVABLE, None);
+    let flag = camber_solve::CancelFlag::new();
+    s.set_options(s.options().clone().with_cancel(Some(flag.clone())));
+    let before = to_json(&s).unwrap();
+    let raiser = {
+        let flag = flag.clone();
+        std::thread::spawn(move || {
+            std::thread::sleep(std::time::Duration::from_millis(20));
+            flag.cancel();
+        })
+    };
+    let err = s.solve().unwrap_err();
+    raiser.join().unwrap();
+    assert!(
+        matches!(
+            err,
+            camber_sketch::Error::Solve(camber_solve::Error::Cancelled)
+        ),
+        "{err}"
+    );
+    assert_eq!(
+        to_json(&s).unwrap(),
+        before,
+        "a cancelled solve changed the sketch"
+    );
+    // A flag raised before the solve stops it at its first evaluation.
+    let err = s.solve().unwrap_err();
+    assert!(err.to_string().contains("cancelled"), "{err}");
+}

@@ -374,6 +374,28 @@ impl Residual for ParameterIsOne {
     }
 }
 
+/// A residual declaring a row count nobody can hold (a typing slip, `dim=10**9` from Python):
+/// its values are never asked for.
+#[derive(Debug)]
+struct Huge(usize);
+
+impl Residual for Huge {
+    fn name(&self) -> &str {
+        "huge"
+    }
+    fn dim(&self) -> usize {
+        self.0
+    }
+    fn block_sizes(&self) -> Option<Vec<usize>> {
+        Some(vec![2])
+    }
+    fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+        for o in out.iter_mut() {
+            *o = x[0][0];
+        }
+    }
+}
+
 #[test]
 fn a_custom_constraint_over_its_own_parameter_only_is_solved() {
     // It reads no entity, so it used to be in no component and its parameter never moved.
@@ -390,4 +412,30 @@ fn a_custom_constraint_over_its_own_parameter_only_is_solved() {
         panic!("no parameter")
     };
     assert_abs_diff_eq!(v, 1.0, epsilon = 1e-12);
+}
+
+#[test]
+fn a_custom_residual_with_too_many_rows_is_refused_before_anything_is_allocated() {
+    let mut s = Sketch::new();
+    let p = s.add_point(Point2::new(0.0, 0.0)).unwrap();
+    let before = camber_sketch::file::to_json(&s).unwrap();
+    for rows in [
+        1_000_000_000,
+        usize::MAX,
+        camber_sketch::constraints::custom::MAX_CUSTOM_ROWS + 1,
+    ] {
+        let err = s
+            .add_constraint(Constraint::Custom(Custom::new(
+                Huge(rows),
+                vec![PointRef::Point(p)],
+            )))
+            .and_then(|_| s.solve().map(|_| ()))
+            .unwrap_err();
+        assert!(
+            matches!(err, Error::CustomTooLarge { rows: r, unknowns: 2, .. } if r == rows),
+            "{err}"
+        );
+        assert!(err.to_string().contains("\"huge\""), "{err}");
+    }
+    assert_eq!(camber_sketch::file::to_json(&s).unwrap(), before);
 }

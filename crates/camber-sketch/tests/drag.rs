@@ -193,3 +193,56 @@ fn finish_stores_the_solved_free_contact_parameters() {
     assert_abs_diff_eq!(v.norm(), r, epsilon = 1e-9);
     assert!(v.dot(&t).abs() <= 1e-8 * t.norm());
 }
+
+#[test]
+fn absurd_drag_targets_are_refused_by_the_session_itself_on_both_kinds_of_component() {
+    // W1 in the row form (affine) and a distance (nonlinear): a target a thousand sketch
+    // sizes away is refused with a typed error, the session keeping its state; a near one is
+    // taken.
+    let (w1_sketch, c, _) = w1(TangentForm::Row).unwrap();
+    let two_points = camber_sketch::file::from_json(
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "point", "at": [0, 0]},
+            {"id": 1, "kind": "point", "at": [2, 0]}],
+            "constraints": [{"id": 2, "kind": "distance", "a": {"point": 0}, "b": {"point": 1},
+            "distance": 2.0}]}"#,
+    )
+    .unwrap();
+    let cases = [
+        (w1_sketch, PointRef::Control(c, 1)),
+        (two_points, PointRef::Point(camber_sketch::EntityId(1))),
+    ];
+    for (s, p1) in cases {
+        let form = p1;
+        let (centre, scale) = (s.centre(), s.scale());
+        let mut drag = s.drag(p1).unwrap();
+        let at = drag.point(p1).unwrap();
+        let reach = camber_sketch::drag::MAX_DRAG_REACH * scale;
+        for far in [
+            Point2::new(1e15, 0.0),
+            Point2::new(0.0, -1e10),
+            Point2::new(1e308, 1e308),
+            centre + Vector2::new(1.01 * reach, 0.0),
+        ] {
+            let err = drag.update(far).unwrap_err();
+            assert!(
+                matches!(err, Error::DragTargetTooFar { x, .. } if x.to_bits() == far.x.to_bits()),
+                "{form:?} {far}: {err}"
+            );
+            let text = err.to_string();
+            assert!(
+                text.contains("too far from the sketch") && text.len() < 200,
+                "{text}"
+            );
+            assert_eq!(
+                drag.point(p1).unwrap(),
+                at,
+                "a refused target moved the point"
+            );
+        }
+        assert!(matches!(
+            drag.update(Point2::new(f64::NAN, 0.0)),
+            Err(Error::NonFinite { .. })
+        ));
+        drag.update(at + Vector2::new(0.05, 0.02)).unwrap();
+    }
+}

@@ -76,10 +76,11 @@ pub use derive::testing;
 pub use model::scalar;
 
 pub use model::{
-    slsqp_supports, AuxId, Binding, BlockId, ConstraintId, ConstraintResidual, DynResidual, Error,
-    NonlinearOptions, Objective, Options, Priority, Problem, ProblemState, Residual, ResidualId,
-    Result, Scalar, Selection, SolveReport, SolverChoice, SolverKind, Stamps, Status, TierOutcome,
-    UnknownId, UserObjective, Var, DEFAULT_MAX_EVALUATIONS, SLSQP_MAX_UNKNOWNS,
+    slsqp_supports, AuxId, Binding, BlockId, CancelFlag, ConstraintId, ConstraintResidual,
+    DynResidual, Error, NonlinearOptions, Objective, Options, Priority, Problem, ProblemState,
+    Residual, ResidualId, Result, Scalar, Selection, SolveReport, SolverChoice, SolverKind, Stamps,
+    Status, TierOutcome, UnknownId, UserObjective, Var, DEFAULT_MAX_EVALUATIONS,
+    SLSQP_MAX_UNKNOWNS,
 };
 pub use policy::{solve, solve_linear, solve_newton, solve_newton_from, Plan, Start};
 

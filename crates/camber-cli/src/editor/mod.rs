@@ -140,10 +140,6 @@ struct Drag {
     updates: usize,
     refused: usize,
     update_time: Duration,
-    /// The centre of the sketch's box and its scale when the drag began: targets farther than
-    /// [`MAX_DRAG_REACH`] scales from the centre are refused.
-    centre: Point2<f64>,
-    scale: f64,
 }
 
 /// A constraint with its residual (the largest |row| it owns).
@@ -177,31 +173,9 @@ fn worst_of(residuals: &[ConstraintResidual]) -> Option<ConstraintResidual> {
 /// entity or none).
 pub const MAX_EDITOR_ID: u64 = (1 << 53) - 1;
 
-/// How far a drag target may lie from the centre of the sketch, in multiples of the sketch's
-/// scale (the diagonal of its box, at least 1): a thousand sketches away is surely a slip of
-/// the hand or a hostile request, and would wreck the drawing's numbers.
-pub const MAX_DRAG_REACH: f64 = 1000.0;
-
-/// The centre of the box of every entity point (circles with their radius); the origin for an
-/// empty sketch.
-fn sketch_centre(sketch: &Sketch) -> Point2<f64> {
-    let mut bbox = crate::svg::BBox::empty();
-    for (_, e) in sketch.entities() {
-        let r = match e {
-            Entity::Circle { radius, .. } => *radius,
-            _ => 0.0,
-        };
-        for p in e.hull_points().iter() {
-            bbox.include(Point2::new(p.x - r, p.y - r));
-            bbox.include(Point2::new(p.x + r, p.y + r));
-        }
-    }
-    if bbox.is_empty() {
-        Point2::origin()
-    } else {
-        Point2::from((bbox.min.coords + bbox.max.coords) / 2.0)
-    }
-}
+/// How far a drag target may lie from the centre of the sketch, in multiples of its scale:
+/// the drag session refuses farther targets itself (one rule for every surface).
+pub use camber_sketch::drag::MAX_DRAG_REACH;
 
 /// The editor: the sketch, the drag in progress, the undo history and the last report.
 #[derive(Debug)]
@@ -439,8 +413,6 @@ impl EditorState {
             updates: 0,
             refused: 0,
             update_time: Duration::ZERO,
-            centre: sketch_centre(&self.sketch),
-            scale: self.sketch.scale(),
         });
         Ok(Response::json(200, &dragged))
     }
@@ -452,21 +424,6 @@ impl EditorState {
             return Err(Failure::new(409, "no drag in progress: start one first"));
         };
         let to = Point2::new(req.to[0], req.to[1]);
-        let reach = MAX_DRAG_REACH * drag.scale;
-        if !(to - drag.centre).norm().is_finite() || (to - drag.centre).norm() > reach {
-            drag.refused += 1;
-            return Err(Failure::new(
-                422,
-                format!(
-                    "move refused: the target ({}, {}) is too far from the sketch (more than {} \
-                     from its centre, {} times its size)",
-                    crate::short_number(to.x),
-                    crate::short_number(to.y),
-                    crate::short_number(reach),
-                    MAX_DRAG_REACH
-                ),
-            ));
-        }
         // A tangent block of a Hermite or composite curve is grabbed at its handle N ± t/3:
         // the block's target is the tangent that puts the handle at `to`.
         let target = match drag.current.get(&drag.entity) {

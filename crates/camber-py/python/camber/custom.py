@@ -8,6 +8,23 @@ module do not accept dual numbers.
 """
 
 
+def rows(func):
+    """``func`` returning a list: a residual of one row may return its number alone (a float or
+    a dual number); a list, tuple or numpy array passes through as a list."""
+
+    def listed(x):
+        out = func(x)
+        if isinstance(out, (list, tuple)):
+            return list(out)
+        try:
+            return list(out)
+        except TypeError:
+            return [out]
+
+    listed.__name__ = getattr(func, "__name__", "residual")
+    return listed
+
+
 def row(func, i):
     """The i-th component of a vector residual, as a scalar function (for num_dual.hessian)."""
 

@@ -182,6 +182,21 @@ pub enum Error {
         /// The point asked for.
         point: PointRef,
     },
+    /// A drag target farther from the sketch's centre than [`crate::drag::MAX_DRAG_REACH`]
+    /// times its scale: a slip of the hand or a hostile request, refused before it wrecks the
+    /// sketch's numbers (the session keeps its state).
+    #[error(
+        "the drag target ({}, {}) is too far from the sketch (more than {} from its centre)",
+        number(*x), number(*y), number(*reach)
+    )]
+    DragTargetTooFar {
+        /// The target's x.
+        x: f64,
+        /// The target's y.
+        y: f64,
+        /// The largest distance from the centre allowed.
+        reach: f64,
+    },
     /// A drag session finished on a sketch edited since the session began.
     #[error("the sketch changed since the drag began (revision {expected}, now {found})")]
     StaleSession {
@@ -292,6 +307,25 @@ pub enum Error {
         /// The argument kinds given.
         found: Vec<crate::ground::vocabulary::ArgKind>,
     },
+    /// A custom residual larger than a solve can hold: more rows than
+    /// [`crate::constraints::custom::MAX_CUSTOM_ROWS`], or a Jacobian block (rows × unknowns
+    /// read) of more than [`crate::constraints::custom::MAX_CUSTOM_JACOBIAN`] entries. Refused
+    /// before anything of that size is allocated.
+    #[error(
+        "the custom residual \"{name}\" declares {rows} rows over {unknowns} unknowns: at most {max_rows} rows and {max_entries} Jacobian entries (rows × unknowns) are allowed"
+    )]
+    CustomTooLarge {
+        /// The residual's name.
+        name: String,
+        /// The rows it declares.
+        rows: usize,
+        /// The unknowns its arguments read.
+        unknowns: usize,
+        /// The most rows allowed.
+        max_rows: usize,
+        /// The most Jacobian entries allowed.
+        max_entries: usize,
+    },
     /// An expression (a constraint's rows, a dimension's value) the language refuses: its
     /// message names the column (and the row).
     #[error(transparent)]
@@ -386,3 +420,13 @@ impl From<camber_solve::Error> for Error {
 
 /// Result with camber-sketch's [`Error`].
 pub type Result<T> = std::result::Result<T, Error>;
+
+/// A number for a message with few digits: plain between 1e-4 and 1e6, scientific outside
+/// (so that 1e308 is not printed with 309 digits).
+fn number(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() || (1e-4..1e6).contains(&x.abs()) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
+    }
+}

@@ -163,6 +163,13 @@ enum Pin {
     Held,
 }
 
+/// How far a drag target may lie from the centre of the sketch ([`Sketch::centre`]), in
+/// multiples of the sketch's scale ([`Sketch::scale`], the diagonal of its box, at least 1),
+/// both taken when the drag starts: a thousand sketches away is surely a slip of the hand or a
+/// hostile request, and would wreck the sketch's numbers. [`DragSession::update`] refuses
+/// farther targets with [`Error::DragTargetTooFar`], whatever the surface (editor, Python).
+pub const MAX_DRAG_REACH: f64 = 1000.0;
+
 /// What an update changed: the entities it moved and every constraint's residual at the new
 /// state.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -220,6 +227,9 @@ pub struct DragSession {
     before: Vec<f64>,
     /// What the last update changed (its storage reused by the next).
     last: DragUpdate,
+    /// The sketch's centre when the drag began, and the farthest a target may lie from it.
+    centre: Point2<f64>,
+    reach: f64,
 }
 
 /// The mobility of the point with the unknown rows `unknowns` (see [`Freedom::of`]); a large
@@ -242,6 +252,24 @@ fn freedom_of(
 
 /// # Dragging
 impl Sketch {
+    /// Where a drag target of `point` is measured from and how far it may lie from there
+    /// ([`MAX_DRAG_REACH`]): the sketch's centre for a position; the origin for the tangent
+    /// block of a Hermite or composite curve, whose value is ±3·(handle − node), so that a handle
+    /// within reach gives a tangent within 3·(reach + scale).
+    fn drag_limits(&self, point: PointRef) -> (Point2<f64>, f64) {
+        let (scale, centre) = (self.scale(), self.centre());
+        let reach = MAX_DRAG_REACH * scale;
+        let tangent = match point {
+            PointRef::Control(e, j) => self.lookup(e).is_ok_and(|e| e.is_tangent_block(j)),
+            _ => false,
+        };
+        if tangent {
+            (Point2::origin(), 3.0 * (reach + scale))
+        } else {
+            (centre, reach)
+        }
+    }
+
     /// Starts dragging a point (a point entity, a control point, a line end, a circle centre,
     /// or a curve end).
     ///
@@ -323,6 +351,7 @@ impl Sketch {
             }
         };
         let z_start = cp.problem.reduced_map()?.z0().to_vec();
+        let (centre, reach) = self.drag_limits(point);
         Ok(DragSession {
             point,
             revision: self.revision(),
@@ -337,6 +366,8 @@ impl Sketch {
             z_start,
             before: Vec::new(),
             last: DragUpdate::default(),
+            centre,
+            reach,
         })
     }
 }
@@ -349,11 +380,19 @@ impl DragSession {
     /// update: a drag allocates nothing per update on the way).
     ///
     /// # Errors
-    /// [`Error::NonFinite`] for a bad target; [`Error::NotSatisfied`],
+    /// [`Error::NonFinite`] for a bad target; [`Error::DragTargetTooFar`] for one farther than
+    /// [`MAX_DRAG_REACH`] sketch scales from the sketch's centre; [`Error::NotSatisfied`],
     /// [`Error::OrientationFlipped`], [`Error::ContactCrossed`], … when the result would break
     /// a constraint (the session keeps its previous state).
     pub fn update(&mut self, target: Point2<f64>) -> Result<&DragUpdate> {
         crate::ground::entity::check_point("target", 0, &target)?;
+        if (target - self.centre).norm() > self.reach {
+            return Err(Error::DragTargetTooFar {
+                x: target.x,
+                y: target.y,
+                reach: self.reach,
+            });
+        }
         let block = match &self.pin {
             Pin::Held => {
                 self.last.moved.clear();
@@ -431,6 +470,14 @@ impl DragSession {
                 Err(e)
             }
         }
+    }
+
+    /// Watches `cancel` in the solves of the following updates: once it is raised, an update
+    /// stops at its next evaluation with [`camber_solve::Error::Cancelled`], the session keeping
+    /// its state (an affine component's update, one kept linear step, does not look). None
+    /// stops watching.
+    pub fn set_cancel(&mut self, cancel: Option<camber_solve::CancelFlag>) {
+        self.options.cancel = cancel;
     }
 
     /// What the last update changed (empty before the first): the value

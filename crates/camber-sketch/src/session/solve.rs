@@ -107,9 +107,16 @@ impl Sketch {
         // One evaluation budget for the whole attempt: the given start, its active-set rounds
         // and every other start share it, so a sketch that cannot be solved fails in bounded
         // time however many starts it has.
+        cp.problem.set_cancel(options.cancel.clone());
         cp.problem.start_budget(options.nonlinear.max_evaluations);
-        let outcome = self.solve_from_each_start(cp, options);
+        let outcome = match self.solve_from_each_start(cp, options) {
+            Err(_) if options.cancel.as_ref().is_some_and(|c| c.is_cancelled()) => Err(
+                crate::ground::errors::Error::Solve(camber_solve::Error::Cancelled),
+            ),
+            outcome => outcome,
+        };
         cp.problem.end_budget();
+        cp.problem.set_cancel(None);
         outcome
     }
 

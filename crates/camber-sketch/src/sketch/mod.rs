@@ -7,6 +7,7 @@
 //! entities they touch as dirty, and [`Sketch::solve`] solves only the components that contain a
 //! dirty entity.
 
+mod describe;
 pub mod parameters;
 pub mod warnings;
 

@@ -124,6 +124,38 @@ impl Sketch {
         }
     }
 
+    /// The centre of the bounding box of every entity point (circles with their radius), the
+    /// origin for an empty sketch (or one whose box is not finite): with [`Sketch::scale`], what
+    /// a drag target is measured against ([`crate::drag::MAX_DRAG_REACH`]).
+    ///
+    /// ```
+    /// use camber_sketch::Sketch;
+    /// use nalgebra::Point2;
+    /// let mut s = Sketch::new();
+    /// s.add_line(Point2::new(0.0, 0.0), Point2::new(4.0, 2.0))?;
+    /// assert_eq!(s.centre(), Point2::new(2.0, 1.0));
+    /// # Ok::<(), camber_sketch::Error>(())
+    /// ```
+    pub fn centre(&self) -> nalgebra::Point2<f64> {
+        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+        for (_, e) in self.entities() {
+            let r = match e {
+                Entity::Circle { radius, .. } => *radius,
+                _ => 0.0,
+            };
+            for p in e.hull_points().iter() {
+                lo = [lo[0].min(p.x - r), lo[1].min(p.y - r)];
+                hi = [hi[0].max(p.x + r), hi[1].max(p.y + r)];
+            }
+        }
+        let c = nalgebra::Point2::new(0.5 * lo[0] + 0.5 * hi[0], 0.5 * lo[1] + 0.5 * hi[1]);
+        if c.x.is_finite() && c.y.is_finite() {
+            c
+        } else {
+            nalgebra::Point2::origin()
+        }
+    }
+
     /// The near-degenerate pieces of the sketch (see the module documentation), entities first,
     /// then constraints, each in id order.
     ///

@@ -9,10 +9,15 @@
 //! Hessian, whatever path asks for it (SLSQP's own evaluations and every line-search trial
 //! included: a budget of derivative evaluations alone let SLSQP's value evaluations run on). The count is deterministic (no clock), so a
 //! solve that runs out does so at the same point on every machine.
+//!
+//! The budget also carries the caller's [`CancelFlag`] ([`crate::Options::cancel`]): once it is
+//! raised, every charge is refused with [`Error::Cancelled`] and the budget reads as spent, so
+//! every path and every start stops at its next evaluation.
 
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 use crate::model::errors::{Error, Result};
+use crate::model::options::CancelFlag;
 
 /// A count of evaluations spent against an optional limit, kept inside a
 /// [`crate::Problem`] ([`crate::Problem::start_budget`]).
@@ -25,6 +30,8 @@ pub(crate) struct Budget {
     limit: AtomicUsize,
     /// Whether a budget runs (started and not ended).
     running: std::sync::atomic::AtomicBool,
+    /// The caller's flag: raised, it refuses every charge.
+    cancel: Option<CancelFlag>,
 }
 
 impl Default for Budget {
@@ -34,6 +41,7 @@ impl Default for Budget {
             spent: AtomicUsize::new(0),
             limit: AtomicUsize::new(usize::MAX),
             running: std::sync::atomic::AtomicBool::new(false),
+            cancel: None,
         }
     }
 }
@@ -72,16 +80,30 @@ impl Budget {
         }
     }
 
-    /// Whether every allowed evaluation is spent.
+    /// Watches `cancel` (none: nothing to watch) until it is replaced.
+    pub(crate) fn set_cancel(&mut self, cancel: Option<CancelFlag>) {
+        self.cancel = cancel;
+    }
+
+    /// Whether the caller raised the cancel flag.
+    pub(crate) fn cancelled(&self) -> bool {
+        self.cancel.as_ref().is_some_and(CancelFlag::is_cancelled)
+    }
+
+    /// Whether every allowed evaluation is spent (or the solve is cancelled).
     pub(crate) fn exhausted(&self) -> bool {
-        self.spent() >= self.limit.load(Ordering::Relaxed)
+        self.spent() >= self.limit.load(Ordering::Relaxed) || self.cancelled()
     }
 
     /// Spends one evaluation.
     ///
     /// # Errors
-    /// [`Error::BudgetSpent`] when none is left (the evaluation must not run).
+    /// [`Error::Cancelled`] once the cancel flag is raised; [`Error::BudgetSpent`] when none is
+    /// left (the evaluation must not run).
     pub(crate) fn charge(&self) -> Result<()> {
+        if self.cancelled() {
+            return Err(Error::Cancelled);
+        }
         let limit = self.limit.load(Ordering::Relaxed);
         let spent = self.spent.load(Ordering::Relaxed);
         if spent >= limit {
@@ -108,6 +130,23 @@ mod tests {
         assert_eq!(b.spent(), 2, "a refused evaluation is not counted");
         b.end();
         assert!(!b.running() && b.charge().is_ok());
+    }
+
+    #[test]
+    fn a_raised_cancel_flag_refuses_every_charge() {
+        let mut b = Budget::default();
+        let flag = CancelFlag::new();
+        b.set_cancel(Some(flag.clone()));
+        b.start(None);
+        assert!(b.charge().is_ok() && !b.exhausted());
+        flag.cancel();
+        assert_eq!(b.charge(), Err(Error::Cancelled));
+        assert!(
+            b.exhausted(),
+            "a cancelled budget reads as spent, so loops stop"
+        );
+        b.set_cancel(None);
+        assert!(b.charge().is_ok());
     }
 
     #[test]

@@ -137,6 +137,11 @@ pub enum Error {
         /// The evaluations the budget allowed.
         evaluations: usize,
     },
+    /// The caller cancelled the solve ([`crate::CancelFlag`], set from another
+    /// thread, e.g. on Ctrl-C in Python): it stopped at its next evaluation; nothing was
+    /// written back.
+    #[error("the solve was cancelled")]
+    Cancelled,
     /// Consistent but dependent rows while the options forbid dropping them.
     #[error("redundant constraints: {}", constraint_list(constraints))]
     Redundant {

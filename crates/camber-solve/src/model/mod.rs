@@ -24,7 +24,7 @@ pub use nonlinear::{
     slsqp_supports, NonlinearOptions, SolverChoice, DEFAULT_MAX_EVALUATIONS, SLSQP_MAX_UNKNOWNS,
 };
 pub use objective::{Objective, UserObjective};
-pub use options::Options;
+pub use options::{CancelFlag, Options};
 pub use priority::Priority;
 pub use problem::{Binding, Problem, ProblemState, Stamps};
 pub use report::{ConstraintResidual, Selection, SolveReport, SolverKind, Status, TierOutcome};

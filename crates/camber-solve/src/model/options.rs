@@ -1,9 +1,64 @@
 //! [`Options`]: the tolerances and thresholds every solve path reads (the linear step, Newton,
-//! SLSQP and the DOF analysis).
+//! SLSQP and the DOF analysis), and the [`CancelFlag`] another thread may raise to stop a solve.
+
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
 
 use crate::model::errors::{Error, Result};
 use crate::model::nonlinear::{NonlinearOptions, SolverChoice};
 use crate::model::objective::Objective;
+
+/// A flag another thread raises to stop a solve: every evaluation a solve charges to its budget
+/// first reads it ([`crate::Problem::start_budget`]), so a cancelled solve stops at its next
+/// evaluation with [`Error::Cancelled`] and leaves the problem as it was. The Python package
+/// raises it on Ctrl-C. Clones share the flag; two flags are equal when they are the same flag.
+///
+/// ```
+/// use camber_solve::CancelFlag;
+/// let flag = CancelFlag::new();
+/// let seen_elsewhere = flag.clone();
+/// assert!(!seen_elsewhere.is_cancelled());
+/// flag.cancel();
+/// assert!(seen_elsewhere.is_cancelled());
+/// assert_eq!(flag, seen_elsewhere);
+/// assert_ne!(flag, CancelFlag::new());
+/// ```
+#[derive(Debug, Clone, Default)]
+pub struct CancelFlag(Arc<AtomicBool>);
+
+impl CancelFlag {
+    /// A flag not raised.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Raises the flag.
+    pub fn cancel(&self) {
+        self.0.store(true, Ordering::Relaxed);
+    }
+
+    /// Whether the flag is raised.
+    pub fn is_cancelled(&self) -> bool {
+        self.0.load(Ordering::Relaxed)
+    }
+
+    /// The shared atomic itself (to hand the same flag to other crates' budgets).
+    pub fn as_arc(&self) -> &Arc<AtomicBool> {
+        &self.0
+    }
+}
+
+impl From<Arc<AtomicBool>> for CancelFlag {
+    fn from(flag: Arc<AtomicBool>) -> Self {
+        Self(flag)
+    }
+}
+
+impl PartialEq for CancelFlag {
+    fn eq(&self, other: &Self) -> bool {
+        Arc::ptr_eq(&self.0, &other.0)
+    }
+}
 
 /// Tolerances and thresholds of a solve.
 ///
@@ -30,6 +85,8 @@ pub struct Options {
     pub drop_redundant: bool,
     /// Settings of the nonlinear solvers and of the selection ([`crate::solve()`]).
     pub nonlinear: NonlinearOptions,
+    /// A flag that stops the solve at its next evaluation when raised (none by default).
+    pub cancel: Option<CancelFlag>,
 }
 
 impl Default for Options {
@@ -41,6 +98,7 @@ impl Default for Options {
             dense_analysis_max_entries: 1 << 22,
             drop_redundant: true,
             nonlinear: NonlinearOptions::default(),
+            cancel: None,
         }
     }
 }
@@ -73,6 +131,12 @@ impl Options {
     /// Sets [`Options::drop_redundant`].
     pub fn with_drop_redundant(mut self, drop: bool) -> Self {
         self.drop_redundant = drop;
+        self
+    }
+
+    /// Sets [`Options::cancel`].
+    pub fn with_cancel(mut self, cancel: Option<CancelFlag>) -> Self {
+        self.cancel = cancel;
         self
     }
 

@@ -412,6 +412,13 @@ impl Problem {
         self.budget.end();
     }
 
+    /// Watches `cancel` in every evaluation charged from now on: once it is raised, the solve
+    /// stops at its next evaluation with [`crate::Error::Cancelled`] ([`crate::Options::cancel`];
+    /// a solve that starts its own budget sets it from its options).
+    pub fn set_cancel(&mut self, cancel: Option<crate::model::options::CancelFlag>) {
+        self.budget.set_cancel(cancel);
+    }
+
     /// Evaluations spent since the budget last started.
     pub fn evaluations_spent(&self) -> usize {
         self.budget.spent()

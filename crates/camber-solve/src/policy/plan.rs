@@ -132,7 +132,8 @@ impl Plan {
     /// [`Error::Conflicting`] naming the constraints that cannot be met together (without soft
     /// mode; with priorities, the required ones), [`Error::NotSolved`] when no path met them and
     /// nothing proves a conflict, [`Error::SolverUnavailable`] when a forced solver is not
-    /// built, the errors of a forced solver, [`Error::BudgetSpent`].
+    /// built, the errors of a forced solver, [`Error::BudgetSpent`], [`Error::Cancelled`] once
+    /// [`Options::cancel`] is raised.
     pub fn solve(
         &mut self,
         problem: &mut Problem,
@@ -143,6 +144,7 @@ impl Plan {
         // own.
         let own_budget = !problem.budget.running();
         if own_budget {
+            problem.set_cancel(options.cancel.clone());
             problem.start_budget(options.nonlinear.max_evaluations);
         }
         let outcome = match self.whole(problem, options, start) {
@@ -159,8 +161,15 @@ impl Plan {
             }
             outcome => outcome,
         };
+        // A cancelled solve fails as cancelled, whatever its paths made of their refused
+        // charges.
+        let outcome = match outcome {
+            Err(_) if problem.budget.cancelled() => Err(Error::Cancelled),
+            outcome => outcome,
+        };
         if own_budget {
             problem.end_budget();
+            problem.set_cancel(None);
         }
         if outcome.is_ok() {
             problem.reduced_values_into(&mut self.last);

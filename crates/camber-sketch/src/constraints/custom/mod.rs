@@ -44,6 +44,17 @@ use crate::constraints::piece::Slot;
 use crate::ground::errors::{Error, Result};
 use crate::ground::ids::PointRef;
 use crate::ground::lookup::EntityLookup;
+
+/// The most rows a custom residual may have: 2²⁰. A solve allocates its values, Jacobian and
+/// dual-number buffers by the declared row count, so a row count from a typing slip
+/// (`dim=10**9`) is refused when the constraint is compiled ([`crate::Error::CustomTooLarge`])
+/// instead of exhausting memory.
+pub const MAX_CUSTOM_ROWS: usize = 1 << 20;
+
+/// The most entries of a custom residual's Jacobian block (rows × unknowns its arguments read):
+/// 2²⁶, half a gigabyte of f64.
+pub const MAX_CUSTOM_JACOBIAN: usize = 1 << 26;
+
 /// A user-written constraint (see the module documentation).
 ///
 /// ```
@@ -345,7 +356,19 @@ impl ConstraintKind for Custom {
                 }
             }
         }
-        cx.residual(residual.build(layout), slots, None);
+        let unknowns: usize = layout.sizes.iter().sum();
+        let built = residual.build(layout);
+        let rows = built.dim();
+        if rows > MAX_CUSTOM_ROWS || rows.saturating_mul(unknowns) > MAX_CUSTOM_JACOBIAN {
+            return Err(Error::CustomTooLarge {
+                name: residual.name().to_owned(),
+                rows,
+                unknowns,
+                max_rows: MAX_CUSTOM_ROWS,
+                max_entries: MAX_CUSTOM_JACOBIAN,
+            });
+        }
+        cx.residual(built, slots, None);
         Ok(())
     }
 
