@@ -63,7 +63,7 @@ pub struct FitArgs {
     /// The point file (JSON, two columns, or a Selig or Lednicer airfoil .dat file).
     pub points: PathBuf,
     /// The largest distance from a point to the curve (length units).
-    #[arg(long, value_name = "TOL")]
+    #[arg(long, value_name = "TOL", allow_negative_numbers = true)]
     pub tolerance: f64,
     /// The degree.
     #[arg(long, default_value_t = 3, value_name = "P")]
