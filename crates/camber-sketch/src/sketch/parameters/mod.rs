@@ -88,7 +88,7 @@ impl Parameters {
     /// ```
     /// use camber_sketch::Sketch;
     /// let mut s = Sketch::new();
-    /// s.define_parameter("chord", 2.0, false)?;
+    /// s.define_parameter("chord", 2.0)?;
     /// let (v, read) = s.parameters().evaluate("chord / 4 + 1")?;
     /// assert!((v - 1.5).abs() < 1e-15 && read.contains("chord"));
     /// assert!(s.parameters().evaluate("span").is_err());
