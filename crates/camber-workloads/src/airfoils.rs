@@ -92,8 +92,8 @@ fn camber_line(digits: &[u32], x: f64) -> Option<(f64, f64)> {
 }
 
 /// The NACA section `code` ("2412", "23012", …) with `points` points in all (at least 5), in
-/// the Selig order; the leading edge (0, 0) is one of them when `points` is odd (an even count
-/// drops one point from the middle of the lower surface). None for an unknown code, a zero
+/// the Selig order, the leading edge (0, 0) among them (an even count drops one point from the
+/// middle of the lower surface). None for an unknown code, a zero
 /// thickness or fewer than 5 points.
 pub fn naca(code: &str, points: usize, spacing: Spacing) -> Option<Vec<Point2<f64>>> {
     let digits: Vec<u32> = code
@@ -107,7 +107,10 @@ pub fn naca(code: &str, points: usize, spacing: Spacing) -> Option<Vec<Point2<f6
     if t <= 0.0 {
         return None;
     }
-    let n = points.div_ceil(2);
+    // n stations a side from the leading edge to the trailing edge, shared by both sides at
+    // the leading edge: 2n − 1 points, one too many for an even count (one lower-side point
+    // goes, mid-side, where the spacing is widest).
+    let n = points / 2 + 1;
     let station = |i: usize| {
         let s = i as f64 / (n - 1) as f64;
         match spacing {
