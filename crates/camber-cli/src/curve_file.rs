@@ -13,6 +13,7 @@
 
 use std::fmt;
 use std::path::Path;
+use std::sync::atomic::{AtomicU64, Ordering};
 
 use anyhow::{anyhow, bail, Context, Result};
 use camber_geom::{BSplineCurve2, BezierCurve2, HermiteCurve2, NurbsCurve2, ParametricCurve};
@@ -214,6 +215,15 @@ pub fn load(path: &Path) -> Result<Curve> {
     Curve::from_json(&text).with_context(|| path.display().to_string())
 }
 
+/// "64 MiB" for whole mebibytes, "1000 bytes" otherwise.
+fn describe_size(bytes: u64) -> String {
+    if bytes >= 1 << 20 && bytes.is_multiple_of(1 << 20) {
+        format!("{} MiB", bytes >> 20)
+    } else {
+        format!("{bytes} bytes")
+    }
+}
+
 /// Writes a curve file whole (a temporary file renamed into place, see [`crate::output`]);
 /// errors name the file.
 pub fn save(path: &Path, curve: &Curve) -> Result<()> {
@@ -223,26 +233,70 @@ pub fn save(path: &Path, curve: &Curve) -> Result<()> {
     crate::output::write_all(&[], &[(path.to_path_buf(), text)])
 }
 
-/// The largest input file the commands read: 64 MiB, far above any sketch or curve (the
-/// bundled 1,000-segment chain is under 1 MiB), so that a device such as `/dev/zero` or a
-/// runaway file ends in an error instead of exhausting memory.
+/// The largest input file the commands read by default: 64 MiB, far above any hand-made sketch
+/// or curve (the bundled 1,000-segment chain is under 1 MiB), so that a device such as
+/// `/dev/zero` or a runaway file ends in an error instead of exhausting memory. Larger files
+/// (a 100,000-cell ladder is 95 MB of JSON) are read once the limit is raised:
+/// `camber --max-input-mib N …`, or [`set_input_limit`] / [`read_text_limited`] in a program.
 pub const MAX_INPUT_BYTES: u64 = 64 << 20;
 
-/// Reads a whole text file of at most [`MAX_INPUT_BYTES`]; a leading UTF-8 byte order mark is
+/// The most MiB `--max-input-mib` accepts (1 TiB): beyond any memory this machine class has,
+/// and far from overflowing a byte count.
+pub const MAX_INPUT_MIB_LIMIT: u64 = 1 << 20;
+
+/// The limit [`read_text`] applies, in bytes ([`MAX_INPUT_BYTES`] until [`set_input_limit`]).
+static INPUT_LIMIT: AtomicU64 = AtomicU64::new(MAX_INPUT_BYTES);
+
+/// Sets the largest input file [`read_text`] reads, in bytes, for the rest of the process (the
+/// command line's `--max-input-mib`). At least 1 byte.
+///
+/// ```
+/// use camber_cli::curve_file::{input_limit, set_input_limit, MAX_INPUT_BYTES};
+/// set_input_limit(200 << 20);
+/// assert_eq!(input_limit(), 200 << 20);
+/// set_input_limit(MAX_INPUT_BYTES);
+/// ```
+pub fn set_input_limit(bytes: u64) {
+    INPUT_LIMIT.store(bytes.max(1), Ordering::Relaxed);
+}
+
+/// The largest input file [`read_text`] reads now, in bytes.
+pub fn input_limit() -> u64 {
+    INPUT_LIMIT.load(Ordering::Relaxed)
+}
+
+/// Reads a whole text file of at most [`input_limit`] bytes; a leading UTF-8 byte order mark is
 /// dropped. The error names the file and the system's reason.
 pub fn read_text(path: &Path) -> Result<String> {
+    read_text_limited(path, input_limit())
+}
+
+/// [`read_text`] with the limit given: a file of more than `max_bytes` bytes is refused with
+/// an error naming the limit and how to raise it, before more than `max_bytes` + 1 bytes are
+/// read.
+///
+/// ```
+/// let dir = tempfile::tempdir()?;
+/// let path = dir.path().join("c.json");
+/// std::fs::write(&path, "0123456789")?;
+/// assert_eq!(camber_cli::curve_file::read_text_limited(&path, 10)?, "0123456789");
+/// let err = camber_cli::curve_file::read_text_limited(&path, 9).unwrap_err().to_string();
+/// assert!(err.contains("larger than 9 bytes"), "{err}");
+/// # Ok::<(), anyhow::Error>(())
+/// ```
+pub fn read_text_limited(path: &Path, max_bytes: u64) -> Result<String> {
     use std::io::Read as _;
     let cannot = |e: std::io::Error| anyhow!("{}: cannot read: {}", path.display(), IoReason(&e));
     let file = std::fs::File::open(path).map_err(cannot)?;
     let mut bytes = Vec::new();
-    file.take(MAX_INPUT_BYTES + 1)
+    file.take(max_bytes.saturating_add(1))
         .read_to_end(&mut bytes)
         .map_err(cannot)?;
-    if bytes.len() as u64 > MAX_INPUT_BYTES {
+    if bytes.len() as u64 > max_bytes {
         bail!(
-            "{}: larger than {} MiB, too large for an input file",
+            "{}: larger than {}, too large for an input file (raise the limit with --max-input-mib)",
             path.display(),
-            MAX_INPUT_BYTES >> 20
+            describe_size(max_bytes)
         );
     }
     let text = String::from_utf8(bytes).map_err(|e| {

@@ -18,6 +18,10 @@
 //! - [`editor`]: a script of requests to [`EditorState::handle`] on a bundled sketch; no
 //!   answer is a 500 (an internal failure), every answer to an API path is JSON, and the state
 //!   stays readable.
+//! - [`fit()`]: a point file (JSON, columns, Selig or Lednicer) parsed and fitted to a
+//!   tolerance, whole and split at the leading edge; a fit is within its tolerance.
+//! - [`toolkit()`]: one or two curves and some numbers through every curve-toolkit operation
+//!   under a small work budget; its documentation lists the promises checked.
 //!
 //! The work per input is bounded here (input size, entity and constraint counts, degrees,
 //! repeat counts, the evaluations a solve may spend), so that one input cannot take the
@@ -35,6 +39,11 @@ use crate::editor::EditorState;
 
 mod expression;
 pub use expression::expression;
+
+mod fit;
+mod toolkit;
+pub use fit::{fit, FIT_WORK};
+pub use toolkit::{toolkit, TOOLKIT_WORK};
 
 /// The largest input any target reads, in bytes (libFuzzer's `-max_len` should not exceed it).
 pub const MAX_INPUT: usize = 64 * 1024;

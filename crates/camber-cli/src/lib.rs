@@ -60,14 +60,18 @@ use anyhow::Result;
 use clap::{Parser, Subcommand};
 
 use commands::{
-    batch, bench as bench_cmd, check, demo, edit, eval, intersect, op, render, render_curve, solve,
-    surface,
+    batch, bench as bench_cmd, check, demo, edit, eval, fit, intersect, op, render, render_curve,
+    solve, surface,
 };
 
 /// The camber command line: curve files, surface deformation and SVG pictures.
 #[derive(Debug, Parser)]
 #[command(name = "camber", version, about, after_help = CURVE_FILE_HELP)]
 pub struct Cli {
+    /// The largest input file read, in MiB (default 64; at most 1048576). A 100,000-cell
+    /// ladder sketch is 95 MB of JSON: `camber --max-input-mib 200 solve ladder.json …`.
+    #[arg(long, global = true, value_name = "MIB", value_parser = clap::value_parser!(u64).range(1..=curve_file::MAX_INPUT_MIB_LIMIT))]
+    pub max_input_mib: Option<u64>,
     /// The subcommand to run.
     #[command(subcommand)]
     pub command: Command,
@@ -92,6 +96,9 @@ pub enum Command {
     /// reduce-degree, offset; fit and interpolate a points file.
     #[command(after_help = OP_HELP)]
     Op(op::OpArgs),
+    /// Fit a B-spline (or, split at the leading edge, a chain of them) within a tolerance of a
+    /// point file: JSON, two columns, or a Selig or Lednicer airfoil .dat file.
+    Fit(fit::FitArgs),
     /// Where two curve files meet (both parameters, tangential or not) and their closest pair.
     Intersect(intersect::IntersectArgs),
     /// Draw a curve file as SVG: the curve, its control polygon, optionally curvature combs.
@@ -127,9 +134,13 @@ Example:    camber op blade.json split --at 0.5 -o front.json --second back.json
 
 /// Runs one parsed command line.
 pub fn run(cli: &Cli) -> Result<()> {
+    if let Some(mib) = cli.max_input_mib {
+        curve_file::set_input_limit(mib << 20);
+    }
     match &cli.command {
         Command::Eval(a) => eval::run(a),
         Command::Op(a) => op::run(a),
+        Command::Fit(a) => fit::run(a),
         Command::Intersect(a) => intersect::run(a),
         Command::RenderCurve(a) => render_curve::run(a),
         Command::Surface(a) => surface::run(a),

@@ -77,10 +77,12 @@ pub fn describe_constraint_ids(ids: &[ConstraintId]) -> String {
     }
 }
 
-/// "entities 0, 1, 2" for a component header; long lists are cut to "1000 entities: 0, 1, 2, …, 999".
+/// "entities 0, 1, 2" for a component header; long lists are cut to "1000 entities: 0, 1, 2, …, 999";
+/// "no entities" for the component of a constraint that reads none.
 pub fn describe_entities(ids: &[camber_sketch::EntityId]) -> String {
     let list: Vec<String> = ids.iter().map(|e| e.0.to_string()).collect();
     match list.as_slice() {
+        [] => "no entities".to_owned(),
         [one] => format!("entity {one}"),
         [a, b, c, .., last] if list.len() > 8 => {
             format!("{} entities: {a}, {b}, {c}, …, {last}", list.len())

@@ -195,3 +195,26 @@ fn bad_bench_arguments_exit_2() {
         .code(2)
         .stderr(predicate::str::contains("outside 1..=100000"));
 }
+
+#[test]
+fn equal_sizes_have_no_growth_and_say_so() {
+    // log(t₂/t₁)/log(10/10) used to print "growth -inf" (or NaN).
+    let v = bench_json(&["--quick", "--only", "W3", "--sizes", "10,10"]);
+    let rows = rows(&v);
+    assert_eq!(rows.len(), 2);
+    assert!(rows[1]["growth"].is_null(), "{}", rows[1]);
+    assert_eq!(rows[1]["same_size_as_previous"], true, "{}", rows[1]);
+    let out = camber()
+        .args(["bench", "--quick", "--only", "W3", "--sizes", "10,10"])
+        .assert()
+        .success()
+        .get_output()
+        .stdout
+        .clone();
+    let text = String::from_utf8(out).unwrap();
+    assert!(
+        text.contains("no growth (same N as the row before)"),
+        "{text}"
+    );
+    assert!(!text.contains("inf") && !text.contains("NaN"), "{text}");
+}

@@ -58,3 +58,13 @@ fn editor_corpus_replays() {
 fn expression_corpus_replays() {
     replay("expression", fuzz_support::expression);
 }
+
+#[test]
+fn fit_corpus_replays() {
+    replay("fit", fuzz_support::fit);
+}
+
+#[test]
+fn toolkit_corpus_replays() {
+    replay("toolkit", fuzz_support::toolkit);
+}

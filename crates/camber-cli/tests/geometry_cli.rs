@@ -305,3 +305,75 @@ fn intersect_reports_both_parameters() {
     );
     assert!(err.contains("tolerance"), "{err}");
 }
+
+#[test]
+fn intersect_reports_a_coincident_stretch_as_intervals() {
+    // A curve against itself: one stretch over the whole domain, no list of points along it.
+    let a = curve_path("bspline_camber_line.json");
+    let v = stdout_json(camber().arg("intersect").arg(&a).arg(&a));
+    assert!(v["intersections"].as_array().unwrap().is_empty(), "{v}");
+    let overlaps = v["overlaps"].as_array().unwrap();
+    assert_eq!(overlaps.len(), 1, "{v}");
+    let (lo, hi) = curve_file::load(&a).unwrap().as_parametric().domain();
+    let u_a = overlaps[0]["u_a"].as_array().unwrap();
+    assert!((u_a[0].as_f64().unwrap() - lo).abs() < 1e-9, "{v}");
+    assert!((u_a[1].as_f64().unwrap() - hi).abs() < 1e-9, "{v}");
+}
+
+#[test]
+fn split_refuses_what_eval_could_not_evaluate() {
+    let dir = tempfile::tempdir().unwrap();
+    let curve = curve_path("bspline_camber_line.json");
+    let (left, right) = (dir.path().join("l.json"), dir.path().join("r.json"));
+    // A parameter 5e-324 after the start would make a knot span f64 cannot divide by.
+    let err = failure(
+        camber()
+            .arg("op")
+            .arg(&curve)
+            .args(["split", "--at=5e-324", "-o"])
+            .arg(&left)
+            .arg("--second")
+            .arg(&right),
+    );
+    assert!(err.contains("knot span"), "{err}");
+    assert!(!left.exists() && !right.exists());
+    // What split writes, eval evaluates at both ends of both pieces.
+    camber()
+        .arg("op")
+        .arg(&curve)
+        .args(["split", "--at=1e-9", "-o"])
+        .arg(&left)
+        .arg("--second")
+        .arg(&right)
+        .assert()
+        .success();
+    for piece in [&left, &right] {
+        let (lo, hi) = curve_file::load(piece).unwrap().as_parametric().domain();
+        let v = stdout_json(
+            camber()
+                .arg("eval")
+                .arg(piece)
+                .arg(format!("--at={lo:e},{hi:e}"))
+                .args(["--derivs", "2"]),
+        );
+        assert_eq!(v.as_array().unwrap().len(), 2, "{v}");
+    }
+}
+
+#[test]
+fn eval_arc_length_says_when_it_raises_the_tolerance() {
+    let path = curve_path("nurbs_quarter_circle.json");
+    let out = camber()
+        .arg("eval")
+        .arg(&path)
+        .args(["--arc-length", "--tolerance", "1e-300"])
+        .assert()
+        .success()
+        .get_output()
+        .clone();
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let tolerance = v["tolerance"].as_f64().unwrap();
+    assert!(tolerance > 1e-300 && tolerance < 1e-13, "{v}");
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(err.contains("below what f64 resolves"), "{err}");
+}

@@ -226,7 +226,7 @@ fn render_draws_conflicts_in_red_and_optional_combs() {
 }
 
 /// Each bad file, and a fragment its one-line message must contain.
-const BAD: [(&str, &str, &str); 5] = [
+const BAD: [(&str, &str, &str); 6] = [
     (
         "malformed.json",
         r#"{"version": 1, "entities": ["#,
@@ -252,7 +252,12 @@ const BAD: [(&str, &str, &str); 5] = [
     (
         "wrong_type.json",
         r#"{"version": 1, "entities": [{"id": 0, "kind": "point", "at": [0, "y"]}]}"#,
-        "at entities[0]",
+        "at entities[0].at[1]: invalid type: string \"y\", expected a number",
+    ),
+    (
+        "null.json",
+        "null",
+        "expected a sketch: an object with \"version\", \"entities\" and \"constraints\", found null",
     ),
 ];
 
@@ -440,4 +445,67 @@ fn solve_names_every_constraint_a_priority_let_go() {
     let report = &v["components"][0]["report"];
     assert_eq!(report["status"], "relaxed");
     assert_eq!(report["priorities"][2]["relaxed"], serde_json::json!([4]));
+}
+
+#[test]
+fn the_input_size_limit_is_a_default_that_can_be_raised() {
+    // A valid sketch of 2 MiB (whitespace pads it): read by default, refused under a 1 MiB
+    // limit with a message that names the limit and the option, read again when raised.
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("padded.json");
+    let text = format!(
+        "{{\"version\": 1, \"entities\": [{{\"id\": 0, \"kind\": \"point\", \"at\": [0, 0]}}]{}}}",
+        " ".repeat(2 << 20)
+    );
+    std::fs::write(&path, text).unwrap();
+    camber().arg("check").arg(&path).assert().success();
+    let assert = camber()
+        .args(["--max-input-mib", "1", "check"])
+        .arg(&path)
+        .assert()
+        .code(2);
+    let stderr = String::from_utf8(assert.get_output().stderr.clone()).unwrap();
+    assert!(
+        stderr.contains("larger than 1 MiB") && stderr.contains("--max-input-mib"),
+        "{stderr}"
+    );
+    // The option is global: after the subcommand too.
+    camber()
+        .arg("check")
+        .arg(&path)
+        .args(["--max-input-mib", "3"])
+        .assert()
+        .success();
+    // Out of range values are usage errors.
+    for bad in ["0", "1048577", "-1", "x"] {
+        camber()
+            .args(["--max-input-mib", bad, "check"])
+            .arg(&path)
+            .assert()
+            .code(2);
+    }
+}
+
+#[cfg(unix)]
+#[test]
+fn a_raised_input_limit_reads_beyond_64_mib() {
+    // 65 MiB of whitespace around a one-point sketch: the default refuses it, 100 MiB reads it.
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("big.json");
+    let text = format!(
+        "{{\"version\": 1, \"entities\": [{{\"id\": 0, \"kind\": \"point\", \"at\": [0, 0]}}]{}}}",
+        " ".repeat(65 << 20)
+    );
+    std::fs::write(&path, text).unwrap();
+    let assert = camber().arg("check").arg(&path).assert().code(2);
+    let stderr = String::from_utf8(assert.get_output().stderr.clone()).unwrap();
+    assert!(stderr.contains("larger than 64 MiB"), "{stderr}");
+    camber()
+        .args(["--max-input-mib", "100", "check"])
+        .arg(&path)
+        .assert()
+        .success()
+        .stdout(predicate::str::contains(
+            "component 1 (entity 0; no constraints)",
+        ));
 }

@@ -6,7 +6,10 @@
 // Fixed, valid inputs: a panic is the right way for a benchmark to fail.
 #![allow(clippy::unwrap_used)]
 
-use camber_geom::fit::{approximate, fit_to_tolerance, interpolate, ParameterMethod};
+use camber_geom::budget::Budget;
+use camber_geom::fit::{
+    approximate, fit_to_tolerance, fit_to_tolerance_with, interpolate, FitOptions, ParameterMethod,
+};
 use camber_geom::queries::{curve_distance, intersect_curves, CurveCurveOptions};
 use camber_geom::{
     BSplineCurve2, BezierCurve2, CompositeCurve, CompositeCurve2, KnotVector, NurbsCurve2,
@@ -201,6 +204,28 @@ fn bench_fitting(c: &mut Criterion) {
                 fit_to_tolerance(black_box(pts), 3, 1e-5, ParameterMethod::ChordLength).unwrap()
             })
         });
+    }
+    // A 400-point NACA section (the target: at most 5 ms per section) at the three tolerances
+    // of the airfoil benchmark.
+    let section =
+        camber_workloads::airfoils::naca("2412", 400, camber_workloads::airfoils::Spacing::Cosine)
+            .unwrap();
+    for tol in [1e-3, 1e-4, 1e-5] {
+        group.bench_with_input(
+            BenchmarkId::new("naca2412_400", format!("{tol:e}")),
+            &section,
+            |b, pts| {
+                b.iter(|| {
+                    fit_to_tolerance_with(
+                        black_box(pts),
+                        tol,
+                        &FitOptions::default(),
+                        &Budget::default(),
+                    )
+                    .unwrap()
+                })
+            },
+        );
     }
     group.finish();
 }

@@ -76,12 +76,41 @@ pub trait ParametricCurve<T: Scalar, const D: usize> {
         Ok(out)
     }
 
-    /// C(u) and its derivatives up to `order`, as vectors (index k holds the k-th derivative).
+    /// C(u) and its derivatives up to `order` (at most [`MAX_DERIVATIVE_ORDER`]), as vectors
+    /// (index k holds the k-th derivative).
+    ///
+    /// Errors: [`Error::TooLarge`] for an order above [`MAX_DERIVATIVE_ORDER`] (checked before
+    /// anything is allocated), and the evaluation's errors.
     fn derivatives(&self, u: T, order: usize) -> Result<Vec<SVector<T, D>>> {
+        check_derivative_order(order)?;
         let mut out = vec![SVector::<T, D>::zeros(); order + 1];
         self.derivatives_into(u, &mut out)?;
         Ok(out)
     }
+}
+
+/// The highest derivative order [`ParametricCurve::derivatives`] computes. Above a polynomial
+/// curve's degree every derivative is zero, and a rational curve's high derivatives leave the
+/// f64 range long before this order (they grow like k!).
+pub const MAX_DERIVATIVE_ORDER: usize = 64;
+
+/// Fails with [`Error::TooLarge`] when `order` exceeds [`MAX_DERIVATIVE_ORDER`]: check an
+/// order from outside before allocating for it.
+///
+/// ```
+/// use camber_geom::curve::{check_derivative_order, MAX_DERIVATIVE_ORDER};
+/// assert!(check_derivative_order(MAX_DERIVATIVE_ORDER).is_ok());
+/// assert!(check_derivative_order(1 << 40).is_err());
+/// ```
+pub fn check_derivative_order(order: usize) -> Result<()> {
+    if order > MAX_DERIVATIVE_ORDER {
+        return Err(Error::TooLarge {
+            what: "derivative order",
+            value: order,
+            max: MAX_DERIVATIVE_ORDER,
+        });
+    }
+    Ok(())
 }
 
 /// Checks that `u` is finite and inside `[min, max]` (closed), comparing real parts.

@@ -359,6 +359,24 @@ pub enum Error {
         /// Which system ("interpolation", "least-squares").
         what: &'static str,
     },
+    /// A fit cannot reach its tolerance: even the interpolant (or, at a joint of a split fit,
+    /// the most knots the data carry) errs more, as for a tolerance below the rounding of the
+    /// data.
+    #[error("the fit reaches {reached:e}, not the tolerance {tolerance:e}")]
+    ToleranceNotMet {
+        /// The tolerance asked for.
+        tolerance: f64,
+        /// The smallest largest error found.
+        reached: f64,
+    },
+    /// A fit is split at its first or last data point, where no piece could lie before or after.
+    #[error("split point {index} is not inside the data (points 1 to {last} − 1)")]
+    SplitPointAtEnd {
+        /// The data index asked for.
+        index: usize,
+        /// The index of the last data point.
+        last: usize,
+    },
     /// A knot value that is not an interior knot of the curve.
     #[error("{value} is not an interior knot of the curve")]
     KnotNotFound {
@@ -373,6 +391,118 @@ pub enum Error {
         what: &'static str,
         /// The limit.
         limit: usize,
+    },
+    /// An iterative or adaptive routine (quadrature, subdivision, root finding, fitting, knot
+    /// removal, intersection, offsets) spent its work budget before it was done
+    /// ([`crate::budget`]): the input asks for more work than the limit allows, usually a
+    /// tolerance too tight for the curve's scale or a pathological curve.
+    ///
+    /// ```
+    /// use camber_geom::arc_length::arc_length_with;
+    /// use camber_geom::budget::Budget;
+    /// use camber_geom::{BezierCurve2, Error};
+    /// use nalgebra::Point2;
+    /// let c = BezierCurve2::try_new(vec![Point2::new(0.0, 0.0), Point2::new(1.0, 3.0),
+    ///     Point2::new(2.0, 0.0)])?;
+    /// let err = arc_length_with(&c, 1e-9, &Budget::default().with_max_work(10)).unwrap_err();
+    /// assert_eq!(err, Error::BudgetExhausted { operation: "arc length", limit: 10 });
+    /// assert!(err.to_string().contains("arc length"));
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error(
+        "the {operation} ran out of its work budget ({limit} work units): loosen the tolerance \
+         or raise the budget (Budget::with_max_work)"
+    )]
+    BudgetExhausted {
+        /// The routine that stopped ("arc length", "curve intersection", …).
+        operation: &'static str,
+        /// The limit it had, in work units.
+        limit: u64,
+    },
+    /// A routine stopped because the stop flag of its [`Budget`](crate::budget::Budget) was
+    /// set (Ctrl-C in Python, a cancel button, a deadline).
+    ///
+    /// ```
+    /// use std::sync::atomic::AtomicBool;
+    /// use std::sync::Arc;
+    /// use camber_geom::budget::Budget;
+    /// use camber_geom::offset::offset_with;
+    /// use camber_geom::{BezierCurve2, Error};
+    /// use nalgebra::Point2;
+    /// let c = BezierCurve2::try_new(vec![Point2::new(0.0, 0.0), Point2::new(1.0, 3.0),
+    ///     Point2::new(2.0, 0.0)])?;
+    /// let stop = Budget::default().with_stop(Arc::new(AtomicBool::new(true)));
+    /// assert_eq!(offset_with(&c, 0.1, 1e-6, &stop).unwrap_err(), Error::Cancelled { operation: "offset" });
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("the {operation} was cancelled")]
+    Cancelled {
+        /// The routine that stopped.
+        operation: &'static str,
+    },
+    /// A count or order (a derivative order, a number of samples or pieces) above what the
+    /// routine supports: checked before anything is allocated for it.
+    ///
+    /// ```
+    /// use camber_geom::curve::MAX_DERIVATIVE_ORDER;
+    /// use camber_geom::{BezierCurve2, Error, ParametricCurve};
+    /// use nalgebra::Point2;
+    /// let c = BezierCurve2::try_new(vec![Point2::new(0.0, 0.0), Point2::new(1.0, 1.0)])?;
+    /// let err = c.derivatives(0.5, 1 << 40).unwrap_err();
+    /// assert_eq!(err, Error::TooLarge { what: "derivative order", value: 1 << 40, max: MAX_DERIVATIVE_ORDER });
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("{what} {value} is above the largest supported, {max}")]
+    TooLarge {
+        /// What was counted.
+        what: &'static str,
+        /// The value asked for.
+        value: usize,
+        /// The largest supported.
+        max: usize,
+    },
+    /// Two curves coincide along a stretch, so their meeting points are not isolated: the
+    /// point search ([`intersect_curves`](crate::queries::intersect_curves)) names the first
+    /// stretch; [`intersect_curves_with_overlaps`](crate::queries::intersect_curves_with_overlaps)
+    /// reports every stretch as parameter intervals.
+    #[error(
+        "the curves overlap along a stretch (the first on [{a_start}, {a_end}], the second from \
+         {b_start} to {b_end}); ask for the intersections with overlaps to get them as intervals"
+    )]
+    CurvesOverlap {
+        /// Start of the stretch on the first curve.
+        a_start: f64,
+        /// End of the stretch on the first curve.
+        a_end: f64,
+        /// The second curve's parameter at `a_start`.
+        b_start: f64,
+        /// The second curve's parameter at `a_end`.
+        b_end: f64,
+    },
+    /// A split or knot insertion at a parameter so close to a domain end or an existing knot
+    /// that the new knot span would be narrower than f64 can evaluate across (its width below
+    /// [`min_span_width`](crate::knots::min_span_width) of the domain).
+    ///
+    /// ```
+    /// use camber_geom::{BSplineCurve2, Error, KnotVector};
+    /// use nalgebra::Point2;
+    /// let knots = KnotVector::clamped_uniform(2, 3)?;
+    /// let c = BSplineCurve2::try_new(2, knots, vec![Point2::new(0.0, 0.0), Point2::new(1.0, 1.0),
+    ///     Point2::new(2.0, 0.0)])?;
+    /// assert!(matches!(c.split(5e-324), Err(Error::DegenerateSpan { .. })));
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error(
+        "parameter {value} would make a knot span {width:e} wide, narrower than the smallest \
+         span f64 can evaluate across here ({min:e})"
+    )]
+    DegenerateSpan {
+        /// The parameter asked for.
+        value: f64,
+        /// The width of the span it would create.
+        width: f64,
+        /// The smallest width allowed.
+        min: f64,
     },
 }
 

@@ -149,6 +149,10 @@ fn check_vectors<T: Scalar, const D: usize>(
     Ok(())
 }
 
+/// The most pieces [`HermiteCurve::subdivided`] makes (a million pieces are 64 MB of planar
+/// curves; a count from outside above it is refused before allocating).
+pub const MAX_SUBDIVISIONS: usize = 1 << 20;
+
 /// A cubic Hermite curve p(u) = U·M·B on u ∈ [0, 1], with geometric form B = [p0, p1, t0, t1]:
 /// p(0) = p0, p(1) = p1, p′(0) = t0, p′(1) = t1 (tangents in length units per unit of u).
 ///
@@ -378,7 +382,8 @@ impl<T: Scalar, const D: usize> HermiteCurve<T, D> {
 
     /// The curve cut into `n` pieces of equal parameter length 1/n, each reparameterized to
     /// [0, 1]: piece i (1-based) has B_i = [p((i−1)/n), p(i/n), p′((i−1)/n)/n, p′(i/n)/n].
-    /// `n` = 0 is [`Error::ZeroCount`].
+    /// `n` = 0 is [`Error::ZeroCount`], `n` above [`MAX_SUBDIVISIONS`] [`Error::TooLarge`]
+    /// (checked before anything is allocated).
     ///
     /// ```
     /// use camber_geom::{HermiteCurve2, ParametricCurve};
@@ -392,6 +397,13 @@ impl<T: Scalar, const D: usize> HermiteCurve<T, D> {
     pub fn subdivided(&self, n: usize) -> Result<Vec<Self>> {
         if n == 0 {
             return Err(Error::ZeroCount { what: "segments" });
+        }
+        if n > MAX_SUBDIVISIONS {
+            return Err(Error::TooLarge {
+                what: "segments",
+                value: n,
+                max: MAX_SUBDIVISIONS,
+            });
         }
         let nt = from_usize::<T>(n);
         let h = T::one() / nt;

@@ -12,7 +12,7 @@
 
 use crate::curve::{check_interior_parameter, check_interval, check_parameter};
 use crate::errors::{Error, Result};
-use crate::knots::KnotVector;
+use crate::knots::{check_new_spans, KnotVector};
 use crate::scalar::{cst, re, Scalar};
 
 /// A B-spline control net in flat form: `coords` holds `dim` coordinates per control point,
@@ -187,7 +187,9 @@ impl<T: Scalar> ControlNet<T> {
     ///
     /// Errors: [`Error::ParameterOutsideDomain`] (or [`Error::NonFinite`]) when u is not in
     /// the domain, [`Error::KnotMultiplicity`] when u's multiplicity plus `times` exceeds the
-    /// degree, and the [`check`](Self::check) errors for an invalid net.
+    /// degree, [`Error::DegenerateSpan`] when u is a new knot closer to another than
+    /// [`min_span_width`](crate::knots::min_span_width), and the [`check`](Self::check) errors
+    /// for an invalid net.
     pub fn insert_knot(&self, u: T, times: usize) -> Result<Self> {
         self.check()?;
         check_parameter(u, self.domain())?;
@@ -203,6 +205,7 @@ impl<T: Scalar> ControlNet<T> {
         if times == 0 {
             return Ok(self.clone());
         }
+        check_new_spans(self.knots.as_slice(), self.domain(), &[u])?;
         Ok(self.insert_unchecked(u, times, s))
     }
 
@@ -210,8 +213,9 @@ impl<T: Scalar> ControlNet<T> {
     ///
     /// Errors: a non-finite new knot ([`Error::NonFinite`], what = "new knot"), a decreasing
     /// sequence ([`Error::DecreasingKnots`], indices into `new_knots`), a knot outside the
-    /// domain ([`Error::ParameterOutsideDomain`]) and a resulting multiplicity above the degree
-    /// ([`Error::KnotMultiplicity`]).
+    /// domain ([`Error::ParameterOutsideDomain`]), a resulting multiplicity above the degree
+    /// ([`Error::KnotMultiplicity`]) and a new knot too close to another
+    /// ([`Error::DegenerateSpan`]).
     pub fn refine(&self, new_knots: &[T]) -> Result<Self> {
         self.check()?;
         let domain = self.domain();
@@ -250,6 +254,7 @@ impl<T: Scalar> ControlNet<T> {
         if new_knots.is_empty() {
             return Ok(self.clone());
         }
+        check_new_spans(self.knots.as_slice(), domain, new_knots)?;
         Ok(self.refine_unchecked(new_knots))
     }
 
@@ -257,11 +262,14 @@ impl<T: Scalar> ControlNet<T> {
     /// [a, u], the right one [u, b], both clamped at every end, and together they trace the
     /// original curve. The joint keeps the continuity the curve had at u.
     ///
-    /// Errors: [`Error::ParameterOutsideDomain`] for u ≤ a or u ≥ b (or non-finite u).
+    /// Errors: [`Error::ParameterOutsideDomain`] for u ≤ a or u ≥ b (or non-finite u), and
+    /// [`Error::DegenerateSpan`] for a u closer to a knot than
+    /// [`min_span_width`](crate::knots::min_span_width) (the pieces could not be evaluated).
     pub fn split(&self, u: T) -> Result<(Self, Self)> {
         self.check()?;
         let (a, b) = self.domain();
         check_interior_parameter(u, (a, b))?;
+        check_new_spans(self.knots.as_slice(), (a, b), &[u])?;
         let net = self.clamped().raised_to_degree_multiplicity(u);
         Ok((net.head_to(u), net.tail_from(u)))
     }
@@ -428,7 +436,7 @@ impl<T: Scalar> ControlNet<T> {
 /// Private building blocks; all assume a valid net.
 impl<T: Scalar> ControlNet<T> {
     /// A5.1: inserts u (in the domain, current multiplicity s) r ≥ 1 times, s + r ≤ p.
-    fn insert_unchecked(&self, u: T, r: usize, s: usize) -> Self {
+    pub(crate) fn insert_unchecked(&self, u: T, r: usize, s: usize) -> Self {
         let (p, dim) = (self.degree, self.dim);
         let uk = self.knots.as_slice();
         // The span k with u_k ≤ u < u_{k+1}; k ≥ p because u ≥ u_p.

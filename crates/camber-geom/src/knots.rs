@@ -358,6 +358,58 @@ pub(crate) fn check_faithful_map<T: Scalar>(old: &[T], new: &[T], a: T, b: T) ->
     }
 }
 
+/// The narrowest knot span a split or knot insertion may create on the domain [a, b]:
+/// [`MIN_SPAN_ULPS`] ulps of the largest of |a|, |b| and b − a. A narrower span holds too few
+/// distinct f64 parameters for the basis functions, which divide by knot differences, to be
+/// evaluated across it (a span of 5·10⁻³²⁴ makes every point on it NaN).
+///
+/// ```
+/// use camber_geom::knots::min_span_width;
+/// assert!((min_span_width(0.0, 1.0) - 64.0 * f64::EPSILON).abs() < 1e-30);
+/// assert!(min_span_width(1e6, 1e6 + 1.0) > 1e-8);
+/// ```
+pub fn min_span_width(a: f64, b: f64) -> f64 {
+    MIN_SPAN_ULPS * f64::EPSILON * a.abs().max(b.abs()).max(b - a)
+}
+
+/// See [`min_span_width`].
+pub const MIN_SPAN_ULPS: f64 = 64.0;
+
+/// Fails with [`Error::DegenerateSpan`] when inserting the new knot values `new` (sorted)
+/// into `knots` on the domain [a, b] would make a span narrower than [`min_span_width`]: a new
+/// value must be an existing knot or lie at least that far from every other knot value, old
+/// or new.
+pub(crate) fn check_new_spans<T: Scalar>(knots: &[T], (a, b): (T, T), new: &[T]) -> Result<()> {
+    let min = min_span_width(re(a), re(b));
+    let mut previous: Option<f64> = None;
+    for (i, &u) in new.iter().enumerate() {
+        let v = re(u);
+        if previous.is_some_and(|p| p >= v) {
+            continue;
+        }
+        previous = Some(v);
+        let at = knots.partition_point(|&k| k < u);
+        if knots.get(at).is_some_and(|&k| k <= u) {
+            continue; // an existing knot: no new span
+        }
+        let below = at.checked_sub(1).map(|i| re(knots[i]));
+        let above = knots.get(at).map(|&k| re(k));
+        let next_new = new[i + 1..].iter().map(|&x| re(x)).find(|&x| x > v);
+        let neighbours = [below, above, next_new];
+        for w in neighbours.into_iter().flatten() {
+            let width = (v - w).abs();
+            if width < min {
+                return Err(Error::DegenerateSpan {
+                    value: v,
+                    width,
+                    min,
+                });
+            }
+        }
+    }
+    Ok(())
+}
+
 /// Fails with [`Error::DegreeTooHigh`] when `degree` exceeds [`MAX_DEGREE`].
 pub(crate) fn check_degree(degree: usize) -> Result<()> {
     if degree > MAX_DEGREE {

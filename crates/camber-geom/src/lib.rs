@@ -46,6 +46,7 @@ pub mod basis;
 pub mod bernstein;
 pub mod bezier;
 pub mod bspline;
+pub mod budget;
 pub mod composite;
 pub mod curve;
 pub mod degree_reduction;
@@ -65,6 +66,7 @@ pub mod serde_support;
 
 pub use bezier::{BezierCurve, BezierCurve2, BezierCurve3};
 pub use bspline::{BSplineCurve, BSplineCurve2, BSplineCurve3};
+pub use budget::Budget;
 pub use composite::{CompositeCurve, CompositeCurve2, CompositeCurve3, Continuity, JointReport};
 pub use curve::ParametricCurve;
 pub use errors::{Error, Result};

@@ -6,10 +6,16 @@
 // Test helpers outside #[test] functions unwrap too; a failed unwrap is a failed test.
 #![allow(clippy::unwrap_used)]
 
+use camber_geom::budget::Budget;
+use camber_geom::composite::ContinuityTolerances;
 use camber_geom::fit::{
-    approximate, data_parameters, fit_to_tolerance, interpolate, ParameterMethod,
+    approximate, approximate_with, data_parameters, fit_split, fit_to_tolerance,
+    fit_to_tolerance_with, interpolate, FitOptions, JointContinuity, KnotPlacement,
+    ParameterMethod, SplitAt,
 };
-use camber_geom::{BezierCurve2, Error, ParametricCurve};
+use camber_geom::queries::closest_point;
+use camber_geom::{BezierCurve2, Continuity, Error, ParametricCurve};
+use camber_workloads::airfoils::{naca, Spacing};
 use nalgebra::{Point2, Vector2};
 use proptest::prelude::*;
 
@@ -218,7 +224,12 @@ proptest! {
     #[test]
     fn fits_meet_their_tolerance((p, pts) in data_strategy(), m in 0u8..3, tol_exp in -6i32..0) {
         let tol = 10f64.powi(tol_exp);
-        let fit = fit_to_tolerance(&pts, p, tol, method(m)).unwrap();
+        let fit = match fit_to_tolerance(&pts, p, tol, method(m)) {
+            Ok(f) => f,
+            // Only a tolerance below the interpolant's rounding may be out of reach.
+            Err(Error::ToleranceNotMet { reached, .. }) if reached < 1e-9 => return Ok(()),
+            Err(e) => return Err(TestCaseError::fail(e.to_string())),
+        };
         prop_assert!(fit.max_error <= tol);
         prop_assert!(fit.curve.control_points().len() <= pts.len());
         // Measured again independently of the fit's own figure.
@@ -226,6 +237,202 @@ proptest! {
             prop_assert!((fit.curve.point(u).unwrap() - q).norm() <= tol * (1.0 + 1e-9));
         }
     }
+}
+
+/// Smooth random curves: a cubic Bézier arc plus a small wave, sampled at random increasing
+/// parameters (20 to 120 points).
+fn smooth_strategy() -> impl Strategy<Value = Vec<Point2<f64>>> {
+    (
+        proptest::collection::vec((-5.0..5.0_f64, -5.0..5.0_f64), 4),
+        0.0..0.3_f64,
+        1.0..6.0_f64,
+        proptest::collection::vec(0.2..1.0_f64, 20..120),
+    )
+        .prop_map(|(cps, amp, freq, steps)| {
+            let bez = BezierCurve2::try_new(
+                cps.iter()
+                    .enumerate()
+                    .map(|(i, &(x, y))| Point2::new(3.0 * i as f64 + x * 0.3, y))
+                    .collect(),
+            )
+            .unwrap();
+            let total: f64 = steps.iter().sum();
+            let mut t = 0.0;
+            let mut out = vec![bez.point(0.0).unwrap()];
+            for s in &steps {
+                t = (t + s / total).min(1.0);
+                let p = bez.point(t).unwrap();
+                out.push(p + Vector2::new(0.0, amp * (freq * t * 6.0).sin()));
+            }
+            out.dedup_by(|a, b| (*a - *b).norm() < 1e-9);
+            out
+        })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// The reported error is the distance to the whole curve: no data point is farther from the
+    /// curve (by the toolkit's closest point, searched on the whole curve) than the tolerance,
+    /// and the largest such distance is the reported one.
+    #[test]
+    fn adaptive_fits_stay_within_tolerance_by_distance(pts in smooth_strategy(), tol_exp in -6i32..-1, centripetal in any::<bool>()) {
+        let tol = 10f64.powi(tol_exp);
+        let method = if centripetal { ParameterMethod::Centripetal } else { ParameterMethod::ChordLength };
+        let fit = fit_to_tolerance_with(&pts, tol, &FitOptions::default().with_method(method), &Budget::default()).unwrap();
+        prop_assert!(fit.max_error <= tol);
+        let mut worst = 0.0_f64;
+        for q in &pts {
+            let d = closest_point(&fit.curve, q).unwrap().distance;
+            prop_assert!(d <= tol * (1.0 + 1e-9), "{d} > {tol}");
+            worst = worst.max(d);
+        }
+        prop_assert!((worst - fit.max_error).abs() <= 1e-9 * tol + 1e-15, "{worst} vs {}", fit.max_error);
+        // Interpolation only when the tolerance asks for it: fewer control points than data
+        // whenever a least-squares fit with one control point fewer meets the tolerance.
+        if fit.curve.control_points().len() == pts.len() {
+            let fewer = approximate_with(&pts, pts.len() - 1, &FitOptions::default().with_method(method)).unwrap();
+            prop_assert!(fewer.max_error > tol);
+        }
+    }
+}
+
+#[test]
+fn airfoils_fit_with_few_control_points_and_never_interpolate() {
+    // NACA sections at 1e-4 chord: a few dozen control points, far fewer than points.
+    for (code, n, spacing, most) in [
+        ("2412", 201, Spacing::Cosine, 26),
+        ("0012", 141, Spacing::Uniform, 32),
+        ("23015", 400, Spacing::Cosine, 26),
+        ("6409", 71, Spacing::Cosine, 30),
+    ] {
+        let pts = naca(code, n, spacing).unwrap();
+        let fit =
+            fit_to_tolerance_with(&pts, 1e-4, &FitOptions::default(), &Budget::default()).unwrap();
+        let count = fit.curve.control_points().len();
+        assert!(fit.max_error <= 1e-4, "{code}: {}", fit.max_error);
+        assert!(count <= most, "{code}-{n}: {count} control points");
+        for q in pts.iter().step_by(7) {
+            assert!(closest_point(&fit.curve, q).unwrap().distance <= 1e-4);
+        }
+    }
+}
+
+#[test]
+fn adaptive_knots_beat_averaged_knots_at_a_sharp_leading_edge() {
+    let pts = naca("0012", 201, Spacing::Cosine).unwrap();
+    let opts = FitOptions::default();
+    let averaged = approximate_with(&pts, 16, &opts.with_knots(KnotPlacement::Averaged)).unwrap();
+    let adaptive = approximate_with(&pts, 16, &opts).unwrap();
+    assert_eq!(adaptive.curve.control_points().len(), 16);
+    assert!(
+        adaptive.max_error < 0.5 * averaged.max_error,
+        "{} vs {}",
+        adaptive.max_error,
+        averaged.max_error
+    );
+}
+
+#[test]
+fn split_airfoils_join_g1_or_g2_at_the_leading_edge() {
+    let pts = naca("2412", 201, Spacing::Cosine).unwrap();
+    // The cambered section's smallest x lies just above the chord line's origin.
+    let le = (0..pts.len())
+        .min_by(|&a, &b| pts[a].x.total_cmp(&pts[b].x))
+        .unwrap();
+    assert_eq!(le, 99);
+    for joint in [JointContinuity::G1, JointContinuity::G2] {
+        let fit = fit_split(
+            &pts,
+            1e-4,
+            &FitOptions::default(),
+            &SplitAt::LeadingEdge,
+            joint,
+            &Budget::default(),
+        )
+        .unwrap();
+        assert_eq!(fit.joints, vec![le]);
+        assert!(fit.max_error <= 1e-4);
+        // The pieces share the leading-edge point.
+        let a = fit.pieces[0].curve.point(1.0).unwrap();
+        let b = fit.pieces[1].curve.point(0.0).unwrap();
+        assert!((a - pts[le]).norm() < 1e-12 && (b - pts[le]).norm() < 1e-12);
+        let report = fit.to_composite().unwrap().joints().unwrap()[0];
+        let tol = ContinuityTolerances {
+            angle: 1e-9,
+            curvature: 1e-6,
+            ..Default::default()
+        };
+        let want = if joint == JointContinuity::G1 {
+            Continuity::G1
+        } else {
+            Continuity::G2
+        };
+        assert!(report.continuity(&tol) >= want, "{joint:?}: {report:?}");
+        for (piece, range) in fit.pieces.iter().zip([&pts[..=le], &pts[le..]]) {
+            for q in range {
+                assert!(closest_point(&piece.curve, q).unwrap().distance <= 1e-4);
+            }
+        }
+    }
+}
+
+#[test]
+fn bad_splits_and_unreachable_tolerances_are_typed() {
+    let pts = naca("0012", 41, Spacing::Cosine).unwrap();
+    let opts = FitOptions::default();
+    assert_eq!(
+        fit_split(
+            &pts,
+            1e-4,
+            &opts,
+            &SplitAt::Indices(vec![0]),
+            JointContinuity::G1,
+            &Budget::default()
+        )
+        .unwrap_err(),
+        Error::SplitPointAtEnd { index: 0, last: 40 }
+    );
+    assert!(matches!(
+        fit_split(
+            &pts,
+            1e-4,
+            &opts,
+            &SplitAt::Parameters(vec![1.5]),
+            JointContinuity::G1,
+            &Budget::default()
+        ),
+        Err(Error::ParameterOutsideDomain { .. })
+    ));
+    assert!(matches!(
+        fit_split(
+            &pts,
+            1e-4,
+            &opts,
+            &SplitAt::Parameters(vec![f64::NAN]),
+            JointContinuity::G1,
+            &Budget::default()
+        ),
+        Err(Error::NonFinite { .. })
+    ));
+    assert!(matches!(
+        fit_to_tolerance_with(&pts, 1e-300, &opts, &Budget::default()),
+        Err(Error::ToleranceNotMet { .. })
+    ));
+    assert!(matches!(
+        fit_to_tolerance_with(&pts, f64::INFINITY, &opts, &Budget::default()),
+        Err(Error::NonFinite { .. })
+    ));
+    let one = [Point2::new(0.0, 0.0)];
+    assert!(matches!(
+        fit_to_tolerance_with(&one, 1e-3, &opts, &Budget::default()),
+        Err(Error::TooFewDataPoints { .. })
+    ));
+    let empty: [Point2<f64>; 0] = [];
+    assert!(matches!(
+        fit_to_tolerance_with(&empty, 1e-3, &opts, &Budget::default()),
+        Err(Error::TooFewDataPoints { .. })
+    ));
 }
 
 proptest! {

@@ -84,13 +84,23 @@ pub fn workers(threads: Option<usize>) -> usize {
 /// "error": message or None, "exception": the exception a custom residual of the item raised
 /// when that made it fail, or None, "sketch": the solved Sketch (a failed item's unchanged;
 /// None when a file could not be read)}.
+///
+/// With `parameters` (a dict name → list of values, all of one length n), `items` is one
+/// sketch (a `Sketch` or a path, left unchanged) solved for each of the n rows of values:
+/// one dict per variant, {"row", "ok", "max_residual", "error", every parameter's value, and
+/// `"<constraint id>.<name>"` for every solved free parameter of an expression constraint}.
 #[pyfunction]
-#[pyo3(signature = (items, threads = None))]
+#[pyo3(signature = (items, threads = None, parameters = None))]
 pub fn solve_many(
     py: Python<'_>,
-    items: Vec<Bound<'_, PyAny>>,
+    items: Bound<'_, PyAny>,
     threads: Option<usize>,
+    parameters: Option<std::collections::BTreeMap<String, Vec<f64>>>,
 ) -> PyResult<Vec<Py<PyAny>>> {
+    if let Some(table) = parameters {
+        return sweep(py, &items, threads, table);
+    }
+    let items: Vec<Bound<'_, PyAny>> = items.extract()?;
     let mut jobs = Vec::with_capacity(items.len());
     for item in &items {
         if let Ok(s) = item.cast::<Sketch>() {
@@ -179,6 +189,47 @@ pub fn solve_many(
             (_, None) => py.None(),
         };
         d.set_item("sketch", sketch_obj)?;
+        out.push(d.into_any().unbind());
+    }
+    Ok(out)
+}
+
+/// `solve_many(sketch, parameters=…)`: one solve per row of the table.
+fn sweep(
+    py: Python<'_>,
+    item: &Bound<'_, PyAny>,
+    threads: Option<usize>,
+    table: std::collections::BTreeMap<String, Vec<f64>>,
+) -> PyResult<Vec<Py<PyAny>>> {
+    use camber_sketch::parameters::sweep::{solve_variants, Table};
+    let base = if let Ok(s) = item.cast::<Sketch>() {
+        s.borrow().inner.clone()
+    } else {
+        let path: PathBuf = item.extract().map_err(|_| {
+            errors::SketchError::new_err("with parameters, solve_many takes one Sketch or path")
+        })?;
+        let text = std::fs::read_to_string(&path).map_err(|e| {
+            errors::FileError::new_err(format!("cannot read {}: {e}", path.display()))
+        })?;
+        camber_sketch::file::from_json(&text).map_err(errors::file)?
+    };
+    let table = Table::try_new(table.into_iter().collect()).map_err(errors::sketch)?;
+    let rows = py
+        .detach(|| solve_variants(&base, &table, threads))
+        .map_err(errors::sketch)?;
+    let mut out = Vec::with_capacity(rows.len());
+    for r in rows {
+        let d = PyDict::new(py);
+        d.set_item("row", r.row)?;
+        d.set_item("ok", r.ok)?;
+        d.set_item("max_residual", r.max_residual)?;
+        d.set_item("error", r.error)?;
+        for (name, value) in table.row(r.row) {
+            d.set_item(name, value)?;
+        }
+        for (id, name, value) in r.free {
+            d.set_item(format!("{id}.{name}"), value)?;
+        }
         out.push(d.into_any().unbind());
     }
     Ok(out)

@@ -110,6 +110,8 @@ pub fn derivatives_flat<C, const D: usize>(
 where
     C: ParametricCurve<f64, D> + ?Sized,
 {
+    // The order is checked before anything is sized by it.
+    camber_geom::curve::check_derivative_order(order)?;
     let mut out = Vec::with_capacity(us.len() * (order + 1) * D);
     let mut scratch = vec![SVector::<f64, D>::zeros(); order + 1];
     for &u in us {
@@ -428,10 +430,12 @@ impl Curve {
     }
 
     /// Every intersection with another curve of the same dimension, in order along this one:
-    /// a list of dicts {parameter_a, parameter_b, point_a, point_b, distance, tangential}
-    /// (a tangential one is a touch). Points closer than `tolerance` coincide; raises
-    /// `GeometryError` when the curves overlap along a stretch (more than `max_candidates`
-    /// candidate pairs).
+    /// a list of dicts, each a contact {kind: "point", parameter_a, parameter_b, point_a,
+    /// point_b, distance, tangential} (a tangential one is a touch) or a stretch where the
+    /// curves coincide {kind: "overlap", interval_a: (s0, s1), interval_b: (t0, t1)}
+    /// (t0 > t1 when the other curve runs the opposite way). Points closer than `tolerance`
+    /// coincide; raises `GeometryError` when the search needs more than `max_candidates`
+    /// candidate pairs.
     #[pyo3(signature = (other, tolerance = 1e-9, max_candidates = 20_000))]
     fn intersect_curve<'py>(
         &self,

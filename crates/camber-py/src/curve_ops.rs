@@ -6,9 +6,12 @@
 
 use camber_geom::arc_length::{self, ArcLengthMap as GeomArcLengthMap};
 use camber_geom::extend::{CurveEnd, ExtensionContinuity};
-use camber_geom::fit::{self, Fit, ParameterMethod};
+use camber_geom::fit::{
+    self, Fit, FitOptions, JointContinuity, KnotPlacement, ParameterMethod, SplitAt, SplitFit,
+};
 use camber_geom::queries::{
-    curve_distance, intersect_curves, BezierPieces, CurveCurveOptions, CurvePairPoint,
+    curve_distance, intersect_curves_with_overlaps, BezierPieces, CurveCurveOptions,
+    CurveIntersections, CurvePairPoint,
 };
 use numpy::{AllowTypeChange, PyArray1, PyArrayLike2};
 use pyo3::prelude::*;
@@ -69,17 +72,24 @@ pub fn length(
     .map_err(geometry)
 }
 
-/// The parameter at arc length s from the start, for one s or an array.
+/// The parameter at arc length s from the start, for one s or an array: one quadrature of
+/// the curve (an `ArcLengthTable`) serves every s.
 pub fn parameter_at_length(
     py: Python<'_>,
     c: &AnyCurve,
     s: &Bound<'_, PyAny>,
     tolerance: f64,
 ) -> PyResult<Py<PyAny>> {
+    let budget = camber_geom::Budget::default();
+    let table = py
+        .detach(
+            || crate::curve::each!(c, c => arc_length::ArcLengthTable::new(c, tolerance, &budget)),
+        )
+        .map_err(geometry)?;
     crate::curve::scalar_map(
         py,
         s,
-        |s| crate::curve::each!(c, c => arc_length::parameter_at_length(c, s, tolerance)),
+        |s| crate::curve::each!(c, c => table.parameter(c, s, &budget)),
     )
 }
 
@@ -108,6 +118,13 @@ impl ArcLengthMap {
         self.inner.max_error()
     }
 
+    /// The tolerance the map was made to: the one asked for, or, when that was below what
+    /// f64 resolves on the curve, that floor (compare it with what you asked).
+    #[getter]
+    fn tolerance(&self) -> f64 {
+        self.inner.tolerance()
+    }
+
     /// The number of interpolation nodes.
     #[getter]
     fn node_count(&self) -> usize {
@@ -117,7 +134,7 @@ impl ArcLengthMap {
     /// The parameter u(s) for arc lengths s (clamped to [0, length]): a float or an array.
     fn parameter(&self, py: Python<'_>, s: &Bound<'_, PyAny>) -> PyResult<Py<PyAny>> {
         let map = &self.inner;
-        crate::curve::scalar_map(py, s, |s| Ok(map.parameter(s)))
+        crate::curve::scalar_map(py, s, |s| map.parameter(s))
     }
 
     fn __repr__(&self) -> String {
@@ -199,7 +216,32 @@ fn same_dimension(a: &AnyCurve, b: &AnyCurve, what: &str) -> PyResult<()> {
     }
 }
 
-/// Every intersection of two curves of the same dimension, in order along `a`.
+/// The contacts and overlaps of two curves as dicts, in order along `a`: contacts as
+/// [`pair_dict`] with `"kind": "point"`, overlaps as `{"kind": "overlap", "interval_a":
+/// (s0, s1), "interval_b": (t0, t1)}`.
+fn intersection_dicts<'py, const D: usize>(
+    py: Python<'py>,
+    found: &CurveIntersections<D>,
+) -> PyResult<Vec<Bound<'py, PyDict>>> {
+    let mut out: Vec<(f64, Bound<'py, PyDict>)> = Vec::new();
+    for p in &found.points {
+        let d = pair_dict(py, p)?;
+        d.set_item("kind", "point")?;
+        out.push((p.parameter_a, d));
+    }
+    for o in &found.overlaps {
+        let d = PyDict::new(py);
+        d.set_item("kind", "overlap")?;
+        d.set_item("interval_a", o.a)?;
+        d.set_item("interval_b", o.b)?;
+        out.push((o.a.0, d));
+    }
+    out.sort_by(|x, y| x.0.total_cmp(&y.0));
+    Ok(out.into_iter().map(|(_, d)| d).collect())
+}
+
+/// Every intersection of two curves of the same dimension, in order along `a`: isolated
+/// contacts, and stretches where the curves coincide as parameter intervals.
 pub fn intersect<'py>(
     py: Python<'py>,
     a: &AnyCurve,
@@ -210,18 +252,16 @@ pub fn intersect<'py>(
     same_dimension(a, b, "intersect_curve")?;
     let opts = options(tolerance, max_candidates);
     match (pieces2(a), pieces2(b), pieces3(a), pieces3(b)) {
-        (Some(a), Some(b), _, _) => py
-            .detach(|| intersect_curves(a, b, &opts))
-            .map_err(geometry)?
-            .iter()
-            .map(|p| pair_dict(py, p))
-            .collect(),
-        (_, _, Some(a), Some(b)) => py
-            .detach(|| intersect_curves(a, b, &opts))
-            .map_err(geometry)?
-            .iter()
-            .map(|p| pair_dict(py, p))
-            .collect(),
+        (Some(a), Some(b), _, _) => intersection_dicts(
+            py,
+            &py.detach(|| intersect_curves_with_overlaps(a, b, &opts))
+                .map_err(geometry)?,
+        ),
+        (_, _, Some(a), Some(b)) => intersection_dicts(
+            py,
+            &py.detach(|| intersect_curves_with_overlaps(a, b, &opts))
+                .map_err(geometry)?,
+        ),
         _ => Err(input("intersect_curve: curves of different dimensions")),
     }
 }
@@ -317,11 +357,57 @@ pub fn interpolate(
     }
 }
 
+/// `"averaged"` or `"adaptive"`.
+fn knot_placement(word: &str) -> PyResult<KnotPlacement> {
+    match word.to_ascii_lowercase().as_str() {
+        "averaged" => Ok(KnotPlacement::Averaged),
+        "adaptive" => Ok(KnotPlacement::Adaptive),
+        _ => Err(input(format!(
+            "knots: expected \"averaged\" or \"adaptive\", found {word:?}"
+        ))),
+    }
+}
+
+/// `"G1"` or `"G2"` for the joints of a split fit.
+fn joint_continuity(word: &str) -> PyResult<JointContinuity> {
+    match word.to_ascii_uppercase().as_str() {
+        "G1" => Ok(JointContinuity::G1),
+        "G2" => Ok(JointContinuity::G2),
+        _ => Err(input(format!(
+            "joint: expected \"G1\" or \"G2\", found {word:?}"
+        ))),
+    }
+}
+
+/// `None`, `"leading_edge"`, or a list of data parameters in (0, 1) to split at.
+fn split_at(split: Option<&Bound<'_, PyAny>>) -> PyResult<Option<SplitAt>> {
+    let Some(split) = split else {
+        return Ok(None);
+    };
+    if split.is_none() {
+        return Ok(None);
+    }
+    if let Ok(word) = split.extract::<String>() {
+        return match word.to_ascii_lowercase().replace('-', "_").as_str() {
+            "leading_edge" | "le" => Ok(Some(SplitAt::LeadingEdge)),
+            _ => Err(input(format!(
+                "split: expected \"leading_edge\" or a list of parameters, found {word:?}"
+            ))),
+        };
+    }
+    let values: Vec<f64> = split.extract().map_err(|_| {
+        input("split: expected \"leading_edge\" or a list of parameters in (0, 1)".to_owned())
+    })?;
+    Ok(Some(SplitAt::Parameters(values)))
+}
+
 /// The least-squares B-spline of `degree` with `control_points` control points through the
-/// data points, its ends on the first and last data points when `fixed_ends`. Returns (curve,
-/// parameters, max_error).
+/// data points, its ends on the first and last data points when `fixed_ends`; `knots` is
+/// `"averaged"` (from the data parameters) or `"adaptive"` (spread by the errors of trial fits,
+/// parameters corrected to foot points). Returns (curve, parameters, max_error), max_error the
+/// largest distance from a data point to the curve.
 #[pyfunction]
-#[pyo3(signature = (points, degree, control_points, method = "chord_length", fixed_ends = true))]
+#[pyo3(signature = (points, degree, control_points, method = "chord_length", fixed_ends = true, knots = "averaged"))]
 pub fn approximate(
     py: Python<'_>,
     points: PyArrayLike2<'_, f64, AllowTypeChange>,
@@ -329,53 +415,141 @@ pub fn approximate(
     control_points: usize,
     method: &str,
     fixed_ends: bool,
+    knots: &str,
 ) -> PyResult<(Py<PyAny>, Py<PyAny>, f64)> {
-    let method = parameter_method(method)?;
+    let options = FitOptions {
+        degree,
+        method: parameter_method(method)?,
+        knots: knot_placement(knots)?,
+        fixed_ends,
+    };
     match columns(&points) {
         3 => {
             let pts = crate::arrays::points::<3>(&points, "points")?;
             let f = py
-                .detach(|| fit::approximate(&pts, degree, control_points, method, fixed_ends))
+                .detach(|| fit::approximate_with(&pts, control_points, &options))
                 .map_err(geometry)?;
             fit_tuple(py, f, AnyCurve::BSpline3)
         }
         _ => {
             let pts = crate::arrays::points::<2>(&points, "points")?;
             let f = py
-                .detach(|| fit::approximate(&pts, degree, control_points, method, fixed_ends))
+                .detach(|| fit::approximate_with(&pts, control_points, &options))
                 .map_err(geometry)?;
             fit_tuple(py, f, AnyCurve::BSpline2)
         }
     }
 }
 
-/// The B-spline of `degree` with the fewest control points (by increasing count) whose
-/// largest error at the data points is within `tolerance`. Returns (curve, parameters,
-/// max_error).
+/// A split fit as (list of curves, list of parameter arrays, max_error).
+fn split_tuple<const D: usize>(
+    py: Python<'_>,
+    f: SplitFit<f64, D>,
+    make: fn(camber_geom::BSplineCurve<f64, D>) -> AnyCurve,
+) -> PyResult<(Py<PyAny>, Py<PyAny>, f64)> {
+    let mut curves = Vec::with_capacity(f.pieces.len());
+    let mut params = Vec::with_capacity(f.pieces.len());
+    for piece in f.pieces {
+        curves.push(wrap(py, make(piece.curve))?);
+        params.push(PyArray1::from_vec(py, piece.parameters).into_any().unbind());
+    }
+    Ok((
+        pyo3::types::PyList::new(py, curves)?.into_any().unbind(),
+        pyo3::types::PyList::new(py, params)?.into_any().unbind(),
+        f.max_error,
+    ))
+}
+
+/// The B-spline of `degree` within `tolerance` of every data point (the largest distance from
+/// a data point to the curve, never above the tolerance) with as few control points as the
+/// adaptive search finds (`knots="adaptive"`; `"averaged"` searches the count with averaged
+/// knots and residuals at the parameters). Returns (curve, parameters, max_error).
+///
+/// With `split="leading_edge"` (the point of smallest x) or a list of data parameters in
+/// (0, 1), every piece between split points gets its own curve, and neighbouring curves share
+/// the joint's point and tangent direction (`joint="G1"`) and curvature (`joint="G2"`); then the
+/// result is (list of curves, list of parameter arrays, max_error).
 #[pyfunction]
-#[pyo3(signature = (points, degree, tolerance, method = "chord_length"))]
+#[pyo3(signature = (points, degree, tolerance, method = "chord_length", knots = "adaptive", split = None, joint = "G1"))]
+#[allow(clippy::too_many_arguments)] // the Python keyword arguments, one per option
 pub fn fit_to_tolerance(
     py: Python<'_>,
     points: PyArrayLike2<'_, f64, AllowTypeChange>,
     degree: usize,
     tolerance: f64,
     method: &str,
+    knots: &str,
+    split: Option<&Bound<'_, PyAny>>,
+    joint: &str,
 ) -> PyResult<(Py<PyAny>, Py<PyAny>, f64)> {
-    let method = parameter_method(method)?;
-    match columns(&points) {
-        3 => {
+    let options = FitOptions {
+        degree,
+        method: parameter_method(method)?,
+        knots: knot_placement(knots)?,
+        fixed_ends: true,
+    };
+    let joint = joint_continuity(joint)?;
+    let split = split_at(split)?;
+    match (columns(&points), split) {
+        (3, None) => {
             let pts = crate::arrays::points::<3>(&points, "points")?;
             let f = py
-                .detach(|| fit::fit_to_tolerance(&pts, degree, tolerance, method))
+                .detach(|| {
+                    fit::fit_to_tolerance_with(
+                        &pts,
+                        tolerance,
+                        &options,
+                        &camber_geom::Budget::default(),
+                    )
+                })
                 .map_err(geometry)?;
             fit_tuple(py, f, AnyCurve::BSpline3)
         }
-        _ => {
+        (3, Some(at)) => {
+            let pts = crate::arrays::points::<3>(&points, "points")?;
+            let f = py
+                .detach(|| {
+                    fit::fit_split(
+                        &pts,
+                        tolerance,
+                        &options,
+                        &at,
+                        joint,
+                        &camber_geom::Budget::default(),
+                    )
+                })
+                .map_err(geometry)?;
+            split_tuple(py, f, AnyCurve::BSpline3)
+        }
+        (_, None) => {
             let pts = crate::arrays::points::<2>(&points, "points")?;
             let f = py
-                .detach(|| fit::fit_to_tolerance(&pts, degree, tolerance, method))
+                .detach(|| {
+                    fit::fit_to_tolerance_with(
+                        &pts,
+                        tolerance,
+                        &options,
+                        &camber_geom::Budget::default(),
+                    )
+                })
                 .map_err(geometry)?;
             fit_tuple(py, f, AnyCurve::BSpline2)
+        }
+        (_, Some(at)) => {
+            let pts = crate::arrays::points::<2>(&points, "points")?;
+            let f = py
+                .detach(|| {
+                    fit::fit_split(
+                        &pts,
+                        tolerance,
+                        &options,
+                        &at,
+                        joint,
+                        &camber_geom::Budget::default(),
+                    )
+                })
+                .map_err(geometry)?;
+            split_tuple(py, f, AnyCurve::BSpline2)
         }
     }
 }

@@ -26,6 +26,7 @@ pub mod curve_kinds;
 pub mod curve_ops;
 pub mod custom;
 pub mod errors;
+pub mod expression;
 pub mod interrupt;
 pub mod json;
 pub mod sketch;

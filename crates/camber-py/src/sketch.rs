@@ -4,7 +4,7 @@
 //! GIL.
 
 use camber_sketch::displacement::DisplacementOptions;
-use camber_sketch::file::{constraint_from_value, constraint_to_value, entity_to_value};
+use camber_sketch::file::{constraint_to_value, entity_to_value};
 use camber_sketch::{ConstraintId, Entity, EntityId, PointRef, SketchReport};
 use nalgebra::Point2;
 use numpy::{AllowTypeChange, PyArray1, PyArrayLike2};
@@ -249,8 +249,12 @@ impl Sketch {
             Some(v) => priority(&v)?,
         };
         map.insert("kind".into(), serde_json::Value::String(kind.to_owned()));
-        let c = constraint_from_value(serde_json::Value::Object(map)).map_err(errors::file)?;
-        let id = self.inner.add_constraint(c).map_err(errors::sketch)?;
+        // A number given as a string is an expression of the sketch's parameters.
+        let id = camber_sketch::file::add_constraint_from_value(
+            &mut self.inner,
+            serde_json::Value::Object(map),
+        )
+        .map_err(errors::file)?;
         if priority > 0 {
             if let Err(e) = self.inner.set_priority(id, priority) {
                 // The constraint goes with its refused priority: nothing half added.
@@ -275,6 +279,69 @@ impl Sketch {
             .constraint(ConstraintId(id))
             .map_err(errors::sketch)?;
         Ok(self.inner.priority(ConstraintId(id)))
+    }
+
+    /// Adds an expression constraint; returns its id. `rows` is a string or a list of strings
+    /// (each a scalar or vector row, `a = b` meaning a − b; docs/custom-constraints.md gives
+    /// the language), `name` is shown in reports and pictures, and every other keyword names a
+    /// sketch quantity: an int (an entity: a point entity, a curve, a line or a circle, by its
+    /// kind) or a file form (`{"control": [curve, i]}`, `{"start": curve}`, `{"end": curve}`,
+    /// `{"free": 0.5}` for an unknown of its own). Compiled once to a tape evaluated in Rust:
+    /// solves release the GIL and run on every thread of `solve_many`.
+    #[pyo3(signature = (rows, name = String::new(), **args))]
+    fn add_expression(
+        &mut self,
+        rows: &Bound<'_, PyAny>,
+        name: String,
+        args: Option<&Bound<'_, PyDict>>,
+    ) -> PyResult<u64> {
+        let form = crate::expression::form(&self.inner, rows, name, args)?;
+        Ok(
+            camber_sketch::file::add_constraint_from_value(&mut self.inner, form)
+                .map_err(errors::file)?
+                .0,
+        )
+    }
+
+    /// Defines parameter `name` or changes its value without solving (see `set_parameter`).
+    fn define_parameter(&mut self, name: &str, value: f64) -> PyResult<()> {
+        self.inner
+            .define_parameter(name, value)
+            .map(|_| ())
+            .map_err(errors::sketch)
+    }
+
+    /// Sets parameter `name` and re-solves the components that read it; returns the
+    /// `SolveReport`. A failed solve leaves the sketch as it was (and raises `SolveError`).
+    fn set_parameter(&mut self, py: Python<'_>, name: &str, value: f64) -> PyResult<Py<PyAny>> {
+        let inner = &mut self.inner;
+        let report = py
+            .detach(|| inner.set_parameter(name, value))
+            .map_err(errors::solve)?;
+        report_object(py, &report)
+    }
+
+    /// The value of parameter `name` (None when there is none).
+    fn parameter(&self, name: &str) -> Option<f64> {
+        self.inner.parameter(name)
+    }
+
+    /// Every parameter as a dict name → value.
+    #[getter]
+    fn parameters(&self) -> std::collections::BTreeMap<String, f64> {
+        self.inner
+            .parameters()
+            .iter()
+            .map(|(n, p)| (n.to_owned(), p.value))
+            .collect()
+    }
+
+    /// Writes the number at `path` of constraint `id`'s file form (`"distance"`,
+    /// `"target.at[0]"`) as the expression `text` of the parameters.
+    fn bind_dimension(&mut self, id: u64, path: &str, text: &str) -> PyResult<()> {
+        self.inner
+            .bind_dimension(ConstraintId(id), path, text)
+            .map_err(errors::sketch)
     }
 
     /// Adds a custom constraint whose residual is the Python function `residual(x)`; returns

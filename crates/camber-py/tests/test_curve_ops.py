@@ -193,6 +193,49 @@ def test_least_squares_recovers_an_exact_parabola_and_fit_to_tolerance_holds():
     assert len(fit.control_points) < len(wave)
 
 
+def naca0012(n):
+    x = 0.5 * (1 - np.cos(np.linspace(0, np.pi, n)))
+    yt = 0.6 * (0.2969 * np.sqrt(x) - 0.1260 * x - 0.3516 * x**2 + 0.2843 * x**3 - 0.1015 * x**4)
+    return np.vstack([np.column_stack([x, yt])[::-1], np.column_stack([x, -yt])[1:]])
+
+
+def test_adaptive_fits_report_distances_and_split_at_the_leading_edge():
+    section = naca0012(101)  # 201 points, leading edge at index 100
+    curve, params, err = camber.fit_to_tolerance(section, 3, 1e-4, method="centripetal")
+    assert err <= 1e-4 and len(curve.control_points) < 40
+    # The parameters are the closest points': the distance there is the reported error.
+    assert np.linalg.norm(curve.evaluate(params) - section, axis=1).max() == pytest.approx(err, abs=1e-12)
+    # Adaptive least squares beats averaged knots for the same count.
+    _, _, averaged = camber.approximate(section, 3, 16)
+    _, _, adaptive = camber.approximate(section, 3, 16, knots="adaptive")
+    assert adaptive < 0.5 * averaged
+    pieces, piece_params, err = camber.fit_to_tolerance(section, 3, 1e-4, split="leading_edge", joint="G2")
+    assert len(pieces) == 2 and len(piece_params) == 2 and err <= 1e-4
+    np.testing.assert_allclose(pieces[0].evaluate(1.0), section[100], atol=1e-12)
+    np.testing.assert_allclose(pieces[1].evaluate(0.0), section[100], atol=1e-12)
+    t0, t1 = pieces[0].derivative(1.0), pieces[1].derivative(0.0)
+    assert abs(t0[0] * t1[1] - t0[1] * t1[0]) < 1e-9 * np.linalg.norm(t0) * np.linalg.norm(t1)
+
+
+@pytest.mark.parametrize(
+    "kwargs",
+    [{"knots": "smart"}, {"split": "trailing_edge"}, {"split": [1.5]}, {"split": [float("nan")]},
+     {"joint": "C1"}, {"split": [0.0]}],
+)
+def test_bad_fit_options_are_refused(kwargs):
+    with pytest.raises(camber.CamberError):
+        camber.fit_to_tolerance(naca0012(21), 3, 1e-4, **kwargs)
+
+
+def test_hostile_fit_data_is_refused():
+    for data in ([[0.0, 0.0]], np.zeros((0, 2)), [[0, 0], [1, np.nan], [2, 0], [3, 1]],
+                 [[0, 0], [0, 0], [1, 1], [2, 0]]):
+        with pytest.raises(camber.CamberError):
+            camber.fit_to_tolerance(data, 3, 1e-4)
+    with pytest.raises(camber.CamberError):
+        camber.fit_to_tolerance(naca0012(21), 3, -1.0)
+
+
 # --- curve-curve queries, offsets --------------------------------------------------------------
 
 

@@ -59,6 +59,36 @@ pub fn is_finite<T: Scalar>(x: T) -> bool {
     re(x).is_finite()
 }
 
+/// A number for messages in its shortest readable form: the fewest digits that read back as the
+/// same `f64` (Rust's own shortest round trip), in plain notation from 1e-5 up to 1e16 and in
+/// scientific notation outside, as Python's `repr` does. `format!("{}", 1e308)` writes 309
+/// digits; `Readable(1e308)` writes `1e308`.
+///
+/// ```
+/// use camber_scalar::Readable;
+/// assert_eq!(Readable(1e308).to_string(), "1e308");
+/// assert_eq!(Readable(-2.5e-7).to_string(), "-2.5e-7");
+/// assert_eq!(Readable(0.1).to_string(), "0.1");
+/// assert_eq!(Readable(123456.75).to_string(), "123456.75");
+/// assert_eq!(Readable(f64::NAN).to_string(), "NaN");
+/// assert_eq!(Readable(f64::NEG_INFINITY).to_string(), "-inf");
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Readable(pub f64);
+
+impl std::fmt::Display for Readable {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let v = self.0;
+        let a = v.abs();
+        let zero = a.classify() == std::num::FpCategory::Zero;
+        if !v.is_finite() || zero || (1e-5..1e16).contains(&a) {
+            write!(f, "{v}")
+        } else {
+            write!(f, "{v:e}")
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -74,5 +104,31 @@ mod tests {
         assert!(is_finite(y));
         assert!(!is_finite(cst::<f64>(f64::NAN)));
         assert!((re(from_usize::<Dual64>(5)) - 5.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn readable_numbers_read_back_exactly_and_stay_short() {
+        for v in [
+            1e308,
+            f64::MAX,
+            f64::MIN_POSITIVE,
+            5e-324,
+            -1e-300,
+            1e16,
+            9.999_999_999_999_998e15,
+            1e-5,
+            9.99e-6,
+            0.3,
+            -123.456,
+            2.0_f64.powi(60),
+        ] {
+            let text = Readable(v).to_string();
+            assert_eq!(
+                text.parse::<f64>().map(f64::to_bits),
+                Ok(v.to_bits()),
+                "{text}"
+            );
+            assert!(text.len() <= 24, "{text}");
+        }
     }
 }

@@ -71,6 +71,14 @@ pub mod file;
 pub mod residuals;
 pub mod sketch;
 
+/// Named parameters of a sketch, dimensions written as expressions of them, and sweeps over
+/// tables of their values.
+pub mod parameters {
+    pub use crate::session::parameters::ParameterChange;
+    pub use crate::session::sweep;
+    pub use crate::sketch::parameters::*;
+}
+
 pub use ground::{curve_eval, entity, errors, hermite_chain, ids, lookup, vocabulary};
 pub use session::{analysis, displacement, drag, solve};
 pub use sketch::warnings;

@@ -242,3 +242,39 @@ fn elimination_needs_a_clamped_end() {
     let dy: f64 = d.iter().map(|(j, w)| w * pts[*j].y).sum();
     assert!(dy.abs() < 1e-12);
 }
+
+#[test]
+fn messages_print_extreme_numbers_in_short_form() {
+    // `{}` of 1e308 is 309 digits; the messages quote numbers in their shortest form.
+    let (mut s, c) = sketch();
+    let err = s
+        .add_constraint(PointAtParameter {
+            curve: c,
+            u: 1e308,
+            target: Target::At(Point2::new(0.0, 0.0)),
+        })
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("parameter 1e308 is outside the domain [0, 1]"),
+        "{err}"
+    );
+    let err = Error::ContactCrossed {
+        constraint: ConstraintId(3),
+        parameter: 0.25,
+        depth: 2.5e-300,
+    }
+    .to_string();
+    assert!(err.ends_with("at u = 0.25 by 2.5e-300"), "{err}");
+    let err = Error::Solve(camber_solve::Error::OutOfBounds {
+        unknown: 4,
+        value: -1e300,
+        lower: 0.0,
+        upper: 1e20,
+    })
+    .to_string();
+    assert!(
+        err.ends_with("would move to -1e300, outside [0, 1e20]"),
+        "{err}"
+    );
+}

@@ -292,6 +292,88 @@ mod typed_args {
     }
 }
 
+/// A residual of no arguments: the constant `value`, whatever the sketch.
+#[derive(Debug)]
+struct Constant {
+    value: f64,
+}
+
+impl Residual for Constant {
+    fn name(&self) -> &str {
+        "constant"
+    }
+    fn dim(&self) -> usize {
+        1
+    }
+    fn block_sizes(&self) -> Option<Vec<usize>> {
+        Some(Vec::new())
+    }
+    fn eval<T: Scalar>(&self, _: &[&[T]], out: &mut [T]) {
+        out[0] = camber_solve::scalar::cst(self.value);
+    }
+}
+
+#[test]
+fn a_custom_constraint_of_no_arguments_that_cannot_hold_is_a_conflict() {
+    // 1 = 0 reads nothing: no move can satisfy it. It used to belong to no component, so the
+    // solve skipped it and the report said every residual was already within tolerance.
+    let mut s = Sketch::new();
+    let p = s.add_point(Point2::new(1.0, 2.0)).unwrap();
+    let id = s
+        .add_constraint(Constraint::Custom(Custom::new(
+            Constant { value: 1.0 },
+            vec![],
+        )))
+        .unwrap();
+    let before = s.clone();
+    match s.solve() {
+        Err(Error::Conflicting { constraints }) => assert_eq!(constraints, vec![id]),
+        other => panic!("expected a conflict naming constraint {id:?}, got {other:?}"),
+    }
+    assert_eq!(s.point(PointRef::Point(p)).unwrap(), Point2::new(1.0, 2.0));
+    assert_eq!(s.constraints().count(), before.constraints().count());
+    let analyses = s.analyze().unwrap();
+    assert!(
+        analyses.iter().any(|a| a.analysis.conflicting == vec![id]),
+        "{analyses:?}"
+    );
+    // One that holds (0 = 0) is satisfied, and said so.
+    let mut s = Sketch::new();
+    let id = s
+        .add_constraint(Constraint::Custom(Custom::new(
+            Constant { value: 0.0 },
+            vec![],
+        )))
+        .unwrap();
+    let report = s.solve().unwrap();
+    assert!(report
+        .components
+        .iter()
+        .any(|c| c.component.constraints == vec![id]));
+}
+
+/// s − 1 = 0 over one scalar argument s.
+#[derive(Debug)]
+struct ParameterIsOne;
+
+impl Residual for ParameterIsOne {
+    fn name(&self) -> &str {
+        "parameter is one"
+    }
+    fn dim(&self) -> usize {
+        1
+    }
+    fn block_sizes(&self) -> Option<Vec<usize>> {
+        Some(vec![1])
+    }
+    fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+        out[0] = x[0][0] - T::one();
+    }
+    fn is_affine(&self) -> bool {
+        true
+    }
+}
+
 /// A residual declaring a row count nobody can hold (a typing slip, `dim=10**9` from Python):
 /// its values are never asked for.
 #[derive(Debug)]
@@ -312,6 +394,24 @@ impl Residual for Huge {
             *o = x[0][0];
         }
     }
+}
+
+#[test]
+fn a_custom_constraint_over_its_own_parameter_only_is_solved() {
+    // It reads no entity, so it used to be in no component and its parameter never moved.
+    use camber_sketch::constraints::custom::Arg;
+    let mut s = Sketch::new();
+    let id = s
+        .add_constraint(Constraint::Custom(Custom::plain(
+            ParameterIsOne,
+            vec![Arg::Param(0.25)],
+        )))
+        .unwrap();
+    s.solve().unwrap();
+    let Some(Arg::Param(v)) = s.constraint(id).unwrap().as_custom().map(|c| c.args()[0]) else {
+        panic!("no parameter")
+    };
+    assert_abs_diff_eq!(v, 1.0, epsilon = 1e-12);
 }
 
 #[test]

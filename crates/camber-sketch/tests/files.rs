@@ -590,3 +590,77 @@ fn every_kind_tag_is_unique() {
     assert_eq!(tags.len(), n);
     assert!(n >= 37, "{n} kinds");
 }
+
+/// Malformed files of every shape get messages in the file format's words: no Rust type name
+/// of the library (`struct RawSketch`, `f64`, `usize`, `tuple variant Arg::FreeOf`) reaches the
+/// user.
+#[test]
+fn file_errors_speak_json_not_rust() {
+    let cases = [
+        "null",
+        "[]",
+        "1",
+        "\"x\"",
+        "{}",
+        r#"{"version": 1, "entities": null}"#,
+        r#"{"version": 1, "entities": {}}"#,
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "point", "at": null}]}"#,
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "point", "at": [1]}]}"#,
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "point", "at": ["a", 1]}]}"#,
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "circle", "center": [0, 0], "radius": "a"}]}"#,
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "bspline", "degree": -1, "knots": [], "control_points": []}]}"#,
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "bspline", "degree": 1.5, "knots": [], "control_points": []}]}"#,
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "composite", "nodes": [[0,0],[1,1]], "tangents": [[1,0],[1,0]], "joins": [3]}]}"#,
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "composite", "nodes": [[0,0],[1,1]], "tangents": [[1,0],[1,0]], "joins": ["x"]}]}"#,
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "point", "at": [0,0]}], "constraints": [{"id": 1, "kind": "fixed", "target": null}]}"#,
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "point", "at": [0,0]}], "constraints": [{"id": 1, "kind": "fixed", "target": 3}]}"#,
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "point", "at": [0,0]}], "constraints": [{"id": 1, "kind": "fixed", "target": {"point": 3}}]}"#,
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "point", "at": [0,0]}], "constraints": [{"id": 1, "kind": "fixed", "target": {"point": {"pt": 0}}}]}"#,
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "point", "at": [0,0]}], "constraints": [{"id": 1, "kind": "distance", "a": {"point": 0}, "b": {"point": 0}, "distance": null}]}"#,
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "point", "at": [0,0]}], "constraints": [{"id": 1, "kind": "distance", "a": {"point": 0}, "b": {"point": 0}, "distance": "x"}]}"#,
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "point", "at": [0,0]}], "constraints": [{"id": 1, "kind": "point_at_parameter", "curve": -1, "u": 0, "target": {"at": [0,0]}}]}"#,
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "point", "at": [0,0]}], "constraints": [{"id": 1, "kind": "point_at_parameter", "curve": 0, "u": 0, "target": "free"}]}"#,
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "point", "at": [0,0]}], "constraints": [{"id": 1, "kind": "tangent_to_circle", "curve": 0, "circle": 0, "u": {"free": "a"}, "side": "up", "rotation": 1}]}"#,
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "point", "at": [0,0]}], "constraints": [{"id": 1, "kind": "horizontal", "of": 3}]}"#,
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "point", "at": [0,0]}], "constraints": [{"id": 1, "kind": "custom", "name": 3}]}"#,
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "point", "at": [0,0]}], "constraints": [{"id": 1, "kind": "custom", "name": "a", "args": [{"param": "x"}]}]}"#,
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "point", "at": [0,0]}], "constraints": [{"id": 1, "kind": "custom", "name": "a", "args": [{"free_of": [1]}]}]}"#,
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "point", "at": [0,0]}], "constraints": [{"id": 1, "kind": "start_tangent", "curve": 0, "direction": [1,0], "sense": 3, "form": "row"}]}"#,
+        r#"{"version": 1, "entities": [{"id": 0, "kind": "point", "at": [0,0]}], "constraints": [{"id": 1, "kind": "angle", "a": 0, "b": 0, "degrees": true}]}"#,
+    ];
+    let rust_words = [
+        "struct",
+        "enum ",
+        "variant",
+        "f64",
+        "f32",
+        "usize",
+        "u64",
+        "u32",
+        "i64",
+        "Raw",
+        "::",
+        "sequence",
+        "map,",
+        "string or map",
+        "floating point",
+    ];
+    for c in cases {
+        let message = match from_json(c) {
+            Ok(_) => panic!("accepted: {c}"),
+            Err(e) => e.to_string(),
+        };
+        for w in rust_words {
+            assert!(!message.contains(w), "{message:?} (for {c}) says {w:?}");
+        }
+    }
+    assert_eq!(
+        from_json("null").unwrap_err().to_string(),
+        "at .: expected a sketch: an object with \"version\", \"entities\" and \"constraints\", found null"
+    );
+    let radius = r#"{"version": 1, "entities": [{"id": 0, "kind": "circle", "center": [0, 0], "radius": "a"}]}"#;
+    assert_eq!(
+        from_json(radius).unwrap_err().to_string(),
+        "at entities[0].radius: invalid type: string \"a\", expected a number"
+    );
+}

@@ -169,3 +169,75 @@ fn values_are_refused_for_kinds_without_one_and_when_invalid_leaving_the_sketch_
     // Nothing is dirty: the next solve has nothing to do.
     assert!(s.solve().unwrap().components.is_empty());
 }
+
+#[test]
+fn a_dimension_bound_to_a_parameter_refuses_set_value_and_follows_its_parameter_still() {
+    // b at `chord / 2` from a fixed a; a second distance, a to c, unbound.
+    let mut s = Sketch::new();
+    let a = s.add_point(Point2::new(0.0, 0.0)).unwrap();
+    let b = s.add_point(Point2::new(1.0, 0.0)).unwrap();
+    let c = s.add_point(Point2::new(0.0, 1.0)).unwrap();
+    s.add_constraint(Fixed::point(PointRef::Point(a))).unwrap();
+    s.define_parameter("chord", 3.0).unwrap();
+    let bound = s
+        .add_constraint(Distance {
+            a: PointRef::Point(a),
+            b: PointRef::Point(b),
+            distance: 1.0,
+        })
+        .unwrap();
+    let free = s
+        .add_constraint(Distance {
+            a: PointRef::Point(a),
+            b: PointRef::Point(c),
+            distance: 1.0,
+        })
+        .unwrap();
+    s.bind_dimension(bound, "distance", "chord / 2").unwrap();
+    s.solve().unwrap();
+    let gap = |s: &Sketch, p| s.point(PointRef::Point(p)).unwrap().coords.norm();
+    assert!((gap(&s, b) - 1.5).abs() < 1e-10);
+
+    // The bound value is refused, naming the expression; nothing changes.
+    let before = camber_sketch::file::to_json(&s).unwrap();
+    match s.set_value(bound, 2.0) {
+        Err(Error::ValueBound {
+            constraint,
+            path,
+            expression,
+        }) => {
+            assert_eq!(constraint, bound);
+            assert_eq!(path, "distance");
+            assert_eq!(expression, "chord / 2");
+        }
+        other => panic!("{other:?}"),
+    }
+    assert_eq!(camber_sketch::file::to_json(&s).unwrap(), before);
+    // The value the expression gives is no change and is accepted.
+    s.set_value(bound, 1.5).unwrap();
+    s.solve().unwrap();
+    assert!((gap(&s, b) - 1.5).abs() < 1e-10);
+
+    // An unbound dimension of the same component takes set_value (on the kept problem),
+    // and a parameter change afterwards still re-solves the bound one (its component's kept
+    // problem is dropped and built again with the new value).
+    s.set_value(free, 0.5).unwrap();
+    s.solve().unwrap();
+    assert!((gap(&s, c) - 0.5).abs() < 1e-10);
+    s.set_parameter("chord", 5.0).unwrap();
+    assert!((gap(&s, b) - 2.5).abs() < 1e-10);
+    assert!((gap(&s, c) - 0.5).abs() < 1e-10);
+    s.set_value(free, 0.75).unwrap();
+    s.solve().unwrap();
+    assert!((gap(&s, b) - 2.5).abs() < 1e-10);
+    assert!((gap(&s, c) - 0.75).abs() < 1e-10);
+
+    // Bound again to a constant expression, it still refuses other values; the saved file
+    // keeps the binding's text.
+    s.bind_dimension(bound, "distance", "2").unwrap();
+    assert!(matches!(
+        s.set_value(bound, 3.0),
+        Err(Error::ValueBound { .. })
+    ));
+    assert!(camber_sketch::file::to_json(&s).unwrap().contains("\"2\""));
+}

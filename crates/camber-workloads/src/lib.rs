@@ -16,6 +16,7 @@ use camber_sketch::Result;
 use camber_sketch::Sketch;
 use camber_sketch::{EntityId, PointRef};
 
+pub mod airfoils;
 mod point_chain;
 mod rectangles;
 mod two_curves;

@@ -17,6 +17,7 @@
 //! ```
 
 mod runners;
+mod toolkit;
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -77,11 +78,15 @@ pub enum Workload {
     /// cells.
     #[value(alias = "a", alias = "analysis")]
     A,
+    /// T: the curve toolkit (arc length, arc-length map, knot removal, intersection, offset,
+    /// fitting) on curves of N control points.
+    #[value(alias = "t", alias = "toolkit")]
+    T,
 }
 
 impl Workload {
     /// Every workload, in table order.
-    pub const ALL: [Workload; 10] = [
+    pub const ALL: [Workload; 11] = [
         Workload::W1,
         Workload::W2,
         Workload::W3,
@@ -92,9 +97,10 @@ impl Workload {
         Workload::W6,
         Workload::W7,
         Workload::A,
+        Workload::T,
     ];
 
-    /// "W1", "W2", "W3", "W3a", "W4", "W5", "W5b", "W6", "W7", "A".
+    /// "W1", "W2", "W3", "W3a", "W4", "W5", "W5b", "W6", "W7", "A", "T".
     pub fn name(self) -> &'static str {
         match self {
             Workload::W1 => "W1",
@@ -107,6 +113,7 @@ impl Workload {
             Workload::W6 => "W6",
             Workload::W7 => "W7",
             Workload::A => "A",
+            Workload::T => "T",
         }
     }
 
@@ -141,11 +148,14 @@ pub struct Plan {
     pub w6_edits: usize,
     /// W7: chain lengths N dragged.
     pub w7_sizes: Vec<usize>,
+    /// T: control points N of the toolkit's curves.
+    pub toolkit_sizes: Vec<usize>,
 }
 
 impl Plan {
     /// WORKLOADS.md as written: W1 200 targets × 5 runs, W2 100 trials per representation and
-    /// δ, W3, W3a, W5 and W5b for N = 10, 100, 1,000, 10,000, W4 with 10,000 components.
+    /// δ, W3, W3a, W5 and W5b for N = 10, 100, 1,000, 10,000, W4 with 10,000 components; and
+    /// the toolkit workload T at N = 1,000, 10,000, 100,000 control points.
     pub fn standard() -> Self {
         Plan {
             mode: "standard",
@@ -158,11 +168,12 @@ impl Plan {
             w6_rectangles: 1_000,
             w6_edits: 200,
             w7_sizes: vec![1_000, 10_000],
+            toolkit_sizes: vec![1_000, 10_000, 100_000],
         }
     }
 
     /// A small run: W1 200 targets × 1 run, W2 10 trials, chains and rectangles N = 10 and 100,
-    /// W4 with 100 components.
+    /// W4 with 100 components, the toolkit at N = 100 and 1,000.
     pub fn quick() -> Self {
         Plan {
             mode: "quick",
@@ -175,6 +186,7 @@ impl Plan {
             w6_rectangles: 100,
             w6_edits: 20,
             w7_sizes: vec![100],
+            toolkit_sizes: vec![100, 1_000],
         }
     }
 
@@ -233,6 +245,7 @@ impl Plan {
                         .map(|&s| self.chain_repeats(s))
                         .sum::<usize>()
                 }
+                Workload::T => toolkit::steps(self),
             };
         }
         n as u64
@@ -270,8 +283,11 @@ pub struct Row {
     pub failed: usize,
     /// Which solver finished each component, counted over the samples.
     pub solvers: BTreeMap<String, usize>,
-    /// W3/W3a/W5/W5b: the growth exponent log(t₂/t₁)/log(N₂/N₁) of the median from the previous size.
+    /// W3/W3a/W5/W5b/T: the growth exponent log(t₂/t₁)/log(N₂/N₁) of the median from the previous size.
     pub growth: Option<f64>,
+    /// The size is that of the row before (`--sizes 10,10`): there is no growth to measure.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub same_size_as_previous: bool,
     /// W1: moved / min-norm.
     pub moved_over_min_norm: Option<Ratio>,
     /// W1: the median time of an empty timed section (two clock reads), seconds. Each W1
@@ -317,8 +333,41 @@ fn row(workload: Workload, case: String, times: &[Duration], valid: usize) -> Ro
         failed: 0,
         solvers: BTreeMap::new(),
         growth: None,
+        same_size_as_previous: false,
         moved_over_min_norm: None,
         timer_s: None,
+    }
+}
+
+/// Sets `r.growth` to the growth exponent log(t₂/t₁)/log(N₂/N₁) of its median from the row of
+/// size `previous_size` and median `previous_median`; between equal sizes there is none (the
+/// quotient would be ±∞ or NaN), and the row says so. No exponent either when a median is not
+/// a positive time.
+///
+/// ```
+/// use camber_cli::bench::{set_growth, Row, Workload};
+/// let mut r: Row = serde_json::from_str(r#"{"workload": "W3", "case": "N=100", "size": 100,
+///     "samples": 1, "median_s": 0.4, "p95_s": 0.4, "valid": 1, "failed": 0, "solvers": {},
+///     "growth": null, "moved_over_min_norm": null}"#)?;
+/// set_growth(&mut r, 10, 0.04);
+/// assert!((r.growth.unwrap() - 1.0).abs() < 1e-12);
+/// set_growth(&mut r, 100, 0.3);
+/// assert!(r.growth.is_none() && r.same_size_as_previous);
+/// # Ok::<(), serde_json::Error>(())
+/// ```
+pub fn set_growth(r: &mut Row, previous_size: usize, previous_median: f64) {
+    r.growth = None;
+    r.same_size_as_previous = false;
+    let Some(size) = r.size else {
+        return;
+    };
+    if size == previous_size {
+        r.same_size_as_previous = true;
+        return;
+    }
+    if r.median_s > 0.0 && previous_median > 0.0 && previous_size > 0 {
+        let g = (r.median_s / previous_median).ln() / (size as f64 / previous_size as f64).ln();
+        r.growth = g.is_finite().then_some(g);
     }
 }
 
@@ -341,6 +390,7 @@ pub fn run(plan: &Plan, bar: &ProgressBar) -> Result<Vec<Row>> {
             Workload::W6 => rows.push(runners::w6(plan, bar)?),
             Workload::W7 => rows.extend(runners::w7(plan, bar)?),
             Workload::A => rows.extend(runners::analysis(plan, bar)?),
+            Workload::T => rows.extend(toolkit::toolkit(plan, bar)?),
         }
     }
     Ok(rows)
@@ -382,6 +432,9 @@ fn notes(r: &Row) -> String {
     }
     if let Some(g) = r.growth {
         parts.push(format!("growth {g:.2}"));
+    }
+    if r.same_size_as_previous {
+        parts.push("no growth (same N as the row before)".to_owned());
     }
     if !r.solvers.is_empty() {
         let list: Vec<String> = r.solvers.iter().map(|(k, n)| format!("{k} {n}")).collect();

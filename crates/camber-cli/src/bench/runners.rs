@@ -11,7 +11,7 @@ use camber_workloads as wl;
 use indicatif::ProgressBar;
 use nalgebra::Point2;
 
-use super::{quantile, row, Plan, Ratio, Row, Workload};
+use super::{quantile, row, set_growth, Plan, Ratio, Row, Workload};
 
 /// Tolerance of the W2, W3, W3a and W4 validity checks (WORKLOADS.md).
 const TOL: f64 = 1e-6;
@@ -232,7 +232,7 @@ pub(super) fn chains(plan: &Plan, affine: bool, bar: &ProgressBar) -> Result<Vec
         r.solvers = solvers;
         if let Some(prev) = rows.last() {
             if let Some(m) = prev.size {
-                r.growth = Some((r.median_s / prev.median_s).ln() / (n as f64 / m as f64).ln());
+                set_growth(&mut r, m, prev.median_s);
             }
         }
         rows.push(r);
@@ -295,7 +295,7 @@ pub(super) fn rectangles(plan: &Plan, ladder: bool, bar: &ProgressBar) -> Result
         r.solvers = solvers;
         if let Some(prev) = rows.last() {
             if let Some(m) = prev.size {
-                r.growth = Some((r.median_s / prev.median_s).ln() / (n as f64 / m as f64).ln());
+                set_growth(&mut r, m, prev.median_s);
             }
         }
         rows.push(r);
@@ -485,7 +485,7 @@ pub(super) fn analysis(plan: &Plan, bar: &ProgressBar) -> Result<Vec<Row>> {
             r.size = Some(size);
             r.failed = failed;
             if let Some((m, t)) = last {
-                r.growth = Some((r.median_s / t).ln() / (size as f64 / m as f64).ln());
+                set_growth(&mut r, m, t);
             }
             last = Some((size, r.median_s));
             rows.push(r);

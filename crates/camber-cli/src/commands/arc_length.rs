@@ -22,6 +22,9 @@ pub struct ArcLengthReport {
     pub length: f64,
     /// The quadrature's error estimate.
     pub error_estimate: f64,
+    /// The tolerance honoured: the one asked for, or, when that is below what f64 resolves on
+    /// this curve (64 ulps of its length), that floor.
+    pub tolerance: f64,
     /// The length to each parameter asked for.
     pub at: Vec<LengthTo>,
 }
@@ -57,6 +60,7 @@ pub fn measure(
     Ok(ArcLengthReport {
         length: whole.length,
         error_estimate: whole.error_estimate,
+        tolerance: whole.tolerance,
         at,
     })
 }

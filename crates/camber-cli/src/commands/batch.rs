@@ -23,8 +23,13 @@ use crate::sketch_file::{self, describe_error};
 /// Arguments of `camber batch`.
 #[derive(Debug, Args)]
 pub struct BatchArgs {
-    /// The directory of sketch files (`*.json`, not recursive).
+    /// The directory of sketch files (`*.json`, not recursive); with `--parameters`, one
+    /// sketch file.
     pub dir: PathBuf,
+    /// A CSV table of parameter values (a header of parameter names, one variant per row):
+    /// the sketch is solved once per row, one JSON line per variant.
+    #[arg(short, long, value_name = "TABLE.csv")]
+    pub parameters: Option<PathBuf>,
     /// Worker threads (default: every core).
     #[arg(short, long, value_name = "N")]
     pub jobs: Option<usize>,
@@ -74,6 +79,9 @@ fn solve_one(path: &Path, output: Option<&Path>) -> (bool, String) {
 pub fn run(args: &BatchArgs) -> Result<()> {
     if args.jobs == Some(0) {
         bail!("--jobs must be at least 1");
+    }
+    if let Some(table) = &args.parameters {
+        return super::sweep::run(&args.dir, table, args.jobs);
     }
     let files = sketch_files(&args.dir)?;
     if let Some(out) = &args.output {

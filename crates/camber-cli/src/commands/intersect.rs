@@ -4,7 +4,7 @@ use std::path::PathBuf;
 
 use anyhow::{Context, Result};
 use camber_geom::queries::{
-    curve_distance, intersect_curves, BezierPieces, CurveCurveOptions, CurvePairPoint,
+    curve_distance, intersect_curves_with_overlaps, BezierPieces, CurveCurveOptions, CurvePairPoint,
 };
 use clap::Args;
 use serde::Serialize;
@@ -58,11 +58,22 @@ impl From<CurvePairPoint<2>> for PairJson {
     }
 }
 
+/// A stretch along which the curves coincide, as printed.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct OverlapJson {
+    /// The interval on the first curve, increasing.
+    pub u_a: (f64, f64),
+    /// The matching parameters on the second curve (decreasing when it runs the other way).
+    pub u_b: (f64, f64),
+}
+
 /// The printed report.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct IntersectReport {
-    /// Every meeting point, in order along the first curve.
+    /// Every isolated meeting point, in order along the first curve.
     pub intersections: Vec<PairJson>,
+    /// Every stretch where the curves coincide, in order along the first curve.
+    pub overlaps: Vec<OverlapJson>,
     /// The closest pair of points (distance 0 where they meet).
     pub closest: PairJson,
 }
@@ -80,16 +91,22 @@ fn pieces(curve: &Curve) -> &dyn BezierPieces<2> {
 /// The intersections and the closest pair of two curves.
 pub fn report(a: &Curve, b: &Curve, tolerance: f64) -> Result<IntersectReport> {
     let opts = CurveCurveOptions::default().with_tolerance(tolerance);
-    let hits = intersect_curves(pieces(a), pieces(b), &opts)?;
+    let hits = intersect_curves_with_overlaps(pieces(a), pieces(b), &opts)?;
     let closest = curve_distance(pieces(a), pieces(b), &opts)?;
     Ok(IntersectReport {
-        intersections: hits.into_iter().map(PairJson::from).collect(),
+        intersections: hits.points.into_iter().map(PairJson::from).collect(),
+        overlaps: hits
+            .overlaps
+            .into_iter()
+            .map(|o| OverlapJson { u_a: o.a, u_b: o.b })
+            .collect(),
         closest: closest.into(),
     })
 }
 
-/// Prints `{"intersections": [...], "closest": {...}}` with u_a, u_b, both points, the
-/// distance and whether the contact is tangential.
+/// Prints `{"intersections": [...], "overlaps": [...], "closest": {...}}`: for each meeting
+/// point u_a, u_b, both points, the distance and whether the contact is tangential; for each
+/// stretch where the curves coincide its intervals u_a and u_b.
 pub fn run(args: &IntersectArgs) -> Result<()> {
     let a = curve_file::load(&args.a)?;
     let b = curve_file::load(&args.b)?;

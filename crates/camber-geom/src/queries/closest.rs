@@ -4,7 +4,7 @@ use nalgebra::{Point, SVector};
 
 use super::{polish, scan, ClosestPoint, Field, QueryOptions};
 use crate::curve::ParametricCurve;
-use crate::errors::Result;
+use crate::errors::{Error, Result};
 use crate::scalar::{cst, re, Scalar};
 
 /// h(u) = ½|C(u) − p|², h′ = (C − p)·C′, h″ = |C′|² + (C − p)·C″; measure |C − p|.
@@ -44,7 +44,8 @@ where
 /// Every piece is sampled, every sign change of f(u) = (C(u) − p)·C′(u) from − to + between
 /// samples (a local minimum of the distance) is refined by safeguarded Newton on f, and the
 /// best of those minima and of all samples wins. On ties the smallest parameter is returned.
-/// Fails where the curve cannot be evaluated, and for bad options.
+/// Fails with [`Error::NonFinite`] for a point with a NaN or infinite coordinate, where the
+/// curve cannot be evaluated, and for bad options.
 ///
 /// ```
 /// use camber_geom::queries::{closest_point_with, QueryOptions};
@@ -76,6 +77,15 @@ where
     T: Scalar,
     C: ParametricCurve<T, D> + ?Sized,
 {
+    for (index, &c) in p.coords.iter().enumerate() {
+        if !re(c).is_finite() {
+            return Err(Error::NonFinite {
+                what: "query point coordinate",
+                index,
+                value: re(c),
+            });
+        }
+    }
     let field = SquaredDistance { target: *p };
     let found = scan(curve, &field, opts)?;
     let mut best = found.samples.first().copied();
@@ -88,7 +98,7 @@ where
         }
     }
     // `scan` always returns at least the two domain ends.
-    let best = best.ok_or(crate::errors::Error::ZeroCount { what: "samples" })?;
+    let best = best.ok_or(Error::ZeroCount { what: "samples" })?;
     // At an interior minimum h″ > 0; a converged Newton step there only adds dual parts.
     let best = if re(best.h[2]) > 0.0 {
         let polished = polish(curve, &field, best, 1)?;

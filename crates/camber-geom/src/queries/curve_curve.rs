@@ -1,11 +1,13 @@
 //! Intersections and minimum distance between two curves of any kinds (Bézier, B-spline,
 //! NURBS, Hermite, segment, circle, in any pairing), each result with both parameters.
 //!
-//! **Search.** Both curves are cut into rational Bézier pieces ([`BezierPieces`]). A pair of
-//! pieces whose control-point boxes (grown by the tolerance) are disjoint cannot meet and is
-//! dropped; otherwise the piece with the larger box is halved by de Casteljau's algorithm and
-//! the halves are paired again, until both boxes are below a leaf size (10⁻³ of the curves'
-//! extent). Each surviving leaf pair seeds a Newton iteration.
+//! **Search.** Both curves are cut into rational Bézier pieces ([`BezierPieces`]), and each
+//! set of pieces gets a bounding-box hierarchy (`box_tree`): descending both together finds the
+//! pairs of pieces whose boxes (grown by the tolerance) come together without looking at the
+//! others, so the search grows like n log n rather than n_a·n_b. Within such a pair, the piece
+//! with the larger box is halved by de Casteljau's algorithm and the halves are paired again,
+//! until both boxes are below a leaf size (10⁻³ of the curves' extent). Each surviving leaf
+//! pair seeds a Newton iteration.
 //!
 //! **Refinement.** From the seed (s, t), Newton's method minimises f = ½|A(s) − B(t)|² with the
 //! exact Hessian: with F = A − B, f_s = F·A′, f_t = −F·B′,
@@ -20,18 +22,24 @@
 //! plane a second Newton iteration on "parallel tangents and foot point" then pins it down to
 //! rounding whenever the curvatures differ.
 //!
-//! **Distance.** Branch and bound over the same piece pairs: the distance between two boxes
-//! bounds the pieces' distance from below, piece end points (on the curves) from above; pairs
-//! that cannot beat the best value are dropped, leaves are refined by the same Newton
-//! iteration, and both curves' end points are projected onto the other curve.
+//! **Distance.** Branch and bound over pairs of tree nodes, then of pieces: the distance
+//! between two boxes bounds the pieces' distance from below, piece end points (on the curves)
+//! from above; pairs that cannot beat the best value are dropped, leaves are refined by the same
+//! Newton iteration, and both curves' end points are projected onto the other curve.
+//!
+//! **Work.** Both searches run under the [`Budget`] of their options (operations "curve
+//! intersection" and "curve distance"): one unit per node or piece pair looked at and per
+//! Newton step.
 
 use std::cmp::Ordering;
-use std::collections::BinaryHeap;
+use std::collections::{BinaryHeap, HashMap};
 
 use nalgebra::{Point, SVector};
 
+use super::box_tree::{box_distance, near_pairs, BoxTree};
 use super::closest_point;
 use super::pieces::{segment_segment_distance, BezierPieces, RationalPiece};
+use crate::budget::{default_limit, Budget, Meter};
 use crate::curve::ParametricCurve;
 use crate::errors::{Error, Result};
 
@@ -42,7 +50,7 @@ use crate::errors::{Error, Result};
 /// let opts = CurveCurveOptions::default().with_tolerance(1e-8);
 /// assert!((opts.tolerance - 1e-8).abs() < 1e-20);
 /// ```
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct CurveCurveOptions {
     /// Two points closer than this (length units) coincide: it accepts intersections and grows
     /// the boxes (default 1e-9).
@@ -51,6 +59,9 @@ pub struct CurveCurveOptions {
     /// [`Error::TooManyCandidates`] (intersections) or returns its best so far (distance)
     /// (default 20 000).
     pub max_candidates: usize,
+    /// The work budget and stop flag of the search (default: the scale-aware default limit,
+    /// no flag).
+    pub budget: Budget,
 }
 
 impl Default for CurveCurveOptions {
@@ -58,6 +69,7 @@ impl Default for CurveCurveOptions {
         Self {
             tolerance: 1e-9,
             max_candidates: 20_000,
+            budget: Budget::default(),
         }
     }
 }
@@ -72,6 +84,12 @@ impl CurveCurveOptions {
     /// Sets [`max_candidates`](Self::max_candidates).
     pub fn with_max_candidates(mut self, max: usize) -> Self {
         self.max_candidates = max;
+        self
+    }
+
+    /// Sets [`budget`](Self::budget).
+    pub fn with_budget(mut self, budget: Budget) -> Self {
+        self.budget = budget;
         self
     }
 
@@ -126,24 +144,12 @@ pub(super) fn extent<const D: usize>(pieces: &[RationalPiece<D>]) -> f64 {
     (hi - lo).norm()
 }
 
-/// The distance between two boxes (0 when they overlap).
-fn box_distance<const D: usize>(
-    (alo, ahi): &(SVector<f64, D>, SVector<f64, D>),
-    (blo, bhi): &(SVector<f64, D>, SVector<f64, D>),
-) -> f64 {
-    let mut d2 = 0.0;
-    for i in 0..D {
-        let gap = (blo[i] - ahi[i]).max(alo[i] - bhi[i]).max(0.0);
-        d2 += gap * gap;
-    }
-    d2.sqrt()
-}
-
 /// A lower bound on the distance between two pieces: the larger of their boxes' distance and
 /// their chords' distance less both flatnesses. Near a closest pair the second is the sharper
 /// (its error shrinks with the square of the pieces' length), so few leaf pairs survive it.
 fn lower_bound<const D: usize>(x: &RationalPiece<D>, y: &RationalPiece<D>) -> f64 {
-    let by_box = box_distance(&x.bounding_box(), &y.bounding_box());
+    let (bx, by) = (x.bounding_box(), y.bounding_box());
+    let by_box = box_distance((&bx.0, &bx.1), (&by.0, &by.1));
     let (xa, xb, fx) = x.chord_and_flatness();
     let (ya, yb, fy) = y.chord_and_flatness();
     let by_chord = segment_segment_distance((&xa, &xb), (&ya, &yb)) - fx - fy;
@@ -185,13 +191,19 @@ where
 }
 
 /// Newton on ½|A(s) − B(t)|² from (s, t), inside both domains.
-fn refine<const D: usize, A, B>(a: &A, b: &B, mut s: f64, mut t: f64) -> Result<(f64, f64)>
+pub(super) fn refine<const D: usize, A, B>(
+    a: &A,
+    b: &B,
+    (mut s, mut t): (f64, f64),
+    meter: &mut Meter<'_>,
+) -> Result<(f64, f64)>
 where
     A: ParametricCurve<f64, D> + ?Sized,
     B: ParametricCurve<f64, D> + ?Sized,
 {
     let ((a0, a1), (b0, b1)) = (a.domain(), b.domain());
     for _ in 0..200 {
+        meter.charge(2)?;
         let [pa, da, dda] = a.second_order(s)?;
         let [pb, db, ddb] = b.second_order(t)?;
         let f = pa - pb;
@@ -233,13 +245,20 @@ where
     Ok((s, t))
 }
 
-/// Newton on ½|C(u) − p|² from `u`, inside the curve's domain: the foot of `p` near `u`.
-fn foot<const D: usize, C>(curve: &C, p: &Point<f64, D>, mut u: f64) -> Result<f64>
+/// Newton on ½|C(u) − p|² from `u`, inside [lo, hi] (within the curve's domain): the foot of
+/// `p` near `u`.
+pub(super) fn foot<const D: usize, C>(
+    curve: &C,
+    p: &Point<f64, D>,
+    mut u: f64,
+    (lo, hi): (f64, f64),
+    meter: &mut Meter<'_>,
+) -> Result<f64>
 where
     C: ParametricCurve<f64, D> + ?Sized,
 {
-    let (lo, hi) = curve.domain();
     for _ in 0..50 {
+        meter.charge(1)?;
         let [c, d, dd] = curve.second_order(u)?;
         let w = c - p.coords;
         let g = w.dot(&d);
@@ -267,8 +286,8 @@ where
 fn refine_touch<const D: usize, A, B>(
     a: &A,
     b: &B,
-    mut s: f64,
-    mut t: f64,
+    (mut s, mut t): (f64, f64),
+    meter: &mut Meter<'_>,
 ) -> Result<Option<(f64, f64)>>
 where
     A: ParametricCurve<f64, D> + ?Sized,
@@ -280,6 +299,7 @@ where
     let ((a0, a1), (b0, b1)) = (a.domain(), b.domain());
     let cross = |x: &SVector<f64, D>, y: &SVector<f64, D>| x[0] * y[1] - x[1] * y[0];
     for _ in 0..30 {
+        meter.charge(2)?;
         let [pa, da, dda] = a.second_order(s)?;
         let [pb, db, ddb] = b.second_order(t)?;
         let f = pa - pb;
@@ -328,8 +348,11 @@ where
 /// ```
 ///
 /// Errors: bad options ([`Error::NonPositiveTolerance`], [`Error::NonFinite`],
-/// [`Error::ZeroCount`]), and [`Error::TooManyCandidates`] when the curves overlap along a
-/// stretch (too many leaf pairs).
+/// [`Error::ZeroCount`]), [`Error::CurvesOverlap`] when the curves coincide along a stretch
+/// (their meeting points are not isolated:
+/// [`intersect_curves_with_overlaps`](super::intersect_curves_with_overlaps) reports the
+/// stretches as intervals), [`Error::TooManyCandidates`] when the search needs more leaf pairs
+/// than allowed, [`Error::BudgetExhausted`] / [`Error::Cancelled`] ("curve intersection").
 pub fn intersect_curves<const D: usize, A, B>(
     a: &A,
     b: &B,
@@ -339,68 +362,126 @@ where
     A: ParametricCurve<f64, D> + ?Sized,
     B: ParametricCurve<f64, D> + ?Sized,
 {
-    intersect_excluding(a, b, opts, &[])
+    let found = super::intersect_curves_with_overlaps(a, b, opts)?;
+    if let Some(o) = found.overlaps.first() {
+        return Err(Error::CurvesOverlap {
+            a_start: o.a.0,
+            a_end: o.a.1,
+            b_start: o.b.0,
+            b_end: o.b.1,
+        });
+    }
+    Ok(found.points)
 }
 
-/// [`intersect_curves`] without the stretches of `a` in `excluded` (parameter intervals of `a`
-/// already known to overlap `b`): piece pairs whose `a` piece lies inside one are dropped, and
-/// so are contacts found inside one.
+/// Both curves' pieces and box trees, the common extent, and the meter of one search.
+pub(super) struct Prepared<const D: usize> {
+    pub a: Vec<RationalPiece<D>>,
+    pub b: Vec<RationalPiece<D>>,
+    pub tree_a: BoxTree<D>,
+    pub tree_b: BoxTree<D>,
+    pub size: f64,
+}
+
+impl<const D: usize> Prepared<D> {
+    pub fn new<A, B>(a: &A, b: &B, opts: &CurveCurveOptions) -> Result<Self>
+    where
+        A: ParametricCurve<f64, D> + ?Sized,
+        B: ParametricCurve<f64, D> + ?Sized,
+    {
+        opts.check()?;
+        let (pa, pb) = (a.bezier_pieces()?, b.bezier_pieces()?);
+        let size = extent(&pa).max(extent(&pb)).max(opts.tolerance);
+        Ok(Self {
+            tree_a: BoxTree::new(&pa),
+            tree_b: BoxTree::new(&pb),
+            a: pa,
+            b: pb,
+            size,
+        })
+    }
+
+    /// The default work limit of a search over these pieces.
+    pub fn default_limit(&self) -> u64 {
+        default_limit(self.a.len() + self.b.len())
+    }
+}
+
+/// What the point search does on meeting a tangential contact.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum OnTangent {
+    /// Keep it and go on.
+    Keep,
+    /// Stop and return `None`: the caller looks for overlaps first (inside a coincident
+    /// stretch every contact is tangential, and refining them all would be wasted).
+    Stop,
+}
+
+/// The points [`intersect_curves`] finds, without the stretches of `a` in `excluded` (sorted,
+/// disjoint parameter intervals of `a` already known to overlap `b`): piece pairs whose `a`
+/// piece lies inside one are dropped, and so are contacts found inside one. `None` when
+/// `on_tangent` is [`OnTangent::Stop`] and a tangential contact was found.
 pub(super) fn intersect_excluding<const D: usize, A, B>(
     a: &A,
     b: &B,
     opts: &CurveCurveOptions,
-    excluded: &[(f64, f64)],
-) -> Result<Vec<CurvePairPoint<D>>>
+    prepared: &Prepared<D>,
+    (excluded, on_tangent): (&[(f64, f64)], OnTangent),
+    meter: &mut Meter<'_>,
+) -> Result<Option<Vec<CurvePairPoint<D>>>>
 where
     A: ParametricCurve<f64, D> + ?Sized,
     B: ParametricCurve<f64, D> + ?Sized,
 {
-    opts.check()?;
-    let (pa, pb) = (a.bezier_pieces()?, b.bezier_pieces()?);
-    let inside = |lo: f64, hi: f64| excluded.iter().any(|(x, y)| lo >= *x && hi <= *y);
-    let size = extent(&pa).max(extent(&pb)).max(opts.tolerance);
+    let inside = |lo: f64, hi: f64| {
+        let k = excluded.partition_point(|(_, y)| *y < hi);
+        excluded.get(k).is_some_and(|(x, y)| lo >= *x && hi <= *y)
+    };
+    let size = prepared.size;
     let leaf = 1e-3 * size;
     let grow = opts.tolerance;
-    let mut stack: Vec<(RationalPiece<D>, RationalPiece<D>)> = Vec::new();
-    for x in &pa {
-        for y in &pb {
-            stack.push((x.clone(), y.clone()));
-        }
-    }
     let mut seeds = Vec::new();
-    while let Some((x, y)) = stack.pop() {
-        if inside(x.start, x.end) {
-            continue;
-        }
-        if lower_bound(&x, &y) > grow {
-            continue;
-        }
-        let (bx, by) = (x.bounding_box(), y.bounding_box());
-        let (dx, dy) = (diagonal(&bx), diagonal(&by));
-        if dx <= leaf && dy <= leaf {
-            seeds.push((0.5 * (x.start + x.end), 0.5 * (y.start + y.end)));
-            if seeds.len() > opts.max_candidates {
-                return Err(Error::TooManyCandidates {
-                    what: "leaf pairs",
-                    limit: opts.max_candidates,
-                });
+    near_pairs(
+        &prepared.tree_a,
+        &prepared.tree_b,
+        grow,
+        meter,
+        |i, j, meter| {
+            let mut stack = vec![(prepared.a[i].clone(), prepared.b[j].clone())];
+            while let Some((x, y)) = stack.pop() {
+                meter.charge(1)?;
+                if inside(x.start, x.end) || lower_bound(&x, &y) > grow {
+                    continue;
+                }
+                let (bx, by) = (x.bounding_box(), y.bounding_box());
+                let (dx, dy) = (diagonal(&bx), diagonal(&by));
+                if dx <= leaf && dy <= leaf {
+                    seeds.push((0.5 * (x.start + x.end), 0.5 * (y.start + y.end)));
+                    if seeds.len() > opts.max_candidates {
+                        return Err(Error::TooManyCandidates {
+                            what: "leaf pairs",
+                            limit: opts.max_candidates,
+                        });
+                    }
+                    continue;
+                }
+                if dx >= dy {
+                    let (l, r) = x.halves();
+                    stack.push((l, y.clone()));
+                    stack.push((r, y));
+                } else {
+                    let (l, r) = y.halves();
+                    stack.push((x.clone(), l));
+                    stack.push((x, r));
+                }
             }
-            continue;
-        }
-        if dx >= dy {
-            let (l, r) = x.halves();
-            stack.push((l, y.clone()));
-            stack.push((r, y));
-        } else {
-            let (l, r) = y.halves();
-            stack.push((x.clone(), l));
-            stack.push((x, r));
-        }
-    }
-    let mut found: Vec<CurvePairPoint<D>> = Vec::new();
-    let merge = 1e-6 * size;
-    for (s, t) in seeds {
-        let (s, t) = refine(a, b, s, t)?;
+            Ok(())
+        },
+    )?;
+    let mut found = Hits::new(1e-6 * size);
+    let rounding = 64.0 * f64::EPSILON * size;
+    for seed in seeds {
+        let (s, t) = refine(a, b, seed, meter)?;
         let mut hit = pair_point(a, b, s, t)?;
         if hit.distance > opts.tolerance || inside(hit.parameter_a, hit.parameter_a) {
             continue;
@@ -409,12 +490,11 @@ where
         // curvature times √tolerance: try the sharp touch iteration on anything near-parallel.
         let near_parallel = sine_between(&a.derivative(s)?, &b.derivative(t)?) < 1e-3;
         if near_parallel {
-            if let Some((s2, t2)) = refine_touch(a, b, s, t)? {
+            if let Some((s2, t2)) = refine_touch(a, b, (s, t), meter)? {
                 let touch = pair_point(a, b, s2, t2)?;
                 // Keep the sharper location only if it is still a contact. At a touch both
                 // gaps are rounding (the minimisation's error e leaves a gap of κe²/2), so the
                 // sharp one may be the larger by a few ulps of the curves' size.
-                let rounding = 64.0 * f64::EPSILON * size;
                 if touch.distance <= opts.tolerance
                     && touch.distance <= (hit.distance * 10.0).max(rounding)
                 {
@@ -422,41 +502,107 @@ where
                 }
             }
         }
-        match found
-            .iter_mut()
-            .find(|h| (h.point_a - hit.point_a).norm() <= merge)
-        {
-            Some(h) => {
-                // The closer of two seeds' answers, and between gaps equal to rounding the one
-                // with the more parallel tangents (a touch located sharply).
-                let rounding = 64.0 * f64::EPSILON * size;
-                let sine = |p: &CurvePairPoint<D>| -> Result<f64> {
-                    Ok(sine_between(
-                        &a.derivative(p.parameter_a)?,
-                        &b.derivative(p.parameter_b)?,
-                    ))
-                };
-                let better = if (hit.distance - h.distance).abs() <= rounding {
-                    sine(&hit)? < sine(h)?
-                } else {
-                    hit.distance < h.distance
-                };
-                if better {
-                    *h = hit;
-                }
-            }
-            None => found.push(hit),
+        if hit.tangential && on_tangent == OnTangent::Stop {
+            return Ok(None);
         }
+        found.add(hit, |candidate, kept| {
+            // The closer of two seeds' answers, and between gaps equal to rounding the one
+            // with the more parallel tangents (a touch located sharply).
+            let sine = |p: &CurvePairPoint<D>| -> Result<f64> {
+                Ok(sine_between(
+                    &a.derivative(p.parameter_a)?,
+                    &b.derivative(p.parameter_b)?,
+                ))
+            };
+            Ok(if (candidate.distance - kept.distance).abs() <= rounding {
+                sine(candidate)? < sine(kept)?
+            } else {
+                candidate.distance < kept.distance
+            })
+        })?;
     }
+    let mut found = found.into_points();
     found.sort_by(|x, y| x.parameter_a.total_cmp(&y.parameter_a));
-    Ok(found)
+    Ok(Some(found))
 }
 
-/// A piece pair in the distance search, ordered by its lower bound (smallest first).
+/// Contacts kept distinct: a new one within `merge` of a kept one (on the first curve) is the
+/// same contact, and replaces it when better. A grid of cells `merge` wide finds the kept ones
+/// nearby, so merging k contacts costs O(k).
+struct Hits<const D: usize> {
+    merge: f64,
+    points: Vec<CurvePairPoint<D>>,
+    grid: HashMap<[i64; D], Vec<usize>>,
+}
+
+impl<const D: usize> Hits<D> {
+    fn new(merge: f64) -> Self {
+        Self {
+            merge: merge.max(f64::MIN_POSITIVE),
+            points: Vec::new(),
+            grid: HashMap::new(),
+        }
+    }
+
+    fn cell(&self, p: &Point<f64, D>) -> [i64; D] {
+        // Saturating casts: a coordinate far beyond the grid lands in its outermost cell.
+        #[allow(clippy::cast_possible_truncation)]
+        std::array::from_fn(|i| (p[i] / self.merge).floor() as i64)
+    }
+
+    /// Adds `hit`, or lets it replace a kept contact within `merge` when `better(hit, kept)`.
+    fn add(
+        &mut self,
+        hit: CurvePairPoint<D>,
+        better: impl Fn(&CurvePairPoint<D>, &CurvePairPoint<D>) -> Result<bool>,
+    ) -> Result<()> {
+        let home = self.cell(&hit.point_a);
+        let mut near = None;
+        'cells: for k in 0..3usize.pow(D as u32) {
+            let mut key = home;
+            let mut code = k;
+            for c in key.iter_mut() {
+                *c = c.saturating_add(code as i64 % 3 - 1);
+                code /= 3;
+            }
+            if let Some(list) = self.grid.get(&key) {
+                for &i in list {
+                    if (self.points[i].point_a - hit.point_a).norm() <= self.merge {
+                        near = Some(i);
+                        break 'cells;
+                    }
+                }
+            }
+        }
+        match near {
+            Some(i) => {
+                if better(&hit, &self.points[i])? {
+                    self.points[i] = hit;
+                }
+            }
+            None => {
+                self.grid.entry(home).or_default().push(self.points.len());
+                self.points.push(hit);
+            }
+        }
+        Ok(())
+    }
+
+    fn into_points(self) -> Vec<CurvePairPoint<D>> {
+        self.points
+    }
+}
+
+/// A pair in the distance search, ordered by its lower bound (smallest first): two tree nodes,
+/// or two pieces being subdivided.
 struct Candidate<const D: usize> {
     lower: f64,
-    a: RationalPiece<D>,
-    b: RationalPiece<D>,
+    pair: Pair<D>,
+}
+
+enum Pair<const D: usize> {
+    Nodes(usize, usize),
+    Pieces(RationalPiece<D>, RationalPiece<D>),
 }
 
 impl<const D: usize> PartialEq for Candidate<D> {
@@ -494,7 +640,8 @@ impl<const D: usize> Ord for Candidate<D> {
 /// # Ok::<(), camber_geom::Error>(())
 /// ```
 ///
-/// Errors: bad options, and the curves' evaluation errors.
+/// Errors: bad options, [`Error::BudgetExhausted`] / [`Error::Cancelled`] ("curve distance"),
+/// and the curves' evaluation errors.
 pub fn curve_distance<const D: usize, A, B>(
     a: &A,
     b: &B,
@@ -504,10 +651,13 @@ where
     A: ParametricCurve<f64, D> + ?Sized,
     B: ParametricCurve<f64, D> + ?Sized,
 {
-    opts.check()?;
-    let (pa, pb) = (a.bezier_pieces()?, b.bezier_pieces()?);
-    let size = extent(&pa).max(extent(&pb)).max(opts.tolerance);
-    let leaf = 1e-3 * size;
+    let prepared = Prepared::new(a, b, opts)?;
+    let mut meter = opts
+        .budget
+        .meter("curve distance", prepared.default_limit());
+    let (pa, pb) = (&prepared.a, &prepared.b);
+    let (ta, tb) = (&prepared.tree_a, &prepared.tree_b);
+    let leaf = 1e-3 * prepared.size;
     let ((a0, a1), (b0, b1)) = (a.domain(), b.domain());
     let mut best = pair_point(a, b, a0, b0)?;
     let consider = |cand: CurvePairPoint<D>, best: &mut CurvePairPoint<D>| {
@@ -517,31 +667,69 @@ where
     };
     // Curve ends projected onto the other curve.
     for s in [a0, a1] {
+        meter.charge(16 * u64::try_from(pb.len()).unwrap_or(u64::MAX))?;
         let p = a.point(s)?;
         let c = closest_point(b, &p)?;
         consider(pair_point(a, b, s, c.parameter)?, &mut best);
     }
     for t in [b0, b1] {
+        meter.charge(16 * u64::try_from(pa.len()).unwrap_or(u64::MAX))?;
         let p = b.point(t)?;
         let c = closest_point(a, &p)?;
         consider(pair_point(a, b, c.parameter, t)?, &mut best);
     }
     let mut heap = BinaryHeap::new();
-    for x in &pa {
-        for y in &pb {
-            let lower = lower_bound(x, y);
-            heap.push(Candidate {
-                lower,
-                a: x.clone(),
-                b: y.clone(),
-            });
-        }
+    if !ta.is_empty() && !tb.is_empty() {
+        heap.push(Candidate {
+            lower: 0.0,
+            pair: Pair::Nodes(0, 0),
+        });
     }
     let mut leaves = 0;
-    while let Some(Candidate { lower, a: x, b: y }) = heap.pop() {
+    while let Some(Candidate { lower, pair }) = heap.pop() {
         if lower >= best.distance - opts.tolerance {
             break;
         }
+        meter.charge(1)?;
+        let (x, y) = match pair {
+            Pair::Nodes(i, j) => {
+                let (nx, ny) = (ta.node(i), tb.node(j));
+                let children: Vec<(usize, usize)> = match (nx.children, ny.children) {
+                    (None, None) => {
+                        let (x, y) = (pa[nx.first].clone(), pb[ny.first].clone());
+                        let lower = lower_bound(&x, &y);
+                        if lower < best.distance - opts.tolerance {
+                            heap.push(Candidate {
+                                lower,
+                                pair: Pair::Pieces(x, y),
+                            });
+                        }
+                        continue;
+                    }
+                    (Some((l, r)), None) => vec![(l, j), (r, j)],
+                    (None, Some((l, r))) => vec![(i, l), (i, r)],
+                    (Some((xl, xr)), Some((yl, yr))) => {
+                        if nx.diagonal() >= ny.diagonal() {
+                            vec![(xl, j), (xr, j)]
+                        } else {
+                            vec![(i, yl), (i, yr)]
+                        }
+                    }
+                };
+                for (ci, cj) in children {
+                    let (cx, cy) = (ta.node(ci), tb.node(cj));
+                    let lower = box_distance((&cx.lo, &cx.hi), (&cy.lo, &cy.hi));
+                    if lower < best.distance - opts.tolerance {
+                        heap.push(Candidate {
+                            lower,
+                            pair: Pair::Nodes(ci, cj),
+                        });
+                    }
+                }
+                continue;
+            }
+            Pair::Pieces(x, y) => (x, y),
+        };
         // Piece ends are curve points: an upper bound.
         let (xa, xb) = (x.start, x.end);
         let (ya, yb) = (y.start, y.end);
@@ -552,18 +740,18 @@ where
         let (dx, dy) = (diagonal(&bx), diagonal(&by));
         if dx <= leaf && dy <= leaf {
             leaves += 1;
-            let (s, t) = refine(a, b, 0.5 * (xa + xb), 0.5 * (ya + yb))?;
+            let (s, t) = refine(a, b, (0.5 * (xa + xb), 0.5 * (ya + yb)), &mut meter)?;
             consider(pair_point(a, b, s, t)?, &mut best);
             // A closest pair at a piece end (a corner of a composite, a domain end) is not a
             // stationary point of the distance, so the joint Newton iteration may stop short
             // of it: hold each piece end fixed and find its foot on the other curve.
             let (ym, xm) = (0.5 * (ya + yb), 0.5 * (xa + xb));
             for s in [xa, xb] {
-                let t = foot(b, &a.point(s)?, ym)?;
+                let t = foot(b, &a.point(s)?, ym, (b0, b1), &mut meter)?;
                 consider(pair_point(a, b, s, t)?, &mut best);
             }
             for t in [ya, yb] {
-                let s = foot(a, &b.point(t)?, xm)?;
+                let s = foot(a, &b.point(t)?, xm, (a0, a1), &mut meter)?;
                 consider(pair_point(a, b, s, t)?, &mut best);
             }
             if leaves >= opts.max_candidates {
@@ -583,8 +771,7 @@ where
             if lower < best.distance - opts.tolerance {
                 heap.push(Candidate {
                     lower,
-                    a: cx,
-                    b: cy,
+                    pair: Pair::Pieces(cx, cy),
                 });
             }
         }

@@ -50,6 +50,7 @@
 //! # Ok::<(), camber_geom::Error>(())
 //! ```
 
+mod box_tree;
 mod closest;
 mod curvature;
 mod curve_curve;
@@ -295,7 +296,26 @@ where
     let breaks = clean_breakpoints(curve);
     let n = opts.samples_per_piece;
     let pieces = breaks.len() - 1;
-    let mut samples = Vec::with_capacity(pieces * (n + 1) + 1);
+    let count = n
+        .checked_add(1)
+        .and_then(|per| per.checked_mul(pieces))
+        .and_then(|c| c.checked_add(1))
+        .unwrap_or(usize::MAX);
+    if count > MAX_SAMPLES {
+        return Err(Error::TooLarge {
+            what: "query samples (pieces × (samples per piece + 1))",
+            value: count,
+            max: MAX_SAMPLES,
+        });
+    }
+    let mut samples = Vec::new();
+    samples
+        .try_reserve_exact(count)
+        .map_err(|_| Error::TooLarge {
+            what: "query samples (memory)",
+            value: count,
+            max: MAX_SAMPLES,
+        })?;
     for (k, pair) in breaks.windows(2).enumerate() {
         let (lo, hi) = (pair[0], pair[1]);
         let len = hi - lo;
@@ -341,6 +361,11 @@ where
         roots,
     })
 }
+
+/// The most samples one query takes (pieces × (samples per piece + 1)): about 2 GB of
+/// samples in f64, far above what the default 16 per piece needs for a curve of a million
+/// pieces; a larger count (an absurd `samples_per_piece`) is refused before allocating.
+pub const MAX_SAMPLES: usize = 1 << 25;
 
 /// How far before an interior breakpoint the piece on its left is sampled, as a fraction of
 /// the piece's length.

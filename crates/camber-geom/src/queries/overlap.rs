@@ -1,33 +1,46 @@
 //! Curve–curve intersection with overlaps: where two curves coincide along a stretch, the
 //! stretch is reported as a pair of parameter intervals instead of (too many) points.
 //!
-//! **Finding overlaps.** Curve `a` is sampled (33 parameters per Bézier piece, ends included);
-//! a sample is *on* `b` when its closest point on `b` ([`super::closest_point`]) is within the
-//! tolerance. Runs of at least two consecutive on-samples, whose midpoints are on `b` too, are
-//! overlap candidates; each end of a run is then located by bisection between its last on-sample
-//! and the next off-sample (60 halvings, down to rounding). The interval on `b` is given by the
-//! closest points of the two ends (it runs backwards when the curves are traced in opposite
-//! directions). An overlap shorter than the sample spacing is not seen as one: its contacts are
-//! searched as points like any other.
+//! **Points first.** The point search of [`super::intersect_curves`] runs first, and stops at
+//! its first tangential contact. Inside a stretch where the curves coincide every contact is
+//! tangential, so when none is (and the search did not run out of candidates) there is no
+//! overlap longer than a leaf and the points are the answer; otherwise the overlaps are looked
+//! for before any more contacts are refined.
 //!
-//! **Points.** The point search of [`super::intersect_curves`] then runs with the overlap
+//! **Finding overlaps.** Otherwise curve `a` is sampled (33 parameters per Bézier piece, ends
+//! included); a sample is *on* `b` when its distance to `b` is within the tolerance — measured
+//! only against the pieces of `b` whose boxes come that close (found in `b`'s box tree), by
+//! sampling each such piece and refining the best sample by Newton's method on the foot point.
+//! Runs of at least two consecutive on-samples, whose midpoints are on `b` too, are overlap
+//! candidates; each end of a run is then located by bisection between its last on-sample and
+//! the next off-sample (60 halvings, down to rounding). The interval on `b` is given by the
+//! feet of the two ends (it runs backwards when the curves are traced in opposite directions).
+//! An overlap shorter than the sample spacing is not seen as one: its contacts are searched as
+//! points like any other.
+//!
+//! **Points again.** With overlaps found, the point search runs again with the overlap
 //! stretches of `a` taken out (piece pairs inside them are dropped, contacts inside them too),
 //! so a coincident stretch is neither a list of points along it nor a drain on the candidate
 //! budget; crossings elsewhere are reported as usual.
 
 use nalgebra::Point;
 
-use super::closest_point;
-use super::curve_curve::{extent, intersect_excluding, CurveCurveOptions, CurvePairPoint};
-use super::pieces::BezierPieces;
+use super::curve_curve::{
+    foot, intersect_excluding, CurveCurveOptions, CurvePairPoint, OnTangent, Prepared,
+};
+use super::pieces::RationalPiece;
+use crate::budget::Meter;
 use crate::curve::ParametricCurve;
-use crate::errors::Result;
+use crate::errors::{Error, Result};
 
 /// Samples per Bézier piece of `a` when looking for overlaps (the pieces' ends included).
 const SAMPLES_PER_PIECE: usize = 32;
 
 /// Halvings that locate an overlap's end.
 const BISECTIONS: usize = 60;
+
+/// Samples of a piece of `b` from which its foot point is refined.
+const FOOT_SAMPLES: usize = 8;
 
 /// A stretch along which two curves coincide: `a` on [a.0, a.1] (a.0 < a.1) traces the same
 /// points as `b` from b.0 to b.1 (b.0 > b.1 when `b` runs the other way).
@@ -66,8 +79,9 @@ pub struct CurveIntersections<const D: usize> {
 /// # Ok::<(), camber_geom::Error>(())
 /// ```
 ///
-/// Errors: as [`super::intersect_curves`] (bad options, too many candidates), and the curves'
-/// evaluation errors.
+/// Errors: bad options, [`Error::TooManyCandidates`] (when even outside the overlaps the
+/// search needs more leaf pairs than allowed), [`Error::BudgetExhausted`] /
+/// [`Error::Cancelled`] ("curve intersection"), and the curves' evaluation errors.
 pub fn intersect_curves_with_overlaps<const D: usize, A, B>(
     a: &A,
     b: &B,
@@ -77,19 +91,100 @@ where
     A: ParametricCurve<f64, D> + ?Sized,
     B: ParametricCurve<f64, D> + ?Sized,
 {
-    opts.check()?;
-    let pieces = a.bezier_pieces()?;
-    let size = extent(&pieces).max(extent(&b.bezier_pieces()?));
-    // On `b`: within the tolerance, or within what rounding leaves of the closest point.
-    let near = opts.tolerance.max(1e-12 * size);
-    let on = |s: f64| -> Result<bool> {
+    let prepared = Prepared::new(a, b, opts)?;
+    let mut meter = opts
+        .budget
+        .meter("curve intersection", prepared.default_limit());
+    let first = intersect_excluding(a, b, opts, &prepared, (&[], OnTangent::Stop), &mut meter);
+    match first {
+        Ok(Some(points)) => {
+            return Ok(CurveIntersections {
+                points,
+                overlaps: Vec::new(),
+            })
+        }
+        Ok(None) | Err(Error::TooManyCandidates { .. }) => {}
+        Err(e) => return Err(e),
+    }
+    let overlaps = find_overlaps(a, b, opts, &prepared, &mut meter)?;
+    let excluded: Vec<(f64, f64)> = overlaps.iter().map(|o| o.a).collect();
+    let points = intersect_excluding(
+        a,
+        b,
+        opts,
+        &prepared,
+        (&excluded, OnTangent::Keep),
+        &mut meter,
+    )?
+    .unwrap_or_default();
+    Ok(CurveIntersections { points, overlaps })
+}
+
+/// The foot of `p` on `b` (parameter and distance) among the pieces of `b` whose boxes come
+/// within `near` of it, if one is that close.
+fn foot_on<const D: usize, B>(
+    b: &B,
+    pieces: &[RationalPiece<D>],
+    prepared: &Prepared<D>,
+    p: &Point<f64, D>,
+    near: f64,
+    meter: &mut Meter<'_>,
+) -> Result<Option<(f64, f64)>>
+where
+    B: ParametricCurve<f64, D> + ?Sized,
+{
+    let mut best: Option<(f64, f64)> = None;
+    for j in prepared.tree_b.pieces_near(&p.coords, near, meter)? {
+        let piece = &pieces[j];
+        let (lo, hi) = (piece.start, piece.end);
+        // The best of a few samples, then Newton on the foot point inside the piece.
+        let mut start = (lo, f64::INFINITY);
+        meter.charge(FOOT_SAMPLES as u64 + 1)?;
+        for k in 0..=FOOT_SAMPLES {
+            // Clamped: lo + (hi − lo) may round above hi.
+            let t = (lo + (hi - lo) * k as f64 / FOOT_SAMPLES as f64).min(hi);
+            let d = (b.point(t)? - p).norm();
+            if d < start.1 {
+                start = (t, d);
+            }
+        }
+        // At a piece's right end the curve reports the next piece's derivative: keep Newton
+        // a hair inside (the end itself was sampled above).
+        let inner = (lo, hi - (hi - lo) * 1e-12);
+        let t = foot(b, p, start.0.min(inner.1), inner, meter)?;
+        let d = (b.point(t)? - p).norm();
+        let found = if d < start.1 { (t, d) } else { start };
+        if best.is_none_or(|(_, bd)| found.1 < bd) {
+            best = Some(found);
+        }
+    }
+    Ok(best.filter(|(_, d)| *d <= near))
+}
+
+/// The overlap stretches of `a` along `b` (see the module documentation).
+fn find_overlaps<const D: usize, A, B>(
+    a: &A,
+    b: &B,
+    opts: &CurveCurveOptions,
+    prepared: &Prepared<D>,
+    meter: &mut Meter<'_>,
+) -> Result<Vec<Overlap>>
+where
+    A: ParametricCurve<f64, D> + ?Sized,
+    B: ParametricCurve<f64, D> + ?Sized,
+{
+    // On `b`: within the tolerance, or within what rounding leaves of the foot point.
+    let near = opts.tolerance.max(1e-12 * prepared.size);
+    let mut on = |s: f64, meter: &mut Meter<'_>| -> Result<Option<f64>> {
+        meter.charge(1)?;
         let p: Point<f64, D> = a.point(s)?;
-        Ok(closest_point(b, &p)?.distance <= near)
+        Ok(foot_on(b, &prepared.b, prepared, &p, near, meter)?.map(|(t, _)| t))
     };
     let mut params: Vec<f64> = Vec::new();
-    for piece in &pieces {
+    for piece in &prepared.a {
         for k in 0..=SAMPLES_PER_PIECE {
-            let s = piece.start + (piece.end - piece.start) * k as f64 / SAMPLES_PER_PIECE as f64;
+            let s = (piece.start + (piece.end - piece.start) * k as f64 / SAMPLES_PER_PIECE as f64)
+                .min(piece.end);
             if params.last().is_none_or(|l| s > *l) {
                 params.push(s);
             }
@@ -97,7 +192,7 @@ where
     }
     let flags = params
         .iter()
-        .map(|s| on(*s))
+        .map(|s| Ok(on(*s, meter)?.is_some()))
         .collect::<Result<Vec<bool>>>()?;
     let mut overlaps = Vec::new();
     let mut k = 0;
@@ -108,38 +203,47 @@ where
         }
         // The run k..=m of on-samples whose midpoints are on `b` too.
         let mut m = k;
-        while m + 1 < params.len() && flags[m + 1] && on(0.5 * (params[m] + params[m + 1]))? {
+        while m + 1 < params.len()
+            && flags[m + 1]
+            && on(0.5 * (params[m] + params[m + 1]), meter)?.is_some()
+        {
             m += 1;
         }
         if m > k {
             let start = match k.checked_sub(1) {
-                Some(j) => boundary(&on, params[k], params[j])?,
+                Some(j) => boundary(&mut on, params[k], params[j], meter)?,
                 None => params[k],
             };
             let end = match params.get(m + 1) {
-                Some(next) => boundary(&on, params[m], *next)?,
+                Some(next) => boundary(&mut on, params[m], *next, meter)?,
                 None => params[m],
             };
-            let tb = |s: f64| -> Result<f64> { Ok(closest_point(b, &a.point(s)?)?.parameter) };
+            let (Some(t0), Some(t1)) = (on(start, meter)?, on(end, meter)?) else {
+                k = m + 1;
+                continue;
+            };
             overlaps.push(Overlap {
                 a: (start, end),
-                b: (tb(start)?, tb(end)?),
+                b: (t0, t1),
             });
         }
         k = m + 1;
     }
-    let excluded: Vec<(f64, f64)> = overlaps.iter().map(|o| o.a).collect();
-    let points = intersect_excluding(a, b, opts, &excluded)?;
-    Ok(CurveIntersections { points, overlaps })
+    Ok(overlaps)
 }
 
 /// The parameter between `inside` (on the other curve) and `outside` (off it) where the curve
 /// leaves the other one, by bisection.
-fn boundary(on: &impl Fn(f64) -> Result<bool>, inside: f64, outside: f64) -> Result<f64> {
+fn boundary(
+    on: &mut impl FnMut(f64, &mut Meter<'_>) -> Result<Option<f64>>,
+    inside: f64,
+    outside: f64,
+    meter: &mut Meter<'_>,
+) -> Result<f64> {
     let (mut lo, mut hi) = (inside, outside);
     for _ in 0..BISECTIONS {
         let mid = 0.5 * (lo + hi);
-        if on(mid)? {
+        if on(mid, meter)?.is_some() {
             lo = mid;
         } else {
             hi = mid;
@@ -177,9 +281,14 @@ mod tests {
         assert_relative_eq!(o.b.0, 0.0, epsilon = 1e-7);
         assert_relative_eq!(o.b.1, 1.0, epsilon = 1e-7);
         assert!(hits.points.is_empty(), "{:?}", hits.points);
-        // The plain point search reports the stretch as a list of points along it.
-        let plain = intersect_curves(&a, &b, &opts).unwrap();
-        assert!(plain.len() > 10, "{}", plain.len());
+        // The plain point search names the stretch instead of listing points along it.
+        match intersect_curves(&a, &b, &opts) {
+            Err(crate::Error::CurvesOverlap { a_start, a_end, .. }) => {
+                assert_relative_eq!(a_start, 0.3, epsilon = 1e-7);
+                assert_relative_eq!(a_end, 0.8, epsilon = 1e-7);
+            }
+            other => panic!("{other:?}"),
+        }
     }
 
     /// A polyline that runs along the segment for x ∈ [1, 2], leaves it, and crosses it again at

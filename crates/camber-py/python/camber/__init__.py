@@ -28,9 +28,23 @@ from camber._native import (
     deform_case_to_g1,
     fit_to_tolerance,
     interpolate,
-    solve_many,
+    solve_many as _solve_many,
 )
 from camber.reports import SolveReport
+
+
+def solve_many(items, threads=None, parameters=None):
+    """Solves sketches in parallel, the GIL released (see ``camber._native.solve_many``).
+
+    ``parameters`` turns it into a sweep of one sketch: a dict of equally long arrays (or a
+    pandas DataFrame), one column per parameter; the result is one dict per row.
+    """
+    if parameters is not None:
+        if hasattr(parameters, "columns"):  # a pandas DataFrame
+            parameters = {str(c): parameters[c] for c in parameters.columns}
+        parameters = {str(k): [float(v) for v in vals] for k, vals in dict(parameters).items()}
+    return _solve_many(items, threads=threads, parameters=parameters)
+
 
 __all__ = [
     "ArcLengthMap",

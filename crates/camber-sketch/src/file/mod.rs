@@ -44,6 +44,7 @@ use crate::ground::ids::{ConstraintId, EntityId};
 use crate::sketch::Sketch;
 
 mod raw;
+mod words;
 
 use raw::{RawEntity, RawShape, RawSketch};
 
@@ -92,6 +93,14 @@ pub enum FileError {
         id: u64,
         /// Its kind tag.
         kind: String,
+        /// The sketch's reason.
+        source: Error,
+    },
+    /// A named parameter the sketch refuses (a name that is not one).
+    #[error("parameter {name}: {source}")]
+    Parameter {
+        /// The parameter's name.
+        name: String,
         /// The sketch's reason.
         source: Error,
     },
@@ -269,9 +278,19 @@ pub fn from_json_with(
         }
         None => {}
     }
+    if !value.is_object() {
+        return Err(FileError::Shape {
+            path: ".".into(),
+            message: format!(
+                "expected a sketch: an object with \"version\", \"entities\" and \"constraints\", \
+                 found {}",
+                json_kind(&value)
+            ),
+        });
+    }
     let raw: RawSketch = serde_path_to_error::deserialize(value).map_err(|e| FileError::Shape {
         path: e.path().to_string(),
-        message: e.inner().to_string(),
+        message: words::plain_words(&e.inner().to_string()),
     })?;
     let mut sketch = Sketch::new();
     let entities = raw
@@ -295,9 +314,17 @@ pub fn from_json_with(
                 source,
             })?;
     }
+    for (name, value) in &raw.parameters {
+        sketch
+            .define_parameter(name, *value)
+            .map_err(|source| FileError::Parameter {
+                name: name.clone(),
+                source,
+            })?;
+    }
     for (i, mut value) in raw.constraints.into_iter().enumerate() {
         let priority = load_priority(i, &mut value)?;
-        let (id, constraint) = load_constraint(i, value, registry)?;
+        let (id, constraint, bindings) = load_constraint(i, value, registry, sketch.parameters())?;
         let kind = constraint.tag().to_owned();
         sketch
             .add_constraint_with_id(ConstraintId(id), constraint)
@@ -306,6 +333,7 @@ pub fn from_json_with(
                 kind: kind.clone(),
                 source,
             })?;
+        sketch.set_bindings(ConstraintId(id), bindings);
         if priority > 0 {
             sketch
                 .set_priority(ConstraintId(id), priority)
@@ -336,7 +364,51 @@ pub fn constraint_from_value(mut value: Value) -> std::result::Result<Constraint
     if let Value::Object(map) = &mut value {
         map.entry("id").or_insert(Value::from(0));
     }
-    load_constraint(0, value, &CustomRegistry::new()).map(|(_, c)| c)
+    load_constraint(
+        0,
+        value,
+        &CustomRegistry::new(),
+        &crate::sketch::parameters::Parameters::default(),
+    )
+    .map(|(_, c, _)| c)
+}
+
+/// Adds one constraint from its file form without an id (`{"kind": "distance", …}`), its
+/// numbers possibly expressions of the sketch's parameters (`"distance": "chord / 2"`, kept as
+/// bindings, see [`crate::parameters`]). Custom kinds are refused.
+///
+/// ```
+/// use camber_sketch::{file::add_constraint_from_value, Sketch};
+/// let mut s = Sketch::new();
+/// let a = s.add_point(nalgebra::Point2::new(0.0, 0.0))?;
+/// let b = s.add_point(nalgebra::Point2::new(1.0, 0.0))?;
+/// s.define_parameter("chord", 4.0)?;
+/// let id = add_constraint_from_value(&mut s, serde_json::json!(
+///     {"kind": "distance", "a": {"point": a.0}, "b": {"point": b.0}, "distance": "chord / 2"}))?;
+/// assert_eq!(s.parameters().bindings(id)[0].text, "chord / 2");
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+///
+/// # Errors
+/// As [`constraint_from_value`]; [`FileError::Constraint`] when the sketch refuses it.
+pub fn add_constraint_from_value(
+    sketch: &mut Sketch,
+    mut value: Value,
+) -> std::result::Result<ConstraintId, FileError> {
+    if let Value::Object(map) = &mut value {
+        map.entry("id").or_insert(Value::from(0));
+    }
+    let (_, c, bindings) = load_constraint(0, value, &CustomRegistry::new(), sketch.parameters())?;
+    let kind = c.tag().to_owned();
+    let id = sketch
+        .add_constraint(c)
+        .map_err(|source| FileError::Constraint {
+            id: 0,
+            kind,
+            source,
+        })?;
+    sketch.set_bindings(id, bindings);
+    Ok(id)
 }
 
 /// One constraint's file form without its id (`{"kind": …, …fields}`).
@@ -409,20 +481,21 @@ fn load_entity(i: usize, mut value: Value) -> std::result::Result<RawEntity, Fil
         .map_err(|e| {
             // The path starts with the kind (the key of the keyed form): drop it.
             let path = e.path().to_string();
-            let message = e
-                .inner()
-                .to_string()
-                .replace("unknown variant", "unknown entity kind")
-                .replace(
-                    "expected fewer elements in array",
-                    "expected a point [x, y] of 2 numbers",
-                );
-            let inner = match path.split_once('.') {
-                Some((_, rest)) if !rest.is_empty() && rest != "?" => {
-                    format!("entities[{i}].{rest}")
-                }
-                _ if message.starts_with("unknown entity kind") => format!("entities[{i}].kind"),
-                _ => format!("entities[{i}]"),
+            let message = words::plain_words(&e.inner().to_string()).replace(
+                "expected fewer elements in array",
+                "expected a point [x, y] of 2 numbers",
+            );
+            let (inner, message) = match path.split_once('.') {
+                Some((_, rest)) if !rest.is_empty() && rest != "?" => (
+                    format!("entities[{i}].{rest}"),
+                    message.replace("unknown variant", "unknown value"),
+                ),
+                // The keyed form's only variant names are the entity kinds.
+                _ if message.starts_with("unknown variant") => (
+                    format!("entities[{i}].kind"),
+                    message.replace("unknown variant", "unknown entity kind"),
+                ),
+                _ => (format!("entities[{i}]"), message),
             };
             shape(inner, message)
         })?;
@@ -430,6 +503,18 @@ fn load_entity(i: usize, mut value: Value) -> std::result::Result<RawEntity, Fil
         id,
         shape: shape_of.into(),
     })
+}
+
+/// What a JSON value is, for messages: `null`, `an array`, `a number`, …
+fn json_kind(value: &Value) -> &'static str {
+    match value {
+        Value::Null => "null",
+        Value::Bool(_) => "true or false",
+        Value::Number(_) => "a number",
+        Value::String(_) => "a string",
+        Value::Array(_) => "an array",
+        Value::Object(_) => "an object",
+    }
 }
 
 /// A constraint's optional `"priority"` (0–255, 0 when absent), taken out of its object.
@@ -457,7 +542,8 @@ fn load_constraint(
     i: usize,
     mut value: Value,
     registry: &CustomRegistry,
-) -> std::result::Result<(u64, Constraint), FileError> {
+    parameters: &crate::sketch::parameters::Parameters,
+) -> std::result::Result<(u64, Constraint, Vec<crate::sketch::parameters::Binding>), FileError> {
     let shape = |path: String, message: String| FileError::Shape { path, message };
     let Value::Object(map) = &mut value else {
         return Err(shape(
@@ -494,28 +580,32 @@ fn load_constraint(
             ))
         }
     };
-    let constraint = match Constraint::load(&kind, value) {
-        Some(Ok(c)) => c,
-        Some(Err(e)) => {
-            let path = if e.path == "." {
-                format!("constraints[{i}]")
-            } else {
-                format!("constraints[{i}].{}", e.path)
-            };
-            return Err(shape(path, e.message));
-        }
-        None => {
-            return Err(shape(
-                format!("constraints[{i}].kind"),
-                format!(
-                    "unknown constraint kind `{kind}`, expected one of: {}",
-                    Constraint::TAGS.join(", ")
-                ),
-            ))
-        }
-    };
+    let (constraint, bindings) =
+        match crate::sketch::parameters::load_with_dimensions(&kind, value, parameters) {
+            Some(Ok(c)) => c,
+            Some(Err((path, message))) => {
+                let path = if path == "." {
+                    format!("constraints[{i}]")
+                } else {
+                    format!("constraints[{i}].{path}")
+                };
+                return Err(shape(
+                    path,
+                    words::plain_words(&message).replace("unknown variant", "unknown value"),
+                ));
+            }
+            None => {
+                return Err(shape(
+                    format!("constraints[{i}].kind"),
+                    format!(
+                        "unknown constraint kind `{kind}`, expected one of: {}",
+                        Constraint::TAGS.join(", ")
+                    ),
+                ))
+            }
+        };
     let Constraint::Custom(custom) = constraint else {
-        return Ok((id, constraint));
+        return Ok((id, constraint, bindings));
     };
     let (name, params) = custom
         .file_form()
@@ -534,7 +624,7 @@ fn load_constraint(
             name: name.clone(),
             message,
         })?;
-    Ok((id, decoded.with_file_form(name, params).into()))
+    Ok((id, decoded.with_file_form(name, params).into(), bindings))
 }
 
 /// Writes a sketch as file text (one entity or constraint per line, a final newline), entities
@@ -560,9 +650,17 @@ pub fn to_json(sketch: &Sketch) -> std::result::Result<String, FileError> {
                 });
             }
         }
-        let body = c.save().map_err(|e| FileError::Syntax {
+        let mut body = c.save().map_err(|e| FileError::Syntax {
             message: e.to_string(),
         })?;
+        let bindings = sketch.parameters().bindings(id);
+        if !bindings.is_empty() {
+            body = crate::sketch::parameters::with_texts(&body, bindings).map_err(|e| {
+                FileError::Syntax {
+                    message: e.to_string(),
+                }
+            })?;
+        }
         // {"id": N, "priority": P, "kind": …, …}: the kind's own form behind the id (and the
         // priority, when it is not the default 0).
         let priority = match sketch.priority(id) {
@@ -582,7 +680,16 @@ pub fn to_json(sketch: &Sketch) -> std::result::Result<String, FileError> {
         })
     };
     let entities: Vec<RawEntity> = entities;
-    let mut text = format!("{{\n  \"version\": {FORMAT_VERSION},\n  \"entities\": [");
+    let mut text = format!("{{\n  \"version\": {FORMAT_VERSION},\n");
+    if !sketch.parameters().is_empty() {
+        let values: std::collections::BTreeMap<&str, f64> = sketch
+            .parameters()
+            .iter()
+            .map(|(n, p)| (n, p.value))
+            .collect();
+        text.push_str(&format!("  \"parameters\": {},\n", enc(&values)?));
+    }
+    text.push_str("  \"entities\": [");
     for (i, e) in entities.iter().enumerate() {
         text.push_str(if i == 0 { "\n    " } else { ",\n    " });
         text.push_str(&enc(e)?);

@@ -28,6 +28,9 @@ fn xy_p(p: &Point2<f64>) -> Xy {
 #[serde(deny_unknown_fields)]
 pub(super) struct RawSketch {
     pub(super) version: u64,
+    /// Named parameters (crate::parameters).
+    #[serde(default)]
+    pub(super) parameters: std::collections::BTreeMap<String, f64>,
     #[serde(default)]
     pub(super) entities: Vec<Value>,
     #[serde(default)]

@@ -5,6 +5,7 @@
 //! returns an error: edits are validated before anything is stored, and solves write back only
 //! after every component has succeeded.
 
+use camber_solve::scalar::Readable;
 use camber_solve::ConstraintId;
 
 use crate::ground::ids::{EntityId, PointRef};
@@ -56,7 +57,7 @@ pub enum Error {
         found: &'static str,
     },
     /// A number that must be finite is NaN or infinite.
-    #[error("{what} {index} is not finite ({value})")]
+    #[error("{what} {index} is not finite ({})", Readable(*value))]
     NonFinite {
         /// What the number is ("target", "parameter", "direction", …).
         what: &'static str,
@@ -66,7 +67,7 @@ pub enum Error {
         value: f64,
     },
     /// A tangent or line direction of zero length.
-    #[error("the {what} direction ({x}, {y}) has zero length")]
+    #[error("the {what} direction ({}, {}) has zero length", Readable(*x), Readable(*y))]
     ZeroDirection {
         /// Which direction ("tangent", "line", …).
         what: &'static str,
@@ -76,7 +77,12 @@ pub enum Error {
         y: f64,
     },
     /// A curve parameter outside the curve's domain.
-    #[error("parameter {value} is outside the domain [{min}, {max}] of {entity}")]
+    #[error(
+        "parameter {} is outside the domain [{}, {}] of {entity}",
+        Readable(*value),
+        Readable(*min),
+        Readable(*max)
+    )]
     ParameterOutsideDomain {
         /// The curve.
         entity: EntityId,
@@ -160,7 +166,10 @@ pub enum Error {
     },
     /// The solve would reverse a tangency (a cusp): the tangent no longer points along the
     /// recorded sense. Nothing was moved.
-    #[error("{constraint} would flip its tangent orientation (signed dot {dot})")]
+    #[error(
+        "{constraint} would flip its tangent orientation (signed dot {})",
+        Readable(*dot)
+    )]
     OrientationFlipped {
         /// The tangency constraint.
         constraint: ConstraintId,
@@ -200,7 +209,10 @@ pub enum Error {
     #[error("solver: {0}")]
     Solve(camber_solve::Error),
     /// A point weight that is not a positive finite number.
-    #[error("weight {value} of point {index} of entity {entity} is not a positive finite number")]
+    #[error(
+        "weight {} of point {index} of entity {entity} is not a positive finite number",
+        Readable(*value)
+    )]
     InvalidWeight {
         /// The entity.
         entity: EntityId,
@@ -210,7 +222,7 @@ pub enum Error {
         value: f64,
     },
     /// A number that must be positive (a radius, a distance) is not.
-    #[error("{what} {value} must be a positive finite number")]
+    #[error("{what} {} must be a positive finite number", Readable(*value))]
     NotPositive {
         /// What the number is.
         what: &'static str,
@@ -227,7 +239,8 @@ pub enum Error {
     /// (a joint's, a recorded tangent direction's) collapses to zero length (a cusp). Nothing
     /// was moved.
     #[error(
-        "{constraint} would leave a cusp where it holds: the tangent vanishes (|C′| = {speed})"
+        "{constraint} would leave a cusp where it holds: the tangent vanishes (|C′| = {})",
+        Readable(*speed)
     )]
     Cusp {
         /// The contact constraint.
@@ -237,7 +250,11 @@ pub enum Error {
     },
     /// After the solve, the curve crosses the line or circle it should only touch, near the
     /// contact. Nothing was moved.
-    #[error("{constraint}: the curve crosses its target at u = {parameter} by {depth}")]
+    #[error(
+        "{constraint}: the curve crosses its target at u = {} by {}",
+        Readable(*parameter),
+        Readable(*depth)
+    )]
     ContactCrossed {
         /// The contact constraint.
         constraint: ConstraintId,
@@ -320,6 +337,20 @@ pub enum Error {
         constraint: ConstraintId,
         /// Its kind.
         kind: &'static str,
+    },
+    /// A value set on a dimension that follows an expression of the sketch's parameters
+    /// ([`crate::Sketch::set_value`] on a dimension bound by
+    /// [`crate::Sketch::bind_dimension`]): the next change of a parameter would overwrite it.
+    #[error(
+        "{constraint}'s value follows the expression `{expression}` at `{path}`: change its parameters, or bind it to a new expression"
+    )]
+    ValueBound {
+        /// The constraint.
+        constraint: ConstraintId,
+        /// The path of the bound number in the constraint's file form.
+        path: String,
+        /// The expression it follows.
+        expression: String,
     },
     /// A constraint reads a free parameter another constraint does not have.
     #[error("{constraint} reads free parameter {index} of {of}, which it does not have")]

@@ -42,9 +42,12 @@ impl Sketch {
     /// Errors of building the problems.
     pub fn analyze(&self) -> Result<Vec<ComponentAnalysis>> {
         let mut out = Vec::new();
+        // The options depend on the largest coordinate of the whole sketch: worked out once,
+        // not once per component (which made a sketch of many components quadratic).
+        let options = self.solve_options();
         for comp in self.components() {
             let cp = self.build_component(&comp)?;
-            let mut analysis = cp.problem().analyze(&self.solve_options())?;
+            let mut analysis = cp.problem().analyze(&options)?;
             cp.name_merged_redundant(&mut analysis.redundant);
             let conflicting = &analysis.conflicting;
             analysis.redundant.retain(|c| !conflicting.contains(c));

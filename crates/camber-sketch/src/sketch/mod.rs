@@ -8,6 +8,7 @@
 //! dirty entity.
 
 mod describe;
+pub mod parameters;
 pub(crate) mod prepared;
 pub mod warnings;
 
@@ -75,6 +76,8 @@ pub struct Sketch {
     /// The components compiled and solved by earlier solves, kept with their plans
     /// ([`prepared`]).
     pub(crate) prepared: prepared::Prepared,
+    /// Named parameters and the dimensions bound to expressions of them.
+    pub(crate) parameters: parameters::Parameters,
 }
 
 impl Default for Sketch {
@@ -93,6 +96,10 @@ impl EntityLookup for Sketch {
 
     fn weight(&self, id: EntityId, index: usize) -> f64 {
         self.weights.get(&(id, index)).copied().unwrap_or(1.0)
+    }
+
+    fn parameter(&self, name: &str) -> Option<f64> {
+        self.parameters.get(name).map(|p| p.value)
     }
 }
 
@@ -116,6 +123,7 @@ impl Sketch {
             weights: BTreeMap::new(),
             priorities: BTreeMap::new(),
             prepared: prepared::Prepared::default(),
+            parameters: parameters::Parameters::default(),
         }
     }
 }
@@ -527,6 +535,7 @@ impl Sketch {
             .ok_or(Error::UnknownConstraint { constraint: id })?;
         self.graph.remove_node(node);
         self.priorities.remove(&id);
+        self.parameters.bindings.remove(&id);
         for e in c.entities() {
             self.touch(e);
         }
@@ -561,7 +570,9 @@ impl Sketch {
     /// ```
     ///
     /// # Errors
-    /// [`Error::UnknownConstraint`]; [`Error::NoValue`] for a kind without a value; the
+    /// [`Error::UnknownConstraint`]; [`Error::NoValue`] for a kind without a value;
+    /// [`Error::ValueBound`] for a value that follows an expression of the parameters
+    /// ([`Sketch::bind_dimension`]: change the parameters, or bind it again); the
     /// validation errors of the kind for the new value (a negative distance, a non-finite
     /// number, …). The sketch is unchanged then.
     pub fn set_value(&mut self, id: ConstraintId, value: f64) -> Result<()> {
@@ -575,6 +586,19 @@ impl Sketch {
                 constraint: id,
                 kind: edited.kind_name(),
             });
+        }
+        // A dimension bound to an expression of the parameters follows them: a value set here
+        // would be overwritten by the next parameter change, so it is refused.
+        for binding in self.parameters.bindings(id) {
+            let follows =
+                parameters::apply(&edited, std::slice::from_ref(binding), &self.parameters)?;
+            if follows.value() != Some(value) {
+                return Err(Error::ValueBound {
+                    constraint: id,
+                    path: binding.path.clone(),
+                    expression: binding.text.clone(),
+                });
+            }
         }
         edited.compile(self)?;
         let entities = edited.entities();
@@ -643,7 +667,9 @@ impl Sketch {
 /// # Components
 impl Sketch {
     /// The connected components of the graph, each with its entities and constraints sorted by
-    /// id, ordered by their smallest entity id.
+    /// id, ordered by their smallest entity id; then, in id order, one component for each
+    /// constraint that reads no entity (a custom constraint of no arguments or of its own
+    /// parameters only), so that it is solved and analysed like any other.
     pub fn components(&self) -> Vec<Component> {
         let mut seen = vec![false; self.graph.node_bound()];
         let mut out = Vec::new();
@@ -674,6 +700,14 @@ impl Sketch {
             comp.entities.sort_unstable();
             comp.constraints.sort_unstable();
             out.push(comp);
+        }
+        for (id, (_, node)) in &self.constraints {
+            if !seen[node.index()] {
+                out.push(Component {
+                    entities: Vec::new(),
+                    constraints: vec![*id],
+                });
+            }
         }
         out
     }
@@ -830,6 +864,15 @@ impl Sketch {
             cp.problem.set_priority(id, self.priority(id));
         }
         Ok(cp)
+    }
+
+    /// Replaces a constraint's data by a value of the same kind reading the same entities (a
+    /// dimension re-evaluated).
+    pub(crate) fn replace_constraint_data(&mut self, id: ConstraintId, c: Constraint) {
+        if let Some(slot) = self.constraints.get_mut(&id) {
+            slot.0 = c;
+            self.revision += 1;
+        }
     }
 
     /// Marks an entity as changed, so that the next solve solves its component.

@@ -4,6 +4,7 @@
 //! them. Every error of [`crate::solve_linear`] leaves the problem's values unchanged.
 
 use crate::model::ids::ConstraintId;
+use crate::model::scalar::Readable;
 
 /// Everything that can go wrong when building or solving a [`crate::Problem`].
 ///
@@ -19,7 +20,7 @@ use crate::model::ids::ConstraintId;
 #[non_exhaustive]
 pub enum Error {
     /// A number that must be finite is NaN or infinite.
-    #[error("{what} {index} is not finite ({value})")]
+    #[error("{what} {index} is not finite ({})", Readable(*value))]
     NonFinite {
         /// What the number is ("block value", "weight", "bound", …).
         what: &'static str,
@@ -63,7 +64,11 @@ pub enum Error {
         found: usize,
     },
     /// A lower bound is above its upper bound.
-    #[error("unknown {unknown}: lower bound {lower} is above upper bound {upper}")]
+    #[error(
+        "unknown {unknown}: lower bound {} is above upper bound {}",
+        Readable(*lower),
+        Readable(*upper)
+    )]
     InvalidBounds {
         /// The unknown (flat index).
         unknown: usize,
@@ -73,7 +78,7 @@ pub enum Error {
         upper: f64,
     },
     /// A weight of the minimum-norm metric is zero or negative.
-    #[error("weight {index} is not positive ({value})")]
+    #[error("weight {index} is not positive ({})", Readable(*value))]
     NonPositiveWeight {
         /// Index of the reduced unknown (or of the weight in the slice given).
         index: usize,
@@ -150,7 +155,10 @@ pub enum Error {
         rows: usize,
     },
     /// A residual evaluated to NaN or infinity.
-    #[error("{constraint} ({name}): residual row {row} is not finite ({value})")]
+    #[error(
+        "{constraint} ({name}): residual row {row} is not finite ({})",
+        Readable(*value)
+    )]
     NonFiniteResidual {
         /// The owning constraint.
         constraint: ConstraintId,
@@ -169,7 +177,12 @@ pub enum Error {
     },
     /// The solution leaves an unknown outside its bounds; nothing was written back. For an
     /// auxiliary unknown, `unknown` is its index among the reduced unknowns.
-    #[error("unknown {unknown} would move to {value}, outside [{lower}, {upper}]")]
+    #[error(
+        "unknown {unknown} would move to {}, outside [{}, {}]",
+        Readable(*value),
+        Readable(*lower),
+        Readable(*upper)
+    )]
     OutOfBounds {
         /// The unknown (flat index).
         unknown: usize,
@@ -183,8 +196,10 @@ pub enum Error {
     /// An autodiff Jacobian entry disagrees with central differences (see the `testing`
     /// feature).
     #[error(
-        "{name}: Jacobian entry (row {row}, block {block}, column {column}) is {autodiff} by \
-         autodiff but {central} by central differences"
+        "{name}: Jacobian entry (row {row}, block {block}, column {column}) is {} by \
+         autodiff but {} by central differences",
+        Readable(*autodiff),
+        Readable(*central)
     )]
     JacobianMismatch {
         /// The residual's name.
@@ -225,7 +240,10 @@ pub enum Error {
     },
     /// An iterative solver stopped before the residuals came within tolerance; nothing was
     /// written back.
-    #[error("{solver} did not converge in {iterations} iterations (max |g| = {max_residual})")]
+    #[error(
+        "{solver} did not converge in {iterations} iterations (max |g| = {})",
+        Readable(*max_residual)
+    )]
     NotConverged {
         /// The solver ("Newton", "Levenberg–Marquardt").
         solver: &'static str,

@@ -13,4 +13,4 @@
 //! assert!((camber_solve::scalar::re(c) - 1.5).abs() < 1e-15);
 //! ```
 
-pub use camber_scalar::{cst, from_usize, is_finite, re, Scalar};
+pub use camber_scalar::{cst, from_usize, is_finite, re, Readable, Scalar};

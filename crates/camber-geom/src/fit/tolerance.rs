@@ -1,0 +1,339 @@
+//! Fitting to a tolerance with adaptive knots and a search for the fewest control points.
+//!
+//! 1. **Trial fit on given knots.** Least squares on the knots with the data's parameters,
+//!    then [`CORRECTIONS`] rounds of parameter correction (every parameter moved to the foot
+//!    point of its data point on the last curve, then least squares again), then the foot
+//!    points on the final curve: the error of a trial is the largest distance from a data point
+//!    to its foot point (with [`ErrorMeasure::Parametric`] the plain |C(ū_k) − Q_k| instead,
+//!    parameters unchanged).
+//! 2. **Refinement.** From one polynomial span, every span erring above the tolerance τ is cut
+//!    into ⌈(E_j/τ)^{1/(p+1)}⌉ pieces, until a trial is within τ: a feasible knot count.
+//! 3. **Search.** Every count is tried with knots equidistributing the error density of the
+//!    best fit so far (see [`knot_placement`](super::knot_placement)), re-spread [`RESPREADS`]
+//!    times by its own errors. The density also predicts the count the tolerance needs (a span
+//!    erring E_j becomes (E_j/τ)^{1/(p+1)} spans); the search goes down to the predicted count
+//!    while that succeeds, then bisects between the largest count that failed and the
+//!    smallest that succeeded.
+//!
+//! Interpolation is the answer only when the knots would be as many as the data carry.
+
+use std::cell::RefCell;
+
+use nalgebra::Point;
+
+use super::ends::{solve, EndCondition, Ends};
+use super::interpolation::interpolate_at;
+use super::knot_placement::{index_of, max_interior, parameter_at, refine, separate, Density};
+use super::least_squares::clamped_knots;
+use super::projection::{correct_parameters, distances_to_curve, parametric_distances};
+use super::Fit;
+use crate::bspline::BSplineCurve;
+use crate::budget::{default_limit, Budget, Meter};
+use crate::errors::{Error, Result};
+use crate::scalar::{cst, re, Scalar};
+
+/// Rounds of parameter correction per trial (each one least-squares solve and one foot-point
+/// pass).
+pub(crate) const CORRECTIONS: usize = 2;
+
+/// How often the knots of one count are re-spread by the errors of their own fit during the
+/// search.
+const RESPREADS: usize = 1;
+
+/// How often the search goes down to the count predicted by the error density.
+const PREDICTIONS: usize = 4;
+
+/// How often [`Problem::best_with_count`] re-spreads the knots at most.
+const ADAPTIVE_ROUNDS: usize = 6;
+
+/// How the error of a trial is measured.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum ErrorMeasure {
+    /// Distance to the foot point, parameters corrected (the distance to the curve).
+    Projected,
+    /// |C(ū_k) − Q_k| at the given parameters, which stay.
+    Parametric,
+}
+
+/// One fit on given knots.
+#[derive(Debug, Clone)]
+pub(crate) struct Trial<T: Scalar, const D: usize> {
+    /// The interior knots in data-index coordinates (see
+    /// [`knot_placement`](super::knot_placement)).
+    pub interior: Vec<f64>,
+    /// The curve.
+    pub curve: BSplineCurve<T, D>,
+    /// The data parameters (foot points with [`ErrorMeasure::Projected`]).
+    pub parameters: Vec<T>,
+    /// The error of every data point.
+    pub errors: Vec<f64>,
+    /// The largest of them.
+    pub max_error: f64,
+}
+
+impl<T: Scalar, const D: usize> Trial<T, D> {
+    /// The number of interior knots.
+    pub fn knot_count(&self) -> usize {
+        self.interior.len()
+    }
+}
+
+/// The problem of one fit: data, start parameters, degree, end roles, error measure, and the
+/// meter its trials charge.
+pub(crate) struct Problem<'a, T: Scalar, const D: usize> {
+    points: &'a [Point<T, D>],
+    parameters: &'a [T],
+    /// The start parameters as f64.
+    start: Vec<f64>,
+    degree: usize,
+    ends: Ends<T, D>,
+    measure: ErrorMeasure,
+    /// Charged per trial: one unit per data point and least-squares solve or foot-point pass.
+    meter: RefCell<Meter<'a>>,
+}
+
+impl<'a, T: Scalar, const D: usize> Problem<'a, T, D> {
+    /// The problem of fitting `points` from `parameters` (increasing from 0 to 1), its work
+    /// under `budget` (operation "fitting", the default limit of the point count).
+    pub fn new(
+        points: &'a [Point<T, D>],
+        parameters: &'a [T],
+        degree: usize,
+        ends: Ends<T, D>,
+        measure: ErrorMeasure,
+        budget: &'a Budget,
+    ) -> Self {
+        Self {
+            points,
+            parameters,
+            start: parameters.iter().map(|&u| re(u)).collect(),
+            degree,
+            ends,
+            measure,
+            meter: RefCell::new(budget.meter("fitting", default_limit(points.len()))),
+        }
+    }
+
+    /// Charges the work of a trial: one unit per data point and pass over the data.
+    fn charge(&self, passes: usize) -> Result<()> {
+        let units = u64::try_from(self.points.len().saturating_mul(passes)).unwrap_or(u64::MAX);
+        self.meter.borrow_mut().charge(units)
+    }
+
+    /// The averaged interior knots of `control_points` control points in data-index
+    /// coordinates: knot j (1 ≤ j ≤ n − p) at s = j·d − 1 with d = (m + 1)/(n − p + 1), so
+    /// every span holds data.
+    pub fn averaged_knots(&self, control_points: usize) -> Vec<f64> {
+        let (p, m) = (self.degree, self.points.len() - 1);
+        let n = control_points.saturating_sub(1);
+        if n <= p {
+            return Vec::new();
+        }
+        let d = (m + 1) as f64 / (n - p + 1) as f64;
+        (1..=n - p)
+            .map(|j| (j as f64 * d - 1.0).clamp(0.0, m as f64))
+            .collect()
+    }
+
+    /// The data-index coordinates of interior knots given as parameters.
+    pub fn knots_to_indices(&self, knots: &[f64]) -> Vec<f64> {
+        knots.iter().map(|&u| index_of(&self.start, u)).collect()
+    }
+
+    /// A trial fit on the `interior` knots (data-index coordinates), from the start parameters.
+    pub fn trial(&self, interior: Vec<f64>) -> Result<Trial<T, D>> {
+        self.charge(match self.measure {
+            ErrorMeasure::Parametric => 2,
+            ErrorMeasure::Projected => 2 * CORRECTIONS + 2,
+        })?;
+        let mut knots_t: Vec<T> = Vec::with_capacity(interior.len());
+        for &s in &interior {
+            let u = cst::<T>(parameter_at(&self.start, s));
+            // Strictly increasing inside (0, 1): a repeated or end value is dropped.
+            if re(u) > 0.0 && re(u) < 1.0 && knots_t.last().is_none_or(|&l| u > l) {
+                knots_t.push(u);
+            }
+        }
+        let knots = clamped_knots(self.degree, &knots_t);
+        let mut parameters = self.parameters.to_vec();
+        let mut errors = Vec::with_capacity(self.points.len());
+        let mut curve = solve(self.points, &parameters, self.degree, &knots, &self.ends)?;
+        let max_error = match self.measure {
+            ErrorMeasure::Parametric => {
+                parametric_distances(&curve, self.points, &parameters, &mut errors)?
+            }
+            ErrorMeasure::Projected => {
+                for _ in 0..CORRECTIONS {
+                    correct_parameters(&curve, self.points, &mut parameters, &mut errors, 1)?;
+                    curve = solve(self.points, &parameters, self.degree, &knots, &self.ends)?;
+                }
+                correct_parameters(&curve, self.points, &mut parameters, &mut errors, 3)?
+            }
+        };
+        Ok(Trial {
+            interior,
+            curve,
+            parameters,
+            errors,
+            max_error,
+        })
+    }
+
+    /// The best trial with `count` interior knots spread by the error density of `guide`.
+    fn spread(&self, count: usize, guide: &Trial<T, D>) -> Result<Trial<T, D>> {
+        let n = self.points.len();
+        let density = Density::from_errors(&guide.interior, &guide.errors, self.degree);
+        let knots = separate(&density.equidistribute(count), n, self.degree);
+        let mut best = self.trial(knots)?;
+        for _ in 0..RESPREADS {
+            let density = Density::from_errors(&best.interior, &best.errors, self.degree);
+            let knots = separate(&density.equidistribute(count), n, self.degree);
+            let next = self.trial(knots)?;
+            if next.max_error < best.max_error {
+                best = next;
+            } else {
+                break;
+            }
+        }
+        Ok(best)
+    }
+
+    /// The best trial with the count of `interior` knots: from those knots, re-spread by the
+    /// errors of the last fit while the largest error drops ([`ADAPTIVE_ROUNDS`] at most).
+    pub fn best_with_count(&self, interior: Vec<f64>) -> Result<Trial<T, D>> {
+        let count = interior.len();
+        let mut best = self.trial(interior)?;
+        for _ in 0..ADAPTIVE_ROUNDS {
+            let next = self.spread(count, &best)?;
+            if next.max_error < best.max_error {
+                best = next;
+            } else {
+                break;
+            }
+        }
+        Ok(best)
+    }
+
+    /// The fit of a trial: with [`ErrorMeasure::Projected`] its errors become distances to the
+    /// whole curve ([`distances_to_curve`]); with [`ErrorMeasure::Parametric`] they stay.
+    pub fn finish(&self, trial: Trial<T, D>) -> Result<Fit<T, D>> {
+        let Trial {
+            curve,
+            mut parameters,
+            mut errors,
+            max_error,
+            ..
+        } = trial;
+        let max_error = match self.measure {
+            ErrorMeasure::Projected => {
+                distances_to_curve(&curve, self.points, &mut parameters, &mut errors)?
+            }
+            ErrorMeasure::Parametric => max_error,
+        };
+        Ok(Fit {
+            curve,
+            parameters,
+            max_error,
+        })
+    }
+
+    /// The interpolant (when the tolerance needs every data point as a control point); at a
+    /// joint of a split fit, where the interpolant cannot hold the joint's tangent, `last`
+    /// (the trial with the most knots the data carry) if it is within the tolerance.
+    fn interpolation(&self, last: Trial<T, D>, tolerance: f64) -> Result<Trial<T, D>> {
+        let plain = |c: &EndCondition<T, D>| !matches!(c, EndCondition::Joint { .. });
+        if !(plain(&self.ends.start) && plain(&self.ends.end)) {
+            return if last.max_error <= tolerance {
+                Ok(last)
+            } else {
+                Err(Error::ToleranceNotMet {
+                    tolerance,
+                    reached: last.max_error,
+                })
+            };
+        }
+        let fit = interpolate_at(self.points, self.parameters, self.degree, None)?;
+        if fit.max_error > tolerance {
+            return Err(Error::ToleranceNotMet {
+                tolerance,
+                reached: fit.max_error,
+            });
+        }
+        let errors = vec![0.0; self.points.len()];
+        let knots: Vec<f64> = fit.curve.knots().as_slice()
+            [self.degree + 1..fit.curve.knots().len() - self.degree - 1]
+            .iter()
+            .map(|&u| re(u))
+            .collect();
+        let interior = self.knots_to_indices(&knots);
+        Ok(Trial {
+            interior,
+            curve: fit.curve,
+            parameters: fit.parameters,
+            max_error: fit.max_error,
+            errors,
+        })
+    }
+
+    /// The fit within `tolerance` with the fewest interior knots the search finds.
+    pub fn fit_to_tolerance(&self, tolerance: f64) -> Result<Trial<T, D>> {
+        let p = self.degree;
+        let limit = max_interior(self.points.len(), p);
+        // Refinement up to a feasible count.
+        let mut interior: Vec<f64> = Vec::new();
+        let feasible = loop {
+            let t = self.trial(interior)?;
+            if t.max_error <= tolerance {
+                break t;
+            }
+            let refined = refine(&t.interior, &t.errors, p, tolerance);
+            let next = separate(&refined, self.points.len(), p);
+            if t.knot_count() >= limit || next.len() <= t.knot_count() {
+                // The data carry no more knots: before interpolating, the best fit with one
+                // control point fewer than points (as `approximate_with` finds it).
+                let fewer = self.best_with_count(self.averaged_knots(self.points.len() - 1))?;
+                if fewer.max_error <= tolerance {
+                    break fewer;
+                }
+                return self.interpolation(t, tolerance);
+            }
+            interior = next;
+        };
+        // Downwards: the count the error density of the best fit predicts, while that
+        // succeeds; then bisection between the largest failed count and the best.
+        let mut best = feasible;
+        let mut failed: Option<usize> = None;
+        for _ in 0..PREDICTIONS {
+            let density = Density::from_errors(&best.interior, &best.errors, p);
+            let guess = density.predicted_count(tolerance, p);
+            if guess >= best.knot_count() || failed.is_some_and(|f| guess <= f) {
+                break;
+            }
+            let t = self.spread(guess, &best)?;
+            if t.max_error <= tolerance {
+                best = t;
+            } else {
+                failed = Some(guess);
+                break;
+            }
+        }
+        let mut lo = failed.map_or(0, |f| f + 1);
+        while lo < best.knot_count() {
+            let mid = lo + (best.knot_count() - lo) / 2;
+            let t = self.spread(mid, &best)?;
+            if t.max_error <= tolerance && t.knot_count() < best.knot_count() {
+                best = t;
+            } else {
+                lo = mid + 1;
+            }
+        }
+        if best.knot_count() >= limit && self.points.len() > p + 1 {
+            // As many control points as data: one fewer as `approximate_with` finds it.
+            let fewer = self.best_with_count(self.averaged_knots(self.points.len() - 1))?;
+            if fewer.max_error <= tolerance {
+                best = fewer;
+            }
+        }
+        Ok(best)
+    }
+}
