@@ -458,7 +458,7 @@ knotted_curve_methods! {
     fn remove_knots(slf: PyRef<'_, Self>, tolerance: f64) -> PyResult<(Py<PyAny>, usize, f64)> {
         let py = slf.py();
         by_dim!(&slf.as_super().inner, BSpline2, BSpline3, c => {
-            let r = py.detach(|| c.remove_knots(tolerance)).map_err(geometry)?;
+            let r = crate::interrupt::run_geometry(py, |budget| c.remove_knots_with(tolerance, budget))?;
             Ok((wrap(py, same!(r.curve))?, r.removed, r.error_bound))
         })
     }
