@@ -430,7 +430,7 @@ fn three_circles_through_one_point() -> Problem {
 /// on three rows over two unknowns gets an independent pair of rows and solves.
 #[cfg(feature = "nlopt")]
 #[test]
-fn issue_11_slsqp_gets_independent_rows_when_rows_outnumber_unknowns() {
+fn slsqp_gets_independent_rows_when_rows_outnumber_unknowns() {
     let mut p = three_circles_through_one_point();
     let r = solve(&mut p, &tight().with_force(Some(SolverChoice::Slsqp))).unwrap();
     assert_eq!(r.solver, SolverKind::Slsqp);
@@ -442,7 +442,7 @@ fn issue_11_slsqp_gets_independent_rows_when_rows_outnumber_unknowns() {
 /// and an unchanged problem.
 #[cfg(feature = "nlopt")]
 #[test]
-fn issue_11_slsqp_is_refused_outside_its_limits() {
+fn slsqp_is_refused_outside_its_limits() {
     let mut p = three_circles_through_one_point();
     let before = p.values().to_vec();
     let options = forced(SolverChoice::Slsqp).with_dense_analysis_max_entries(0);
@@ -465,7 +465,7 @@ fn issue_11_slsqp_is_refused_outside_its_limits() {
 }
 
 #[test]
-fn issue_11_slsqp_limits() {
+fn slsqp_limits() {
     use camber_solve::{slsqp_supports, SLSQP_MAX_UNKNOWNS};
     assert!(slsqp_supports(3, 3).is_ok());
     assert!(slsqp_supports(SLSQP_MAX_UNKNOWNS, SLSQP_MAX_UNKNOWNS).is_ok());
