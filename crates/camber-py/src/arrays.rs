@@ -62,6 +62,28 @@ pub fn refuse_complex(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<()> {
     Ok(())
 }
 
+/// A 2-D float array argument (a numpy array of any real dtype, or nested sequences numpy
+/// reads as one), with complex numbers refused ([`refuse_complex`]) where numpy would drop
+/// their imaginary parts with only a warning. Dereferences to the float array.
+pub struct RealArray2<'py>(PyArrayLike2<'py, f64, AllowTypeChange>);
+
+impl<'a, 'py> FromPyObject<'a, 'py> for RealArray2<'py> {
+    type Error = PyErr;
+
+    fn extract(ob: Borrowed<'a, 'py, PyAny>) -> PyResult<Self> {
+        refuse_complex(&ob, "coordinates")?;
+        Ok(Self(ob.extract()?))
+    }
+}
+
+impl<'py> std::ops::Deref for RealArray2<'py> {
+    type Target = PyArrayLike2<'py, f64, AllowTypeChange>;
+
+    fn deref(&self) -> &Self::Target {
+        &self.0
+    }
+}
+
 /// The column count of a 2-D array of points.
 pub fn columns(a: &PyArrayLike2<'_, f64, AllowTypeChange>) -> usize {
     a.as_array().ncols()

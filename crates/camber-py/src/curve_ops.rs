@@ -13,11 +13,11 @@ use camber_geom::queries::{
     curve_distance, intersect_curves_with_overlaps, BezierPieces, CurveCurveOptions,
     CurveIntersections, CurvePairPoint,
 };
-use numpy::{AllowTypeChange, PyArray1, PyArrayLike2};
+use numpy::PyArray1;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use crate::arrays::{columns, vector};
+use crate::arrays::{columns, vector, RealArray2};
 use crate::curve::AnyCurve;
 use crate::curve_kinds::wrap;
 use crate::errors::{geometry, input};
@@ -332,7 +332,7 @@ fn fit_tuple<const D: usize>(
 #[pyo3(signature = (points, degree = 3, method = "chord_length", end_derivatives = None))]
 pub fn interpolate(
     py: Python<'_>,
-    points: PyArrayLike2<'_, f64, AllowTypeChange>,
+    points: RealArray2<'_>,
     degree: usize,
     method: &str,
     end_derivatives: Option<(Vec<f64>, Vec<f64>)>,
@@ -415,7 +415,7 @@ fn split_at(split: Option<&Bound<'_, PyAny>>) -> PyResult<Option<SplitAt>> {
 #[pyo3(signature = (points, degree, control_points, method = "chord_length", fixed_ends = true, knots = "averaged"))]
 pub fn approximate(
     py: Python<'_>,
-    points: PyArrayLike2<'_, f64, AllowTypeChange>,
+    points: RealArray2<'_>,
     degree: usize,
     control_points: usize,
     method: &str,
@@ -479,7 +479,7 @@ fn split_tuple<const D: usize>(
 #[allow(clippy::too_many_arguments)] // the Python keyword arguments, one per option
 pub fn fit_to_tolerance(
     py: Python<'_>,
-    points: PyArrayLike2<'_, f64, AllowTypeChange>,
+    points: RealArray2<'_>,
     degree: usize,
     tolerance: f64,
     method: &str,
