@@ -139,8 +139,8 @@ pub enum Error {
         /// Which direction ("line direction", "segment", …).
         what: &'static str,
     },
-    /// A circle radius is zero or negative.
-    #[error("circle radius {value} is not positive")]
+    /// A circle or arc radius is zero or negative.
+    #[error("radius {value} is not positive")]
     NonPositiveRadius {
         /// The radius.
         value: f64,

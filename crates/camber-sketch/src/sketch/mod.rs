@@ -185,6 +185,14 @@ impl Sketch {
         self.add_entity(Entity::Circle { center, radius })
     }
 
+    /// Adds a circular arc (blocks [centre, start, end], see [`Entity::Arc`]).
+    ///
+    /// # Errors
+    /// As [`Sketch::add_entity`].
+    pub fn add_arc(&mut self, arc: &camber_geom::CircularArc<f64>) -> Result<EntityId> {
+        self.add_entity(Entity::arc(arc))
+    }
+
     /// Adds a Bézier curve.
     ///
     /// # Errors
