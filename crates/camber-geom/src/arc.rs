@@ -51,8 +51,9 @@ use crate::scalar::{cst, re, Scalar};
 pub const MAX_ANGLE: f64 = 1024.0 * TAU;
 
 /// The smallest sweep (and the least distance of the sweep below 2π) an arc may have, in
-/// radians: below it the start and end coincide to rounding.
-pub const MIN_SWEEP: f64 = 1e-12;
+/// radians: the ends of an arc at angles up to [`MAX_ANGLE`] are placed to about 10⁻¹² of its
+/// radius, so a sweep this large survives saving the ends and reading the angles back.
+pub const MIN_SWEEP: f64 = 1e-9;
 
 /// A circular arc (see the module documentation), generic over the scalar.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -170,7 +170,7 @@ pub enum Error {
     /// let err = CircularArc::try_new(Point2::new(0.0, 0.0), 1.0, 0.0, 1e300).unwrap_err();
     /// assert_eq!(err, Error::AngleTooLarge { what: "arc end angle", value: 1e300, max: MAX_ANGLE });
     /// ```
-    #[error("{what} {value} rad is larger in magnitude than {max} rad")]
+    #[error("{what} {value:e} rad is larger in magnitude than {max:.1} rad")]
     AngleTooLarge {
         /// Which angle.
         what: &'static str,
