@@ -16,13 +16,11 @@
 //! assert!((g[0] - 1.0).abs() < 1e-15);
 //! ```
 
-use camber_solve::{ConstraintId, Residual, Scalar};
+use camber_solve::{Residual, Scalar};
 
 use crate::residuals::curve::{dot, sub};
 
-/// The owner of every arc's own row in a component's problem (reports that name a constraint
-/// by this id mean an arc's end lies off its circle).
-pub const ARC_ROW: ConstraintId = ConstraintId(u64::MAX - 1);
+pub use crate::ground::ids::ARC_ROW;
 
 /// |E − C| − |S − C| = 0 over the blocks [C, S, E] (see the module documentation).
 #[derive(Debug, Clone, Copy, PartialEq)]

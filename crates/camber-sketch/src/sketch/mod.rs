@@ -8,6 +8,7 @@
 //! dirty entity.
 
 mod describe;
+pub mod fillet;
 pub mod parameters;
 pub mod warnings;
 
