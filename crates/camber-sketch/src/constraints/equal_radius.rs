@@ -49,7 +49,7 @@ impl Residual for RadiiEqual {
 }
 
 /// r₁ − r₂ = 0 where either radius may be an arc's |S − C| (blocks: the first's radius blocks,
-/// then the second's: [r] for a circle, [C, S] for an arc).
+/// then the second's: `[r]` for a circle, `[C, S]` for an arc).
 ///
 /// ```
 /// use camber_sketch::constraints::equal_radius::RoundRadiiEqual;

@@ -47,7 +47,7 @@ impl Round {
         matches!(self, Round::Arc(_))
     }
 
-    /// The slots its radius reads: [r] for a circle, [C, S] for an arc.
+    /// The slots its radius reads: `[r]` for a circle, `[C, S]` for an arc.
     pub(crate) fn radius_slots(self) -> SmallVec<[Slot; 2]> {
         match self {
             Round::Circle(e) => smallvec::smallvec![Slot::Radius(e)],
@@ -56,7 +56,7 @@ impl Round {
     }
 }
 
-/// The block sizes of a radius: [1] for a circle, [2, 2] for an arc.
+/// The block sizes of a radius: `[1]` for a circle, `[2, 2]` for an arc.
 pub(crate) fn radius_block_sizes(arc: bool, out: &mut Vec<usize>) {
     if arc {
         out.extend([2, 2]);
