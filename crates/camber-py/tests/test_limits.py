@@ -25,8 +25,12 @@ def state(s):
 # searches until its budget is spent, 20 ms a call (time.sleep releases the GIL, as a long
 # numpy call would): far longer than the test waits.
 CTRL_C_SCRIPT = """
-import sys, time
+import signal, sys, time
 import camber
+
+# Ctrl-C as in a terminal, even when this runs under a CI job that started us with SIGINT
+# ignored (a background job of a non-interactive shell), which Python then keeps.
+signal.signal(signal.SIGINT, signal.default_int_handler)
 
 def slow_unsolvable(x):
     time.sleep(0.02)
@@ -102,9 +106,11 @@ def test_ctrl_c_stops_a_batch_and_leaves_every_item_unchanged():
 # noisy points to 1e-9 (far below the noise) runs for minutes: the adaptive search keeps
 # adding knots.
 TOOLKIT_CTRL_C_SCRIPT = """
-import time
+import signal, time
 import numpy as np
 import camber
+
+signal.signal(signal.SIGINT, signal.default_int_handler)  # as in CTRL_C_SCRIPT
 
 t = np.linspace(0.0, 1.0, 200_000)
 noise = 1e-3 * np.random.default_rng(1).standard_normal(t.size)
