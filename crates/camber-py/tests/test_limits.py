@@ -98,6 +98,48 @@ def test_ctrl_c_stops_a_batch_and_leaves_every_item_unchanged():
     assert unchanged
 
 
+# The curve toolkit's long calls hand the same flag to their work budget. Fitting 200,000
+# noisy points to 1e-9 (far below the noise) runs for minutes: the adaptive search keeps
+# adding knots.
+TOOLKIT_CTRL_C_SCRIPT = """
+import time
+import numpy as np
+import camber
+
+t = np.linspace(0.0, 1.0, 200_000)
+noise = 1e-3 * np.random.default_rng(1).standard_normal(t.size)
+points = np.c_[t, np.sin(40.0 * t) + noise]
+print("ready", flush=True)
+start = time.monotonic()
+try:
+    camber.fit_to_tolerance(points, 3, 1e-9, "centripetal")
+    print("finished without an interrupt", flush=True)
+except KeyboardInterrupt:
+    print("interrupted", time.monotonic() - start, flush=True)
+# The toolkit still works afterwards.
+camber.fit_to_tolerance(points[::1000], 3, 1e-2, "centripetal")
+print("usable", flush=True)
+"""
+
+
+def test_ctrl_c_stops_a_long_curve_fit_within_a_second():
+    child = subprocess.Popen(
+        [sys.executable, "-c", TOOLKIT_CTRL_C_SCRIPT],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+    assert child.stdout.readline().strip() == "ready"
+    time.sleep(0.5)
+    child.send_signal(signal.SIGINT)
+    out, err = child.communicate(timeout=120)
+    lines = out.split("\n")
+    assert lines[0].startswith("interrupted"), (out, err)
+    assert "usable" in lines, (out, err)
+    elapsed = float(lines[0].split()[1])
+    assert elapsed < 1.5, f"the interrupt took {elapsed - 0.5:.2f} s to stop the fit"
+
+
 def chain(n=3):
     s = camber.Sketch()
     pts = [s.add_point([float(i), 0.3 * i]) for i in range(n)]
