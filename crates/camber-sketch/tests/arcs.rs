@@ -437,3 +437,36 @@ proptest! {
         prop_assert!(check(&second, &[vec![r1], c.clone(), e.clone()]) < 1e-6);
     }
 }
+
+/// An arc of sweep 0.3 whose end is pinned 0.3 rad before its start: the rows hold with the
+/// sweep 2π − 0.3, the complement of the arc, so the solve refuses and changes nothing; pinned
+/// 0.6 rad after its start instead, it solves.
+#[test]
+fn a_solve_that_would_turn_an_arc_inside_out_is_refused() {
+    let pinned = |angle: f64| {
+        let mut s = Sketch::new();
+        let a = arc(&mut s, (0.0, 0.0), 1.0, 0.0, 0.3);
+        s.add_constraint(Fixed::point(PointRef::Control(a, 0)))
+            .unwrap();
+        s.add_constraint(Fixed::point(PointRef::Start(a))).unwrap();
+        let p = s.add_point(Point2::new(angle.cos(), angle.sin())).unwrap();
+        s.add_constraint(Fixed::entity(p)).unwrap();
+        s.add_constraint(Coincident {
+            a: PointRef::End(a),
+            b: PointRef::Point(p),
+        })
+        .unwrap();
+        (s, a)
+    };
+    let (mut s, a) = pinned(-0.3);
+    let before = s.entity(a).unwrap().clone();
+    let err = s.solve().unwrap_err();
+    assert!(
+        matches!(err, Error::ArcTurnedInsideOut { entity, .. } if entity == a),
+        "{err}"
+    );
+    assert_eq!(s.entity(a).unwrap(), &before);
+    let (mut s, a) = pinned(0.6);
+    s.solve().unwrap();
+    assert_relative_eq!(solved(&s, a).sweep(), 0.6, epsilon = 1e-10);
+}

@@ -672,11 +672,7 @@ pub(crate) fn build(
                 free |= !is(&fixed, cp.point_block(*id, j)?);
             }
             if free {
-                let arc_row = Piece::General {
-                    residual: Arc::new(crate::residuals::arc::ArcEnds),
-                    slots: (0..3).map(|j| Slot::Point(*id, j)).collect(),
-                    check: None,
-                };
+                let arc_row = super::arcs::arc_row(*id);
                 cp.add_piece(crate::residuals::arc::ARC_ROW, &arc_row)?;
             }
         }

@@ -172,6 +172,22 @@ pub enum Error {
         /// Why, in words.
         reason: &'static str,
     },
+    /// A solve that would turn an arc inside out: its end carried past its start (or the
+    /// reverse), so that its sweep, read from its blocks, jumps by more than π (from near 0 to
+    /// near 2π, say) and the arc becomes its complement on the circle.
+    #[error(
+        "{entity} (arc) would turn inside out: its sweep would go from {} to {} rad",
+        Readable(*before),
+        Readable(*after)
+    )]
+    ArcTurnedInsideOut {
+        /// The arc.
+        entity: EntityId,
+        /// Its sweep before the solve (radians).
+        before: f64,
+        /// Its sweep after it.
+        after: f64,
+    },
     /// A point held on an arc's circle that a solve left outside the arc's sweep (it would
     /// be on the circle, not on the arc).
     #[error(
