@@ -69,12 +69,12 @@ print("usable", flush=True)
 """
 
 
-def interrupted_run(kind):
-    """Runs the script, sends SIGINT 0.5 s after it is ready, as Ctrl-C in a terminal does;
-    returns the seconds from the call's start to the KeyboardInterrupt and whether the
-    sketches were unchanged."""
+def interrupted_run(script, *args):
+    """Runs `script` with `args`, sends SIGINT 0.5 s after it prints "ready", as Ctrl-C in a
+    terminal does; returns the words after "interrupted" on its first line (the seconds from
+    the call's start to the KeyboardInterrupt first), once it has printed "usable"."""
     child = subprocess.Popen(
-        [sys.executable, "-c", CTRL_C_SCRIPT, kind],
+        [sys.executable, "-c", script, *args],
         stdout=subprocess.PIPE,
         stderr=subprocess.PIPE,
         text=True,
@@ -86,18 +86,24 @@ def interrupted_run(kind):
     lines = out.split("\n")
     assert lines[0].startswith("interrupted"), (out, err)
     assert "usable" in lines, (out, err)
-    _, elapsed, unchanged = lines[0].split()
+    return lines[0].split()[1:]
+
+
+def interrupted_sketch_run(kind):
+    """CTRL_C_SCRIPT interrupted: the seconds to the KeyboardInterrupt and whether the
+    sketches were unchanged."""
+    elapsed, unchanged = interrupted_run(CTRL_C_SCRIPT, kind)
     return float(elapsed), unchanged == "True"
 
 
 def test_ctrl_c_stops_a_long_solve_within_a_second_and_leaves_the_sketch_unchanged():
-    elapsed, unchanged = interrupted_run("solve")
+    elapsed, unchanged = interrupted_sketch_run("solve")
     assert elapsed < 1.5, f"the interrupt took {elapsed - 0.5:.2f} s to stop the solve"
     assert unchanged
 
 
 def test_ctrl_c_stops_a_batch_and_leaves_every_item_unchanged():
-    elapsed, unchanged = interrupted_run("batch")
+    elapsed, unchanged = interrupted_sketch_run("batch")
     assert elapsed < 1.5, f"the interrupt took {elapsed - 0.5:.2f} s to stop the batch"
     assert unchanged
 
@@ -129,20 +135,7 @@ print("usable", flush=True)
 
 
 def test_ctrl_c_stops_a_long_curve_fit_within_a_second():
-    child = subprocess.Popen(
-        [sys.executable, "-c", TOOLKIT_CTRL_C_SCRIPT],
-        stdout=subprocess.PIPE,
-        stderr=subprocess.PIPE,
-        text=True,
-    )
-    assert child.stdout.readline().strip() == "ready"
-    time.sleep(0.5)
-    child.send_signal(signal.SIGINT)
-    out, err = child.communicate(timeout=120)
-    lines = out.split("\n")
-    assert lines[0].startswith("interrupted"), (out, err)
-    assert "usable" in lines, (out, err)
-    elapsed = float(lines[0].split()[1])
+    elapsed = float(interrupted_run(TOOLKIT_CTRL_C_SCRIPT)[0])
     assert elapsed < 1.5, f"the interrupt took {elapsed - 0.5:.2f} s to stop the fit"
 
 
