@@ -133,6 +133,8 @@ function drawEntity(e) {
     // Hermite and composite curves send their polygon (nodes and tangent handles) apart.
     els.push(element("polyline", { class: "polygon", points: pointsAttr(e.polygon ?? e.points) }, layers.polygons));
     els.push(element("polyline", { class: curveClass, points: pointsAttr(e.samples ?? []) }, layers.curves));
+  } else if (e.kind === "arc") {
+    els.push(element("polyline", { class: curveClass, points: pointsAttr(e.samples ?? []) }, layers.curves));
   } else if (e.kind === "line") {
     els.push(element("polyline", { class: curveClass, points: pointsAttr(e.points) }, layers.curves));
   } else if (e.kind === "circle") {

@@ -148,6 +148,18 @@ pub fn draw_line(svg: &mut Svg, line: &Line<f64>, bbox: &BBox, colour: &str) {
     );
 }
 
+/// The points that bound a circular arc: its ends and the points of its circle at 0°, 90°,
+/// 180° and 270° that lie within its sweep.
+pub fn arc_extremes(arc: &camber_geom::CircularArc<f64>) -> impl Iterator<Item = Point2<f64>> + '_ {
+    let quarters = (0..4)
+        .map(|k| f64::from(k) * std::f64::consts::FRAC_PI_2)
+        .filter(|a| arc.contains_angle(*a, 0.0))
+        .map(|a| arc.point_at_angle(a));
+    [arc.start_point(), arc.end_point()]
+        .into_iter()
+        .chain(quarters)
+}
+
 /// Draws a circle outline.
 pub fn draw_circle(svg: &mut Svg, circle: &Circle<f64>, colour: &str) {
     svg.circle(

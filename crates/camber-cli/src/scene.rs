@@ -20,6 +20,7 @@ pub fn kind_word(e: &Entity) -> &'static str {
         Entity::Point(_) => "point",
         Entity::Line(_) => "line",
         Entity::Circle { .. } => "circle",
+        Entity::Arc(_) => "arc",
         Entity::Bezier(_) => "bezier",
         Entity::BSpline(_) => "bspline",
         Entity::Nurbs(_) => "nurbs",

@@ -246,6 +246,24 @@ impl Svg {
         );
     }
 
+    /// A circular arc, as the path's elliptical-arc command (exact: no samples). The model's
+    /// counter-clockwise sweep is SVG's negative-angle direction (its y axis points down), so
+    /// the sweep flag is 0; the large-arc flag is set for sweeps above π.
+    pub fn arc(&mut self, arc: &camber_geom::CircularArc<f64>, style: &Style) {
+        let attrs = self.style_attrs(style);
+        let (a, b) = (arc.start_point(), arc.end_point());
+        let r = num(arc.radius() * self.scale);
+        let large = u8::from(arc.sweep() > std::f64::consts::PI);
+        let _ = writeln!(
+            self.body,
+            r#"<path d="M {} {} A {r} {r} 0 {large} 0 {} {}" {attrs}/>"#,
+            self.sx(a.x),
+            self.sy(a.y),
+            self.sx(b.x),
+            self.sy(b.y)
+        );
+    }
+
     /// A dot marking a point: a filled circle of `radius_units` units.
     pub fn dot(&mut self, p: Point2<f64>, radius_units: f64, colour: &str) {
         self.circle(p, radius_units * self.unit, &Style::filled(colour));
@@ -350,6 +368,31 @@ mod tests {
         assert!(doc.contains(r#"y1="-200""#), "{doc}");
         assert!(doc.contains("a&lt;b"));
         assert!(doc.ends_with("</svg>\n"));
+    }
+
+    /// A quarter arc about the origin from +x to +y, at 200 SVG units per model unit: from
+    /// (200, 0) to (0, −200) on screen, small and in SVG's negative-angle direction; a sweep
+    /// above π sets the large-arc flag.
+    #[test]
+    fn arcs_are_exact_path_arcs_turning_the_model_way() {
+        use std::f64::consts::FRAC_PI_2;
+        let bbox = BBox::of([Point2::new(-1.0, -1.0), Point2::new(1.0, 1.0)]);
+        let mut svg = Svg::new(bbox, 0.0);
+        let quarter =
+            camber_geom::CircularArc::try_new(Point2::origin(), 1.0, 0.0, FRAC_PI_2).unwrap();
+        svg.arc(&quarter, &Style::stroke("black", 1.0));
+        let big =
+            camber_geom::CircularArc::try_new(Point2::origin(), 1.0, 0.0, -FRAC_PI_2).unwrap();
+        svg.arc(&big, &Style::stroke("black", 1.0));
+        let doc = svg.finish();
+        assert!(
+            doc.contains(r#"d="M 200 0 A 200 200 0 0 0 0 -200""#),
+            "{doc}"
+        );
+        assert!(
+            doc.contains(r#"d="M 200 0 A 200 200 0 1 0 0 200""#),
+            "{doc}"
+        );
     }
 
     #[test]

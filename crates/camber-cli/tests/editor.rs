@@ -683,7 +683,7 @@ fn drag_round_trip_times() {
 /// contact parameters aborted the whole editor (NLopt's SLSQP given more equality rows than
 /// unknowns), losing unsaved work. It now answers, and the editor goes on serving.
 #[test]
-fn issue_11_solve_with_seven_contacts_answers_and_the_editor_survives() {
+fn solve_with_seven_contacts_answers_and_the_editor_survives() {
     use camber_sketch::{CircleSide, Contact, Rotation};
     let mut s = Sketch::new();
     let curve = s

@@ -75,6 +75,25 @@ fn demo_solves_the_blade_and_writes_its_picture() {
 }
 
 #[test]
+fn solve_by_displacement_says_when_there_is_nothing_to_displace() {
+    // The blade section has no curve touching a fixed circle or line: no round runs, and the
+    // line says why instead of calling it a stall.
+    let dir = tempfile::tempdir().unwrap();
+    camber()
+        .arg("solve")
+        .arg(sketch("blade_section.json"))
+        .arg("--displacement")
+        .arg("-o")
+        .arg(dir.path().join("solved.json"))
+        .assert()
+        .success()
+        .stdout(predicate::str::contains(
+            "iterative displacement: 0 round(s), no contacts with fixed circles or lines",
+        ))
+        .stdout(predicate::str::contains("stalled").not());
+}
+
+#[test]
 fn solve_by_displacement_reports_its_rounds_and_writes_a_valid_diffuser() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("solved.json");

@@ -20,7 +20,8 @@ use crate::basis::INLINE_DEGREE;
 use crate::bernstein::bernstein_all;
 use crate::curve::{check_interval, check_parameter, check_points, ParametricCurve};
 use crate::errors::{Error, Result};
-use crate::scalar::{from_usize, Scalar};
+use crate::knots::min_span_width;
+use crate::scalar::{from_usize, re, Scalar};
 use crate::serde_support::{points_from_raw, points_to_raw, RawPoint};
 
 /// Stack capacity of the evaluation scratch: one entry per control point up to
@@ -206,7 +207,10 @@ impl<T: Scalar, const D: usize> BezierCurve<T, D> {
     ///
     /// t must lie strictly inside (0, 1): t = 0 or t = 1 fails with [`Error::InvalidInterval`]
     /// (one piece would be empty), t outside [0, 1] with [`Error::ParameterOutsideDomain`], NaN
-    /// with [`Error::NonFinite`].
+    /// with [`Error::NonFinite`], and a t nearer an end than
+    /// [`min_span_width`]`(0, 1)` (≈ 1.4e-14) with
+    /// [`Error::DegenerateSpan`]: that piece's control points would collapse onto one another
+    /// in f64 (the rule B-spline splits follow).
     ///
     /// ```
     /// use camber_geom::BezierCurve2;
@@ -226,6 +230,7 @@ impl<T: Scalar, const D: usize> BezierCurve<T, D> {
         check_parameter(t, self.domain())?;
         check_interval(T::zero(), t)?;
         check_interval(t, T::one())?;
+        check_piece_width(t, re(t), 1.0 - re(t))?;
         Ok(self.split(t))
     }
 
@@ -233,7 +238,9 @@ impl<T: Scalar, const D: usize> BezierCurve<T, D> {
     /// piece(s) = C(t0 + (t1 − t0) s), of the same degree.
     ///
     /// Both ends must lie in [0, 1] ([`Error::ParameterOutsideDomain`], [`Error::NonFinite`])
-    /// with t0 < t1 ([`Error::InvalidInterval`]).
+    /// with t0 < t1 ([`Error::InvalidInterval`]) at least
+    /// [`min_span_width`]`(0, 1)` apart
+    /// ([`Error::DegenerateSpan`]).
     ///
     /// ```
     /// use camber_geom::BezierCurve2;
@@ -247,6 +254,7 @@ impl<T: Scalar, const D: usize> BezierCurve<T, D> {
         check_parameter(t0, self.domain())?;
         check_parameter(t1, self.domain())?;
         check_interval(t0, t1)?;
+        check_piece_width(t1, re(t1) - re(t0), f64::INFINITY)?;
         // head(s) = C(t1 s); its piece from s = t0 / t1 to 1 is C over [t0, t1]. t1 > t0 ≥ 0.
         let (head, _) = self.split(t1);
         let (_, piece) = head.split(t0 / t1);
@@ -471,6 +479,20 @@ impl<'de, const D: usize> Deserialize<'de> for BezierCurve<f64, D> {
     }
 }
 
+/// Fails with [`Error::DegenerateSpan`] (naming `t`) when the narrower of two pieces of [0, 1]
+/// cut at `t`, `left` and `right` wide, is narrower than [`min_span_width`]`(0, 1)`.
+fn check_piece_width<T: Scalar>(t: T, left: f64, right: f64) -> Result<()> {
+    let (width, min) = (left.min(right), min_span_width(0.0, 1.0));
+    if width < min {
+        return Err(Error::DegenerateSpan {
+            value: re(t),
+            width,
+            min,
+        });
+    }
+    Ok(())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -602,6 +624,17 @@ mod tests {
         let empty = |start, end| Error::InvalidInterval { start, end };
         assert_eq!(c.subdivide(0.0), Err(empty(0.0, 0.0)));
         assert_eq!(c.subdivide(1.0), Err(empty(1.0, 1.0)));
+        // A piece narrower than f64 resolves on [0, 1] is refused, at either end.
+        for t in [5e-324, 1e-15, 1.0 - f64::EPSILON] {
+            assert!(
+                matches!(c.subdivide(t), Err(Error::DegenerateSpan { value, .. }) if value.to_bits() == t.to_bits())
+            );
+        }
+        assert!(c.subdivide(1e-13).is_ok());
+        assert!(matches!(
+            c.segment(0.5, 0.5 + 1e-16),
+            Err(Error::DegenerateSpan { .. })
+        ));
         assert_eq!(c.segment(0.5, 0.5), Err(empty(0.5, 0.5)));
         assert_eq!(c.segment(0.6, 0.4), Err(empty(0.6, 0.4)));
         assert_eq!(c.segment(0.5, 1.25), Err(outside(1.25)));

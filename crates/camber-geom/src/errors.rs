@@ -139,11 +139,45 @@ pub enum Error {
         /// Which direction ("line direction", "segment", …).
         what: &'static str,
     },
-    /// A circle radius is zero or negative.
-    #[error("circle radius {value} is not positive")]
+    /// A circle or arc radius is zero or negative.
+    #[error("radius {value} is not positive")]
     NonPositiveRadius {
         /// The radius.
         value: f64,
+    },
+    /// A circular arc whose sweep, end angle − start angle reduced modulo 2π, is zero: its
+    /// start and end coincide (a whole turn is a circle, not an arc).
+    ///
+    /// ```
+    /// use camber_geom::{CircularArc, Error};
+    /// use nalgebra::Point2;
+    /// let err = CircularArc::try_new(Point2::new(0.0, 0.0), 1.0, 0.5, 0.5).unwrap_err();
+    /// assert_eq!(err, Error::DegenerateSweep { start: 0.5, end: 0.5 });
+    /// ```
+    #[error("the arc from angle {start} to angle {end} sweeps no angle (modulo 2π)")]
+    DegenerateSweep {
+        /// The start angle (radians).
+        start: f64,
+        /// The end angle (radians).
+        end: f64,
+    },
+    /// An angle so large that f64 no longer resolves it (its spacing between neighbouring
+    /// values would exceed 1e-12 rad).
+    ///
+    /// ```
+    /// use camber_geom::{arc::MAX_ANGLE, CircularArc, Error};
+    /// use nalgebra::Point2;
+    /// let err = CircularArc::try_new(Point2::new(0.0, 0.0), 1.0, 0.0, 1e300).unwrap_err();
+    /// assert_eq!(err, Error::AngleTooLarge { what: "arc end angle", value: 1e300, max: MAX_ANGLE });
+    /// ```
+    #[error("{what} {value:e} rad is larger in magnitude than {max:.1} rad")]
+    AngleTooLarge {
+        /// Which angle.
+        what: &'static str,
+        /// Its value (radians).
+        value: f64,
+        /// The largest magnitude accepted.
+        max: f64,
     },
     /// A count that must be at least one is zero (segments of a subdivision, curves of a chain).
     #[error("{what} must be at least 1, found 0")]

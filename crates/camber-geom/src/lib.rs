@@ -40,6 +40,7 @@
 //! - [`queries::intersect_curves`] and [`queries::curve_distance`]: any two curve kinds;
 //! - [`offset`]: offsets of planar curves as B-splines, error measured.
 
+pub mod arc;
 pub mod arc_length;
 pub mod banded;
 pub mod basis;
@@ -64,6 +65,7 @@ pub mod queries;
 pub mod scalar;
 pub mod serde_support;
 
+pub use arc::CircularArc;
 pub use bezier::{BezierCurve, BezierCurve2, BezierCurve3};
 pub use bspline::{BSplineCurve, BSplineCurve2, BSplineCurve3};
 pub use budget::Budget;

@@ -14,7 +14,7 @@ const HUGE: usize = usize::MAX;
 /// Issue 11 finding 7: a Bézier curve is capped at the B-splines' degree (256), through the
 /// constructor and its file form.
 #[test]
-fn issue_11_bezier_degree_is_capped_like_bsplines() {
+fn bezier_degree_is_capped_like_bsplines() {
     let points = |n: usize| {
         (0..n)
             .map(|i| Point2::new(i as f64, 0.0))
@@ -40,7 +40,7 @@ fn issue_11_bezier_degree_is_capped_like_bsplines() {
 /// Issue 11 finding 7: a knot repeated more than degree + 1 times is refused (the basis around
 /// it vanishes), and files with degree 0 or unknown fields are refused.
 #[test]
-fn issue_11_knot_multiplicity_degree_zero_and_unknown_fields() {
+fn knot_multiplicity_degree_zero_and_unknown_fields() {
     let k = KnotVector::try_new(vec![0.0, 0.0, 0.5, 0.5, 0.5, 1.0, 1.0]).unwrap();
     let points: Vec<Point2<f64>> = (0..5).map(|i| Point2::new(f64::from(i), 0.0)).collect();
     assert_eq!(
@@ -79,7 +79,7 @@ fn issue_11_knot_multiplicity_degree_zero_and_unknown_fields() {
 /// [−1e308, 1e308] evaluated to (0, 0)), and a reparameterization that cannot be carried
 /// faithfully is refused instead of changing the shape.
 #[test]
-fn issue_11_unrepresentable_knots_are_refused() {
+fn unrepresentable_knots_are_refused() {
     assert_eq!(
         KnotVector::try_new(vec![-1e308, -1e308, 1e308, 1e308]).unwrap_err(),
         Error::KnotRangeTooWide {
@@ -320,7 +320,7 @@ proptest! {
 /// Issue 11 finding 4: NURBS weights all scaled to 1e308 describe the same curve as unit
 /// weights and evaluate like them; weights 1e600 apart are refused.
 #[test]
-fn issue_11_nurbs_weights_at_the_edge_of_f64() {
+fn nurbs_weights_at_the_edge_of_f64() {
     let knots = KnotVector::clamped_uniform(2, 3).unwrap();
     let points = vec![
         Point2::new(1.0, 0.0),

@@ -240,6 +240,35 @@ fn curvature_of_circles_lines_and_a_helix() {
 }
 
 #[test]
+fn curvature_holds_at_the_ends_of_the_f64_range() {
+    // |C′|³ and |C′ × C″|² overflow (or underflow) for circles of radius 1e±120 and beyond,
+    // where κ = 1/radius is an ordinary f64: the evaluation must not meet them.
+    for radius in [1e-300, 1e-150, 1e-120, 1.0, 1e120, 1e150, 1e300] {
+        let arc = Arc {
+            center: Vector2::new(0.0, 0.0),
+            radius,
+            sigma: -1.5,
+            domain: (0.0, 1.0),
+        };
+        for u in [0.0, 0.35, 1.0] {
+            assert_relative_eq!(
+                curvature(&arc, u).unwrap(),
+                1.0 / radius,
+                max_relative = 1e-14
+            );
+            assert_relative_eq!(
+                signed_curvature(&arc, u).unwrap(),
+                -1.0 / radius,
+                max_relative = 1e-14
+            );
+            let k = curvature_vector(&arc, u).unwrap();
+            let towards_centre = -arc.point(u).unwrap().coords / radius;
+            assert_relative_eq!(k * radius, towards_centre, epsilon = 1e-14);
+        }
+    }
+}
+
+#[test]
 fn circle_intersections_touches_and_distances() {
     let curve = unit_circle();
     // Unit circles centred 1 apart meet at angles ±π/3.

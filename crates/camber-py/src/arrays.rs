@@ -7,6 +7,7 @@ use nalgebra::{Point, SVector};
 use numpy::ndarray::Array2;
 use numpy::{AllowTypeChange, IntoPyArray, PyArray2, PyArrayLike1, PyArrayLike2};
 use pyo3::prelude::*;
+use pyo3::types::{PyFloat, PyInt};
 
 use crate::errors::input;
 
@@ -22,6 +23,11 @@ impl Params {
     /// Reads a float or anything numpy converts to a 1-D float array, in any memory layout
     /// (a strided or reversed view such as `u[::2]` or `u[::-1]` is read element by element).
     pub fn extract(u: &Bound<'_, PyAny>) -> PyResult<Self> {
+        // Python floats and ints first: no numpy round trip for one plain number.
+        if u.is_instance_of::<PyFloat>() || u.is_instance_of::<PyInt>() {
+            return Ok(Params::One(u.extract::<f64>()?));
+        }
+        refuse_complex(u, "parameters")?;
         if let Ok(x) = u.extract::<f64>() {
             return Ok(Params::One(x));
         }
@@ -35,6 +41,46 @@ impl Params {
             Params::One(x) => std::slice::from_ref(x),
             Params::Many(v) => v,
         }
+    }
+}
+
+/// Refuses complex numbers (an array of complex dtype, or a sequence numpy reads as one):
+/// converted to floats they would lose their imaginary parts without a word.
+pub fn refuse_complex(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<()> {
+    let numpy = obj.py().import("numpy")?;
+    let kind: String = numpy
+        .getattr("asarray")?
+        .call1((obj,))
+        .and_then(|a| a.getattr("dtype")?.getattr("kind")?.extract())
+        .unwrap_or_default();
+    if kind == "c" {
+        return Err(input(format!(
+            "{what}: complex numbers are not parameters or coordinates (take .real if that is \
+             what you mean)"
+        )));
+    }
+    Ok(())
+}
+
+/// A 2-D float array argument (a numpy array of any real dtype, or nested sequences numpy
+/// reads as one), with complex numbers refused ([`refuse_complex`]) where numpy would drop
+/// their imaginary parts with only a warning. Dereferences to the float array.
+pub struct RealArray2<'py>(PyArrayLike2<'py, f64, AllowTypeChange>);
+
+impl<'a, 'py> FromPyObject<'a, 'py> for RealArray2<'py> {
+    type Error = PyErr;
+
+    fn extract(ob: Borrowed<'a, 'py, PyAny>) -> PyResult<Self> {
+        refuse_complex(&ob, "coordinates")?;
+        Ok(Self(ob.extract()?))
+    }
+}
+
+impl<'py> std::ops::Deref for RealArray2<'py> {
+    type Target = PyArrayLike2<'py, f64, AllowTypeChange>;
+
+    fn deref(&self) -> &Self::Target {
+        &self.0
     }
 }
 

@@ -5,12 +5,12 @@
 
 use camber_geom::{BSplineCurve, BezierCurve, HermiteCurve, KnotVector, NurbsCurve};
 use nalgebra::Point;
-use numpy::{AllowTypeChange, PyArray1, PyArray2, PyArrayLike2};
+use numpy::{PyArray1, PyArray2};
 use pyo3::prelude::*;
 use pyo3::IntoPyObjectExt;
 use serde::de::DeserializeOwned;
 
-use crate::arrays::{columns, points, points_array, vector};
+use crate::arrays::{columns, points, points_array, vector, RealArray2};
 use crate::curve::{AnyCurve, Curve};
 use crate::curve_ops::{continuity as ext_continuity, curve_end};
 use crate::errors::{geometry, input};
@@ -107,9 +107,7 @@ pub struct BezierCurve_;
 #[pymethods]
 impl BezierCurve_ {
     #[new]
-    fn new(
-        control_points: PyArrayLike2<'_, f64, AllowTypeChange>,
-    ) -> PyResult<PyClassInitializer<Self>> {
+    fn new(control_points: RealArray2<'_>) -> PyResult<PyClassInitializer<Self>> {
         let inner = match columns(&control_points) {
             3 => AnyCurve::Bezier3(
                 BezierCurve::try_new(points::<3>(&control_points, "control_points")?)
@@ -399,7 +397,7 @@ knotted_curve_methods! {
     fn new(
         degree: usize,
         knots: Vec<f64>,
-        control_points: PyArrayLike2<'_, f64, AllowTypeChange>,
+        control_points: RealArray2<'_>,
     ) -> PyResult<PyClassInitializer<Self>> {
         let k = knot_vector(knots)?;
         let inner = match columns(&control_points) {
@@ -420,7 +418,7 @@ knotted_curve_methods! {
     fn clamped_uniform(
         py: Python<'_>,
         degree: usize,
-        control_points: PyArrayLike2<'_, f64, AllowTypeChange>,
+        control_points: RealArray2<'_>,
     ) -> PyResult<Py<PyAny>> {
         let n = control_points.as_array().nrows();
         let k = KnotVector::clamped_uniform(degree, n).map_err(geometry)?;
@@ -458,7 +456,7 @@ knotted_curve_methods! {
     fn remove_knots(slf: PyRef<'_, Self>, tolerance: f64) -> PyResult<(Py<PyAny>, usize, f64)> {
         let py = slf.py();
         by_dim!(&slf.as_super().inner, BSpline2, BSpline3, c => {
-            let r = py.detach(|| c.remove_knots(tolerance)).map_err(geometry)?;
+            let r = crate::interrupt::run_geometry(py, |budget| c.remove_knots_with(tolerance, budget))?;
             Ok((wrap(py, same!(r.curve))?, r.removed, r.error_bound))
         })
     }
@@ -495,7 +493,7 @@ knotted_curve_methods! {
     fn new(
         degree: usize,
         knots: Vec<f64>,
-        control_points: PyArrayLike2<'_, f64, AllowTypeChange>,
+        control_points: RealArray2<'_>,
         weights: Vec<f64>,
     ) -> PyResult<PyClassInitializer<Self>> {
         let k = knot_vector(knots)?;

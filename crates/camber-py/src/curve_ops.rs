@@ -13,14 +13,16 @@ use camber_geom::queries::{
     curve_distance, intersect_curves_with_overlaps, BezierPieces, CurveCurveOptions,
     CurveIntersections, CurvePairPoint,
 };
-use numpy::{AllowTypeChange, PyArray1, PyArrayLike2};
+use numpy::PyArray1;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use crate::arrays::{columns, vector};
+use crate::arrays::{columns, vector, RealArray2};
 use crate::curve::AnyCurve;
 use crate::curve_kinds::wrap;
 use crate::errors::{geometry, input};
+use crate::interrupt::run_geometry;
+use camber_geom::Budget;
 
 /// `"start"` or `"end"`.
 pub fn curve_end(word: &str) -> PyResult<CurveEnd> {
@@ -63,13 +65,12 @@ pub fn length(
     span: Option<(f64, f64)>,
     tolerance: f64,
 ) -> PyResult<f64> {
-    py.detach(|| {
+    run_geometry(py, |budget| {
         crate::curve::each!(c, c => {
             let (a, b) = span.unwrap_or_else(|| camber_geom::ParametricCurve::domain(c));
-            arc_length::arc_length_between(c, a, b, tolerance).map(|r| r.length)
+            arc_length::arc_length_between_with(c, a, b, tolerance, budget).map(|r| r.length)
         })
     })
-    .map_err(geometry)
 }
 
 /// The parameter at arc length s from the start, for one s or an array: one quadrature of
@@ -80,12 +81,12 @@ pub fn parameter_at_length(
     s: &Bound<'_, PyAny>,
     tolerance: f64,
 ) -> PyResult<Py<PyAny>> {
-    let budget = camber_geom::Budget::default();
-    let table = py
-        .detach(
-            || crate::curve::each!(c, c => arc_length::ArcLengthTable::new(c, tolerance, &budget)),
-        )
-        .map_err(geometry)?;
+    let table = run_geometry(
+        py,
+        |budget| crate::curve::each!(c, c => arc_length::ArcLengthTable::new(c, tolerance, budget)),
+    )?;
+    // Each parameter is a bounded Newton search on the table: short, no stop flag needed.
+    let budget = Budget::default();
     crate::curve::scalar_map(
         py,
         s,
@@ -149,9 +150,10 @@ impl ArcLengthMap {
 
 /// The arc-length map of a curve within `tolerance`.
 pub fn arc_length_map(py: Python<'_>, c: &AnyCurve, tolerance: f64) -> PyResult<ArcLengthMap> {
-    let inner = py
-        .detach(|| crate::curve::each!(c, c => arc_length::arc_length_map(c, tolerance)))
-        .map_err(geometry)?;
+    let inner = run_geometry(
+        py,
+        |budget| crate::curve::each!(c, c => arc_length::arc_length_map_with(c, tolerance, budget)),
+    )?;
     Ok(ArcLengthMap { inner })
 }
 
@@ -198,10 +200,11 @@ fn pair_dict<'py, const D: usize>(
     Ok(d)
 }
 
-fn options(tolerance: f64, max_candidates: usize) -> CurveCurveOptions {
+fn options(tolerance: f64, max_candidates: usize, budget: &Budget) -> CurveCurveOptions {
     CurveCurveOptions::default()
         .with_tolerance(tolerance)
         .with_max_candidates(max_candidates)
+        .with_budget(budget.clone())
 }
 
 fn same_dimension(a: &AnyCurve, b: &AnyCurve, what: &str) -> PyResult<()> {
@@ -250,17 +253,18 @@ pub fn intersect<'py>(
     max_candidates: usize,
 ) -> PyResult<Vec<Bound<'py, PyDict>>> {
     same_dimension(a, b, "intersect_curve")?;
-    let opts = options(tolerance, max_candidates);
     match (pieces2(a), pieces2(b), pieces3(a), pieces3(b)) {
         (Some(a), Some(b), _, _) => intersection_dicts(
             py,
-            &py.detach(|| intersect_curves_with_overlaps(a, b, &opts))
-                .map_err(geometry)?,
+            &run_geometry(py, |budget| {
+                intersect_curves_with_overlaps(a, b, &options(tolerance, max_candidates, budget))
+            })?,
         ),
         (_, _, Some(a), Some(b)) => intersection_dicts(
             py,
-            &py.detach(|| intersect_curves_with_overlaps(a, b, &opts))
-                .map_err(geometry)?,
+            &run_geometry(py, |budget| {
+                intersect_curves_with_overlaps(a, b, &options(tolerance, max_candidates, budget))
+            })?,
         ),
         _ => Err(input("intersect_curve: curves of different dimensions")),
     }
@@ -275,17 +279,18 @@ pub fn distance<'py>(
     max_candidates: usize,
 ) -> PyResult<Bound<'py, PyDict>> {
     same_dimension(a, b, "distance_to_curve")?;
-    let opts = options(tolerance, max_candidates);
     match (pieces2(a), pieces2(b), pieces3(a), pieces3(b)) {
         (Some(a), Some(b), _, _) => pair_dict(
             py,
-            &py.detach(|| curve_distance(a, b, &opts))
-                .map_err(geometry)?,
+            &run_geometry(py, |budget| {
+                curve_distance(a, b, &options(tolerance, max_candidates, budget))
+            })?,
         ),
         (_, _, Some(a), Some(b)) => pair_dict(
             py,
-            &py.detach(|| curve_distance(a, b, &opts))
-                .map_err(geometry)?,
+            &run_geometry(py, |budget| {
+                curve_distance(a, b, &options(tolerance, max_candidates, budget))
+            })?,
         ),
         _ => Err(input("distance_to_curve: curves of different dimensions")),
     }
@@ -300,9 +305,9 @@ pub fn offset(
     tolerance: f64,
 ) -> PyResult<(Py<PyAny>, f64)> {
     let planar = crate::curve::planar(c, "offset")?;
-    let found = py
-        .detach(|| camber_geom::offset::offset(planar, distance, tolerance))
-        .map_err(geometry)?;
+    let found = run_geometry(py, |budget| {
+        camber_geom::offset::offset_with(planar, distance, tolerance, budget)
+    })?;
     Ok((wrap(py, AnyCurve::BSpline2(found.curve))?, found.max_error))
 }
 
@@ -327,7 +332,7 @@ fn fit_tuple<const D: usize>(
 #[pyo3(signature = (points, degree = 3, method = "chord_length", end_derivatives = None))]
 pub fn interpolate(
     py: Python<'_>,
-    points: PyArrayLike2<'_, f64, AllowTypeChange>,
+    points: RealArray2<'_>,
     degree: usize,
     method: &str,
     end_derivatives: Option<(Vec<f64>, Vec<f64>)>,
@@ -410,7 +415,7 @@ fn split_at(split: Option<&Bound<'_, PyAny>>) -> PyResult<Option<SplitAt>> {
 #[pyo3(signature = (points, degree, control_points, method = "chord_length", fixed_ends = true, knots = "averaged"))]
 pub fn approximate(
     py: Python<'_>,
-    points: PyArrayLike2<'_, f64, AllowTypeChange>,
+    points: RealArray2<'_>,
     degree: usize,
     control_points: usize,
     method: &str,
@@ -474,7 +479,7 @@ fn split_tuple<const D: usize>(
 #[allow(clippy::too_many_arguments)] // the Python keyword arguments, one per option
 pub fn fit_to_tolerance(
     py: Python<'_>,
-    points: PyArrayLike2<'_, f64, AllowTypeChange>,
+    points: RealArray2<'_>,
     degree: usize,
     tolerance: f64,
     method: &str,
@@ -493,62 +498,30 @@ pub fn fit_to_tolerance(
     match (columns(&points), split) {
         (3, None) => {
             let pts = crate::arrays::points::<3>(&points, "points")?;
-            let f = py
-                .detach(|| {
-                    fit::fit_to_tolerance_with(
-                        &pts,
-                        tolerance,
-                        &options,
-                        &camber_geom::Budget::default(),
-                    )
-                })
-                .map_err(geometry)?;
+            let f = run_geometry(py, |budget| {
+                fit::fit_to_tolerance_with(&pts, tolerance, &options, budget)
+            })?;
             fit_tuple(py, f, AnyCurve::BSpline3)
         }
         (3, Some(at)) => {
             let pts = crate::arrays::points::<3>(&points, "points")?;
-            let f = py
-                .detach(|| {
-                    fit::fit_split(
-                        &pts,
-                        tolerance,
-                        &options,
-                        &at,
-                        joint,
-                        &camber_geom::Budget::default(),
-                    )
-                })
-                .map_err(geometry)?;
+            let f = run_geometry(py, |budget| {
+                fit::fit_split(&pts, tolerance, &options, &at, joint, budget)
+            })?;
             split_tuple(py, f, AnyCurve::BSpline3)
         }
         (_, None) => {
             let pts = crate::arrays::points::<2>(&points, "points")?;
-            let f = py
-                .detach(|| {
-                    fit::fit_to_tolerance_with(
-                        &pts,
-                        tolerance,
-                        &options,
-                        &camber_geom::Budget::default(),
-                    )
-                })
-                .map_err(geometry)?;
+            let f = run_geometry(py, |budget| {
+                fit::fit_to_tolerance_with(&pts, tolerance, &options, budget)
+            })?;
             fit_tuple(py, f, AnyCurve::BSpline2)
         }
         (_, Some(at)) => {
             let pts = crate::arrays::points::<2>(&points, "points")?;
-            let f = py
-                .detach(|| {
-                    fit::fit_split(
-                        &pts,
-                        tolerance,
-                        &options,
-                        &at,
-                        joint,
-                        &camber_geom::Budget::default(),
-                    )
-                })
-                .map_err(geometry)?;
+            let f = run_geometry(py, |budget| {
+                fit::fit_split(&pts, tolerance, &options, &at, joint, budget)
+            })?;
             split_tuple(py, f, AnyCurve::BSpline2)
         }
     }

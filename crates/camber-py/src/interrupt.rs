@@ -46,6 +46,23 @@ where
     }
 }
 
+/// [`run`] for the curve toolkit: `work` gets a [`camber_geom::Budget`] whose stop flag is the
+/// call's cancel flag (so Ctrl-C stops a quadrature, a fit or an intersection at its next
+/// charge), and a library error becomes a `GeometryError` with the library's message.
+///
+/// # Errors
+/// The signal handler's exception (see [`run`]), else the work's error as a `GeometryError`.
+pub fn run_geometry<T, F>(py: Python<'_>, work: F) -> PyResult<T>
+where
+    T: Send,
+    F: FnOnce(&camber_geom::Budget) -> camber_geom::Result<T> + Send,
+{
+    run(py, |flag| {
+        work(&camber_geom::Budget::default().with_stop(flag.as_arc().clone()))
+    })?
+    .map_err(crate::errors::geometry)
+}
+
 /// The waiting half of [`run`], without the GIL: the work's result (or why its thread could not
 /// start) and the exception a signal handler raised meanwhile (the first one).
 fn wait_for<T, F>(flag: &CancelFlag, work: F) -> (std::io::Result<T>, Option<PyErr>)

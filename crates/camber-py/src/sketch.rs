@@ -7,11 +7,11 @@ use camber_sketch::displacement::DisplacementOptions;
 use camber_sketch::file::{constraint_to_value, entity_to_value};
 use camber_sketch::{ConstraintId, Entity, EntityId, PointRef, SketchReport};
 use nalgebra::Point2;
-use numpy::{AllowTypeChange, PyArray1, PyArrayLike2};
+use numpy::PyArray1;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use crate::arrays::{points, vector};
+use crate::arrays::{points, vector, RealArray2};
 use crate::curve::{AnyCurve, Curve};
 use crate::custom::Raised;
 use crate::errors;
@@ -142,10 +142,7 @@ impl Sketch {
     }
 
     /// Adds a Bézier curve from an (n, 2) array of control points; returns its id.
-    fn add_bezier(
-        &mut self,
-        control_points: PyArrayLike2<'_, f64, AllowTypeChange>,
-    ) -> PyResult<u64> {
+    fn add_bezier(&mut self, control_points: RealArray2<'_>) -> PyResult<u64> {
         let pts = points::<2>(&control_points, "control_points")?;
         let c = camber_geom::BezierCurve2::try_new(pts).map_err(errors::geometry)?;
         Ok(self.inner.add_bezier(c).map_err(errors::sketch)?.0)

@@ -68,3 +68,29 @@ def test_a_non_finite_field_is_named_in_the_message(bad):
     with pytest.raises(camber.SketchError, match=r"param is not finite"):
         s.add_custom(lambda x: [x[0]], [p, {"param": bad}], dim=1)
     assert s.constraint_ids() == []
+
+
+@pytest.mark.parametrize(
+    "u", [np.array([0.1 + 0.5j, 0.2]), [0.25j], np.array([0.5 + 0j])[::-1]]
+)
+def test_complex_parameters_are_refused_rather_than_cut_to_their_real_part(u):
+    c = camber.BezierCurve([[0, 0], [1, 2], [3, 2], [4, 0]])
+    with pytest.raises(camber.GeometryError, match="complex"):
+        c.evaluate(u)
+    with pytest.raises(camber.GeometryError, match="complex"):
+        c.curvature(u)
+
+
+@pytest.mark.parametrize(
+    "make",
+    [
+        lambda p: camber.BezierCurve(p),
+        lambda p: camber.BSplineCurve(3, [0, 0, 0, 0, 1, 1, 1, 1], p),
+        lambda p: camber.fit_to_tolerance(np.vstack([p, p + 5.0]), 3, 1e-3, "centripetal"),
+        lambda p: camber.Sketch().add_bezier(p),
+    ],
+)
+def test_complex_coordinates_are_refused_rather_than_cut_to_their_real_part(make):
+    points = np.array([[0, 0], [1, 2], [3, 2j], [4, 0]], dtype=complex)
+    with pytest.raises(camber.GeometryError, match="complex"):
+        make(points)

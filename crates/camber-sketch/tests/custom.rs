@@ -120,7 +120,7 @@ mod typed_args {
     }
 
     #[test]
-    fn issue_12_a_custom_constraint_on_a_curve_survives_knot_refinement() {
+    fn a_custom_constraint_on_a_curve_survives_knot_refinement() {
         let mut s = Sketch::new();
         let pts = vec![
             Point2::new(0.0, 0.0),
@@ -189,7 +189,7 @@ mod typed_args {
     }
 
     #[test]
-    fn issue_12_a_wrong_block_count_is_a_typed_error_not_a_panic() {
+    fn a_wrong_block_count_is_a_typed_error_not_a_panic() {
         let mut s = Sketch::new();
         let p = s.add_point(Point2::new(0.0, 0.0)).unwrap();
         let e = s

@@ -560,7 +560,7 @@ fn unregistered_or_refused_custom_kinds_fail_plainly() {
 /// Issue 12: the `CustomRegistry` example with a file listing one point where the residual
 /// reads two panicked inside the residual's `eval`; it is now refused when the file loads.
 #[test]
-fn issue_12_a_custom_constraint_with_too_few_points_is_refused_on_load() {
+fn a_custom_constraint_with_too_few_points_is_refused_on_load() {
     let one = GAP_FILE.replace(
         "\"points\": [{\"point\": 0}, {\"point\": 1}]",
         "\"points\": [{\"point\": 0}]",

@@ -67,7 +67,7 @@ fn touches_every_circle(s: &Sketch, curve: EntityId, circles: &[EntityId]) -> bo
 }
 
 #[test]
-fn issue_11_seven_to_twenty_contacts_solve_without_abort() {
+fn seven_to_twenty_contacts_solve_without_abort() {
     for k in 2..=20 {
         let (mut s, curve, circles) = under_circles(k);
         let report = s.solve().unwrap_or_else(|e| panic!("{k} circles: {e}"));
@@ -82,7 +82,7 @@ fn issue_11_seven_to_twenty_contacts_solve_without_abort() {
 }
 
 #[test]
-fn issue_11_many_contacts_by_displacement_solve_or_fail_plainly() {
+fn many_contacts_by_displacement_solve_or_fail_plainly() {
     for k in [7, 11, 20] {
         let (mut s, curve, circles) = under_circles(k);
         let before = to_json(&s).unwrap();

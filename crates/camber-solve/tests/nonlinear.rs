@@ -430,7 +430,7 @@ fn three_circles_through_one_point() -> Problem {
 /// on three rows over two unknowns gets an independent pair of rows and solves.
 #[cfg(feature = "nlopt")]
 #[test]
-fn issue_11_slsqp_gets_independent_rows_when_rows_outnumber_unknowns() {
+fn slsqp_gets_independent_rows_when_rows_outnumber_unknowns() {
     let mut p = three_circles_through_one_point();
     let r = solve(&mut p, &tight().with_force(Some(SolverChoice::Slsqp))).unwrap();
     assert_eq!(r.solver, SolverKind::Slsqp);
@@ -442,7 +442,7 @@ fn issue_11_slsqp_gets_independent_rows_when_rows_outnumber_unknowns() {
 /// and an unchanged problem.
 #[cfg(feature = "nlopt")]
 #[test]
-fn issue_11_slsqp_is_refused_outside_its_limits() {
+fn slsqp_is_refused_outside_its_limits() {
     let mut p = three_circles_through_one_point();
     let before = p.values().to_vec();
     let options = forced(SolverChoice::Slsqp).with_dense_analysis_max_entries(0);
@@ -465,7 +465,7 @@ fn issue_11_slsqp_is_refused_outside_its_limits() {
 }
 
 #[test]
-fn issue_11_slsqp_limits() {
+fn slsqp_limits() {
     use camber_solve::{slsqp_supports, SLSQP_MAX_UNKNOWNS};
     assert!(slsqp_supports(3, 3).is_ok());
     assert!(slsqp_supports(SLSQP_MAX_UNKNOWNS, SLSQP_MAX_UNKNOWNS).is_ok());
@@ -710,3 +710,66 @@ fn square_ladders_solve_by_the_sparse_lu_as_by_the_dense_one() {
     );
     assert_ladder_solved(&large, cells);
 }
+
+/// |p_{k+1} − p_k|² − 1 over one block of points (x₀, y₀, x₁, y₁, …).
+#[derive(Debug)]
+struct Link {
+    k: usize,
+}
+
+impl Residual for Link {
+    fn name(&self) -> &str {
+        "link"
+    }
+    fn dim(&self) -> usize {
+        1
+    }
+    fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+        let dx = x[0][2 * self.k + 2] - x[0][2 * self.k];
+        let dy = x[0][2 * self.k + 3] - x[0][2 * self.k + 1];
+        out[0] = dx * dx + dy * dy - cst(1.0);
+    }
+}
+
+/// A step tolerance no f64 step can meet (1e-300·(1 + max |z|), far below the rounding of the
+/// pull-back steps) stands for a large component whose rounding floor exceeds the tolerance
+/// (a chain of 10⁴ points ran 100 iterations, 7.5 s): Newton stops once its steps stand still
+/// with the rows met, instead of running to its iteration limit, and the point it stops at is
+/// the one the default tolerance reaches.
+#[test]
+fn newton_stops_when_its_steps_stand_at_the_rounding_floor() {
+    let chain = |options: &Options| {
+        let n = 20;
+        let start: Vec<f64> = (0..n)
+            .flat_map(|k| [k as f64 * 1.01, 0.1 * (0.7 * k as f64).sin()])
+            .collect();
+        let mut p = Problem::new();
+        let b = p.add_block(&start).unwrap();
+        for k in 0..n - 1 {
+            p.add_residual(Link { k }, &[b], ConstraintId(k as u64 + 1))
+                .unwrap();
+        }
+        let r = solve(&mut p, options).unwrap();
+        (r, p.values().to_vec())
+    };
+    let (usual, want) = chain(&Options::default());
+    let options =
+        Options::default().with_nonlinear(NonlinearOptions::default().with_step_tolerance(1e-300));
+    let (r, got) = chain(&options);
+    assert_eq!(r.solver, SolverKind::Newton);
+    assert_eq!(r.status, Status::Solved);
+    assert!(
+        r.iterations <= usual.iterations + STALL_MARGIN,
+        "{} iterations (default tolerance: {}): {}",
+        r.iterations,
+        usual.iterations,
+        r.reason
+    );
+    assert!(!r.reason.contains("not fully converged"), "{}", r.reason);
+    for (a, b) in got.iter().zip(&want) {
+        assert_abs_diff_eq!(a, b, epsilon = 1e-9);
+    }
+}
+
+/// Iterations a run may take past the usual stop to see that its steps stand still.
+const STALL_MARGIN: usize = 6;

@@ -217,7 +217,7 @@ impl Residual for DeclaredDistance {
 /// Issue 12: a residual given fewer (or other) blocks than it reads is refused when it is
 /// added, with a typed error naming it, instead of panicking inside its `eval` later.
 #[test]
-fn issue_12_declared_block_shapes_are_checked_on_add() {
+fn declared_block_shapes_are_checked_on_add() {
     let mut p = Problem::new();
     let a = p.add_block(&[0.0, 0.0]).unwrap();
     let s = p.add_block(&[1.0]).unwrap();

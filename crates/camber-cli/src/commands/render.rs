@@ -111,6 +111,9 @@ pub fn picture(sketch: &Sketch, combs: bool) -> Result<String> {
             bbox.include(center + Vector2::new(*radius, *radius));
             bbox.include(center - Vector2::new(*radius, *radius));
         }
+        if let Some(arc) = e.as_arc() {
+            draw::arc_extremes(&arc).for_each(|p| bbox.include(p));
+        }
         if let Some(c) = e.as_curve() {
             let samples = draw::sample_curve(c, SAMPLES_PER_PIECE)?;
             samples.iter().for_each(|p| bbox.include(*p));
@@ -165,6 +168,11 @@ pub fn picture(sketch: &Sketch, combs: bool) -> Result<String> {
             Entity::Line([a, b]) => svg.line(*a, *b, &Style::stroke(CURVE, 2.0)),
             Entity::Circle { center, radius } => {
                 svg.circle(*center, *radius, &Style::stroke(CURVE, 2.0));
+            }
+            Entity::Arc(_) => {
+                if let Some(arc) = e.as_arc() {
+                    svg.arc(&arc, &Style::stroke(CURVE, 2.0));
+                }
             }
             _ => {}
         }

@@ -40,15 +40,22 @@ pub fn run(args: &SolveArgs) -> Result<()> {
             .solve_by_displacement(&camber_sketch::displacement::DisplacementOptions::default())
             .map_err(|e| anyhow!("solve failed: {}", describe_error(&sketch, &e)))
             .with_context(|| args.input.display().to_string())?;
-        let line = format!(
-            "iterative displacement: {} round(s), {}",
-            run.rounds,
-            if run.converged {
-                "converged, validated by the sketch's solve"
-            } else {
-                "stalled, solved by the usual solve"
-            }
-        );
+        let line = if run.history.is_empty() {
+            // No curve touches a fixed circle or line: nothing for the method to move.
+            "iterative displacement: 0 round(s), no contacts with fixed circles or lines, \
+             solved by the usual solve"
+                .to_owned()
+        } else {
+            format!(
+                "iterative displacement: {} round(s), {}",
+                run.rounds,
+                if run.converged {
+                    "converged, validated by the sketch's solve"
+                } else {
+                    "not converged, solved by the usual solve from the start"
+                }
+            )
+        };
         if !args.json {
             crate::print_stdout(&line)?;
         }

@@ -61,12 +61,17 @@ impl EntityJson {
     /// # Errors
     /// A curve that cannot be evaluated (not for an entity the sketch accepted).
     pub fn of(id: EntityId, e: &Entity) -> Result<Self> {
-        let samples = match e.as_curve() {
-            Some(c) => sample_curve(c, SAMPLES_PER_PIECE)?
+        let samples = match (e.as_curve(), e.as_arc()) {
+            (Some(c), _) => sample_curve(c, SAMPLES_PER_PIECE)?
                 .iter()
                 .map(|p| [p.x, p.y])
                 .collect(),
-            None => Vec::new(),
+            // An arc: 64 points evenly in angle.
+            (None, Some(arc)) => (0..=64)
+                .map(|k| arc.point(f64::from(k) / 64.0))
+                .map(|p| [p.x, p.y])
+                .collect(),
+            (None, None) => Vec::new(),
         };
         Ok(Self {
             id: id.0,

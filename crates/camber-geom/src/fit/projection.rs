@@ -20,7 +20,7 @@ use crate::bspline::BSplineCurve;
 use crate::curve::{check_parameter, ParametricCurve};
 use crate::errors::Result;
 use crate::queries::{closest_point_with, QueryOptions, RationalPiece};
-use crate::scalar::{re, Scalar};
+use crate::scalar::{cst, re, Scalar};
 
 /// Moves every interior parameter (the first and last stay) towards the foot point of its
 /// data point on `curve`, `steps` Newton steps at most, each kept between the
@@ -96,19 +96,18 @@ pub(crate) fn parametric_distances<T: Scalar, const D: usize>(
     Ok(worst)
 }
 
-/// A curve seen only on [a, b] ⊂ its domain: the toolkit's queries then search that part.
+/// A curve seen only on a run of its consecutive polynomial pieces: the toolkit's queries then
+/// search that part. `breaks` are the run's breakpoints, both ends included (strictly
+/// increasing), so that asking for them costs the run's length, not the whole curve's.
 struct Window<'a, C> {
     curve: &'a C,
-    start: f64,
-    end: f64,
+    breaks: &'a [f64],
 }
 
 impl<T: Scalar, const D: usize, C: ParametricCurve<T, D>> ParametricCurve<T, D> for Window<'_, C> {
     fn domain(&self) -> (T, T) {
-        (
-            nalgebra::convert::<f64, T>(self.start),
-            nalgebra::convert::<f64, T>(self.end),
-        )
+        let (a, b) = (self.breaks[0], self.breaks[self.breaks.len() - 1]);
+        (cst::<T>(a), cst::<T>(b))
     }
 
     fn derivatives_into(&self, u: T, out: &mut [SVector<T, D>]) -> Result<()> {
@@ -117,16 +116,7 @@ impl<T: Scalar, const D: usize, C: ParametricCurve<T, D>> ParametricCurve<T, D> 
     }
 
     fn breakpoints(&self) -> Vec<T> {
-        let (a, b) = self.domain();
-        let mut out = vec![a];
-        out.extend(
-            self.curve
-                .breakpoints()
-                .into_iter()
-                .filter(|&u| u > a && u < b),
-        );
-        out.push(b);
-        out
+        self.breaks.iter().map(|&u| cst::<T>(u)).collect()
     }
 }
 
@@ -230,6 +220,7 @@ pub(crate) fn distances_to_curve<T: Scalar, const D: usize>(
     let opts = window_options();
     let mut worst = 0.0_f64;
     let mut near = Vec::new();
+    let mut breaks: Vec<f64> = Vec::new();
     for ((q, u), bound) in points
         .iter()
         .zip(parameters.iter_mut())
@@ -244,10 +235,12 @@ pub(crate) fn distances_to_curve<T: Scalar, const D: usize>(
             while j + 1 < near.len() && near[j + 1] == near[j] + 1 {
                 j += 1;
             }
+            breaks.clear();
+            breaks.push(tree.spans[near[i]].0);
+            breaks.extend(tree.spans[near[i]..=near[j]].iter().map(|s| s.1));
             let window = Window {
                 curve,
-                start: tree.spans[near[i]].0,
-                end: tree.spans[near[j]].1,
+                breaks: &breaks,
             };
             let found = closest_point_with(&window, q, &opts)?;
             if re(found.distance) < *bound {

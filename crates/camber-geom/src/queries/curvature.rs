@@ -18,13 +18,35 @@ use nalgebra::{SVector, Vector2};
 
 use crate::curve::ParametricCurve;
 use crate::errors::{Error, Result};
-use crate::scalar::{re, Scalar};
+use crate::scalar::{cst, re, Scalar};
 
 /// The error for a zero first derivative.
 fn singular() -> Error {
     Error::ZeroLength {
         what: "first derivative (curvature is undefined)",
     }
+}
+
+/// C′ and C″ both multiplied by s = 2⁻ᵉ, the power of two nearest below 1/max|C′ᵢ|, and s:
+/// exact (a power of two), and it keeps |C′|³ and |C′ × C″|² inside f64 for any finite
+/// curve (κ(sC′, sC″) = κ/s, the curve scaled by s). `None` when C′ = 0. A non-finite C′ is
+/// left as it is (the result is then non-finite too, as the curve's derivatives are).
+fn scaled<T: Scalar, const D: usize>(
+    d1: &SVector<T, D>,
+    d2: &SVector<T, D>,
+) -> Option<(SVector<T, D>, SVector<T, D>, f64)> {
+    let largest = d1.iter().map(|x| re(*x).abs()).fold(0.0_f64, f64::max);
+    if largest == 0.0 {
+        return None;
+    }
+    if !largest.is_finite() {
+        return Some((*d1, *d2, 1.0));
+    }
+    // 2^e ≤ largest < 2^(e+1); e within [−1074, 1023], s kept a normal number.
+    let e = largest.log2().floor().clamp(-1022.0, 1022.0) as i32;
+    let s = 2.0_f64.powi(-e);
+    let st: T = cst(s);
+    Some((d1 * st, d2 * st, s))
 }
 
 /// Unsigned curvature κ from C′ = `d1` and C″ = `d2`, or `None` when C′ = 0.
@@ -40,10 +62,8 @@ pub fn curvature_from_derivatives<T: Scalar, const D: usize>(
     d1: &SVector<T, D>,
     d2: &SVector<T, D>,
 ) -> Option<T> {
+    let (d1, d2, s) = scaled(d1, d2)?;
     let speed2 = d1.norm_squared();
-    if re(speed2) <= 0.0 {
-        return None;
-    }
     let mut cross2 = T::zero();
     for i in 0..D {
         for j in i + 1..D {
@@ -51,17 +71,15 @@ pub fn curvature_from_derivatives<T: Scalar, const D: usize>(
             cross2 += c * c;
         }
     }
-    Some(cross2.sqrt() / (speed2 * speed2.sqrt()))
+    Some(cross2.sqrt() / (speed2 * speed2.sqrt()) * cst::<T>(s))
 }
 
 /// Signed planar curvature (C′ × C″)/|C′|³ from C′ = `d1` and C″ = `d2`, or `None` when
 /// C′ = 0. Positive when the curve turns counter-clockwise.
 pub fn signed_curvature_from_derivatives<T: Scalar>(d1: &Vector2<T>, d2: &Vector2<T>) -> Option<T> {
+    let (d1, d2, s) = scaled(d1, d2)?;
     let speed2 = d1.norm_squared();
-    if re(speed2) <= 0.0 {
-        return None;
-    }
-    Some((d1.x * d2.y - d1.y * d2.x) / (speed2 * speed2.sqrt()))
+    Some((d1.x * d2.y - d1.y * d2.x) / (speed2 * speed2.sqrt()) * cst::<T>(s))
 }
 
 /// The curvature vector (C″ − (C′·C″/|C′|²)·C′)/|C′|² from C′ = `d1` and C″ = `d2`: length κ,
@@ -70,12 +88,10 @@ pub fn curvature_vector_from_derivatives<T: Scalar, const D: usize>(
     d1: &SVector<T, D>,
     d2: &SVector<T, D>,
 ) -> Option<SVector<T, D>> {
+    let (d1, d2, s) = scaled(d1, d2)?;
     let speed2 = d1.norm_squared();
-    if re(speed2) <= 0.0 {
-        return None;
-    }
-    let normal_part = d2 - d1 * (d1.dot(d2) / speed2);
-    Some(normal_part / speed2)
+    let normal_part = d2 - d1 * (d1.dot(&d2) / speed2);
+    Some(normal_part / speed2 * cst::<T>(s))
 }
 
 /// Unsigned curvature κ(u) ≥ 0 of any curve in any dimension (1/length).

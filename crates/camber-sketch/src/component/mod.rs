@@ -7,6 +7,7 @@
 //! the solved geometry) for the sketch's solve and its drag sessions. The checks of a solved state ([`SolvedCheck`]) are the kinds' own, in
 //! [`crate::constraints`].
 
+pub(crate) mod arcs;
 pub(crate) mod contact;
 pub(crate) mod merge;
 pub mod problem;

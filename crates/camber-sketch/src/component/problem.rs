@@ -715,6 +715,20 @@ pub(crate) fn build(
     for (id, piece) in later {
         cp.add_piece(id, piece)?;
     }
+    // Every arc's own row (its end on the circle of its centre and start), unless all three
+    // of its blocks are fixed.
+    for id in &component.entities {
+        if let Entity::Arc(_) = lookup.lookup(*id)? {
+            let mut free = false;
+            for j in 0..3 {
+                free |= !is(&fixed, cp.point_block(*id, j)?);
+            }
+            if free {
+                let arc_row = super::arcs::arc_row(*id);
+                cp.add_piece(crate::residuals::arc::ARC_ROW, &arc_row)?;
+            }
+        }
+    }
     for (id, piece) in &rows {
         cp.add_piece(*id, piece)?;
     }

@@ -1,5 +1,7 @@
-//! `equal_radius`: two circles have the same radius, r₁ − r₂ = 0 (one affine row on the radius
-//! unknowns). File form: `{"kind": "equal_radius", "first": 1, "second": 2}`.
+//! `equal_radius`: two circles or arcs have the same radius, r₁ − r₂ = 0 (one row). Between
+//! two circles it is affine in their radius unknowns; an arc's radius is |S − C| over its
+//! centre and start blocks, which makes the row nonlinear. File form:
+//! `{"kind": "equal_radius", "first": 1, "second": 2}`.
 
 use camber_solve::{Residual, Scalar};
 use nalgebra::Point2;
@@ -7,19 +9,20 @@ use serde::{Deserialize, Serialize};
 
 use super::compiler::distinct;
 use super::glyph::{self, Glyph};
+use super::shared::radii::{radius_block_sizes, radius_of, Round};
 use super::{Compiler, ConstraintKind, Entities};
 use crate::constraints::piece::Slot;
 use crate::ground::errors::Result;
 use crate::ground::ids::EntityId;
 use crate::ground::lookup::EntityLookup;
 
-/// The two circles' radii are equal (one row).
+/// The two circles' (or arcs') radii are equal (one row).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct EqualRadius {
-    /// The first circle.
+    /// The first circle or arc.
     pub first: EntityId,
-    /// The second circle.
+    /// The second circle or arc.
     pub second: EntityId,
 }
 
@@ -45,6 +48,49 @@ impl Residual for RadiiEqual {
     }
 }
 
+/// r₁ − r₂ = 0 where either radius may be an arc's |S − C| (blocks: the first's radius blocks,
+/// then the second's: `[r]` for a circle, `[C, S]` for an arc).
+///
+/// ```
+/// use camber_sketch::constraints::equal_radius::RoundRadiiEqual;
+/// use camber_solve::Residual;
+/// let mut g = [0.0_f64];
+/// // An arc of radius 5 (centre (0, 0), start (3, 4)) against a circle of radius 2.
+/// RoundRadiiEqual { first_arc: true, second_arc: false }
+///     .eval(&[&[0.0, 0.0][..], &[3.0, 4.0][..], &[2.0][..]], &mut g);
+/// assert!((g[0] - 3.0).abs() < 1e-15);
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RoundRadiiEqual {
+    /// Whether the first is an arc.
+    pub first_arc: bool,
+    /// Whether the second is an arc.
+    pub second_arc: bool,
+}
+
+impl Residual for RoundRadiiEqual {
+    fn name(&self) -> &str {
+        EqualRadius::LABEL
+    }
+    fn dim(&self) -> usize {
+        1
+    }
+    fn block_sizes(&self) -> Option<Vec<usize>> {
+        let mut out = Vec::with_capacity(4);
+        radius_block_sizes(self.first_arc, &mut out);
+        radius_block_sizes(self.second_arc, &mut out);
+        Some(out)
+    }
+    fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
+        let (r1, used) = radius_of(self.first_arc, x);
+        let (r2, _) = radius_of(self.second_arc, &x[used..]);
+        out[0] = r1 - r2;
+    }
+    fn is_affine(&self) -> bool {
+        !self.first_arc && !self.second_arc
+    }
+}
+
 impl ConstraintKind for EqualRadius {
     const TAG: &'static str = "equal_radius";
     const LABEL: &'static str = "equal radius";
@@ -56,10 +102,18 @@ impl ConstraintKind for EqualRadius {
 
     fn compile(&self, cx: &mut Compiler<'_>) -> Result<()> {
         distinct(self.first, self.second)?;
-        cx.circle(self.first)?;
-        cx.circle(self.second)?;
-        let slots = vec![Slot::Radius(self.first), Slot::Radius(self.second)];
-        cx.residual(RadiiEqual, slots, None);
+        let (a, b) = (Round::of(cx, self.first)?, Round::of(cx, self.second)?);
+        let mut slots: Vec<Slot> = a.radius_slots().to_vec();
+        slots.extend(b.radius_slots());
+        if a.is_arc() || b.is_arc() {
+            let residual = RoundRadiiEqual {
+                first_arc: a.is_arc(),
+                second_arc: b.is_arc(),
+            };
+            cx.residual(residual, slots, None);
+        } else {
+            cx.residual(RadiiEqual, slots, None);
+        }
         Ok(())
     }
 

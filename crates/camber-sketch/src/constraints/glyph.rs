@@ -113,16 +113,17 @@ pub fn line_mark(at: &dyn EntityLookup, line: EntityId, text: &'static str) -> R
     Ok(Glyph::Mark(Point2::from((a.coords + b.coords) / 2.0), text))
 }
 
-/// A circle entity's centre and radius.
+/// A circle entity's (or an arc's) centre and radius.
 ///
 /// # Errors
-/// Unknown id; [`Error::WrongEntityKind`] for anything but a circle.
+/// Unknown id; [`Error::WrongEntityKind`] for anything but a circle or an arc.
 pub fn circle(at: &dyn EntityLookup, id: EntityId) -> Result<(Point2<f64>, f64)> {
     match at.lookup(id)? {
         Entity::Circle { center, radius } => Ok((*center, *radius)),
+        Entity::Arc([c, s, _]) => Ok((*c, (s - c).norm())),
         other => Err(Error::WrongEntityKind {
             entity: id,
-            expected: "circle",
+            expected: "circle or arc",
             found: other.kind_name(),
         }),
     }

@@ -359,4 +359,8 @@ kinds! {
     C2Join => c2_join::C2Join,
     /// Rows written as text over named sketch quantities (affine when the tape says so).
     Expression => expression::Expression,
+    /// A point on an arc (its circle, within its sweep).
+    PointOnArc => point_on_arc::PointOnArc,
+    /// An arc's tangent at one end along a line entity.
+    ArcTangentToLine => arc_tangent_to_line::ArcTangentToLine,
 }

@@ -2,7 +2,7 @@
 //! snake-case tags and named fields, and the conversions both ways. Constraints are read and
 //! written in their kinds' own forms ([`crate::constraints`]), one JSON object each.
 
-use camber_geom::{BSplineCurve2, BezierCurve2, KnotVector, NurbsCurve2};
+use camber_geom::{BSplineCurve2, BezierCurve2, CircularArc, KnotVector, NurbsCurve2};
 use nalgebra::{Point2, Vector2};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
@@ -61,6 +61,12 @@ pub(super) enum KeyedShape {
         center: Xy,
         radius: f64,
     },
+    Arc {
+        center: Xy,
+        radius: f64,
+        start_angle: f64,
+        end_angle: f64,
+    },
     Bezier {
         control_points: Vec<Xy>,
     },
@@ -95,6 +101,17 @@ impl From<KeyedShape> for RawShape {
             KeyedShape::Point { at } => RawShape::Point { at },
             KeyedShape::Line { from, to } => RawShape::Line { from, to },
             KeyedShape::Circle { center, radius } => RawShape::Circle { center, radius },
+            KeyedShape::Arc {
+                center,
+                radius,
+                start_angle,
+                end_angle,
+            } => RawShape::Arc {
+                center,
+                radius,
+                start_angle,
+                end_angle,
+            },
             KeyedShape::Bezier { control_points } => RawShape::Bezier { control_points },
             KeyedShape::Bspline {
                 degree,
@@ -144,6 +161,12 @@ pub(super) enum RawShape {
         center: Xy,
         radius: f64,
     },
+    Arc {
+        center: Xy,
+        radius: f64,
+        start_angle: f64,
+        end_angle: f64,
+    },
     Bezier {
         control_points: Vec<Xy>,
     },
@@ -178,6 +201,7 @@ impl RawShape {
             RawShape::Point { .. } => "point",
             RawShape::Line { .. } => "line",
             RawShape::Circle { .. } => "circle",
+            RawShape::Arc { .. } => "arc",
             RawShape::Bezier { .. } => "bezier",
             RawShape::Bspline { .. } => "bspline",
             RawShape::Nurbs { .. } => "nurbs",
@@ -195,6 +219,17 @@ impl RawShape {
                 center: pt(center),
                 radius,
             },
+            RawShape::Arc {
+                center,
+                radius,
+                start_angle,
+                end_angle,
+            } => Entity::arc(&CircularArc::try_new(
+                pt(center),
+                radius,
+                start_angle,
+                end_angle,
+            )?),
             RawShape::Bezier { control_points } => {
                 Entity::Bezier(BezierCurve2::try_new(pts(control_points))?)
             }
@@ -245,6 +280,17 @@ impl RawShape {
                 center: xy_p(center),
                 radius: *radius,
             },
+            Entity::Arc([c, s, e]) => {
+                // The blocks' arc: radius |S − C|, angles in (−π, π] (atan2), so a loaded
+                // file's angles come back reduced.
+                let (vs, ve) = (s - c, e - c);
+                RawShape::Arc {
+                    center: xy_p(c),
+                    radius: vs.norm(),
+                    start_angle: vs.y.atan2(vs.x),
+                    end_angle: ve.y.atan2(ve.x),
+                }
+            }
             Entity::Bezier(c) => RawShape::Bezier {
                 control_points: pts(c.control_points()),
             },

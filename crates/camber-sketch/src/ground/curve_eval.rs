@@ -113,7 +113,7 @@ impl CurveBasis {
             Entity::Bezier(c) => (c.degree(), KnotVector::bezier(c.degree()), None),
             Entity::BSpline(c) => (c.degree(), c.knots().clone(), None),
             Entity::Nurbs(c) => (c.degree(), c.knots().clone(), Some(c.weights().to_vec())),
-            Entity::Point(_) | Entity::Circle { .. } => return None,
+            Entity::Point(_) | Entity::Circle { .. } | Entity::Arc(_) => return None,
             Entity::Hermite(_) | Entity::Composite(_) => return None,
         };
         Some(Self {

@@ -23,7 +23,7 @@
 //! blocks (an affine constraint); those with a free parameter, distances, angles and lengths are
 //! nonlinear.
 
-use camber_geom::{BSplineCurve2, BezierCurve2, NurbsCurve2};
+use camber_geom::{BSplineCurve2, BezierCurve2, CircularArc, NurbsCurve2};
 use nalgebra::Point2;
 use smallvec::SmallVec;
 
@@ -60,6 +60,13 @@ pub enum Entity {
         /// The radius, > 0.
         radius: f64,
     },
+    /// A circular arc, stored by its blocks [centre, start, end]: it runs counter-clockwise
+    /// from the start to the end about the centre, its radius is |start − centre| and its end
+    /// lies on that circle (the arc's own row |end − centre| − |start − centre| = 0 holds it
+    /// there in every solve, so the arc has 6 − 1 = 5 DOF). Its ends are point blocks, so every
+    /// constraint that reads a point reads them: `Start(e)` / `Control(e, 1)` and `End(e)` /
+    /// `Control(e, 2)`; `Control(e, 0)` is the centre. Make one with [`Entity::arc`].
+    Arc([Point2<f64>; 3]),
     /// A Bézier curve on [0, 1].
     Bezier(BezierCurve2<f64>),
     /// A B-spline curve.
@@ -95,7 +102,33 @@ impl Entity {
             Entity::BSpline(c) => Some(c),
             Entity::Nurbs(c) => Some(c),
             Entity::Hermite(c) | Entity::Composite(c) => Some(c),
-            Entity::Point(_) | Entity::Line(_) | Entity::Circle { .. } => None,
+            Entity::Point(_) | Entity::Line(_) | Entity::Circle { .. } | Entity::Arc(_) => None,
+        }
+    }
+
+    /// The arc entity of a circular arc: blocks [centre, start point, end point].
+    ///
+    /// ```
+    /// use camber_geom::CircularArc;
+    /// use camber_sketch::Entity;
+    /// use nalgebra::Point2;
+    /// let e = Entity::arc(&CircularArc::try_new(Point2::new(0.0, 0.0), 2.0, 0.0, std::f64::consts::FRAC_PI_2)?);
+    /// assert!((e.points()[2] - Point2::new(0.0, 2.0)).norm() < 1e-15);
+    /// let back = e.as_arc().unwrap();
+    /// assert!((back.radius() - 2.0).abs() < 1e-15 && (back.sweep() - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
+    /// # Ok::<(), camber_geom::Error>(())
+    /// ```
+    pub fn arc(arc: &CircularArc<f64>) -> Entity {
+        Entity::Arc([*arc.center(), arc.start_point(), arc.end_point()])
+    }
+
+    /// The circular arc of an arc entity, read from its blocks: radius |S − C|, start angle
+    /// atan2(S − C) ∈ (−π, π], end angle atan2(E − C) (so the sweep lies in (0, 2π)); `None`
+    /// for other entities and for blocks that make no arc (see [`arc_of_blocks`]).
+    pub fn as_arc(&self) -> Option<CircularArc<f64>> {
+        match self {
+            Entity::Arc(blocks) => arc_of_blocks(blocks).ok(),
+            _ => None,
         }
     }
 
@@ -121,6 +154,7 @@ impl Entity {
             Entity::Point(_) => "point",
             Entity::Line(_) => "line",
             Entity::Circle { .. } => "circle",
+            Entity::Arc(_) => "arc",
             Entity::Bezier(_) => "Bézier curve",
             Entity::BSpline(_) => "B-spline curve",
             Entity::Nurbs(_) => "NURBS curve",
@@ -136,6 +170,7 @@ impl Entity {
         match self {
             Entity::Point(p) => std::slice::from_ref(p),
             Entity::Line(ends) => ends,
+            Entity::Arc(blocks) => blocks,
             Entity::Circle { center, .. } => std::slice::from_ref(center),
             Entity::Bezier(c) => c.control_points(),
             Entity::BSpline(c) => c.control_points(),
@@ -242,6 +277,12 @@ impl Entity {
                     radius: r,
                 }
             }
+            Entity::Arc(_) => {
+                expect(3)?;
+                let blocks = [points[0], points[1], points[2]];
+                arc_of_blocks(&blocks)?;
+                Entity::Arc(blocks)
+            }
             Entity::Bezier(c) => {
                 expect(c.control_points().len())?;
                 Entity::Bezier(BezierCurve2::try_new(points.to_vec())?)
@@ -261,7 +302,10 @@ impl Entity {
     /// Whether the entity is a curve (line, Bézier, B-spline, NURBS, Hermite or composite): it
     /// has a parameter.
     pub fn is_curve(&self) -> bool {
-        !matches!(self, Entity::Point(_) | Entity::Circle { .. })
+        !matches!(
+            self,
+            Entity::Point(_) | Entity::Circle { .. } | Entity::Arc(_)
+        )
     }
 
     /// The parametric domain [a, b] of a curve (`None` for points and circles).
@@ -271,7 +315,7 @@ impl Entity {
             Entity::BSpline(c) => Some(c.knots().domain(c.degree())),
             Entity::Nurbs(c) => Some(c.knots().domain(c.degree())),
             Entity::Hermite(c) | Entity::Composite(c) => Some((0.0, c.segment_count() as f64)),
-            Entity::Point(_) | Entity::Circle { .. } => None,
+            Entity::Point(_) | Entity::Circle { .. } | Entity::Arc(_) => None,
         }
     }
 
@@ -286,7 +330,7 @@ impl Entity {
             Entity::Bezier(c) => return c.degree() >= 1,
             Entity::BSpline(c) => (c.degree(), c.knots().as_slice()),
             Entity::Nurbs(c) => (c.degree(), c.knots().as_slice()),
-            Entity::Point(_) | Entity::Circle { .. } => return false,
+            Entity::Point(_) | Entity::Circle { .. } | Entity::Arc(_) => return false,
         };
         let run: &[f64] = if at_end {
             &knots[knots.len() - 1 - degree..]
@@ -371,6 +415,15 @@ impl Entity {
                 }
             }
             PointRef::Start(_) | PointRef::End(_) => {
+                // An arc's ends are its blocks 1 and 2.
+                if let Entity::Arc(_) = self {
+                    let index = if matches!(r, PointRef::Start(_)) {
+                        1
+                    } else {
+                        2
+                    };
+                    return Ok(smallvec::smallvec![(index, 1.0)]);
+                }
                 // A line or a Bézier curve starts at its first point and ends at its last: the
                 // basis evaluation below gives exactly these weights, at a fraction of the cost.
                 if let Entity::Line(_) | Entity::Bezier(_) = self {
@@ -426,7 +479,13 @@ impl Entity {
                 ));
             }
         }
-        if !matches!(self, Entity::Point(_) | Entity::Circle { .. }) {
+        if let Entity::Arc(blocks) = self {
+            arc_of_blocks(blocks).map_err(|reason| Error::InvalidArc { entity: id, reason })?;
+        }
+        if !matches!(
+            self,
+            Entity::Point(_) | Entity::Circle { .. } | Entity::Arc(_)
+        ) {
             let points = self.hull_points();
             let spread = points
                 .iter()
@@ -449,6 +508,24 @@ impl Entity {
         }
         Ok(())
     }
+}
+
+/// The circular arc of an arc entity's blocks [C, S, E]: radius |S − C|, start angle
+/// atan2(S − C), end angle atan2(E − C).
+///
+/// # Errors
+/// The kernel's: [`camber_geom::Error::NonPositiveRadius`] when S = C (or E = C, as a radius
+/// of 0), [`camber_geom::Error::DegenerateSweep`] when S and E lie in one direction from C.
+pub fn arc_of_blocks(
+    blocks: &[Point2<f64>; 3],
+) -> std::result::Result<CircularArc<f64>, camber_geom::Error> {
+    let [c, s, e] = blocks;
+    let (vs, ve) = (s - c, e - c);
+    let r = vs.norm();
+    if ve.norm() <= 0.0 {
+        return Err(camber_geom::Error::NonPositiveRadius { value: 0.0 });
+    }
+    CircularArc::try_new(*c, r, vs.y.atan2(vs.x), ve.y.atan2(ve.x))
 }
 
 /// Σ cⱼ·Pⱼ for terms over `points`.

@@ -126,6 +126,80 @@ pub enum Error {
         /// What is degenerate, in words.
         reason: &'static str,
     },
+    /// An arc the kernel refuses: a radius that is not positive, a sweep of zero (start and
+    /// end in one direction from the centre, or a whole turn), an angle that is not finite or
+    /// too large; the reason carries the value.
+    ///
+    /// ```
+    /// use camber_sketch::{Entity, EntityId, Error, Sketch};
+    /// use nalgebra::Point2;
+    /// let mut s = Sketch::new();
+    /// let c = Point2::new(0.0, 0.0);
+    /// let err = s.add_entity(Entity::Arc([c, Point2::new(1.0, 0.0), Point2::new(2.0, 0.0)])).unwrap_err();
+    /// assert_eq!(err, Error::InvalidArc {
+    ///     entity: EntityId(0),
+    ///     reason: camber_geom::Error::DegenerateSweep { start: 0.0, end: 0.0 },
+    /// });
+    /// ```
+    #[error("{entity} (arc): {reason}")]
+    InvalidArc {
+        /// The arc.
+        entity: EntityId,
+        /// What the kernel refused, with the value.
+        reason: camber_geom::Error,
+    },
+    /// Two lines that cannot be filleted with the radius asked for: parallel or collinear
+    /// lines, or a radius whose tangent points fall beyond a line's far end.
+    ///
+    /// ```
+    /// use camber_sketch::{Error, Sketch};
+    /// use nalgebra::Point2;
+    /// let mut s = Sketch::new();
+    /// let a = s.add_line(Point2::new(0.0, 0.0), Point2::new(1.0, 0.0))?;
+    /// let b = s.add_line(Point2::new(0.0, 1.0), Point2::new(1.0, 1.0))?;
+    /// assert_eq!(
+    ///     s.fillet(a, b, 0.1).unwrap_err().to_string(),
+    ///     "cannot fillet entity 0 and entity 1: the lines are parallel"
+    /// );
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("cannot fillet {first} and {second}: {reason}")]
+    FilletImpossible {
+        /// The first line.
+        first: EntityId,
+        /// The second line.
+        second: EntityId,
+        /// Why, in words.
+        reason: &'static str,
+    },
+    /// A solve that would turn an arc inside out: its end carried past its start (or the
+    /// reverse), so that its sweep, read from its blocks, jumps by more than π (from near 0 to
+    /// near 2π, say) and the arc becomes its complement on the circle.
+    #[error(
+        "{entity} (arc) would turn inside out: its sweep would go from {} to {} rad",
+        Readable(*before),
+        Readable(*after)
+    )]
+    ArcTurnedInsideOut {
+        /// The arc.
+        entity: EntityId,
+        /// Its sweep before the solve (radians).
+        before: f64,
+        /// Its sweep after it.
+        after: f64,
+    },
+    /// A point held on an arc's circle that a solve left outside the arc's sweep (it would
+    /// be on the circle, not on the arc).
+    #[error(
+        "{constraint}: the point lies on the arc's circle at {} rad past the nearer end of the arc",
+        Readable(*outside)
+    )]
+    PointOffArc {
+        /// The point-on-arc constraint.
+        constraint: ConstraintId,
+        /// How far (radians) the point's direction lies outside the sweep.
+        outside: f64,
+    },
     /// An entity cannot be removed while constraints read it.
     #[error("{entity} is read by {constraint}")]
     EntityInUse {
@@ -404,6 +478,8 @@ pub enum Error {
 fn constraint_name(id: ConstraintId) -> String {
     if id == crate::ground::ids::DRAG_CONSTRAINT {
         "the drag target".to_owned()
+    } else if id == crate::ground::ids::ARC_ROW {
+        "an arc's own row (its end on its circle)".to_owned()
     } else {
         id.to_string()
     }

@@ -85,3 +85,7 @@ impl PointRef {
 
 /// The constraint id owning the rows that pin a dragged point.
 pub const DRAG_CONSTRAINT: ConstraintId = ConstraintId(u64::MAX);
+
+/// The constraint id owning every arc's own row |E − C| − |S − C| = 0 (its end on the circle
+/// of its centre and start; `crate::residuals::arc`). Reports call it "an arc's own row".
+pub const ARC_ROW: ConstraintId = ConstraintId(u64::MAX - 1);

@@ -5,7 +5,7 @@
 use camber_solve::ConstraintId;
 
 use crate::ground::errors::Error;
-use crate::ground::ids::DRAG_CONSTRAINT;
+use crate::ground::ids::{ARC_ROW, DRAG_CONSTRAINT};
 use crate::sketch::Sketch;
 
 /// Constraints named one by one in a "not solved" message (the rest are counted).
@@ -30,6 +30,9 @@ impl Sketch {
     pub fn describe_constraint(&self, id: ConstraintId) -> String {
         if id == DRAG_CONSTRAINT {
             return "the drag target".to_owned();
+        }
+        if id == ARC_ROW {
+            return "an arc's own row (its end on its circle)".to_owned();
         }
         match self.constraint(id) {
             Ok(c) => format!("{id} ({})", c.kind_name()),

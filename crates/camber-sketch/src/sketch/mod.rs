@@ -8,6 +8,7 @@
 //! dirty entity.
 
 mod describe;
+pub mod fillet;
 pub mod parameters;
 pub(crate) mod prepared;
 pub mod warnings;
@@ -188,6 +189,14 @@ impl Sketch {
     /// As [`Sketch::add_entity`].
     pub fn add_circle(&mut self, center: Point2<f64>, radius: f64) -> Result<EntityId> {
         self.add_entity(Entity::Circle { center, radius })
+    }
+
+    /// Adds a circular arc (blocks [centre, start, end], see [`Entity::Arc`]).
+    ///
+    /// # Errors
+    /// As [`Sketch::add_entity`].
+    pub fn add_arc(&mut self, arc: &camber_geom::CircularArc<f64>) -> Result<EntityId> {
+        self.add_entity(Entity::arc(arc))
     }
 
     /// Adds a Bézier curve.

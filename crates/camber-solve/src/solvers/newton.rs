@@ -155,6 +155,23 @@ fn select(g: &[f64], rows: Option<&[usize]>, out: &mut Vec<f64>) {
     }
 }
 
+/// Iterations in a row that meet the rows (max |g| within the inner tolerance) without halving
+/// the shortest pull-back step seen since the rows were met and without changing
+/// ½‖z − z_ref‖²_W by more than [`STALLED_DISTANCE`] of it, after which the run stops as
+/// stationary. Near the solution the second-order steps converge quadratically, so a step
+/// that no longer halves while the objective stands still is the rounding floor of J⁺, about
+/// ε·κ(J·W⁻¹·Jᵀ)·‖z − z_ref‖: on a chain of n links κ grows like n², and past some thousands
+/// of links that floor exceeds `step_tolerance`·(1 + max |z|), which grows only like n.
+/// Without this stop such a run went on to the iteration limit, moving by rounding (a chain
+/// of 10⁴ points: 100 linearizations, 7.5 s, instead of 12). A slow but real pull-back (steps
+/// refused by the merit, Gauss–Newton's linear rate) still moves the objective and goes on.
+const STALLED_ITERATIONS: usize = 3;
+
+/// The relative change of ½‖z − z_ref‖²_W between two iterations below which the pull-back
+/// counts as standing still ([`STALLED_ITERATIONS`]): some hundred roundings of a sum of
+/// positive terms.
+const STALLED_DISTANCE: f64 = 1e-12;
+
 /// Relative size of the projected residual at which a quadratic step is taken as solved (with
 /// H = 0 one conjugate-gradient iteration solves it exactly; this only ends the rounding).
 const CG_TOLERANCE: f64 = 1e-6;
@@ -253,6 +270,12 @@ pub(crate) fn run(
     // already meets the rows to be stationary without linearizing and factorizing it again.
     let mut lu = std::mem::take(&mut ws.square);
     let mut chord = false;
+    // Iterations in a row that met the rows without halving the pull-back step or visibly
+    // moving ½‖z − z_ref‖²_W, the shortest step and the distance since (see
+    // [`STALLED_ITERATIONS`]).
+    let mut stalled = 0;
+    let mut met_step = f64::INFINITY;
+    let mut met_distance = f64::INFINITY;
     for iteration in 0..settings.max_iterations {
         if std::mem::take(&mut chord) {
             // `gs_trial` holds the rows at the accepted point, now `z`. With an empty null
@@ -303,6 +326,32 @@ pub(crate) fn run(
                 max_residual: last_max,
                 stationary: true,
             });
+        }
+        // The rows are met and the pull-back steps have stopped shrinking: they are at the
+        // rounding floor of the factorization, not converging (see [`STALLED_ITERATIONS`]).
+        if last_max <= inner_tol {
+            let length = max_abs(&ws.step);
+            let here = distance(&ws.z, reference, &weights);
+            let still = (here - met_distance).abs() <= STALLED_DISTANCE * here;
+            stalled = if length > 0.5 * met_step && still {
+                stalled + 1
+            } else {
+                0
+            };
+            met_step = met_step.min(length);
+            met_distance = here;
+            if stalled >= STALLED_ITERATIONS {
+                ws.square = lu;
+                return Ok(NewtonRun {
+                    iterations: iteration,
+                    max_residual: last_max,
+                    stationary: true,
+                });
+            }
+        } else {
+            stalled = 0;
+            met_step = f64::INFINITY;
+            met_distance = f64::INFINITY;
         }
 
         // The second-order step with the multipliers of the previous iteration, taken only at

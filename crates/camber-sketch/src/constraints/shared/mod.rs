@@ -6,9 +6,11 @@
 //!   equal lengths);
 //! - [`joins`]: the joints between curve ends (C1/C2 parametric joins, G1/G2 bases and the
 //!   tangents-parallel check, the tangency of an end);
-//! - [`lines`]: the signed offset of a point from a line.
+//! - [`lines`]: the signed offset of a point from a line;
+//! - [`radii`]: the radius and centre of a circle or an arc.
 
 pub(crate) mod angles;
 pub(crate) mod axes;
 pub(crate) mod joins;
 pub(crate) mod lines;
+pub(crate) mod radii;

@@ -1,10 +1,10 @@
-//! Issue 11 finding 8: messages name the user's own ids and fields in plain words: no Rust
+//! Messages name the user's own ids and fields in plain words: no Rust
 //! Debug text, no internal ids, and the JSON path inside an entity.
 
 use camber_sketch::{file, ConstraintId, EntityId, Error, PointRef, DRAG_CONSTRAINT};
 
 #[test]
-fn issue_11_messages_have_no_debug_text_or_internal_ids() {
+fn messages_have_no_debug_text_or_internal_ids() {
     let e = Error::NotDraggable {
         point: PointRef::Control(EntityId(0), 1),
     };
@@ -30,7 +30,7 @@ fn issue_11_messages_have_no_debug_text_or_internal_ids() {
 }
 
 #[test]
-fn issue_11_entity_errors_name_the_field_inside_the_entity() {
+fn entity_errors_name_the_field_inside_the_entity() {
     let cases = [
         (
             r#"{"id": 0, "kind": "bezier", "control_points": [[0, 0], [1, 2, 3]]}"#,

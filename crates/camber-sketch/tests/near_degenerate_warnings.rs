@@ -1,4 +1,4 @@
-//! Issue 17: sketches at any scale and any size — here the warnings for near-degenerate
+//! Sketches at any scale and any size: the warnings for near-degenerate
 //! input, which reports carry and `camber check` prints.
 
 #![allow(clippy::unwrap_used)] // fixture helpers unwrap like the tests do
@@ -9,7 +9,7 @@ use camber_sketch::{PointRef, Sketch, Warning};
 use nalgebra::Point2;
 
 #[test]
-fn issue_17_near_degenerate_input_is_named() {
+fn near_degenerate_input_is_named() {
     let mut s = Sketch::new();
     // A curve 10 long whose first two control points almost coincide.
     let c = s
@@ -77,7 +77,7 @@ fn a_clean_sketch_has_no_warnings() {
 /// Newton iterations and SLSQP at 10⁶ and was "conflicting" at 10⁷), and the report says which
 /// tolerance it used.
 #[test]
-fn issue_17_rectangles_far_from_the_origin_solve_alike() {
+fn rectangles_far_from_the_origin_solve_alike() {
     let mut paths = Vec::new();
     for offset in [0.0, 1e-6, 1e-3, 1.0, 1e3, 1e5, 1e6, 1e7] {
         let (mut s, r) =
@@ -110,7 +110,7 @@ fn issue_17_rectangles_far_from_the_origin_solve_alike() {
 /// which is horizontal: its start is determined, its end can slide. A circle with a fixed
 /// centre and a free radius: only the radius. A point fixed outright: nothing (not listed).
 #[test]
-fn issue_17_free_unknowns_are_named_per_entity() {
+fn free_unknowns_are_named_per_entity() {
     use camber_sketch::constraints::Horizontal;
     let mut s = Sketch::new();
     let line = s
@@ -147,7 +147,7 @@ fn issue_17_free_unknowns_are_named_per_entity() {
 }
 
 #[test]
-fn issue_17_contact_parameters_that_can_slide_are_named() {
+fn contact_parameters_that_can_slide_are_named() {
     use camber_sketch::constraints::TangentToCircle;
     use camber_sketch::ParameterFreedom;
     use camber_sketch::{CircleSide, Contact, Rotation};

@@ -1,4 +1,4 @@
-//! Regression tests of issue 11 found by the solve property (`solve_property.rs`) and the
+//! Regression tests of sketches found by the solve property (`solve_property.rs`) and the
 //! fuzzers (`fuzz/`), named after what they caught.
 
 // Fixture helpers outside #[test] functions unwrap results of fixed, valid inputs.
@@ -15,7 +15,7 @@ use nalgebra::{Point2, Vector2};
 /// the written-back sketch then failed its next solve. The collapse is a cusp, refused with the
 /// sketch unchanged, and a solve of the unchanged sketch says the same.
 #[test]
-fn issue_11_collapsed_joint_tangent_is_a_cusp_not_a_solution() {
+fn collapsed_joint_tangent_is_a_cusp_not_a_solution() {
     let mut s = Sketch::new();
     let knots = KnotVector::clamped_uniform(2, 3).unwrap();
     let nurbs = NurbsCurve2::try_new(

@@ -1,5 +1,5 @@
-//! Issue 11: nothing a user types or gives camber crashes it, hangs it, prints a NaN as a
-//! result or damages a file. One test (or more) per finding, each run through the binary.
+//! Nothing a user types or gives camber crashes it, hangs it, prints a NaN as a result or
+//! damages a file. One test (or more) per kind of hostile input, each run through the binary.
 
 #![allow(clippy::unwrap_used)] // helpers outside #[test] fns unwrap like the tests do
 
@@ -61,7 +61,7 @@ const CUBIC: &str = r#"{"type": "bezier", "control_points": [[0, 0], [1, 2], [3,
 // ------------------------------------------------------------ finding 3: unbounded counts
 
 #[test]
-fn issue_11_finding_3_eval_derivs_is_bounded() {
+fn eval_derivs_is_bounded() {
     let dir = tempfile::tempdir().unwrap();
     let curve = write(dir.path(), "c.json", CUBIC);
     for k in [
@@ -99,7 +99,7 @@ fn issue_11_finding_3_eval_derivs_is_bounded() {
 }
 
 #[test]
-fn issue_11_finding_3_bench_sizes_are_bounded() {
+fn bench_sizes_are_bounded() {
     for n in ["18446744073709551615", "4294967296", "100001", "0"] {
         let err = usage_error(camber().args(["bench", "--quick", "--only", "W3", "--sizes", n]));
         assert!(err.contains("outside 1..=100000"), "{n}: {err}");
@@ -109,7 +109,7 @@ fn issue_11_finding_3_bench_sizes_are_bounded() {
 // ------------------------------------------------------------ finding 7: loading
 
 #[test]
-fn issue_11_finding_7_degenerate_sketch_entities_are_refused_at_load() {
+fn degenerate_sketch_entities_are_refused_at_load() {
     let dir = tempfile::tempdir().unwrap();
     let line = write(
         dir.path(),
@@ -151,7 +151,7 @@ fn issue_11_finding_7_degenerate_sketch_entities_are_refused_at_load() {
 }
 
 #[test]
-fn issue_11_finding_7_curve_files_are_checked_like_sketch_files() {
+fn curve_files_are_checked_like_sketch_files() {
     let dir = tempfile::tempdir().unwrap();
     let points = |n: usize| {
         let p: Vec<String> = (0..n).map(|i| format!("[{i}, 0]")).collect();
@@ -200,7 +200,7 @@ fn issue_11_finding_7_curve_files_are_checked_like_sketch_files() {
 }
 
 #[test]
-fn issue_11_finding_7_a_byte_order_mark_is_accepted() {
+fn a_byte_order_mark_is_accepted() {
     let dir = tempfile::tempdir().unwrap();
     let curve = write(dir.path(), "bom.json", &format!("\u{feff}{CUBIC}"));
     let out = success(camber().arg("eval").arg(&curve).args(["--at", "0.5"]));
@@ -212,7 +212,7 @@ fn issue_11_finding_7_a_byte_order_mark_is_accepted() {
 
 #[cfg(unix)]
 #[test]
-fn issue_11_finding_7_input_size_is_bounded() {
+fn input_size_is_bounded() {
     let err = failure(camber().args(["eval", "/dev/zero", "--at", "0.5"]));
     assert!(err.contains("larger than 64 MiB"), "{err}");
     let err = failure(camber().args(["check", "/dev/zero"]));
@@ -222,7 +222,7 @@ fn issue_11_finding_7_input_size_is_bounded() {
 // ------------------------------------------------------------ finding 4: unrepresentable numbers
 
 #[test]
-fn issue_11_finding_4_unrepresentable_numbers_are_refused_or_computed() {
+fn unrepresentable_numbers_are_refused_or_computed() {
     let dir = tempfile::tempdir().unwrap();
     let spline = write(
         dir.path(),
@@ -312,7 +312,7 @@ fn issue_11_finding_4_unrepresentable_numbers_are_refused_or_computed() {
 }
 
 #[test]
-fn issue_11_finding_4_no_null_is_written_as_a_result() {
+fn no_null_is_written_as_a_result() {
     // A Bézier curve near the top of f64: its elevation is representable, its derivatives are
     // not; eval refuses instead of printing null, and render refuses instead of drawing NaN.
     let dir = tempfile::tempdir().unwrap();
@@ -337,7 +337,7 @@ fn issue_11_finding_4_no_null_is_written_as_a_result() {
 // ------------------------------------------------------------ finding 6: outputs
 
 #[test]
-fn issue_11_finding_6_outputs_never_overwrite_inputs_or_each_other() {
+fn outputs_never_overwrite_inputs_or_each_other() {
     let dir = tempfile::tempdir().unwrap();
     let blade = std::fs::read_to_string(sketch("blade_section.json")).unwrap();
     let input = write(dir.path(), "in.json", &blade);
@@ -424,7 +424,7 @@ fn issue_11_finding_6_outputs_never_overwrite_inputs_or_each_other() {
 
 #[cfg(unix)]
 #[test]
-fn issue_11_finding_6_editor_save_keeps_the_link_and_the_mode() {
+fn editor_save_keeps_the_link_and_the_mode() {
     use std::os::unix::fs::PermissionsExt as _;
     let dir = tempfile::tempdir().unwrap();
     let real = write(
@@ -455,7 +455,7 @@ fn issue_11_finding_6_editor_save_keeps_the_link_and_the_mode() {
 // ------------------------------------------------------------ issue 16: solve/check --json
 
 #[test]
-fn issue_16_solve_and_check_print_json_and_warnings() {
+fn solve_and_check_print_json_and_warnings() {
     let dir = tempfile::tempdir().unwrap();
     let text = success(
         camber()
@@ -534,7 +534,7 @@ fn editor_call(
 }
 
 #[test]
-fn issue_11_finding_2_absurd_drag_targets_are_refused() {
+fn absurd_drag_targets_are_refused() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("out.json");
     let mut ed =
@@ -560,7 +560,7 @@ fn issue_11_finding_2_absurd_drag_targets_are_refused() {
 }
 
 #[test]
-fn issue_11_finding_2_samples_are_sent_in_f64() {
+fn samples_are_sent_in_f64() {
     // Coordinates beyond f32 (3.4e38): samples sent as f32 were infinite, written as null.
     let dir = tempfile::tempdir().unwrap();
     let path = write(
@@ -581,7 +581,7 @@ fn issue_11_finding_2_samples_are_sent_in_f64() {
 }
 
 #[test]
-fn issue_11_finding_9_ids_the_page_cannot_address_are_refused() {
+fn ids_the_page_cannot_address_are_refused() {
     let dir = tempfile::tempdir().unwrap();
     let path = write(
         dir.path(),
@@ -607,7 +607,7 @@ fn issue_11_finding_9_ids_the_page_cannot_address_are_refused() {
 }
 
 #[test]
-fn issue_11_finding_9_a_remote_bind_needs_an_explicit_flag() {
+fn a_remote_bind_needs_an_explicit_flag() {
     let err = failure(
         camber()
             .arg("edit")
@@ -620,7 +620,7 @@ fn issue_11_finding_9_a_remote_bind_needs_an_explicit_flag() {
 // ------------------------------------------------------------ finding 8: messages
 
 #[test]
-fn issue_11_finding_8_numbers_in_messages_have_bounded_digits() {
+fn numbers_in_messages_have_bounded_digits() {
     let dir = tempfile::tempdir().unwrap();
     let path = write(
         dir.path(),
@@ -680,7 +680,7 @@ fn inside([x0, y0, w, h]: [f64; 4], x: f64, y: f64) -> bool {
 }
 
 #[test]
-fn issue_11_finding_5_view_boxes_are_robust() {
+fn view_boxes_are_robust() {
     let dir = tempfile::tempdir().unwrap();
     let cases = [
         r#"{"version": 1, "entities": [{"id": 0, "kind": "point", "at": [5, 5]}]}"#,
@@ -708,7 +708,7 @@ fn issue_11_finding_5_view_boxes_are_robust() {
 }
 
 #[test]
-fn issue_11_finding_5_glyphs_are_in_the_picture_and_thinned() {
+fn glyphs_are_in_the_picture_and_thinned() {
     let dir = tempfile::tempdir().unwrap();
     // A target ring far from its curve (the constraint is not yet solved) is inside the box.
     let (picture, vb) = render(
@@ -765,7 +765,7 @@ fn issue_11_finding_5_glyphs_are_in_the_picture_and_thinned() {
 // ------------------------------------------------------------ finding 11: help and reports
 
 #[test]
-fn issue_11_finding_11_help_and_reports_read_plainly() {
+fn help_and_reports_read_plainly() {
     let help = success(camber().args(["surface", "--help"]));
     assert!(
         help.contains("\"face_edge\"") && help.contains("\"neighbour_edge\""),

@@ -1,4 +1,4 @@
-//! Issue 13: the cases a new user met where the analysis or the solve said something untrue,
+//! The cases a new user met where the analysis or the solve said something untrue,
 //! or a drag refused what could move. Each is checked against the right answer.
 
 #![allow(clippy::unwrap_used)] // fixture helpers unwrap like the tests do
@@ -65,7 +65,7 @@ fn contacts(s: &Sketch, ids: [camber_sketch::ConstraintId; 2]) -> [f64; 2] {
 }
 
 #[test]
-fn issue_13_case_4_solves_from_a_start_the_user_could_not_guess() {
+fn solves_from_a_start_the_user_could_not_guess() {
     let (mut given, c, ids) = case_4(0.5, 0.5);
     let report = given.solve().unwrap();
     assert!(
@@ -104,7 +104,7 @@ fn issue_13_case_4_solves_from_a_start_the_user_could_not_guess() {
 /// Case 6a: with P₀ fixed and the start tangent along D, P₁ can still slide along the ray
 /// P₀ + t·D; dragged off the ray, it goes to the target's projection onto it.
 #[test]
-fn issue_13_case_6_a_partly_determined_point_slides_along_its_freedom() {
+fn a_partly_determined_point_slides_along_its_freedom() {
     use camber_sketch::constraints::StartTangent;
     use camber_sketch::drag::Freedom;
     use camber_sketch::TangentForm;
@@ -155,7 +155,7 @@ fn issue_13_case_6_a_partly_determined_point_slides_along_its_freedom() {
 /// Case 6b: a fully constrained square (0 DOF) is dragged: a calm no-op that says so, not
 /// "conflicting constraints".
 #[test]
-fn issue_13_case_6_dragging_a_determined_point_is_a_calm_no_op() {
+fn dragging_a_determined_point_is_a_calm_no_op() {
     use camber_sketch::constraints::{Coincident, Distance, Horizontal, Vertical};
     use camber_sketch::drag::Freedom;
     let mut s = Sketch::new();
@@ -202,7 +202,7 @@ fn issue_13_case_6_dragging_a_determined_point_is_a_calm_no_op() {
 /// Case 6c: a drag session reports every unknown: circle radii and free contact parameters,
 /// not only points.
 #[test]
-fn issue_13_case_6_a_drag_reports_radii_and_contact_parameters() {
+fn a_drag_reports_radii_and_contact_parameters() {
     let (s, c, ids) = case_4(0.3, 0.8);
     let mut s = s;
     s.solve().unwrap();
@@ -227,7 +227,7 @@ fn issue_13_case_6_a_drag_reports_radii_and_contact_parameters() {
 /// the control points next to the thickness contact down toward the circle never leaves a
 /// crossing curve, and every accepted step is valid.
 #[test]
-fn issue_13_case_6_nonlinear_drags_keep_contacts_honest() {
+fn nonlinear_drags_keep_contacts_honest() {
     let (mut s, w) = camber_workloads::w2_bspline7().unwrap();
     s.solve().unwrap();
     for k in [2, 3, 4] {
@@ -257,7 +257,7 @@ fn issue_13_case_6_nonlinear_drags_keep_contacts_honest() {
 /// and its x row is not: the constraint is conflicting, and only conflicting (deleting it would
 /// change what the sketch asks for).
 #[test]
-fn issue_13_case_2_a_constraint_is_never_both_redundant_and_conflicting() {
+fn a_constraint_is_never_both_redundant_and_conflicting() {
     let mut s = Sketch::new();
     let a = s.add_point(Point2::new(0.0, 0.0)).unwrap();
     let b = s.add_point(Point2::new(1.0, 0.0)).unwrap();
@@ -313,7 +313,7 @@ pub fn point_chain(n: usize) -> Sketch {
 /// Case 5: the analysis of a large component is sparse: a 100,000-point chain is analysed
 /// (it aborted out of memory building a dense 10⁵ × 2·10⁵ matrix), with the right DOF.
 #[test]
-fn issue_13_case_5_a_huge_chain_is_analysed_without_a_dense_matrix() {
+fn a_huge_chain_is_analysed_without_a_dense_matrix() {
     let n = 100_000;
     let s = point_chain(n);
     let analyses = s.analyze().unwrap();
@@ -334,7 +334,7 @@ fn cubic(s: &mut Sketch, points: [(f64, f64); 4]) -> EntityId {
 /// deleting it would change the sketch. A tangency at two curve ends that a coincidence already
 /// joins repeats the coincidence in its position rows, but its direction row is its own.
 #[test]
-fn issue_13_case_3_a_partly_redundant_constraint_is_not_called_redundant() {
+fn a_partly_redundant_constraint_is_not_called_redundant() {
     use camber_sketch::constraints::{Coincident, CurveCurveTangent};
     let mut s = Sketch::new();
     let a = cubic(&mut s, [(0.0, 0.0), (1.0, 1.0), (2.0, 1.0), (3.0, 0.0)]);
@@ -372,7 +372,7 @@ fn issue_13_case_3_a_partly_redundant_constraint_is_not_called_redundant() {
 /// Case 3 with a line: a curve end coincident with a line's end and tangent to the line there.
 /// The tangency's on-the-line row repeats the coincidence; its direction row does not.
 #[test]
-fn issue_13_case_3_tangent_to_a_line_at_a_joined_end_is_needed() {
+fn tangent_to_a_line_at_a_joined_end_is_needed() {
     use camber_sketch::constraints::Coincident;
     let mut s = Sketch::new();
     let c = cubic(&mut s, [(0.0, 0.0), (1.0, 1.0), (2.0, 1.0), (3.0, 0.5)]);
@@ -433,7 +433,7 @@ fn case_1(line_y: f64, radius: f64) -> (Sketch, camber_sketch::ConstraintId) {
 /// (0, 1), where the Jacobian is singular; nearby it is not, so DOF is 0 and nothing is
 /// redundant; the radius is named as dependent only here.
 #[test]
-fn issue_13_case_1_a_tangency_by_design_is_not_redundant() {
+fn a_tangency_by_design_is_not_redundant() {
     let (s, radius) = case_1(1.0, 1.0);
     let a = &s.analyze().unwrap()[0];
     assert_eq!(a.analysis.dof, 0, "{:?}", a.analysis);
@@ -449,7 +449,7 @@ fn issue_13_case_1_a_tangency_by_design_is_not_redundant() {
 
 /// Case 1 with radius 1.1 from the same start: not "conflicting", and the solve succeeds.
 #[test]
-fn issue_13_case_1_a_singular_start_is_not_a_conflict() {
+fn a_singular_start_is_not_a_conflict() {
     let (mut s, radius) = case_1(1.0, 1.1);
     let a = &s.analyze().unwrap()[0];
     assert!(a.analysis.conflicting.is_empty(), "{:?}", a.analysis);
@@ -474,7 +474,7 @@ fn issue_13_case_1_a_singular_start_is_not_a_conflict() {
 /// manifold and stays redundant. P, C and D lie on line L (free ends); line M joins C and D;
 /// "P on M" is then implied.
 #[test]
-fn issue_13_an_implied_constraint_stays_redundant_along_the_manifold() {
+fn an_implied_constraint_stays_redundant_along_the_manifold() {
     use camber_sketch::constraints::{Coincident, PointOnLine};
     let mut s = Sketch::new();
     let l = s
@@ -509,7 +509,7 @@ fn issue_13_an_implied_constraint_stays_redundant_along_the_manifold() {
 /// its own coupled piece, so this takes a fraction of a second in a debug build (testing each
 /// on the whole component took 42 s in release at 3,000 joins).
 #[test]
-fn issue_13_case_3_many_partly_redundant_joins() {
+fn many_partly_redundant_joins() {
     use camber_sketch::constraints::{Coincident, CurveCurveTangent};
     let n = 1000;
     let mut s = Sketch::new();
