@@ -68,6 +68,10 @@ pub struct Sketch {
     constraints: BTreeMap<ConstraintId, (Constraint, NodeIndex)>,
     next_id: u64,
     dirty: BTreeSet<EntityId>,
+    /// The constraints that read no entity (a custom constraint of no arguments or of its own
+    /// parameters only): each is a component of its own, which no dirty mark reaches, so every
+    /// solve looks at them.
+    standalone: BTreeSet<ConstraintId>,
     revision: u64,
     options: Options,
     /// Weights of points in the minimum-norm metric, by (entity, point index); absent = 1.
@@ -119,6 +123,7 @@ impl Sketch {
             constraints: BTreeMap::new(),
             next_id: 0,
             dirty: BTreeSet::new(),
+            standalone: BTreeSet::new(),
             revision: 0,
             options,
             weights: BTreeMap::new(),
@@ -492,6 +497,9 @@ impl Sketch {
         }
         self.next_id = self.next_id.max(id.0.saturating_add(1));
         let node = self.graph.add_node(Node::Constraint(id));
+        if entities.is_empty() {
+            self.standalone.insert(id);
+        }
         for e in entities {
             if let Some((_, en)) = self.entities.get(&e) {
                 self.graph.add_edge(node, *en, ());
@@ -543,6 +551,7 @@ impl Sketch {
             .remove(&id)
             .ok_or(Error::UnknownConstraint { constraint: id })?;
         self.graph.remove_node(node);
+        self.standalone.remove(&id);
         self.priorities.remove(&id);
         self.parameters.bindings.remove(&id);
         for e in c.entities() {
@@ -724,7 +733,8 @@ impl Sketch {
     /// The components holding a dirty entity, as [`Sketch::components`] gives them (entities
     /// and constraints sorted, ordered by smallest entity id), found by walking the graph from
     /// the dirty entities only: a re-solve after one edit costs the size of what it touches,
-    /// not of the sketch.
+    /// not of the sketch. The constraints that read no entity follow, one component each, as
+    /// in [`Sketch::components`]: no mark reaches them, and they are cheap to check again.
     pub(crate) fn dirty_components(&self) -> Vec<Component> {
         let mut seen = vec![false; self.graph.node_bound()];
         let mut out = Vec::new();
@@ -760,6 +770,10 @@ impl Sketch {
             out.push(comp);
         }
         out.sort_unstable_by_key(|c| c.entities.first().copied());
+        out.extend(self.standalone.iter().map(|id| Component {
+            entities: Vec::new(),
+            constraints: vec![*id],
+        }));
         out
     }
 
