@@ -4,13 +4,14 @@
 //! and `2cubic` (three-circle tangency, one solve from each of 100 perturbed starts per δ, valid
 //! counts printed), a drag update on the solved diffuser, and W3 (the G1 chain with free joint
 //! directions and chord lengths, N = 1,000 and 10,000); and the DOF analysis of large
-//! components (the W3 chain, a 100,000-point chain, the fully constrained W5b ladder).
+//! components (the W3 chain, a 100,000-point chain, the fully constrained W5b ladder); and W6,
+//! one rectangle's width edited and re-solved among 1,000 solved rectangles.
 #![allow(missing_docs)] // criterion's macros generate undocumented items
 
 use camber_sketch::{PointRef, Sketch, TangentForm};
 use camber_workloads::{
     blade, w1, w1_targets, w2_2cubic, w2_2cubic_perturbed, w2_2cubic_valid, w2_bspline7,
-    w2_perturbed, w2_valid, w3_chain, w3a_chain, w4, w5b,
+    w2_perturbed, w2_valid, w3_chain, w3a_chain, w4, w5, w5b,
 };
 use criterion::{criterion_group, criterion_main, BatchSize, BenchmarkId, Criterion};
 use nalgebra::{Point2, Vector2};
@@ -219,8 +220,37 @@ fn point_chain(n: usize) -> camber_sketch::Sketch {
     s
 }
 
+fn bench_w6(c: &mut Criterion) {
+    let (mut s, layout) = w5(1000).expect("valid workload");
+    s.solve().expect("solved");
+    let bottom = layout.lines[4 * 500];
+    let (width, value) = s
+        .constraints()
+        .find_map(|(id, c)| match c {
+            camber_sketch::Constraint::Distance(d) if d.a == PointRef::Start(bottom) => {
+                Some((id, d.distance))
+            }
+            _ => None,
+        })
+        .expect("a width");
+    let mut k = 0usize;
+    c.bench_function("w6_width_edit_1000", |b| {
+        b.iter(|| {
+            k += 1;
+            let w = if k.is_multiple_of(2) {
+                value
+            } else {
+                value + 0.05
+            };
+            s.set_value(width, black_box(w)).expect("value");
+            s.solve().expect("re-solved")
+        })
+    });
+}
+
 criterion_group!(
     benches,
+    bench_w6,
     bench_analysis,
     bench_w1,
     bench_blade,

@@ -47,7 +47,9 @@ pub struct ComponentReport {
 pub struct SketchReport {
     /// Components that were solved (components without constraints are skipped).
     pub components: Vec<ComponentReport>,
-    /// Near-degenerate input found in the sketch before the solve ([`Sketch::warnings`]).
+    /// Near-degenerate input found before the solve in the components it solved
+    /// ([`Sketch::warnings`] of their entities and constraints; all of them for
+    /// [`Sketch::solve_all`] or a first solve).
     pub warnings: Vec<crate::sketch::warnings::Warning>,
     /// The residual tolerance the solve used ([`Sketch::solve_options`]): the options'
     /// tolerance, raised for sketches far from the origin to what double rounding can reach at
@@ -172,7 +174,7 @@ impl Sketch {
         // solve, not once per component (which made many components quadratic).
         let options = self.solve_options();
         let mut report = SketchReport {
-            warnings: self.warnings(),
+            warnings: self.warnings_in(&comps),
             tolerance: options.tolerance,
             ..SketchReport::default()
         };

@@ -8,6 +8,7 @@
 //! dirty entity.
 
 mod describe;
+mod extent;
 pub mod fillet;
 pub mod parameters;
 pub(crate) mod prepared;
@@ -72,6 +73,8 @@ pub struct Sketch {
     /// parameters only): each is a component of its own, which no dirty mark reaches, so every
     /// solve looks at them.
     standalone: BTreeSet<ConstraintId>,
+    /// The bounding box and largest magnitude of every entity, kept as entities change.
+    pub(crate) extent: extent::Extent,
     revision: u64,
     options: Options,
     /// Weights of points in the minimum-norm metric, by (entity, point index); absent = 1.
@@ -124,6 +127,7 @@ impl Sketch {
             next_id: 0,
             dirty: BTreeSet::new(),
             standalone: BTreeSet::new(),
+            extent: extent::Extent::default(),
             revision: 0,
             options,
             weights: BTreeMap::new(),
@@ -166,6 +170,7 @@ impl Sketch {
         entity.validate(id)?;
         self.next_id = self.next_id.max(id.0.saturating_add(1));
         let node = self.graph.add_node(Node::Entity(id));
+        self.extent.add(&entity);
         self.entities.insert(id, (entity, node));
         self.dirty.insert(id);
         self.revision += 1;
@@ -286,6 +291,7 @@ impl Sketch {
         pts[index] = to;
         let updated = e.with_points(&pts, &e.scalars())?;
         if let Some(slot) = self.entities.get_mut(&r.entity()) {
+            self.extent.replace(&slot.0, &updated);
             slot.0 = updated;
         }
         self.touch(r.entity());
@@ -420,7 +426,10 @@ impl Sketch {
         }
         entity.validate(id)?;
         let previous = match self.entities.get_mut(&id) {
-            Some(slot) => std::mem::replace(&mut slot.0, entity),
+            Some(slot) => {
+                self.extent.replace(&slot.0, &entity);
+                std::mem::replace(&mut slot.0, entity)
+            }
             None => return Err(Error::UnknownEntity { entity: id }),
         };
         let readers: Vec<ConstraintId> = self
@@ -433,6 +442,7 @@ impl Sketch {
             let outcome = self.constraint(cid).and_then(|c| c.compile(self));
             if let Err(e) = outcome {
                 if let Some(slot) = self.entities.get_mut(&id) {
+                    self.extent.replace(&slot.0, &previous);
                     slot.0 = previous;
                 }
                 return Err(e);
@@ -824,19 +834,7 @@ impl Sketch {
     /// # Ok::<(), camber_sketch::Error>(())
     /// ```
     pub fn solve_options(&self) -> Options {
-        let magnitude = self
-            .entities()
-            .flat_map(|(_, e)| {
-                let radius = match e {
-                    Entity::Circle { radius, .. } => radius.abs(),
-                    _ => 0.0,
-                };
-                e.points()
-                    .iter()
-                    .map(move |p| p.x.abs().max(p.y.abs()).max(radius))
-            })
-            .filter(|m| m.is_finite())
-            .fold(0.0, f64::max);
+        let magnitude = self.extent.magnitude();
         let floor = ROUNDING_HEADROOM * f64::EPSILON * magnitude;
         let mut options = self.options.clone();
         if floor > options.tolerance {
@@ -925,6 +923,7 @@ impl Sketch {
     pub(crate) fn commit(&mut self, updates: Vec<(EntityId, Entity)>, clean: &[EntityId]) {
         for (id, e) in updates {
             if let Some(slot) = self.entities.get_mut(&id) {
+                self.extent.replace(&slot.0, &e);
                 slot.0 = e;
             }
         }

@@ -105,17 +105,7 @@ impl Sketch {
     /// The sketch's scale S: the diagonal of the bounding box of every entity point (circles
     /// with their radius), at least 1.
     pub fn scale(&self) -> f64 {
-        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-        for (_, e) in self.entities() {
-            let r = match e {
-                Entity::Circle { radius, .. } => *radius,
-                _ => 0.0,
-            };
-            for p in e.hull_points().iter() {
-                lo = [lo[0].min(p.x - r), lo[1].min(p.y - r)];
-                hi = [hi[0].max(p.x + r), hi[1].max(p.y + r)];
-            }
-        }
+        let (lo, hi) = self.extent.bounds();
         let d = (hi[0] - lo[0]).hypot(hi[1] - lo[1]);
         if d.is_finite() {
             d.max(1.0)
@@ -137,17 +127,7 @@ impl Sketch {
     /// # Ok::<(), camber_sketch::Error>(())
     /// ```
     pub fn centre(&self) -> nalgebra::Point2<f64> {
-        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-        for (_, e) in self.entities() {
-            let r = match e {
-                Entity::Circle { radius, .. } => *radius,
-                _ => 0.0,
-            };
-            for p in e.hull_points().iter() {
-                lo = [lo[0].min(p.x - r), lo[1].min(p.y - r)];
-                hi = [hi[0].max(p.x + r), hi[1].max(p.y + r)];
-            }
-        }
+        let (lo, hi) = self.extent.bounds();
         let c = nalgebra::Point2::new(0.5 * lo[0] + 0.5 * hi[0], 0.5 * lo[1] + 0.5 * hi[1]);
         if c.x.is_finite() && c.y.is_finite() {
             c
@@ -173,71 +153,110 @@ impl Sketch {
         let near = SHORT * self.scale();
         let mut out = Vec::new();
         for (id, e) in self.entities() {
-            match e {
-                Entity::Line([a, b]) => {
-                    let length = (b - a).norm();
-                    if length < near {
-                        out.push(Warning::ShortLine { entity: id, length });
-                    }
-                }
-                Entity::Circle { radius, .. } => {
-                    if *radius < near {
-                        out.push(Warning::TinyRadius {
-                            entity: id,
-                            radius: *radius,
-                        });
-                    }
-                }
-                Entity::Point(_) => {}
-                _ => {
-                    // Hermite and composite curves: neighbouring nodes (their other blocks are
-                    // tangent vectors, not positions).
-                    let positions = match e {
-                        Entity::Hermite(c) | Entity::Composite(c) => c.nodes(),
-                        _ => e.points(),
-                    };
-                    for (index, w) in positions.windows(2).enumerate() {
-                        let distance = (w[1] - w[0]).norm();
-                        if distance < near {
-                            out.push(Warning::CoincidentControlPoints {
-                                entity: id,
-                                index,
-                                distance,
-                            });
-                        }
-                    }
-                }
-            }
+            entity_warnings(id, e, near, &mut out);
         }
         for (id, c) in self.constraints() {
-            match c {
-                Constraint::Angle(a) => {
-                    let folded = a.angle.rem_euclid(PI);
-                    if folded.min(PI - folded) < ANGLE {
-                        out.push(Warning::ParallelAngle {
-                            constraint: id,
-                            angle: a.angle,
-                        });
-                    }
-                }
-                Constraint::Distance(d) if d.distance < near => out.push(Warning::TinyDistance {
-                    constraint: id,
-                    value: d.distance,
-                }),
-                Constraint::ArcLength(l) if l.length < near => out.push(Warning::TinyDistance {
-                    constraint: id,
-                    value: l.length,
-                }),
-                Constraint::PointLineDistance(d) if d.distance < near => {
-                    out.push(Warning::TinyDistance {
-                        constraint: id,
-                        value: d.distance,
-                    })
-                }
-                _ => {}
+            constraint_warnings(id, c, near, &mut out);
+        }
+        out
+    }
+
+    /// [`Sketch::warnings`] about the entities and constraints of `components` only (the
+    /// threshold still from the whole sketch's scale), entities first, then constraints, each
+    /// in id order: what a solve of those components reports, at the cost of their size.
+    pub(crate) fn warnings_in(&self, components: &[crate::Component]) -> Vec<Warning> {
+        let near = SHORT * self.scale();
+        let mut entities: Vec<EntityId> = components
+            .iter()
+            .flat_map(|c| c.entities.iter().copied())
+            .collect();
+        entities.sort_unstable();
+        let mut constraints: Vec<ConstraintId> = components
+            .iter()
+            .flat_map(|c| c.constraints.iter().copied())
+            .collect();
+        constraints.sort_unstable();
+        let mut out = Vec::new();
+        for id in entities {
+            if let Ok(e) = self.entity(id) {
+                entity_warnings(id, e, near, &mut out);
+            }
+        }
+        for id in constraints {
+            if let Ok(c) = self.constraint(id) {
+                constraint_warnings(id, c, near, &mut out);
             }
         }
         out
+    }
+}
+
+/// The warnings about entity `id` (a line, circle radius or neighbouring control points shorter
+/// than `near`), appended to `out`.
+fn entity_warnings(id: EntityId, e: &Entity, near: f64, out: &mut Vec<Warning>) {
+    match e {
+        Entity::Line([a, b]) => {
+            let length = (b - a).norm();
+            if length < near {
+                out.push(Warning::ShortLine { entity: id, length });
+            }
+        }
+        Entity::Circle { radius, .. } => {
+            if *radius < near {
+                out.push(Warning::TinyRadius {
+                    entity: id,
+                    radius: *radius,
+                });
+            }
+        }
+        Entity::Point(_) => {}
+        _ => {
+            // Hermite and composite curves: neighbouring nodes (their other blocks are
+            // tangent vectors, not positions).
+            let positions = match e {
+                Entity::Hermite(c) | Entity::Composite(c) => c.nodes(),
+                _ => e.points(),
+            };
+            for (index, w) in positions.windows(2).enumerate() {
+                let distance = (w[1] - w[0]).norm();
+                if distance < near {
+                    out.push(Warning::CoincidentControlPoints {
+                        entity: id,
+                        index,
+                        distance,
+                    });
+                }
+            }
+        }
+    }
+}
+
+/// The warnings about constraint `id` (an angle near 0 or π, a length below `near`), appended
+/// to `out`.
+fn constraint_warnings(id: ConstraintId, c: &Constraint, near: f64, out: &mut Vec<Warning>) {
+    match c {
+        Constraint::Angle(a) => {
+            let folded = a.angle.rem_euclid(PI);
+            if folded.min(PI - folded) < ANGLE {
+                out.push(Warning::ParallelAngle {
+                    constraint: id,
+                    angle: a.angle,
+                });
+            }
+        }
+        Constraint::Distance(d) if d.distance < near => out.push(Warning::TinyDistance {
+            constraint: id,
+            value: d.distance,
+        }),
+        Constraint::ArcLength(l) if l.length < near => out.push(Warning::TinyDistance {
+            constraint: id,
+            value: l.length,
+        }),
+        Constraint::PointLineDistance(d) if d.distance < near => out.push(Warning::TinyDistance {
+            constraint: id,
+            value: d.distance,
+        }),
+        _ => {}
     }
 }
 
