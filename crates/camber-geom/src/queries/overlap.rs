@@ -27,10 +27,10 @@
 
 use nalgebra::Point;
 
+use super::box_tree::point_box_distance;
 use super::curve_curve::{
     foot, intersect_excluding, CurveCurveOptions, CurvePairPoint, OnTangent, Prepared,
 };
-use super::box_tree::point_box_distance;
 use super::pieces::RationalPiece;
 use crate::budget::Meter;
 use crate::curve::ParametricCurve;
