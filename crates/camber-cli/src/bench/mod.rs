@@ -65,6 +65,14 @@ pub enum Workload {
     /// W5b: one ladder of cells (the rectangles' constraints in one component).
     #[value(alias = "w5b", alias = "W5B")]
     W5b,
+    /// W6: W5 with 1,000 rectangles solved, then one rectangle's width edited and the sketch
+    /// re-solved (the edit and the re-solve timed).
+    #[value(alias = "w6")]
+    W6,
+    /// W7: a drag of an interior control point of the W3 chain, N = 1,000 and 10,000 (each
+    /// update timed).
+    #[value(alias = "w7")]
+    W7,
     /// A: the DOF analysis (what `camber check` runs) of the W3 chain of N segments, of a
     /// chain of 10·N points held by distances and of the fully constrained W5b ladder of N
     /// cells.
@@ -78,7 +86,7 @@ pub enum Workload {
 
 impl Workload {
     /// Every workload, in table order.
-    pub const ALL: [Workload; 9] = [
+    pub const ALL: [Workload; 11] = [
         Workload::W1,
         Workload::W2,
         Workload::W3,
@@ -86,11 +94,13 @@ impl Workload {
         Workload::W4,
         Workload::W5,
         Workload::W5b,
+        Workload::W6,
+        Workload::W7,
         Workload::A,
         Workload::T,
     ];
 
-    /// "W1", "W2", "W3", "W3a", "W4", "W5", "W5b", "A", "T".
+    /// "W1", "W2", "W3", "W3a", "W4", "W5", "W5b", "W6", "W7", "A", "T".
     pub fn name(self) -> &'static str {
         match self {
             Workload::W1 => "W1",
@@ -100,6 +110,8 @@ impl Workload {
             Workload::W4 => "W4",
             Workload::W5 => "W5",
             Workload::W5b => "W5b",
+            Workload::W6 => "W6",
+            Workload::W7 => "W7",
             Workload::A => "A",
             Workload::T => "T",
         }
@@ -130,6 +142,12 @@ pub struct Plan {
     pub w4_components: usize,
     /// W4: solves of the whole sketch.
     pub w4_repeats: usize,
+    /// W6: rectangles in the sketch.
+    pub w6_rectangles: usize,
+    /// W6: width edits, each re-solved.
+    pub w6_edits: usize,
+    /// W7: chain lengths N dragged.
+    pub w7_sizes: Vec<usize>,
     /// T: control points N of the toolkit's curves.
     pub toolkit_sizes: Vec<usize>,
 }
@@ -147,6 +165,9 @@ impl Plan {
             chain_sizes: vec![10, 100, 1_000, 10_000],
             w4_components: 10_000,
             w4_repeats: 5,
+            w6_rectangles: 1_000,
+            w6_edits: 200,
+            w7_sizes: vec![1_000, 10_000],
             toolkit_sizes: vec![1_000, 10_000, 100_000],
         }
     }
@@ -162,6 +183,9 @@ impl Plan {
             chain_sizes: vec![10, 100],
             w4_components: 100,
             w4_repeats: 2,
+            w6_rectangles: 100,
+            w6_edits: 20,
+            w7_sizes: vec![100],
             toolkit_sizes: vec![100, 1_000],
         }
     }
@@ -212,6 +236,8 @@ impl Plan {
                     .map(|&s| self.chain_repeats(s))
                     .sum(),
                 Workload::W4 => self.w4_repeats,
+                Workload::W6 => self.w6_edits,
+                Workload::W7 => self.w7_sizes.len() * 200,
                 Workload::A => {
                     3 * self
                         .chain_sizes
@@ -361,6 +387,8 @@ pub fn run(plan: &Plan, bar: &ProgressBar) -> Result<Vec<Row>> {
             Workload::W4 => rows.push(runners::w4(plan, bar)?),
             Workload::W5 => rows.extend(runners::rectangles(plan, false, bar)?),
             Workload::W5b => rows.extend(runners::rectangles(plan, true, bar)?),
+            Workload::W6 => rows.push(runners::w6(plan, bar)?),
+            Workload::W7 => rows.extend(runners::w7(plan, bar)?),
             Workload::A => rows.extend(runners::analysis(plan, bar)?),
             Workload::T => rows.extend(toolkit::toolkit(plan, bar)?),
         }

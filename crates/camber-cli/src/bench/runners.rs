@@ -303,6 +303,94 @@ pub(super) fn rectangles(plan: &Plan, ladder: bool, bar: &ProgressBar) -> Result
     Ok(rows)
 }
 
+/// W6: `plan.w6_rectangles` W5 rectangles solved once (untimed); then for k = 0, 1, 2, …
+/// (cycling through the rectangles) rectangle k's width |bottom| = w(k) is set to w(k) + 0.05
+/// and the sketch re-solved, the edit and the re-solve timed together. Valid: every constraint
+/// of the whole sketch within 1e-6 (the edited width at its new value) and every entity of the
+/// other rectangles bit for bit unchanged.
+pub(super) fn w6(plan: &Plan, bar: &ProgressBar) -> Result<Row> {
+    let n = plan.w6_rectangles;
+    bar.set_message(format!("W6 {n} rectangles"));
+    let (mut s, mut layout) = wl::w5(n)?;
+    s.solve()?;
+    let (mut times, mut valid, mut failed) = (Vec::new(), 0, 0);
+    let mut solvers = BTreeMap::new();
+    for edit in 0..plan.w6_edits {
+        let k = edit % n;
+        let bottom = layout.lines[4 * k];
+        let width = s
+            .constraints()
+            .find_map(|(id, c)| match c {
+                camber_sketch::Constraint::Distance(d) if d.a == PointRef::Start(bottom) => {
+                    Some((id, d.distance))
+                }
+                _ => None,
+            })
+            .ok_or_else(|| anyhow!("W6: rectangle {k} has no width constraint"))?;
+        let value = width.1 + 0.05;
+        let before: Vec<(camber_sketch::EntityId, camber_sketch::Entity)> = s
+            .entities()
+            .filter(|(id, _)| !layout.lines[4 * k..4 * k + 4].contains(id))
+            .map(|(id, e)| (id, e.clone()))
+            .collect();
+        let t0 = Instant::now();
+        let outcome = s.set_value(width.0, value).and_then(|()| s.solve());
+        times.push(t0.elapsed());
+        bar.inc(1);
+        match outcome {
+            Ok(report) => count_solvers(&mut solvers, &report),
+            Err(_) => failed += 1,
+        }
+        for slot in layout.lengths.iter_mut().filter(|(l, _)| *l == bottom) {
+            slot.1 = value;
+        }
+        let others_kept = before
+            .iter()
+            .all(|(id, e)| s.entity(*id).is_ok_and(|now| now == e));
+        valid += usize::from(others_kept && wl::w5_valid(&s, &layout, TOL));
+    }
+    let mut r = row(Workload::W6, format!("N={n} width edit"), &times, valid);
+    r.size = Some(n);
+    r.failed = failed;
+    r.solvers = solvers;
+    Ok(r)
+}
+
+/// W7: for each chain length N of `plan.w7_sizes`, the W3 chain solved once (untimed), then a
+/// drag session on control point 1 of segment ⌊N/2⌋ along 200 targets on a circle of radius
+/// 0.05 about its start (angle 2πk/200), each update timed. Valid: after the update every
+/// constraint within 1e-6 and the point at its target.
+pub(super) fn w7(plan: &Plan, bar: &ProgressBar) -> Result<Vec<Row>> {
+    let mut rows = Vec::new();
+    for &n in &plan.w7_sizes {
+        bar.set_message(format!("W7 N={n}"));
+        let (mut s, segs) = wl::w3_chain(n)?;
+        s.solve()?;
+        let dragged = PointRef::Control(segs[n / 2], 1);
+        let start = s.point(dragged)?;
+        let mut session = s.drag(dragged)?;
+        let (mut times, mut valid, mut failed) = (Vec::new(), 0, 0);
+        for k in 0..200_u32 {
+            let th = std::f64::consts::TAU * f64::from(k) / 200.0;
+            let target = start + 0.05 * nalgebra::Vector2::new(th.cos(), th.sin());
+            let t0 = Instant::now();
+            let outcome = session.update(target).map(|_| ());
+            times.push(t0.elapsed());
+            bar.inc(1);
+            failed += usize::from(outcome.is_err());
+            let held = session.residuals()?.iter().all(|(_, r)| *r <= TOL);
+            let at = (session.point(dragged)? - target).norm() <= TOL;
+            valid += usize::from(outcome.is_ok() && held && at);
+        }
+        let mut r = row(Workload::W7, format!("N={n} drag update"), &times, valid);
+        r.size = Some(n);
+        r.failed = failed;
+        r.timer_s = Some(timer_overhead());
+        rows.push(r);
+    }
+    Ok(rows)
+}
+
 /// Whether the analysis of the W3 chain of `n` segments is right. Its 8n unknowns lose 4 to the
 /// pinned ends and 2(n − 1) to the merged joints, leaving 6n − 2; the rows are the n − 1 joint
 /// directions and the n chords, all independent: DOF 4n − 1 in one component, nothing

@@ -396,6 +396,58 @@ impl ComponentProblem {
     }
 }
 
+impl ComponentProblem {
+    /// Replaces the residual objects of constraint `id` by those of its new pieces `pieces` (a
+    /// dimension's new value), in place: the same rows over the same blocks, so the problem's
+    /// structure and the plan's kept state stay. `Ok(false)` when the pieces do not map one to
+    /// one onto the constraint's residual blocks, or carry a check or a binding of their own
+    /// (the component is then compiled again); the problem may be part-edited then and must be
+    /// dropped.
+    ///
+    /// # Errors
+    /// Those of [`camber_solve::Problem::replace_residual`] (a residual of other rows or blocks).
+    pub(crate) fn replace_pieces(&mut self, id: ConstraintId, pieces: &[Piece]) -> Result<bool> {
+        let owned = self.problem.residuals_of(id);
+        let mut new: Vec<Arc<dyn camber_solve::DynResidual>> = Vec::with_capacity(owned.len());
+        for piece in pieces {
+            match piece {
+                Piece::General {
+                    residual,
+                    check: None,
+                    slots,
+                } if !slots.iter().any(|s| matches!(s, Slot::Free { .. })) => {
+                    new.push(residual.clone());
+                }
+                Piece::Combination {
+                    name,
+                    terms,
+                    target,
+                } => {
+                    let (_, coeffs) = self.blocks_of(terms)?;
+                    new.push(Arc::new(PointCombination::new(name, coeffs, *target)));
+                }
+                Piece::Cross {
+                    name,
+                    terms,
+                    direction,
+                    orient: None,
+                } => {
+                    let (_, coeffs) = self.blocks_of(terms)?;
+                    new.push(Arc::new(DirectionCross::new(name, coeffs, *direction)));
+                }
+                _ => return Ok(false),
+            }
+        }
+        if new.len() != owned.len() {
+            return Ok(false);
+        }
+        for (r, residual) in owned.into_iter().zip(new) {
+            self.problem.replace_residual(r, residual)?;
+        }
+        Ok(true)
+    }
+}
+
 /// Whether a piece reads another constraint's free parameter (it is added last).
 fn reads_other_free(piece: &Piece) -> bool {
     matches!(piece, Piece::General { slots, .. } if slots.iter().any(|s| matches!(s, Slot::FreeOf(..))))

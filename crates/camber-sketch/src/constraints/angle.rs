@@ -49,6 +49,15 @@ impl ConstraintKind for Angle {
     const TAG: &'static str = "angle";
     const LABEL: &'static str = "angle";
 
+    fn value(&self) -> Option<f64> {
+        Some(self.angle)
+    }
+
+    fn set_value(&mut self, value: f64) -> bool {
+        self.angle = value;
+        true
+    }
+
     fn entities(&self, out: &mut Entities) {
         out.add(self.first);
         out.add(self.second);

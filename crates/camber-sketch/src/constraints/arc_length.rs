@@ -206,6 +206,15 @@ impl ConstraintKind for ArcLength {
     const TAG: &'static str = "arc_length";
     const LABEL: &'static str = "arc length";
 
+    fn value(&self) -> Option<f64> {
+        Some(self.length)
+    }
+
+    fn set_value(&mut self, value: f64) -> bool {
+        self.length = value;
+        true
+    }
+
     fn entities(&self, out: &mut Entities) {
         out.add(self.curve);
     }

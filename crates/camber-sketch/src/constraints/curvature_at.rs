@@ -68,6 +68,15 @@ impl ConstraintKind for CurvatureAt {
     const TAG: &'static str = "curvature_at";
     const LABEL: &'static str = "curvature at";
 
+    fn value(&self) -> Option<f64> {
+        Some(self.curvature)
+    }
+
+    fn set_value(&mut self, value: f64) -> bool {
+        self.curvature = value;
+        true
+    }
+
     fn entities(&self, out: &mut Entities) {
         out.add(self.curve);
     }

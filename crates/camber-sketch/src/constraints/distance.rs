@@ -113,6 +113,15 @@ impl ConstraintKind for Distance {
     const TAG: &'static str = "distance";
     const LABEL: &'static str = "distance";
 
+    fn value(&self) -> Option<f64> {
+        Some(self.distance)
+    }
+
+    fn set_value(&mut self, value: f64) -> bool {
+        self.distance = value;
+        true
+    }
+
     fn entities(&self, out: &mut Entities) {
         out.add_point(self.a);
         out.add_point(self.b);

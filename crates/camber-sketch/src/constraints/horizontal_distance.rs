@@ -28,6 +28,15 @@ impl ConstraintKind for HorizontalDistance {
     const TAG: &'static str = "horizontal_distance";
     const LABEL: &'static str = "horizontal distance";
 
+    fn value(&self) -> Option<f64> {
+        Some(self.distance)
+    }
+
+    fn set_value(&mut self, value: f64) -> bool {
+        self.distance = value;
+        true
+    }
+
     fn entities(&self, out: &mut Entities) {
         for e in self.of.entities() {
             out.add(e);

@@ -85,6 +85,19 @@ pub trait ConstraintKind:
     fn reads_constraints(&self) -> SmallVec<[ConstraintId; 2]> {
         SmallVec::new()
     }
+
+    /// Its value, when it is a dimension (a distance, a radius, an angle, an arc length, …):
+    /// the number [`crate::Sketch::set_value`] changes. `None` for a kind without one.
+    fn value(&self) -> Option<f64> {
+        None
+    }
+
+    /// Sets its value (see [`ConstraintKind::value`]); `false`, changing nothing, for a kind
+    /// without one. The new value is validated when the sketch compiles the constraint.
+    fn set_value(&mut self, value: f64) -> bool {
+        let _ = value;
+        false
+    }
 }
 
 /// The entities a constraint reads, each once.
@@ -221,6 +234,21 @@ macro_rules! kinds {
             pub(crate) fn set_free_parameter(&mut self, k: usize, value: f64) {
                 match self {
                     $(Constraint::$variant(c) => c.set_free_parameter(k, value),)*
+                }
+            }
+
+            /// Its value, when it is a dimension (a distance, a radius, an angle, an arc
+            /// length, …).
+            pub fn value(&self) -> Option<f64> {
+                match self {
+                    $(Constraint::$variant(c) => c.value(),)*
+                }
+            }
+
+            /// Sets a dimension's value; `false`, changing nothing, for a kind without one.
+            pub(crate) fn set_value(&mut self, value: f64) -> bool {
+                match self {
+                    $(Constraint::$variant(c) => c.set_value(value),)*
                 }
             }
 

@@ -32,6 +32,15 @@ impl ConstraintKind for PointLineDistance {
     const TAG: &'static str = "point_line_distance";
     const LABEL: &'static str = "point-line distance";
 
+    fn value(&self) -> Option<f64> {
+        Some(self.distance)
+    }
+
+    fn set_value(&mut self, value: f64) -> bool {
+        self.distance = value;
+        true
+    }
+
     fn entities(&self, out: &mut Entities) {
         out.add_point(self.point);
         out.add(self.line);

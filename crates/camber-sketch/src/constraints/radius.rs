@@ -57,6 +57,15 @@ impl ConstraintKind for Radius {
     const TAG: &'static str = "radius";
     const LABEL: &'static str = "radius";
 
+    fn value(&self) -> Option<f64> {
+        Some(self.radius)
+    }
+
+    fn set_value(&mut self, value: f64) -> bool {
+        self.radius = value;
+        true
+    }
+
     fn entities(&self, out: &mut Entities) {
         out.add(self.circle);
     }

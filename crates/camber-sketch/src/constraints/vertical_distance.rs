@@ -26,6 +26,15 @@ impl ConstraintKind for VerticalDistance {
     const TAG: &'static str = "vertical_distance";
     const LABEL: &'static str = "vertical distance";
 
+    fn value(&self) -> Option<f64> {
+        Some(self.distance)
+    }
+
+    fn set_value(&mut self, value: f64) -> bool {
+        self.distance = value;
+        true
+    }
+
     fn entities(&self, out: &mut Entities) {
         for e in self.of.entities() {
             out.add(e);

@@ -404,6 +404,28 @@ pub enum Error {
     /// message names the column (and the row).
     #[error(transparent)]
     Expression(#[from] camber_expr::Error),
+    /// A value set on a constraint whose kind has none ([`crate::Sketch::set_value`]).
+    #[error("{constraint} ({kind}) has no value to set")]
+    NoValue {
+        /// The constraint.
+        constraint: ConstraintId,
+        /// Its kind.
+        kind: &'static str,
+    },
+    /// A value set on a dimension that follows an expression of the sketch's parameters
+    /// ([`crate::Sketch::set_value`] on a dimension bound by
+    /// [`crate::Sketch::bind_dimension`]): the next change of a parameter would overwrite it.
+    #[error(
+        "{constraint}'s value follows the expression `{expression}` at `{path}`: change its parameters, or bind it to a new expression"
+    )]
+    ValueBound {
+        /// The constraint.
+        constraint: ConstraintId,
+        /// The path of the bound number in the constraint's file form.
+        path: String,
+        /// The expression it follows.
+        expression: String,
+    },
     /// A constraint reads a free parameter another constraint does not have.
     #[error("{constraint} reads free parameter {index} of {of}, which it does not have")]
     UnknownFreeParameter {

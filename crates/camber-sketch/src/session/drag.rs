@@ -630,6 +630,9 @@ impl DragSession {
         let updates = self.cp.entities_at(sketch, x)?;
         let free = self.cp.free_at(x)?;
         let ids: Vec<EntityId> = updates.iter().map(|(id, _)| *id).collect();
+        for id in &ids {
+            sketch.prepared.forget_entity(*id);
+        }
         sketch.commit(updates, &ids);
         // Free parameters moved with the drag: the constraints keep the solved ones.
         sketch.store_free(&free);

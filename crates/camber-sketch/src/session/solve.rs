@@ -78,11 +78,7 @@ impl Sketch {
     /// [`crate::Error::ContactCrossed`], [`crate::Error::Cusp`], …); the sketch is unchanged
     /// then.
     pub fn solve(&mut self) -> Result<SketchReport> {
-        let comps: Vec<Component> = self
-            .components()
-            .into_iter()
-            .filter(|c| self.is_dirty(c))
-            .collect();
+        let comps = self.dirty_components();
         self.solve_components(comps)
     }
 
@@ -188,33 +184,53 @@ impl Sketch {
             .into_iter()
             .filter(|c| !c.constraints.is_empty())
             .collect();
+        // Each component with the problem an earlier solve prepared for it, if any.
+        let jobs: Vec<Job> = comps
+            .into_iter()
+            .map(|comp| {
+                let prepared = self.prepared.take(&comp);
+                (comp, prepared)
+            })
+            .collect();
         let outcomes = if parallel {
-            self.solve_each_in_parallel(comps, &options)?
+            self.solve_each_in_parallel(jobs, &options)?
         } else {
-            comps
-                .into_iter()
-                .map(|comp| self.solve_component(comp, &options))
+            jobs.into_iter()
+                .map(|job| self.solve_component(job, &options))
                 .collect::<Result<Vec<_>>>()?
         };
         let mut updates = Vec::new();
         let mut free = Vec::new();
+        let mut kept = Vec::with_capacity(outcomes.len());
         for outcome in outcomes {
             updates.extend(outcome.updates);
             free.extend(outcome.free);
             report.components.push(outcome.report);
+            kept.push(outcome.problem);
         }
         self.commit(updates, &clean);
         self.store_free(&free);
+        // The solved problems hold exactly the values just written back: kept for the next
+        // solve after a dimension edit.
+        for cp in kept {
+            self.prepared.keep(cp);
+        }
         Ok(report)
     }
 
-    /// Builds and solves one component on its own problem; nothing is written to the sketch.
+    /// Solves one component on its prepared problem (its edited constraints' residuals replaced
+    /// in place) or on one built now; nothing is written to the sketch.
     fn solve_component(
         &self,
-        comp: Component,
+        (comp, prepared): Job,
         options: &camber_solve::Options,
     ) -> Result<ComponentOutcome> {
-        let mut cp = self.build_component(&comp)?;
+        let kept = prepared
+            .and_then(|(mut cp, edited)| self.replace_edited(&mut cp, &edited).then_some(cp));
+        let mut cp = match kept {
+            Some(cp) => cp,
+            None => self.build_component(&comp)?,
+        };
         let r = self.solve_with_starts(&mut cp, options)?;
         let updates = cp.entities_at(self, cp.problem().values())?;
         let free = cp.free_at(cp.problem().values())?;
@@ -225,6 +241,22 @@ impl Sketch {
             },
             updates,
             free,
+            problem: cp,
+        })
+    }
+
+    /// Replaces the residuals of the constraints `edited` (new values) in a prepared problem;
+    /// `false` when one cannot be replaced in place (the component is then built again).
+    fn replace_edited(
+        &self,
+        cp: &mut crate::component::ComponentProblem,
+        edited: &[crate::ground::ids::ConstraintId],
+    ) -> bool {
+        edited.iter().all(|id| {
+            self.constraint(*id)
+                .and_then(|c| c.compile(self))
+                .and_then(|pieces| cp.replace_pieces(*id, &pieces))
+                .unwrap_or(false)
         })
     }
 
@@ -234,7 +266,7 @@ impl Sketch {
     /// not be used), one before it always runs.
     fn solve_each_in_parallel(
         &self,
-        comps: Vec<Component>,
+        comps: Vec<Job>,
         options: &camber_solve::Options,
     ) -> Result<Vec<ComponentOutcome>> {
         use rayon::prelude::*;
@@ -260,10 +292,21 @@ impl Sketch {
     }
 }
 
+/// A component to solve, with the problem an earlier solve prepared for it and the constraints
+/// of it whose value changed since.
+type Job = (
+    Component,
+    Option<(
+        crate::component::ComponentProblem,
+        Vec<crate::ground::ids::ConstraintId>,
+    )>,
+);
+
 /// One solved component, not yet written: its report, the entities it moved with their new
-/// values, and the free parameters (constraint, index, value) to store.
+/// values, the free parameters (constraint, index, value) to store, and its problem (kept).
 #[derive(Debug)]
 struct ComponentOutcome {
+    problem: crate::component::ComponentProblem,
     report: ComponentReport,
     updates: Vec<(crate::ground::ids::EntityId, crate::ground::entity::Entity)>,
     free: Vec<(camber_solve::ConstraintId, usize, f64)>,

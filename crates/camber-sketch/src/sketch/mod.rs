@@ -10,6 +10,7 @@
 mod describe;
 pub mod fillet;
 pub mod parameters;
+pub(crate) mod prepared;
 pub mod warnings;
 
 use std::collections::{BTreeMap, BTreeSet};
@@ -67,12 +68,19 @@ pub struct Sketch {
     constraints: BTreeMap<ConstraintId, (Constraint, NodeIndex)>,
     next_id: u64,
     dirty: BTreeSet<EntityId>,
+    /// The constraints that read no entity (a custom constraint of no arguments or of its own
+    /// parameters only): each is a component of its own, which no dirty mark reaches, so every
+    /// solve looks at them.
+    standalone: BTreeSet<ConstraintId>,
     revision: u64,
     options: Options,
     /// Weights of points in the minimum-norm metric, by (entity, point index); absent = 1.
     weights: BTreeMap<(EntityId, usize), f64>,
     /// Priority tiers of constraints that may be relaxed; absent = 0 (required).
     priorities: BTreeMap<ConstraintId, Priority>,
+    /// The components compiled and solved by earlier solves, kept with their plans
+    /// ([`prepared`]).
+    pub(crate) prepared: prepared::Prepared,
     /// Named parameters and the dimensions bound to expressions of them.
     pub(crate) parameters: parameters::Parameters,
 }
@@ -115,10 +123,12 @@ impl Sketch {
             constraints: BTreeMap::new(),
             next_id: 0,
             dirty: BTreeSet::new(),
+            standalone: BTreeSet::new(),
             revision: 0,
             options,
             weights: BTreeMap::new(),
             priorities: BTreeMap::new(),
+            prepared: prepared::Prepared::default(),
             parameters: parameters::Parameters::default(),
         }
     }
@@ -278,7 +288,7 @@ impl Sketch {
         if let Some(slot) = self.entities.get_mut(&r.entity()) {
             slot.0 = updated;
         }
-        self.dirty.insert(r.entity());
+        self.touch(r.entity());
         self.revision += 1;
         Ok(())
     }
@@ -335,7 +345,7 @@ impl Sketch {
             });
         }
         self.weights.insert((r.entity(), index), weight);
-        self.dirty.insert(r.entity());
+        self.touch(r.entity());
         self.revision += 1;
         Ok(())
     }
@@ -365,6 +375,7 @@ impl Sketch {
             .remove(&id)
             .ok_or(Error::UnknownEntity { entity: id })?;
         self.graph.remove_node(node);
+        self.prepared.forget_entity(id);
         self.dirty.remove(&id);
         self.weights.retain(|(entity, _), _| *entity != id);
         self.revision += 1;
@@ -428,7 +439,7 @@ impl Sketch {
             }
         }
         self.weights.retain(|(entity, _), _| *entity != id);
-        self.dirty.insert(id);
+        self.touch(id);
         self.revision += 1;
         Ok(())
     }
@@ -486,11 +497,14 @@ impl Sketch {
         }
         self.next_id = self.next_id.max(id.0.saturating_add(1));
         let node = self.graph.add_node(Node::Constraint(id));
+        if entities.is_empty() {
+            self.standalone.insert(id);
+        }
         for e in entities {
             if let Some((_, en)) = self.entities.get(&e) {
                 self.graph.add_edge(node, *en, ());
             }
-            self.dirty.insert(e);
+            self.touch(e);
         }
         self.constraints.insert(id, (constraint, node));
         self.revision += 1;
@@ -537,11 +551,84 @@ impl Sketch {
             .remove(&id)
             .ok_or(Error::UnknownConstraint { constraint: id })?;
         self.graph.remove_node(node);
+        self.standalone.remove(&id);
         self.priorities.remove(&id);
         self.parameters.bindings.remove(&id);
-        self.dirty.extend(c.entities());
+        for e in c.entities() {
+            self.touch(e);
+        }
         self.revision += 1;
         Ok(c)
+    }
+}
+
+/// # Dimensions
+impl Sketch {
+    /// Sets the value of a dimension (the distance of a [`crate::constraints::Distance`], the
+    /// radius of a [`crate::constraints::Radius`], an angle, an arc length, …) and marks its
+    /// component for the next solve. The component a solve prepared is kept: the next
+    /// [`Sketch::solve`] replaces the constraint's residuals in place and re-solves that
+    /// component alone on its kept plan (docs/sketch.md, "Dimension edits").
+    ///
+    /// ```
+    /// use camber_sketch::constraints::{Distance, Fixed};
+    /// use camber_sketch::{PointRef, Sketch};
+    /// use nalgebra::Point2;
+    /// let mut s = Sketch::new();
+    /// let a = s.add_point(Point2::new(0.0, 0.0))?;
+    /// let b = s.add_point(Point2::new(1.0, 0.0))?;
+    /// s.add_constraint(Fixed::point(PointRef::Point(a)))?;
+    /// let d = s.add_constraint(Distance { a: PointRef::Point(a), b: PointRef::Point(b), distance: 1.0 })?;
+    /// s.solve()?;
+    /// s.set_value(d, 2.5)?;
+    /// assert_eq!(s.constraint(d)?.value(), Some(2.5));
+    /// s.solve()?;
+    /// assert!((s.point(PointRef::Point(b))?.x - 2.5).abs() < 1e-12);
+    /// # Ok::<(), camber_sketch::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`Error::UnknownConstraint`]; [`Error::NoValue`] for a kind without a value;
+    /// [`Error::ValueBound`] for a value that follows an expression of the parameters
+    /// ([`Sketch::bind_dimension`]: change the parameters, or bind it again); the
+    /// validation errors of the kind for the new value (a negative distance, a non-finite
+    /// number, …). The sketch is unchanged then.
+    pub fn set_value(&mut self, id: ConstraintId, value: f64) -> Result<()> {
+        let (constraint, _) = self
+            .constraints
+            .get(&id)
+            .ok_or(Error::UnknownConstraint { constraint: id })?;
+        let mut edited = constraint.clone();
+        if !edited.set_value(value) {
+            return Err(Error::NoValue {
+                constraint: id,
+                kind: edited.kind_name(),
+            });
+        }
+        // A dimension bound to an expression of the parameters follows them: a value set here
+        // would be overwritten by the next parameter change, so it is refused.
+        for binding in self.parameters.bindings(id) {
+            let follows =
+                parameters::apply(&edited, std::slice::from_ref(binding), &self.parameters)?;
+            if follows.value() != Some(value) {
+                return Err(Error::ValueBound {
+                    constraint: id,
+                    path: binding.path.clone(),
+                    expression: binding.text.clone(),
+                });
+            }
+        }
+        edited.compile(self)?;
+        let entities = edited.entities();
+        if let Some(slot) = self.constraints.get_mut(&id) {
+            slot.0 = edited;
+        }
+        self.prepared.edit(id);
+        for e in entities {
+            self.dirty.insert(e);
+        }
+        self.revision += 1;
+        Ok(())
     }
 }
 
@@ -643,6 +730,53 @@ impl Sketch {
         out
     }
 
+    /// The components holding a dirty entity, as [`Sketch::components`] gives them (entities
+    /// and constraints sorted, ordered by smallest entity id), found by walking the graph from
+    /// the dirty entities only: a re-solve after one edit costs the size of what it touches,
+    /// not of the sketch. The constraints that read no entity follow, one component each, as
+    /// in [`Sketch::components`]: no mark reaches them, and they are cheap to check again.
+    pub(crate) fn dirty_components(&self) -> Vec<Component> {
+        let mut seen = vec![false; self.graph.node_bound()];
+        let mut out = Vec::new();
+        let mut stack = Vec::new();
+        for id in &self.dirty {
+            let Some((_, node)) = self.entities.get(id) else {
+                continue;
+            };
+            if seen[node.index()] {
+                continue;
+            }
+            let mut comp = Component {
+                entities: Vec::new(),
+                constraints: Vec::new(),
+            };
+            seen[node.index()] = true;
+            stack.push(*node);
+            while let Some(n) = stack.pop() {
+                match self.graph.node_weight(n) {
+                    Some(Node::Entity(e)) => comp.entities.push(*e),
+                    Some(Node::Constraint(c)) => comp.constraints.push(*c),
+                    None => {}
+                }
+                for m in self.graph.neighbors(n) {
+                    if !seen[m.index()] {
+                        seen[m.index()] = true;
+                        stack.push(m);
+                    }
+                }
+            }
+            comp.entities.sort_unstable();
+            comp.constraints.sort_unstable();
+            out.push(comp);
+        }
+        out.sort_unstable_by_key(|c| c.entities.first().copied());
+        out.extend(self.standalone.iter().map(|id| Component {
+            entities: Vec::new(),
+            constraints: vec![*id],
+        }));
+        out
+    }
+
     /// The component containing an entity.
     ///
     /// # Errors
@@ -715,6 +849,7 @@ impl Sketch {
     /// forced solver or the soft mode) for the following solves and drags. Marks nothing
     /// dirty.
     pub fn set_options(&mut self, options: Options) {
+        self.prepared.forget_all();
         self.options = options;
     }
 
@@ -765,14 +900,15 @@ impl Sketch {
 
     /// Marks an entity as changed, so that the next solve solves its component.
     pub(crate) fn mark_dirty(&mut self, id: EntityId) {
-        self.dirty.insert(id);
+        self.touch(id);
         self.revision += 1;
     }
 
-    /// Whether a solve must look at the component: one of its entities changed, or it has none
-    /// (a constraint that reads no entity has no mark to set; it is cheap to check again).
-    pub(crate) fn is_dirty(&self, comp: &Component) -> bool {
-        comp.entities.is_empty() || comp.entities.iter().any(|e| self.dirty.contains(e))
+    /// Marks an entity as changed by something other than a constraint's value: its prepared
+    /// component is dropped ([`prepared`]).
+    fn touch(&mut self, id: EntityId) {
+        self.prepared.forget_entity(id);
+        self.dirty.insert(id);
     }
 
     /// Stores solved free parameters (contact parameters, a custom constraint's own) into

@@ -723,7 +723,7 @@ mod tests {
             sparse.step(g, &mut ds);
             dense.step(g, &mut dd);
             let j = crate::SparseMatrix::try_from_triplets(n, n, &t).unwrap();
-            let mut min_norm = crate::MinNormFactorization::try_dense(&j, &w).unwrap();
+            let mut min_norm = crate::linalg::min_norm::MinNormFactorization::try_dense(&j, &w).unwrap();
             let mut dm = vec![0.0; n];
             min_norm.solve(g, &mut dm).unwrap();
             let scale = 1.0 + dd.iter().fold(0.0_f64, |m, v| m.max(v.abs()));

@@ -551,7 +551,8 @@ mod tests {
         let g: Vec<f64> = (0..n).map(|_| next()).collect();
         let w: Vec<f64> = (0..n).map(|k| 1.0 + k as f64).collect();
         let j = crate::SparseMatrix::try_from_triplets(n, n, &t).unwrap();
-        let mut reference = crate::MinNormFactorization::try_dense(&j, &w).unwrap();
+        let mut reference =
+            crate::linalg::min_norm::MinNormFactorization::try_dense(&j, &w).unwrap();
         let mut expected = vec![0.0; n];
         reference.solve(&g, &mut expected).unwrap();
         let mut lu = SquareLu::factorize(n, &t, n, None).unwrap();

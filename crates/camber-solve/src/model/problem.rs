@@ -890,6 +890,17 @@ impl Problem {
             })
     }
 
+    /// The residual blocks `owner` owns, in the order they were added (those a dimension's new
+    /// value replaces, [`Problem::replace_residual`]).
+    pub fn residuals_of(&self, owner: ConstraintId) -> Vec<ResidualId> {
+        self.residuals
+            .iter()
+            .enumerate()
+            .filter(|(_, rb)| rb.owner == owner)
+            .map(|(i, _)| ResidualId(i))
+            .collect()
+    }
+
     /// The constraint owning each residual row, in row order.
     pub fn row_owners(&self) -> Vec<ConstraintId> {
         let mut out = Vec::with_capacity(self.num_rows());

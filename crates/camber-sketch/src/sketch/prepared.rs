@@ -1,0 +1,201 @@
+//! The prepared components of a sketch: every component a solve compiled and solved is kept,
+//! with the policy's plan beside its problem ([`ComponentProblem`]), so that the next solve of
+//! the same component after a dimension edit ([`crate::Sketch::set_value`]) re-solves on the
+//! kept plan instead of compiling the component again.
+//!
+//! A kept problem holds the values its solve wrote back, so it is exactly the sketch's state
+//! for as long as nothing but constraint values change:
+//!
+//! - **a dimension's new value** keeps the prepared component: before its next solve the edited
+//!   constraint's residual objects are replaced in place (same rows over the same blocks), which
+//!   the plan sees as a change of values ([`camber_solve::Problem::stamps`]); a constraint whose
+//!   pieces do not map one to one onto its residual blocks has its component compiled again;
+//! - **anything else** that touches an entity (a moved point, an entity replaced or removed, a
+//!   constraint added or removed, a priority or weight, a drag committed) drops the prepared
+//!   component holding it, and new options drop them all; the next solve compiles them again.
+//!
+//! The prepared components of a sketch hold at most [`MAX_PREPARED_UNKNOWNS`] unknowns in all;
+//! beyond that, components are solved and not kept. A copy of a sketch starts with none.
+
+use std::collections::{BTreeSet, HashMap};
+
+use crate::component::{Component, ComponentProblem};
+use crate::ground::ids::{ConstraintId, EntityId};
+
+/// The most unknowns the prepared components of one sketch hold in all.
+pub const MAX_PREPARED_UNKNOWNS: usize = 1 << 21;
+
+/// The prepared components of a sketch (see the module documentation).
+#[derive(Debug, Default)]
+pub(crate) struct Prepared {
+    /// Each by its smallest entity id.
+    by_first: HashMap<EntityId, ComponentProblem>,
+    /// The smallest entity id of the prepared component holding each entity.
+    of_entity: HashMap<EntityId, EntityId>,
+    /// Constraints whose value changed since their component was prepared.
+    edited: BTreeSet<ConstraintId>,
+    /// Unknowns held in all.
+    unknowns: usize,
+}
+
+/// A copy of a sketch starts with nothing prepared: a plan belongs to one problem.
+impl Clone for Prepared {
+    fn clone(&self) -> Self {
+        Self::default()
+    }
+}
+
+impl Prepared {
+    /// Takes out the prepared problem of `comp`, if it was prepared with exactly its entities
+    /// and constraints, with the constraints of it whose value changed since.
+    pub(crate) fn take(
+        &mut self,
+        comp: &Component,
+    ) -> Option<(ComponentProblem, Vec<ConstraintId>)> {
+        let first = *comp.entities.first()?;
+        let cp = self.by_first.remove(&first)?;
+        self.release(&cp);
+        let edited: Vec<ConstraintId> = cp
+            .component()
+            .constraints
+            .iter()
+            .copied()
+            .filter(|c| self.edited.remove(c))
+            .collect();
+        (cp.component() == comp).then_some((cp, edited))
+    }
+
+    /// Keeps a solved component's problem for the next solve, if there is room.
+    pub(crate) fn keep(&mut self, cp: ComponentProblem) {
+        let Some(first) = cp.component().entities.first().copied() else {
+            return;
+        };
+        if let Some(old) = self.by_first.remove(&first) {
+            self.release(&old);
+        }
+        let n = cp.problem().num_unknowns();
+        if self.unknowns.saturating_add(n) > MAX_PREPARED_UNKNOWNS {
+            return;
+        }
+        for e in &cp.component().entities {
+            self.of_entity.insert(*e, first);
+        }
+        self.unknowns += n;
+        self.by_first.insert(first, cp);
+    }
+
+    /// Forgets a component's problem's entities and unknowns (it left the map).
+    fn release(&mut self, cp: &ComponentProblem) {
+        self.unknowns = self.unknowns.saturating_sub(cp.problem().num_unknowns());
+        for e in &cp.component().entities {
+            self.of_entity.remove(e);
+        }
+    }
+
+    /// Drops the prepared component holding `entity` (something other than a constraint's
+    /// value changed there).
+    pub(crate) fn forget_entity(&mut self, entity: EntityId) {
+        if let Some(first) = self.of_entity.get(&entity).copied() {
+            if let Some(cp) = self.by_first.remove(&first) {
+                self.release(&cp);
+                for c in &cp.component().constraints {
+                    self.edited.remove(c);
+                }
+            }
+        }
+    }
+
+    /// Records that a constraint's value changed: its component's residuals are replaced before
+    /// its next solve.
+    pub(crate) fn edit(&mut self, constraint: ConstraintId) {
+        self.edited.insert(constraint);
+    }
+
+    /// Drops every prepared component.
+    pub(crate) fn forget_all(&mut self) {
+        *self = Self::default();
+    }
+
+    /// How many components are kept.
+    #[cfg(test)]
+    pub(crate) fn len(&self) -> usize {
+        self.by_first.len()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::constraints::{Distance, Fixed};
+    use crate::{PointRef, Sketch};
+    use nalgebra::Point2;
+
+    /// Two components, each a point held at a distance from a fixed one.
+    fn two() -> (Sketch, [crate::ConstraintId; 2], [crate::EntityId; 2]) {
+        let mut s = Sketch::new();
+        let mut ds = [crate::ConstraintId(0); 2];
+        let mut bs = [crate::EntityId(0); 2];
+        for k in 0..2 {
+            let y = 5.0 * f64::from(k);
+            let a = s.add_point(Point2::new(0.0, y)).unwrap();
+            let b = s.add_point(Point2::new(1.2, y)).unwrap();
+            s.add_constraint(Fixed::point(PointRef::Point(a))).unwrap();
+            ds[k as usize] = s
+                .add_constraint(Distance {
+                    a: PointRef::Point(a),
+                    b: PointRef::Point(b),
+                    distance: 1.0,
+                })
+                .unwrap();
+            bs[k as usize] = b;
+        }
+        (s, ds, bs)
+    }
+
+    #[test]
+    fn solved_components_are_kept_across_value_edits_and_dropped_by_other_edits() {
+        let (mut s, ds, bs) = two();
+        s.solve().unwrap();
+        assert_eq!(s.prepared.len(), 2);
+        // A value edit keeps the component; its solve takes it and keeps it again.
+        s.set_value(ds[0], 2.0).unwrap();
+        assert_eq!(s.prepared.len(), 2);
+        s.solve().unwrap();
+        assert_eq!(s.prepared.len(), 2);
+        assert!((s.point(PointRef::Point(bs[0])).unwrap().x - 2.0).abs() < 1e-12);
+        // A moved point drops its component only.
+        s.set_point(PointRef::Point(bs[1]), Point2::new(0.5, 5.5))
+            .unwrap();
+        assert_eq!(s.prepared.len(), 1);
+        s.solve().unwrap();
+        assert_eq!(s.prepared.len(), 2);
+        // A copy starts with nothing prepared, new options drop everything.
+        assert_eq!(s.clone().prepared.len(), 0);
+        s.set_options(s.options().clone());
+        assert_eq!(s.prepared.len(), 0);
+    }
+
+    #[test]
+    fn a_failed_solve_keeps_nothing_of_its_components_and_the_sketch_as_it_was() {
+        let (mut s, ds, _) = two();
+        s.solve().unwrap();
+        // A point at distance 1 from a fixed one, then also at distance 1 from a second
+        // fixed point 5 away: no solution.
+        let far = s.add_point(Point2::new(5.0, 0.0)).unwrap();
+        s.add_constraint(Fixed::point(PointRef::Point(far)))
+            .unwrap();
+        let b = match s.constraint(ds[0]).unwrap() {
+            crate::Constraint::Distance(d) => d.b,
+            _ => unreachable!(),
+        };
+        s.add_constraint(Distance {
+            a: PointRef::Point(far),
+            b,
+            distance: 1.0,
+        })
+        .unwrap();
+        let before = crate::file::to_json(&s).unwrap();
+        assert!(s.solve().is_err());
+        assert_eq!(crate::file::to_json(&s).unwrap(), before);
+        assert_eq!(s.prepared.len(), 1);
+    }
+}
