@@ -9,8 +9,9 @@ every constraint still holds (the editor's own residuals, and the G1 joins and f
 recomputed here from the points), after solving the blade with the Solve button (it is not
 solved as shipped). Then it undoes with the Undo button, drags again, saves
 with Ctrl+S, reloads the page, restarts the editor on the saved file, and checks that a
-request from a foreign Origin is refused and changes nothing. A screenshot goes to
-target/browser/editor.png.
+request from a foreign Origin is refused and changes nothing. Last, on the parametric
+diffuser, it checks that expression constraints are drawn with their name and residual, and
+that the residual follows a solve. Screenshots go to target/browser/.
 
 Usage: editor_test.py [CAMBER_BINARY]   (default: target/release/camber)
 Any failed step raises, prints `browser test FAILED: …` and exits with 1.
@@ -32,6 +33,7 @@ from playwright.sync_api import sync_playwright
 
 ROOT = Path(__file__).resolve().parents[2]
 BLADE = ROOT / "examples" / "sketches" / "blade_section.json"
+PARAMETRIC = ROOT / "examples" / "sketches" / "diffuser_parametric.json"
 CHROMIUM = os.environ.get("CHROMIUM", "/usr/bin/chromium")
 SHOTS = ROOT / "target" / "browser"
 
@@ -173,6 +175,42 @@ def drag(page, editor, entity, index, dx, dy):
     raise Failure("the drag did not end within 20 s")
 
 
+def labels(page):
+    """{constraint id: text} of the expression labels the page draws."""
+    return page.evaluate(
+        """() => Object.fromEntries([...document.querySelectorAll('#layer-glyphs text.glyph-label')]
+            .map((t) => [t.dataset.constraint, t.textContent]))"""
+    )
+
+
+def check_expression_labels(editor):
+    """The page writes each expression constraint's name and residual beside its mark, and the
+    residual follows a solve."""
+    errors = []
+    with sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=CHROMIUM, headless=True, args=["--no-sandbox"])
+        page = browser.new_page(viewport={"width": 1200, "height": 800})
+        page.on("pageerror", lambda e: errors.append(f"page error: {e}"))
+        page.goto(editor.url)
+        page.wait_for_selector("#layer-glyphs text.glyph-label")
+        shown = labels(page)
+        expected = {"2": "leading circle", "4": "middle circle", "6": "trailing circle"}
+        check(set(shown) == set(expected), f"expression labels drawn: {shown}")
+        for cid, name in expected.items():
+            check(shown[cid].startswith(f"{name}: |g| "), f"label of constraint {cid}: {shown[cid]!r}")
+        check(shown["4"] == "middle circle: |g| 1.0e-2", f"the unsolved middle circle: {shown['4']!r}")
+        page.screenshot(path=str(SHOTS / "editor_expressions.png"))
+        page.click("#solve")
+        deadline = time.monotonic() + 20
+        while labels(page).get("4") == shown["4"] and time.monotonic() < deadline:
+            page.wait_for_timeout(50)
+        solved = labels(page)["4"]
+        residual = solved.split("|g| ", 1)[1]
+        check(residual == "0" or float(residual) <= RESIDUAL_TOLERANCE, f"the solved middle circle: {solved!r}")
+        browser.close()
+    check(not errors, f"the page reported errors: {errors}")
+
+
 def main():
     binary = Path(sys.argv[1] if len(sys.argv) > 1 else ROOT / "target" / "release" / "camber")
     check(binary.exists(), f"{binary} does not exist (build it first)")
@@ -310,6 +348,14 @@ def main():
         editor = Editor(binary, sketch)
         check(points(editor.state()) == on_disk, "the restarted editor shows other geometry than the saved file")
         check_constraints(editor.state(), sketch, original)
+
+        # 9. Expression constraints are drawn with their name and their residual now: the
+        # parametric diffuser with its middle circle's radius parameter off by 0.01, then solved.
+        editor.stop()
+        diffuser = work / "diffuser_parametric.json"
+        diffuser.write_text(PARAMETRIC.read_text().replace('"r3":0.07', '"r3":0.08'))
+        editor = Editor(binary, diffuser)
+        check_expression_labels(editor)
     finally:
         editor.stop()
         shutil.rmtree(work, ignore_errors=True)

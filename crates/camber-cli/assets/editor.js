@@ -156,6 +156,12 @@ function drawEntity(e) {
   drawn.set(e.id, els);
 }
 
+/** A constraint's residual as a label shows it: |g| in two digits, "?" when unknown. */
+function residualText(r) {
+  if (typeof r !== "number") return "|g| ?";
+  return r === 0 ? "|g| 0" : `|g| ${r.toExponential(1)}`;
+}
+
 /** The elements of each constraint's glyphs, by constraint id. */
 const drawnGlyphs = new Map();
 
@@ -185,6 +191,11 @@ function drawGlyphs(constraint, list) {
       label.textContent = glyph.text;
     } else {
       element("circle", { class: `glyph${red}`, cx: x, cy: y, r: 8 }, g);
+    }
+    if (glyph.label !== undefined) {
+      // An expression constraint: its name and its residual at the geometry drawn.
+      const text = element("text", { class: `glyph-label${red}`, x: x + 6, y: y + 14, "data-constraint": constraint }, g);
+      text.textContent = `${glyph.label}: ${residualText(glyph.residual)}`;
     }
   }
   const title = element("title", {}, g);

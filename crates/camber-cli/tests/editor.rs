@@ -904,3 +904,87 @@ fn every_move_answer_carries_the_residuals_of_the_geometry_it_draws() {
     let committed = ended["components"][0]["residual"].as_f64().unwrap();
     assert!((committed - last["residual"].as_f64().unwrap()).abs() <= 1e-12);
 }
+
+/// The glyphs of one constraint in a scene.
+fn glyphs_of(scene: &Value, constraint: u64) -> Vec<Value> {
+    scene["glyphs"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|g| g["constraint"].as_u64() == Some(constraint))
+        .cloned()
+        .collect()
+}
+
+#[test]
+fn expression_constraints_are_drawn_with_their_name_and_live_residual() {
+    // The parametric diffuser with the middle circle's radius parameter moved from the
+    // circle's 0.07 to 0.08: the "middle circle" rows K.center = [x3, y3], K.radius = r3 are
+    // off by exactly 0.01 (the radius row) before a solve.
+    let dir = tempfile::tempdir().unwrap();
+    let text = std::fs::read_to_string(sketch_path("diffuser_parametric.json"))
+        .unwrap()
+        .replace("\"r3\":0.07", "\"r3\":0.08");
+    let input = dir.path().join("diffuser.json");
+    std::fs::write(&input, text).unwrap();
+    let mut ed = EditorState::load(&input, Some(dir.path().join("out.json"))).unwrap();
+    let before = state(&mut ed);
+    let middle = glyphs_of(&before["scene"], 4);
+    assert_eq!(middle.len(), 1, "{middle:?}");
+    assert_eq!(middle[0]["label"], "middle circle");
+    let r = middle[0]["residual"].as_f64().unwrap();
+    assert!((r - 0.01).abs() < 1e-12, "{r}");
+    let leading = glyphs_of(&before["scene"], 2);
+    assert_eq!(leading[0]["label"], "leading circle");
+    assert!(leading[0]["residual"].as_f64().unwrap() < 1e-15);
+    // Built-in kinds carry no label.
+    for g in glyphs_of(&before["scene"], 8) {
+        assert!(
+            g.get("label").is_none() && g.get("residual").is_none(),
+            "{g}"
+        );
+    }
+    // Solved, the label's residual is the solved one.
+    let (status, solved) = post(&mut ed, "/api/solve", json!({}));
+    assert_eq!(status, 200, "{solved}");
+    let after = glyphs_of(&solved["scene"], 4);
+    assert!(after[0]["residual"].as_f64().unwrap() < 1e-10, "{after:?}");
+
+    // During a drag, the move answer's labelled glyphs carry the residual of the geometry
+    // they are drawn on: the answer's own figure for that constraint.
+    let text = r#"{"version": 1,
+      "entities": [{"id": 0, "kind": "bezier", "control_points": [[0, 0], [1, 1], [2, 0]]}],
+      "constraints": [
+        {"id": 1, "kind": "fixed", "target": {"point": {"start": 0}}},
+        {"id": 2, "kind": "expression", "name": "span", "rows": ["norm(C.end - C.start) = 2"],
+         "args": {"C": {"curve": 0}}}]}"#;
+    let sketch = camber_cli::sketch_file::parse(text).unwrap();
+    let mut ed = EditorState::new(sketch, "span.json".into(), None).unwrap();
+    assert_eq!(
+        post(&mut ed, "/api/drag/start", json!({"entity": 0, "index": 2})).0,
+        200
+    );
+    let (status, moved) = post(&mut ed, "/api/drag/move", json!({"to": [1.9, 0.5]}));
+    assert_eq!(status, 200, "{moved}");
+    let span = glyphs_of(&moved, 2);
+    assert_eq!(span.len(), 1, "{moved}");
+    assert_eq!(span[0]["label"], "span");
+    let sent = moved["constraint_residuals"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|c| c["id"] == 2)
+        .unwrap()["residual"]
+        .as_f64()
+        .unwrap();
+    assert_eq!(
+        span[0]["residual"].as_f64().unwrap().to_bits(),
+        sent.to_bits()
+    );
+    // The whole state during the drag shows the same figure.
+    let during = state(&mut ed);
+    assert_eq!(
+        glyphs_of(&during["scene"], 2)[0]["residual"],
+        span[0]["residual"]
+    );
+}

@@ -189,3 +189,45 @@ fn a_sweep_solves_one_variant_per_row_on_every_thread() {
     assert!(solve_variants(&s, &unknown, None).is_err());
     assert!(Table::try_new(vec![("chord".into(), vec![1.0]), ("t_max".into(), vec![])]).is_err());
 }
+
+fn diffuser() -> Sketch {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../examples/sketches/diffuser_parametric.json"
+    );
+    from_json(&std::fs::read_to_string(path).unwrap()).unwrap()
+}
+
+#[test]
+fn a_sweep_reports_the_solved_contact_parameters_of_built_in_kinds() {
+    // The parametric diffuser: circles placed by parameters, the curve tangent to the middle
+    // circle at a free parameter (constraint 8, field `u`).
+    let s = diffuser();
+    let r3 = vec![0.065, 0.07, 0.075];
+    let y3 = vec![0.035, 0.04, 0.045];
+    let table = Table::try_new(vec![("r3".into(), r3.clone()), ("y3".into(), y3.clone())]).unwrap();
+    let rows = solve_variants(&s, &table, Some(2)).unwrap();
+    for (i, r) in rows.iter().enumerate() {
+        assert!(r.ok, "row {i}: {:?}", r.error);
+        let u: Vec<f64> = r
+            .free
+            .iter()
+            .filter(|(id, name, _)| *id == 8 && name == "u")
+            .map(|(_, _, u)| *u)
+            .collect();
+        assert_eq!(u.len(), 1, "row {i}: {:?}", r.free);
+        // Independently: the curve solved by hand touches the circle at that parameter.
+        let mut by_hand = diffuser();
+        by_hand.define_parameter("r3", r3[i]).unwrap();
+        by_hand.define_parameter("y3", y3[i]).unwrap();
+        by_hand.solve().unwrap();
+        let Ok(Entity::BSpline(c)) = by_hand.entity(EntityId(0)).cloned() else {
+            panic!("not a B-spline")
+        };
+        let p = c.point(u[0]).unwrap();
+        let gap = (p - Point2::new(0.38, y3[i])).norm() - r3[i];
+        assert!(gap.abs() < 1e-9, "row {i}: gap {gap}");
+    }
+    // The contact moves with the circle: three different parameters.
+    assert!(rows[0].free != rows[2].free);
+}

@@ -1,7 +1,7 @@
 //! `camber batch SKETCH --parameters TABLE.csv`: one sketch solved for every row of a table of
 //! parameter values, on `--jobs` threads, one JSON line per variant:
 //! `{"row": 0, "ok": true, "max_residual": 3e-13, "parameters": {"chord": 1.2, …},
-//! "free": {"11.s": 0.42}}` (the solved free parameters of expression constraints, as
+//! "free": {"11.s": 0.42, "8.u": 0.49}}` (the solved free parameters of the constraints, as
 //! "constraint id.name"), or `{"row": 1, "ok": false, "error": "…", …}`. The command fails
 //! (after printing every line) when any variant failed.
 

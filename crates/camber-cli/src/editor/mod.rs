@@ -191,6 +191,8 @@ pub struct EditorState {
     drag: Option<Drag>,
     components: Vec<ComponentJson>,
     conflicting: BTreeSet<ConstraintId>,
+    /// Each constraint's residual (max |g| over its rows) at the committed geometry.
+    residuals: BTreeMap<ConstraintId, f64>,
     report: Option<ReportJson>,
 }
 
@@ -234,6 +236,7 @@ impl EditorState {
             drag: None,
             components: Vec::new(),
             conflicting: BTreeSet::new(),
+            residuals: BTreeMap::new(),
             report: None,
         };
         state.analyse()?;
@@ -294,21 +297,15 @@ impl EditorState {
     /// # Errors
     /// Evaluation failures while drawing (not for a sketch the library accepted).
     pub fn state(&self) -> Result<StateJson> {
-        let scene = match &self.drag {
-            Some(d) => SceneJson::of(
-                &View::with_overrides(&self.sketch, &d.current),
-                &self.conflicting,
-                |_| true,
-            )?,
-            None => SceneJson::of(&View::new(&self.sketch), &self.conflicting, |_| true)?,
-        };
         let mut components = self.components.clone();
-        // During a drag the dragged component's residual is the session's, as in the move
+        let mut residuals = self.residuals.clone();
+        // During a drag the dragged component's residuals are the session's, as in the move
         // answers: the geometry drawn is the session's, not the committed sketch's.
         if let Some(d) = &self.drag {
-            let (_, worst) = d
+            let (live, worst) = d
                 .live_residuals()
                 .map_err(|e| anyhow!("residuals failed: {}", describe_error(&self.sketch, &e)))?;
+            residuals.extend(live);
             if let Some(c) = components
                 .iter_mut()
                 .find(|c| c.entities.contains(&d.entity.0))
@@ -317,6 +314,20 @@ impl EditorState {
                 c.worst = worst.map(|(id, _)| ConstraintRef::of(&self.sketch, id));
             }
         }
+        let scene = match &self.drag {
+            Some(d) => SceneJson::of(
+                &View::with_overrides(&self.sketch, &d.current),
+                &self.conflicting,
+                &residuals,
+                |_| true,
+            )?,
+            None => SceneJson::of(
+                &View::new(&self.sketch),
+                &self.conflicting,
+                &residuals,
+                |_| true,
+            )?,
+        };
         Ok(StateJson {
             file: self.file.display().to_string(),
             output: self.output.display().to_string(),
@@ -458,8 +469,13 @@ impl EditorState {
         let changed: BTreeSet<EntityId> = update.moved.iter().copied().collect();
         drag.current.extend(moved);
         let view = View::with_overrides(&self.sketch, &drag.current);
-        let scene = SceneJson::of(&view, &self.conflicting, |id| changed.contains(&id))?;
         let residuals = update.residuals;
+        let scene = SceneJson::of(
+            &view,
+            &self.conflicting,
+            &residuals.iter().copied().collect(),
+            |id| changed.contains(&id),
+        )?;
         let worst = worst_of(&residuals);
         Ok(Response::json(
             200,
@@ -610,9 +626,10 @@ impl EditorState {
 
     /// Recomputes the components, their DOF analysis and their residuals.
     fn analyse(&mut self) -> Result<()> {
-        let (components, conflicting) = analyse(&self.sketch)?;
-        self.components = components;
-        self.conflicting = conflicting;
+        let analysis = analyse(&self.sketch)?;
+        self.components = analysis.components;
+        self.conflicting = analysis.conflicting;
+        self.residuals = analysis.residuals;
         Ok(())
     }
 }
@@ -638,12 +655,25 @@ fn parse<T: DeserializeOwned>(body: &[u8]) -> std::result::Result<T, Failure> {
     serde_json::from_slice(body).map_err(|e| Failure::new(400, format!("bad request body: {e}")))
 }
 
+/// What [`analyse`] finds in a sketch.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Analysis {
+    /// The components with their analysis and largest residual now.
+    pub components: Vec<ComponentJson>,
+    /// Every constraint the analysis names conflicting.
+    pub conflicting: BTreeSet<ConstraintId>,
+    /// Each constraint's residual now: max |g| over its rows (constraints with no rows, such
+    /// as bindings, are absent).
+    pub residuals: BTreeMap<ConstraintId, f64>,
+}
+
 /// The components of a sketch with their analysis (sparse for large components) and their
-/// largest residual now, and every constraint the analysis names conflicting.
+/// largest residual now, every constraint the analysis names conflicting, and each
+/// constraint's residual.
 ///
 /// # Errors
 /// Building a component's problem fails (the message names the constraint).
-pub fn analyse(sketch: &Sketch) -> Result<(Vec<ComponentJson>, BTreeSet<ConstraintId>)> {
+pub fn analyse(sketch: &Sketch) -> Result<Analysis> {
     let failed =
         |e: camber_sketch::Error| anyhow!("analysis failed: {}", describe_error(sketch, &e));
     let mut analyses: BTreeMap<EntityId, AnalysisJson> = BTreeMap::new();
@@ -668,6 +698,7 @@ pub fn analyse(sketch: &Sketch) -> Result<(Vec<ComponentJson>, BTreeSet<Constrai
         }
     }
     let mut out = Vec::new();
+    let mut residuals: BTreeMap<ConstraintId, f64> = BTreeMap::new();
     for comp in sketch.components() {
         let Some(first) = comp.entities.first().copied() else {
             continue;
@@ -677,6 +708,10 @@ pub fn analyse(sketch: &Sketch) -> Result<(Vec<ComponentJson>, BTreeSet<Constrai
             .problem()
             .linearize()
             .map_err(|e| failed(camber_sketch::Error::from(e)))?;
+        for (owner, g) in lin.row_owner.iter().zip(&lin.g) {
+            let r = residuals.entry(*owner).or_insert(0.0);
+            *r = r.max(g.abs());
+        }
         let worst = lin
             .g
             .iter()
@@ -697,7 +732,11 @@ pub fn analyse(sketch: &Sketch) -> Result<(Vec<ComponentJson>, BTreeSet<Constrai
                 .map(|id| ConstraintRef::of(sketch, *id)),
         });
     }
-    Ok((out, conflicting))
+    Ok(Analysis {
+        components: out,
+        conflicting,
+        residuals,
+    })
 }
 
 #[cfg(test)]

@@ -4,10 +4,10 @@
 //! Geometry goes out as the [`crate::scene`] computes it: control points in full precision,
 //! curve samples in f64 (f32 would overflow to null on large drawings), glyphs in model coordinates.
 
-use std::collections::BTreeSet;
+use std::collections::{BTreeMap, BTreeSet};
 
 use anyhow::Result;
-use camber_sketch::{ConstraintId, Entity, EntityId, Sketch};
+use camber_sketch::{Constraint, ConstraintId, Entity, EntityId, Sketch};
 use serde::{Deserialize, Serialize};
 
 use crate::draw::{sample_curve, SAMPLES_PER_PIECE};
@@ -112,6 +112,23 @@ pub struct GlyphJson {
     pub text: Option<&'static str>,
     /// Whether the DOF analysis names the constraint conflicting (drawn in red).
     pub conflicting: bool,
+    /// A name drawn beside the mark with the residual: an expression constraint's `name`
+    /// (`expression` when it has none). Other kinds have none.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub label: Option<String>,
+    /// For a labelled glyph, max |g| over the constraint's rows at the geometry drawn (during
+    /// a drag, the drag's current state), when the editor knows it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub residual: Option<f64>,
+}
+
+/// The label of a constraint's glyphs: an expression's name.
+fn label_of(c: &Constraint) -> Option<String> {
+    match c {
+        Constraint::Expression(e) if e.name.trim().is_empty() => Some("expression".to_owned()),
+        Constraint::Expression(e) => Some(e.name.clone()),
+        _ => None,
+    }
 }
 
 impl GlyphJson {
@@ -129,6 +146,8 @@ impl GlyphJson {
             dir,
             text,
             conflicting,
+            label: None,
+            residual: None,
         }
     }
 }
@@ -144,13 +163,15 @@ pub struct SceneJson {
 
 impl SceneJson {
     /// The entities whose ids pass `keep`, and the glyphs of the constraints that read one of
-    /// them, as `view` shows them.
+    /// them, as `view` shows them; labelled glyphs ([`GlyphJson::label`]) carry their
+    /// constraint's entry of `residuals`.
     ///
     /// # Errors
     /// Evaluation failures (not for a sketch the library accepted).
     pub fn of(
         view: &View,
         conflicting: &BTreeSet<ConstraintId>,
+        residuals: &BTreeMap<ConstraintId, f64>,
         keep: impl Fn(EntityId) -> bool,
     ) -> Result<Self> {
         let mut out = Self::default();
@@ -162,8 +183,14 @@ impl SceneJson {
         for (id, c) in view.sketch().constraints() {
             if c.entities().iter().any(|e| keep(*e)) {
                 let red = conflicting.contains(&id);
+                let label = label_of(c);
                 for g in glyphs(view, c)? {
-                    out.glyphs.push(GlyphJson::of(id, g, red));
+                    let mut glyph = GlyphJson::of(id, g, red);
+                    if label.is_some() {
+                        glyph.label.clone_from(&label);
+                        glyph.residual = residuals.get(&id).copied();
+                    }
+                    out.glyphs.push(glyph);
                 }
             }
         }

@@ -147,7 +147,7 @@ pub(crate) fn box_distance<const D: usize>(
 }
 
 /// The distance from a point to a box (0 inside).
-fn point_box_distance<const D: usize>(
+pub(crate) fn point_box_distance<const D: usize>(
     p: &SVector<f64, D>,
     (lo, hi): (&SVector<f64, D>, &SVector<f64, D>),
 ) -> f64 {

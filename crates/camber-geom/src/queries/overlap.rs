@@ -9,8 +9,10 @@
 //!
 //! **Finding overlaps.** Otherwise curve `a` is sampled (33 parameters per Bézier piece, ends
 //! included); a sample is *on* `b` when its distance to `b` is within the tolerance — measured
-//! only against the pieces of `b` whose boxes come that close (found in `b`'s box tree), by
-//! sampling each such piece and refining the best sample by Newton's method on the foot point.
+//! only against the pieces of `b` whose boxes come that close (found in `b`'s box tree), each
+//! halved while a half's box comes that close and the half is not flat, with Newton's method on
+//! the foot point started in every flat half (so a piece that passes the point twice, a narrow
+//! U turn, cannot lead Newton to the wrong arm).
 //! Runs of at least two consecutive on-samples, whose midpoints are on `b` too, are overlap
 //! candidates; each end of a run is then located by bisection between its last on-sample and
 //! the next off-sample (60 halvings, down to rounding). The interval on `b` is given by the
@@ -25,6 +27,7 @@
 
 use nalgebra::Point;
 
+use super::box_tree::point_box_distance;
 use super::curve_curve::{
     foot, intersect_excluding, CurveCurveOptions, CurvePairPoint, OnTangent, Prepared,
 };
@@ -39,8 +42,12 @@ const SAMPLES_PER_PIECE: usize = 32;
 /// Halvings that locate an overlap's end.
 const BISECTIONS: usize = 60;
 
-/// Samples of a piece of `b` from which its foot point is refined.
-const FOOT_SAMPLES: usize = 8;
+/// A piece of `b` is flat enough to start one foot-point Newton iteration in when its control
+/// points lie within this fraction of its chord's length from the chord (see `foot_on`).
+const FLAT: f64 = 0.1;
+
+/// Halvings of a piece of `b` at most while looking for a foot point.
+const FOOT_DEPTH: usize = 16;
 
 /// A stretch along which two curves coincide: `a` on [a.0, a.1] (a.0 < a.1) traces the same
 /// points as `b` from b.0 to b.1 (b.0 > b.1 when `b` runs the other way).
@@ -122,6 +129,13 @@ where
 
 /// The foot of `p` on `b` (parameter and distance) among the pieces of `b` whose boxes come
 /// within `near` of it, if one is that close.
+///
+/// A piece may pass near `p` more than once (a narrow loop or U turn), and a start on the wrong
+/// arm lets Newton settle on that arm's local minimum. So each piece is halved (de Casteljau)
+/// while a half's box still comes within `near` of `p` and the half is not yet flat (its
+/// control points further from its chord than [`FLAT`] of the chord's length): every piece
+/// containing the foot is kept, and on a flat half the distance has a single minimum. Newton
+/// on the foot point starts in every such half, at its chord's point nearest `p`.
 fn foot_on<const D: usize, B>(
     b: &B,
     pieces: &[RationalPiece<D>],
@@ -134,28 +148,43 @@ where
     B: ParametricCurve<f64, D> + ?Sized,
 {
     let mut best: Option<(f64, f64)> = None;
+    let mut consider = |found: (f64, f64)| {
+        if best.is_none_or(|(_, bd)| found.1 < bd) {
+            best = Some(found);
+        }
+    };
     for j in prepared.tree_b.pieces_near(&p.coords, near, meter)? {
         let piece = &pieces[j];
         let (lo, hi) = (piece.start, piece.end);
-        // The best of a few samples, then Newton on the foot point inside the piece.
-        let mut start = (lo, f64::INFINITY);
-        meter.charge(FOOT_SAMPLES as u64 + 1)?;
-        for k in 0..=FOOT_SAMPLES {
-            // Clamped: lo + (hi − lo) may round above hi.
-            let t = (lo + (hi - lo) * k as f64 / FOOT_SAMPLES as f64).min(hi);
-            let d = (b.point(t)? - p).norm();
-            if d < start.1 {
-                start = (t, d);
-            }
-        }
         // At a piece's right end the curve reports the next piece's derivative: keep Newton
-        // a hair inside (the end itself was sampled above).
+        // a hair inside (the end itself is looked at as a start).
         let inner = (lo, hi - (hi - lo) * 1e-12);
-        let t = foot(b, p, start.0.min(inner.1), inner, meter)?;
-        let d = (b.point(t)? - p).norm();
-        let found = if d < start.1 { (t, d) } else { start };
-        if best.is_none_or(|(_, bd)| found.1 < bd) {
-            best = Some(found);
+        let mut stack = vec![(piece.clone(), 0usize)];
+        while let Some((half, depth)) = stack.pop() {
+            meter.charge(1)?;
+            let (blo, bhi) = half.bounding_box();
+            if point_box_distance(&p.coords, (&blo, &bhi)) > near {
+                continue;
+            }
+            let (c0, c1, flat) = half.chord_and_flatness();
+            let chord = c1 - c0;
+            if depth < FOOT_DEPTH && flat > FLAT * chord.norm() && (bhi - blo).norm() > near {
+                let (l, r) = half.halves();
+                stack.push((r, depth + 1));
+                stack.push((l, depth + 1));
+                continue;
+            }
+            let along = if chord.norm_squared() > 0.0 {
+                ((p.coords - c0).dot(&chord) / chord.norm_squared()).clamp(0.0, 1.0)
+            } else {
+                0.5
+            };
+            // Clamped: the start may round outside the piece.
+            let start = (half.start + (half.end - half.start) * along).clamp(lo, hi);
+            meter.charge(1)?;
+            consider((start, (b.point(start)? - p).norm()));
+            let t = foot(b, p, start.min(inner.1), inner, meter)?;
+            consider((t, (b.point(t)? - p).norm()));
         }
     }
     Ok(best.filter(|(_, d)| *d <= near))
@@ -289,6 +318,39 @@ mod tests {
             }
             other => panic!("{other:?}"),
         }
+    }
+
+    /// A quadratic B-spline whose second span turns back in a narrow U (its arms a few
+    /// hundredths apart), and its own piece over
+    /// [0.2443…, 0.7676…]: one overlap, exactly that interval. Starting the foot point from
+    /// the nearest of a few samples of `b`'s span let Newton settle on the other arm, which
+    /// split the overlap in two with a list of tangential points between.
+    #[test]
+    fn a_piece_turning_back_narrowly_overlaps_in_one_stretch() {
+        let knots = KnotVector::try_new(vec![0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0]).unwrap();
+        let c = BSplineCurve2::try_new(
+            2,
+            knots,
+            vec![
+                Point2::new(0.0, 0.0),
+                Point2::new(2.1772363746533623, 1.7471605410613125),
+                Point2::new(1.4730934887179692, -1.763849929763408),
+                Point2::new(2.530490599147476, 2.9335213148467405),
+            ],
+        )
+        .unwrap();
+        let (u, v) = (0.24431780265216982, 0.7676228814249136);
+        let (_, right) = c.split(u).unwrap();
+        let (middle, _) = right.split(v).unwrap();
+        let hits =
+            intersect_curves_with_overlaps(&c, &middle, &CurveCurveOptions::default()).unwrap();
+        assert_eq!(hits.overlaps.len(), 1, "{hits:?}");
+        let o = hits.overlaps[0];
+        assert_relative_eq!(o.a.0, u, epsilon = 1e-7);
+        assert_relative_eq!(o.a.1, v, epsilon = 1e-7);
+        assert_relative_eq!(o.b.0, u, epsilon = 1e-7);
+        assert_relative_eq!(o.b.1, v, epsilon = 1e-7);
+        assert!(hits.points.is_empty(), "{:?}", hits.points);
     }
 
     /// A polyline that runs along the segment for x ∈ [1, 2], leaves it, and crosses it again at

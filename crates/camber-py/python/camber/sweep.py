@@ -70,3 +70,37 @@ def solve_chunk(base_json, variants):
     engine's cost per task is then paid once per chunk, not once per variant); returns their
     rows in order."""
     return [solve_variant(base_json, v) for v in variants]
+
+
+#: The parameters of examples/sketches/diffuser_parametric.json: each circle's radius and centre.
+PARAMETRIC_BASE = {
+    "r1": 0.03, "x1": 0.03, "y1": 0.0,
+    "r3": 0.07, "x3": 0.38, "y3": 0.04,
+    "r5": 0.015, "x5": 0.985, "y5": 0.01,
+}
+
+
+def diffuser_table(count, seed=0, spread=0.1):
+    """The variants of ``diffuser_variants`` as a table of the parametric diffuser's
+    parameters (a dict of columns, one row per variant), for ``camber.solve_many(sketch,
+    parameters=table)``."""
+    table = {name: [] for name in PARAMETRIC_BASE}
+    for variant in diffuser_variants(count, seed=seed, spread=spread):
+        for cid in CIRCLES:
+            change = variant[cid]
+            r = PARAMETRIC_BASE[f"r{cid}"]
+            table[f"r{cid}"].append(r * change["scale"])
+            table[f"x{cid}"].append(PARAMETRIC_BASE[f"x{cid}"] + change["dx"] * r)
+            table[f"y{cid}"].append(PARAMETRIC_BASE[f"y{cid}"] + change["dy"] * r)
+    return table
+
+
+def solve_table(base_json, table, threads=1):
+    """One task of a parameter sweep: the parametric diffuser solved for every row of
+    ``table`` by ``camber.solve_many`` (in Rust, the GIL released); returns the rows."""
+    sketch = camber.Sketch.from_json(base_json)
+    rows = camber.solve_many(sketch, parameters=table, threads=threads)
+    for row in rows:
+        row["worker_pid"] = os.getpid()
+        row["contact_u"] = row.get("8.u")
+    return rows

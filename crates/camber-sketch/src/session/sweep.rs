@@ -71,7 +71,9 @@ pub struct VariantResult {
     pub ok: bool,
     /// The largest |residual| after the solve (NaN when it failed).
     pub max_residual: f64,
-    /// The solved free parameters of expression constraints: (constraint id, name, value).
+    /// The solved free parameters of the constraints, by constraint id: (constraint id, name,
+    /// value), the name an expression's argument (`s` of `{"s": {"free": 0.4}}`) or the field
+    /// of a built-in kind that holds `{"free": u}` (`u` of a `tangent_to_circle`).
     pub free: Vec<(u64, String, f64)>,
     /// Why it failed.
     pub error: Option<String>,
@@ -128,6 +130,38 @@ pub fn solve_variants(
     }))
 }
 
+/// The free parameters of one constraint with their values: an expression's `{"free": v}`
+/// arguments by name; for the other kinds, the fields of the file form that hold
+/// `{"free": u}` (contact parameters), by field name.
+fn free_parameters(c: &Constraint) -> Vec<(String, f64)> {
+    if let Constraint::Expression(e) = c {
+        return e
+            .free_parameters()
+            .into_iter()
+            .map(|(n, v)| (n.to_owned(), v))
+            .collect();
+    }
+    let Ok(serde_json::Value::Object(fields)) = c
+        .save()
+        .and_then(|text| serde_json::from_str::<serde_json::Value>(&text))
+    else {
+        return Vec::new();
+    };
+    fields
+        .into_iter()
+        .filter_map(|(name, value)| {
+            let value = value.as_object()?;
+            match (
+                value.len(),
+                value.get("free").and_then(serde_json::Value::as_f64),
+            ) {
+                (1, Some(u)) => Some((name, u)),
+                _ => None,
+            }
+        })
+        .collect()
+}
+
 fn variant(base: &Sketch, table: &Table, row: usize) -> VariantResult {
     let mut s = base.clone();
     let outcome = table
@@ -145,14 +179,10 @@ fn variant(base: &Sketch, table: &Table, row: usize) -> VariantResult {
                 .fold(0.0, f64::max),
             free: s
                 .constraints()
-                .filter_map(|(id, c)| match c {
-                    Constraint::Expression(e) => Some((id, e)),
-                    _ => None,
-                })
-                .flat_map(|(id, e)| {
-                    e.free_parameters()
+                .flat_map(|(id, c)| {
+                    free_parameters(c)
                         .into_iter()
-                        .map(move |(n, v)| (id.0, n.to_owned(), v))
+                        .map(move |(n, v)| (id.0, n, v))
                 })
                 .collect(),
             error: None,
