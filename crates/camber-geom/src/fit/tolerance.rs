@@ -36,6 +36,14 @@ use crate::scalar::{cst, re, Scalar};
 /// pass).
 pub(crate) const CORRECTIONS: usize = 2;
 
+/// How far a trial's control points may stray from the data, in data diameters beyond the
+/// data's box, before the trial counts as failed. A least-squares spline on knots the data
+/// supports keeps its control polygon near the data; a span the corrected parameters leave
+/// (nearly) empty makes the system near-singular, and its solution passes through the data by
+/// wild excursions (control points at 10⁷ for data of size 10): within the tolerance by the
+/// numbers, but not a curve anyone asked for, and one no closest-point search can measure.
+const STRAY: f64 = 8.0;
+
 /// How often the knots of one count are re-spread by the errors of their own fit during the
 /// search.
 const RESPREADS: usize = 1;
@@ -169,6 +177,11 @@ impl<'a, T: Scalar, const D: usize> Problem<'a, T, D> {
                 }
                 correct_parameters(&curve, self.points, &mut parameters, &mut errors, 3)?
             }
+        };
+        let max_error = if strays(&curve, self.points) {
+            f64::INFINITY
+        } else {
+            max_error
         };
         Ok(Trial {
             interior,
@@ -348,6 +361,26 @@ impl<'a, T: Scalar, const D: usize> Problem<'a, T, D> {
         }
         Ok(best)
     }
+}
+
+/// Whether a control point of `curve` lies farther than [`STRAY`] data diameters outside the
+/// box of `points`.
+fn strays<T: Scalar, const D: usize>(curve: &BSplineCurve<T, D>, points: &[Point<T, D>]) -> bool {
+    let (mut lo, mut hi) = ([f64::INFINITY; D], [f64::NEG_INFINITY; D]);
+    for q in points {
+        for c in 0..D {
+            lo[c] = lo[c].min(re(q.coords[c]));
+            hi[c] = hi[c].max(re(q.coords[c]));
+        }
+    }
+    let diameter = (0..D).map(|c| hi[c] - lo[c]).fold(0.0, f64::max);
+    let reach = STRAY * diameter;
+    curve.control_points().iter().any(|p| {
+        (0..D).any(|c| {
+            let x = re(p.coords[c]);
+            !(x >= lo[c] - reach && x <= hi[c] + reach)
+        })
+    })
 }
 
 #[cfg(test)]
