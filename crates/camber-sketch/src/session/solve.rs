@@ -174,7 +174,10 @@ impl Sketch {
         // solve, not once per component (which made many components quadratic).
         let options = self.solve_options();
         let mut report = SketchReport {
-            warnings: self.warnings_in(&comps),
+            warnings: self.warnings_in(
+                comps.iter().flat_map(|c| c.entities.iter().copied()),
+                comps.iter().flat_map(|c| c.constraints.iter().copied()),
+            ),
             tolerance: options.tolerance,
             ..SketchReport::default()
         };

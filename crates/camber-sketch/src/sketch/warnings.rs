@@ -161,20 +161,18 @@ impl Sketch {
         out
     }
 
-    /// [`Sketch::warnings`] about the entities and constraints of `components` only (the
-    /// threshold still from the whole sketch's scale), entities first, then constraints, each
-    /// in id order: what a solve of those components reports, at the cost of their size.
-    pub(crate) fn warnings_in(&self, components: &[crate::Component]) -> Vec<Warning> {
+    /// [`Sketch::warnings`] about the given entities and constraints only (the threshold still
+    /// from the whole sketch's scale), entities first, then constraints, each in id order: what
+    /// a solve of the components holding them reports, at the cost of their size.
+    pub(crate) fn warnings_in(
+        &self,
+        entities: impl Iterator<Item = EntityId>,
+        constraints: impl Iterator<Item = ConstraintId>,
+    ) -> Vec<Warning> {
         let near = SHORT * self.scale();
-        let mut entities: Vec<EntityId> = components
-            .iter()
-            .flat_map(|c| c.entities.iter().copied())
-            .collect();
+        let mut entities: Vec<EntityId> = entities.collect();
         entities.sort_unstable();
-        let mut constraints: Vec<ConstraintId> = components
-            .iter()
-            .flat_map(|c| c.constraints.iter().copied())
-            .collect();
+        let mut constraints: Vec<ConstraintId> = constraints.collect();
         constraints.sort_unstable();
         let mut out = Vec::new();
         for id in entities {
