@@ -699,36 +699,7 @@ impl Sketch {
     /// constraint that reads no entity (a custom constraint of no arguments or of its own
     /// parameters only), so that it is solved and analysed like any other.
     pub fn components(&self) -> Vec<Component> {
-        let mut seen = vec![false; self.graph.node_bound()];
-        let mut out = Vec::new();
-        let mut stack = Vec::new();
-        for (_, node) in self.entities.values() {
-            if seen[node.index()] {
-                continue;
-            }
-            let mut comp = Component {
-                entities: Vec::new(),
-                constraints: Vec::new(),
-            };
-            seen[node.index()] = true;
-            stack.push(*node);
-            while let Some(n) = stack.pop() {
-                match self.graph.node_weight(n) {
-                    Some(Node::Entity(e)) => comp.entities.push(*e),
-                    Some(Node::Constraint(c)) => comp.constraints.push(*c),
-                    None => {}
-                }
-                for m in self.graph.neighbors(n) {
-                    if !seen[m.index()] {
-                        seen[m.index()] = true;
-                        stack.push(m);
-                    }
-                }
-            }
-            comp.entities.sort_unstable();
-            comp.constraints.sort_unstable();
-            out.push(comp);
-        }
+        let (mut out, seen) = self.walk_from(self.entities.values().map(|(_, node)| *node));
         for (id, (_, node)) in &self.constraints {
             if !seen[node.index()] {
                 out.push(Component {
@@ -746,13 +717,27 @@ impl Sketch {
     /// not of the sketch. The constraints that read no entity follow, one component each, as
     /// in [`Sketch::components`]: no mark reaches them, and they are cheap to check again.
     pub(crate) fn dirty_components(&self) -> Vec<Component> {
+        let starts = self
+            .dirty
+            .iter()
+            .filter_map(|id| self.entities.get(id).map(|(_, node)| *node));
+        let (mut out, _) = self.walk_from(starts);
+        out.sort_unstable_by_key(|c| c.entities.first().copied());
+        out.extend(self.standalone.iter().map(|id| Component {
+            entities: Vec::new(),
+            constraints: vec![*id],
+        }));
+        out
+    }
+
+    /// The components reached from the graph nodes `starts` (one per start not reached from an
+    /// earlier one, in the order of the starts), each with its entities and constraints sorted
+    /// by id; and which nodes the walk saw.
+    fn walk_from(&self, starts: impl Iterator<Item = NodeIndex>) -> (Vec<Component>, Vec<bool>) {
         let mut seen = vec![false; self.graph.node_bound()];
         let mut out = Vec::new();
         let mut stack = Vec::new();
-        for id in &self.dirty {
-            let Some((_, node)) = self.entities.get(id) else {
-                continue;
-            };
+        for node in starts {
             if seen[node.index()] {
                 continue;
             }
@@ -761,7 +746,7 @@ impl Sketch {
                 constraints: Vec::new(),
             };
             seen[node.index()] = true;
-            stack.push(*node);
+            stack.push(node);
             while let Some(n) = stack.pop() {
                 match self.graph.node_weight(n) {
                     Some(Node::Entity(e)) => comp.entities.push(*e),
@@ -779,12 +764,7 @@ impl Sketch {
             comp.constraints.sort_unstable();
             out.push(comp);
         }
-        out.sort_unstable_by_key(|c| c.entities.first().copied());
-        out.extend(self.standalone.iter().map(|id| Component {
-            entities: Vec::new(),
-            constraints: vec![*id],
-        }));
-        out
+        (out, seen)
     }
 
     /// The component containing an entity.
