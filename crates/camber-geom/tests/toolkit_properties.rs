@@ -56,7 +56,8 @@ fn dense_gap(a: &BSplineCurve2<f64>, b: &BSplineCurve2<f64>) -> f64 {
     let mut worst = 0.0_f64;
     for w in a.breakpoints().windows(2) {
         for k in 0..=200 {
-            let u = w[0] + (w[1] - w[0]) * f64::from(k) / 200.0;
+            // w₀ + (w₁ − w₀)·1 can round past w₁ (past the domain's end at the last span).
+            let u = (w[0] + (w[1] - w[0]) * f64::from(k) / 200.0).min(w[1]);
             worst = worst.max((a.point(u).unwrap() - b.point(u).unwrap()).norm());
         }
     }
