@@ -432,6 +432,7 @@ impl Program {
 /// Σ c·x + k, with unit coefficients as plain additions and subtractions (a product of dual
 /// numbers costs as much as any other, whatever the constant).
 #[inline]
+#[allow(clippy::float_cmp)] // exact on purpose: only a coefficient of exactly ±1 is a plain sum
 fn combination<T: Scalar>(x: &[&[T]], terms: &[(Input, f64)], constant: f64) -> T {
     let term = |c: f64, v: T| {
         if c == 1.0 {
