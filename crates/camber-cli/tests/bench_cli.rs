@@ -136,6 +136,20 @@ fn the_analysis_workload_checks_three_sketches() {
 }
 
 #[test]
+fn w8_solves_every_variant_in_one_batch() {
+    let v = bench_json(&["--quick", "--only", "W8"]);
+    let rows = rows(&v);
+    assert_eq!(rows.len(), 1);
+    let r = &rows[0];
+    assert_eq!(r["case"], "100 bspline7 variants");
+    // One time per batch (one batch in the quick mode), every variant checked.
+    assert_eq!(n(r, "samples"), 100, "{r}");
+    assert_eq!(n(r, "valid"), 100, "{r}");
+    assert_eq!(n(r, "failed"), 0, "{r}");
+    assert!(f(r, "median_s") > 0.0);
+}
+
+#[test]
 fn w2_quick_counts_valid_results() {
     let v = bench_json(&["--quick", "--only", "W2"]);
     let rows = rows(&v);

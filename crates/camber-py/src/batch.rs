@@ -2,10 +2,11 @@
 //!
 //! Each item is a `Sketch` (solved in place, like `Sketch.solve`) or a path to a sketch file
 //! (read and solved on the pool). One failure does not stop the others: every item gets its
-//! own result, a Python exception raised by an item's custom residual included. The pool has
-//! at most one worker per core ([`workers`]); Ctrl-C stops the batch (the running solves at
-//! their next evaluation, the items not started at once) and raises `KeyboardInterrupt`,
-//! leaving every item as it was.
+//! own result, a Python exception raised by an item's custom residual included. The items are
+//! solved by one `camber_sketch::solve_many` call, so items of one structure (variants of one
+//! design) are solved on one prepared problem per worker. The pool has at most one worker per
+//! core ([`workers`]); Ctrl-C stops the batch (the running solves at their next evaluation,
+//! the others at their first) and raises `KeyboardInterrupt`, leaving every item as it was.
 
 use std::path::PathBuf;
 
@@ -30,39 +31,54 @@ struct Outcome {
     result: Result<SketchReport, String>,
 }
 
-/// Reads (for a path) and solves one item, watching `cancel`; an item not started when the
-/// flag is raised is not started at all.
-fn run(job: Job, cancel: &CancelFlag) -> Outcome {
-    if cancel.is_cancelled() {
-        return Outcome {
-            sketch: None,
-            result: Err("cancelled".to_owned()),
-        };
+/// Reads (for a path) one item; `Err` for a file that cannot be read or parsed.
+fn load(job: Job) -> Result<camber_sketch::Sketch, String> {
+    match job {
+        Job::Sketch(s) => Ok(*s),
+        Job::Path(p) => std::fs::read_to_string(&p)
+            .map_err(|e| format!("cannot read {}: {e}", p.display()))
+            .and_then(|t| camber_sketch::file::from_json(&t).map_err(|e| e.to_string())),
     }
-    let mut sketch = match job {
-        Job::Sketch(s) => *s,
-        Job::Path(p) => {
-            let loaded = std::fs::read_to_string(&p)
-                .map_err(|e| format!("cannot read {}: {e}", p.display()))
-                .and_then(|t| camber_sketch::file::from_json(&t).map_err(|e| e.to_string()));
-            match loaded {
-                Ok(s) => s,
-                Err(e) => {
-                    return Outcome {
-                        sketch: None,
-                        result: Err(e),
+}
+
+/// Reads the items and solves them all by one [`camber_sketch::solve_many`] call on the
+/// current pool (one prepared problem per worker for items of one structure), watching
+/// `cancel`: once the flag is raised the running solves stop at their next evaluation and the
+/// others fail at their first.
+fn run_all(jobs: Vec<Job>, cancel: &CancelFlag) -> Vec<Outcome> {
+    let loaded: Vec<Result<camber_sketch::Sketch, String>> =
+        jobs.into_par_iter().map(load).collect();
+    let mut sketches = Vec::with_capacity(loaded.len());
+    let loaded: Vec<Result<(), String>> = loaded
+        .into_iter()
+        .map(|l| {
+            l.map(|mut sketch| {
+                sketch.set_options(sketch.options().clone().with_cancel(Some(cancel.clone())));
+                sketches.push(sketch);
+            })
+        })
+        .collect();
+    let results = camber_sketch::solve_many(&mut sketches);
+    let mut solved = sketches.into_iter().zip(results);
+    loaded
+        .into_iter()
+        .map(
+            |l| match l.and_then(|()| solved.next().ok_or_else(|| "lost".to_owned())) {
+                Ok((mut sketch, result)) => {
+                    let result = result.map_err(|e| sketch.describe_error(&e));
+                    sketch.set_options(sketch.options().clone().with_cancel(None));
+                    Outcome {
+                        sketch: Some(sketch),
+                        result,
                     }
                 }
-            }
-        }
-    };
-    sketch.set_options(sketch.options().clone().with_cancel(Some(cancel.clone())));
-    let result = sketch.solve_all().map_err(|e| sketch.describe_error(&e));
-    sketch.set_options(sketch.options().clone().with_cancel(None));
-    Outcome {
-        sketch: Some(sketch),
-        result,
-    }
+                Err(e) => Outcome {
+                    sketch: None,
+                    result: Err(e),
+                },
+            },
+        )
+        .collect()
 }
 
 /// The workers of the pool: `threads` (all cores when None or 0), at most the cores the
@@ -129,13 +145,7 @@ pub fn solve_many(
         .num_threads(workers(threads))
         .build()
         .map_err(|e| errors::CamberError::new_err(format!("cannot start the thread pool: {e}")))?;
-    let outcomes = interrupt::run(py, |cancel| {
-        pool.install(|| {
-            jobs.into_par_iter()
-                .map(|j| run(j, cancel))
-                .collect::<Vec<_>>()
-        })
-    });
+    let outcomes = interrupt::run(py, |cancel| pool.install(|| run_all(jobs, cancel)));
     // The exceptions stay on the failed items they belong to (items copied from one sketch
     // share residuals, hence the look before the slots are emptied).
     let exceptions: Vec<Option<(String, PyErr)>> = match &outcomes {

@@ -79,8 +79,9 @@ pub mod parameters {
     pub use crate::sketch::parameters::*;
 }
 
+pub use batch::solve_many;
 pub use ground::{curve_eval, entity, errors, hermite_chain, ids, lookup, vocabulary};
-pub use session::{analysis, displacement, drag, solve};
+pub use session::{analysis, batch, displacement, drag, solve};
 pub use sketch::warnings;
 
 pub use analysis::{ComponentAnalysis, EntityFreedom, ParameterFreedom};

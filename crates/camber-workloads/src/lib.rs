@@ -20,9 +20,11 @@ pub mod airfoils;
 mod point_chain;
 mod rectangles;
 mod two_curves;
+mod variants;
 pub use point_chain::{point_chain, point_chain_valid};
 pub use rectangles::{w5, w5_at, w5_valid, w5b, Rectangles};
 pub use two_curves::{two_curves, two_curves_valid, TwoCurves, TWO_CURVES_CIRCLES};
+pub use variants::{w8_circles, w8_variants, Circles};
 
 /// W1: the cubic P₀ = (0, 0), P₁ = 1.2·D, P₂ = (2.2, 0.9), P₃ = (3, 0) with D = (cos 30°,
 /// sin 30°); P₃ fixed; start tangent parallel to D with the same sense (in `form`). Returns the
@@ -539,6 +541,12 @@ fn uniform_noise(seed: u64) -> impl FnMut() -> f64 {
 /// tangent perpendicular to the radius there; the least distance from each centre to the curve
 /// equal to the radius for TH (contact on its upper half) and not below it for LE and TE.
 pub fn w2_valid(s: &Sketch, w: &W2) -> bool {
+    w2_valid_with(s, w, &W2_CIRCLES)
+}
+
+/// [`w2_valid`] against the circles `circles` (centre, radius) for LE, TH and TE: W8's
+/// variants have other radii.
+pub fn w2_valid_with(s: &Sketch, w: &W2, circles: &Circles) -> bool {
     use camber_geom::ParametricCurve;
     let tol = 1e-6;
     let Ok(Entity::BSpline(curve)) = s.entity(w.curve) else {
@@ -546,7 +554,7 @@ pub fn w2_valid(s: &Sketch, w: &W2) -> bool {
     };
     let (a, b) = curve.domain();
     for (k, u) in [(0, a), (2, b)] {
-        let (c, r) = W2_CIRCLES[k];
+        let (c, r) = circles[k];
         let Ok((p, t)) = curve.point_and_derivative(u) else {
             return false;
         };
@@ -555,7 +563,7 @@ pub fn w2_valid(s: &Sketch, w: &W2) -> bool {
             return false;
         }
     }
-    W2_CIRCLES.iter().enumerate().all(|(k, (c, r))| {
+    circles.iter().enumerate().all(|(k, (c, r))| {
         let Ok(cp) = camber_geom::queries::closest_point(curve, &Point2::new(c[0], c[1])) else {
             return false;
         };

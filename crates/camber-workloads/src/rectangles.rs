@@ -47,18 +47,23 @@ fn height(k: usize) -> f64 {
     0.6 + 0.2 * (k % 4) as f64
 }
 
-/// The start perturbation's generator (see the module documentation).
-struct Lcg(u64);
+/// The start perturbation's generator (see the module documentation), also W8's radius
+/// factors.
+pub(crate) struct Lcg(pub(crate) u64);
 
 impl Lcg {
-    /// The next offset in [−0.1, 0.1).
-    fn offset(&mut self) -> f64 {
+    /// The next u = (state >> 11)/2⁵³ in [0, 1).
+    pub(crate) fn unit(&mut self) -> f64 {
         self.0 = self
             .0
             .wrapping_mul(6_364_136_223_846_793_005)
             .wrapping_add(1_442_695_040_888_963_407);
-        let u = (self.0 >> 11) as f64 / (1u64 << 53) as f64;
-        0.1 * (2.0 * u - 1.0)
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    /// The next offset in [−0.1, 0.1).
+    fn offset(&mut self) -> f64 {
+        0.1 * (2.0 * self.unit() - 1.0)
     }
 }
 

@@ -73,6 +73,10 @@ pub enum Workload {
     /// update timed).
     #[value(alias = "w7")]
     W7,
+    /// W8: 10,000 variants of the W2 B-spline sketch (other circle radii) solved by one
+    /// `solve_many` call (total / variants timed).
+    #[value(alias = "w8")]
+    W8,
     /// A: the DOF analysis (what `camber check` runs) of the W3 chain of N segments, of a
     /// chain of 10·N points held by distances and of the fully constrained W5b ladder of N
     /// cells.
@@ -86,7 +90,7 @@ pub enum Workload {
 
 impl Workload {
     /// Every workload, in table order.
-    pub const ALL: [Workload; 11] = [
+    pub const ALL: [Workload; 12] = [
         Workload::W1,
         Workload::W2,
         Workload::W3,
@@ -96,11 +100,12 @@ impl Workload {
         Workload::W5b,
         Workload::W6,
         Workload::W7,
+        Workload::W8,
         Workload::A,
         Workload::T,
     ];
 
-    /// "W1", "W2", "W3", "W3a", "W4", "W5", "W5b", "W6", "W7", "A", "T".
+    /// "W1", "W2", "W3", "W3a", "W4", "W5", "W5b", "W6", "W7", "W8", "A", "T".
     pub fn name(self) -> &'static str {
         match self {
             Workload::W1 => "W1",
@@ -112,6 +117,7 @@ impl Workload {
             Workload::W5b => "W5b",
             Workload::W6 => "W6",
             Workload::W7 => "W7",
+            Workload::W8 => "W8",
             Workload::A => "A",
             Workload::T => "T",
         }
@@ -148,6 +154,10 @@ pub struct Plan {
     pub w6_edits: usize,
     /// W7: chain lengths N dragged.
     pub w7_sizes: Vec<usize>,
+    /// W8: variants per batch.
+    pub w8_variants: usize,
+    /// W8: batches timed (one sample each: total / variants).
+    pub w8_runs: usize,
     /// T: control points N of the toolkit's curves.
     pub toolkit_sizes: Vec<usize>,
 }
@@ -168,6 +178,8 @@ impl Plan {
             w6_rectangles: 1_000,
             w6_edits: 200,
             w7_sizes: vec![1_000, 10_000],
+            w8_variants: 10_000,
+            w8_runs: 3,
             toolkit_sizes: vec![1_000, 10_000, 100_000],
         }
     }
@@ -186,6 +198,8 @@ impl Plan {
             w6_rectangles: 100,
             w6_edits: 20,
             w7_sizes: vec![100],
+            w8_variants: 100,
+            w8_runs: 1,
             toolkit_sizes: vec![100, 1_000],
         }
     }
@@ -238,6 +252,7 @@ impl Plan {
                 Workload::W4 => self.w4_repeats,
                 Workload::W6 => self.w6_edits,
                 Workload::W7 => self.w7_sizes.len() * 200,
+                Workload::W8 => self.w8_runs * self.w8_variants,
                 Workload::A => {
                     3 * self
                         .chain_sizes
@@ -393,6 +408,7 @@ pub fn run(plan: &Plan, bar: &ProgressBar) -> Result<Vec<Row>> {
             Workload::W5b => rows.extend(runners::rectangles(plan, true, bar)?),
             Workload::W6 => rows.push(runners::w6(plan, bar)?),
             Workload::W7 => rows.extend(runners::w7(plan, bar)?),
+            Workload::W8 => rows.push(runners::w8(plan, bar)?),
             Workload::A => rows.extend(runners::analysis(plan, bar)?),
             Workload::T => rows.extend(toolkit::toolkit(plan, bar)?),
         }

@@ -391,6 +391,49 @@ pub(super) fn w7(plan: &Plan, bar: &ProgressBar) -> Result<Vec<Row>> {
     Ok(rows)
 }
 
+/// W8: `plan.w8_variants` variants of the W2 `bspline7` sketch at its rough start, the circle
+/// radii scaled by the W5 LCG's factors, all solved by one [`camber_sketch::solve_many`] call
+/// on the current pool (one thread under `RAYON_NUM_THREADS=1`); each of `plan.w8_runs`
+/// batches gives one time, its total / variants (the median and p95 are over the batches).
+/// Valid: W2's check against each variant's own circles, counted over every variant of every
+/// batch (the row's samples).
+pub(super) fn w8(plan: &Plan, bar: &ProgressBar) -> Result<Row> {
+    let n = plan.w8_variants;
+    bar.set_message(format!("W8 {n} variants"));
+    let (variants, w) = wl::w8_variants(n)?;
+    let (starts, circles): (Vec<Sketch>, Vec<_>) = variants.into_iter().unzip();
+    let (mut times, mut valid, mut failed) = (Vec::new(), 0, 0);
+    let mut solvers = BTreeMap::new();
+    for _ in 0..plan.w8_runs {
+        let mut batch = starts.clone();
+        let t0 = Instant::now();
+        let results = camber_sketch::solve_many(&mut batch);
+        let total = t0.elapsed();
+        times.push(total / u32::try_from(n.max(1)).unwrap_or(u32::MAX));
+        bar.inc(n as u64);
+        for ((s, c), result) in batch.iter().zip(&circles).zip(&results) {
+            match result {
+                Ok(report) => count_solvers(&mut solvers, report),
+                Err(_) => failed += 1,
+            }
+            valid += usize::from(wl::w2_valid_with(s, &w, c));
+        }
+    }
+    let mut r = row(
+        Workload::W8,
+        format!("{n} bspline7 variants"),
+        &times,
+        valid,
+    );
+    // Every variant solved counts as a sample of the validity check; the times are one per
+    // batch.
+    r.samples = n * plan.w8_runs;
+    r.size = Some(n);
+    r.failed = failed;
+    r.solvers = solvers;
+    Ok(r)
+}
+
 /// Whether the analysis of the W3 chain of `n` segments is right. Its 8n unknowns lose 4 to the
 /// pinned ends and 2(n − 1) to the merged joints, leaving 6n − 2; the rows are the n − 1 joint
 /// directions and the n chords, all independent: DOF 4n − 1 in one component, nothing

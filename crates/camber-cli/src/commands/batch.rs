@@ -6,10 +6,11 @@
 //! printed in name order once all are done. The command fails (after printing every line) when
 //! any file failed.
 //!
-//! Everything a file costs runs on the pool: reading, parsing, solving, writing the solved
-//! sketch and turning its report into the JSON text of its line (a report lists every
-//! constraint's residual, tens of kilobytes for a large sketch); the calling thread only writes
-//! the finished lines.
+//! Everything a file costs runs on the pool: reading and parsing, solving (one
+//! [`camber_sketch::solve_many`] call per group of files, so that files of one structure are
+//! solved on one prepared problem per worker), and turning each report into the JSON text of
+//! its line (a report lists every constraint's residual, tens of kilobytes for a large sketch),
+//! writing the solved sketches (`--output`); the calling thread only writes the finished lines.
 
 use std::path::{Path, PathBuf};
 
@@ -49,30 +50,60 @@ pub fn sketch_files(dir: &Path) -> Result<Vec<PathBuf>> {
     Ok(files)
 }
 
-/// Loads, solves (every component) and optionally writes one file: whether it solved, and
-/// its JSON line as text.
-fn solve_one(path: &Path, output: Option<&Path>) -> (bool, String) {
-    let name = path
-        .file_name()
+/// Files loaded and solved together: one `solve_many` call per group, so that the sketches in
+/// memory at once stay bounded whatever the directory holds.
+const GROUP: usize = 1024;
+
+/// The name of a file, for its line.
+fn file_name(path: &Path) -> String {
+    path.file_name()
         .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    let outcome = sketch_file::load(path).and_then(|mut sketch| {
-        let report = sketch
-            .solve_all()
-            .map_err(|e| anyhow!("solve failed: {}", describe_error(&sketch, &e)))?;
-        if let Some(dir) = output {
-            sketch_file::save(&dir.join(&name), &sketch)?;
-        }
-        Ok(report)
-    });
-    let (ok, line): (bool, Value) = match outcome {
-        Ok(report) => (true, json!({"file": name, "ok": true, "report": report})),
-        Err(e) => (
-            false,
-            json!({"file": name, "ok": false, "error": format!("{e:#}")}),
-        ),
-    };
-    (ok, line.to_string())
+        .unwrap_or_default()
+}
+
+/// Loads, solves (every component, by one [`camber_sketch::solve_many`] call, which reuses a
+/// prepared problem for files of one structure) and optionally writes the files of `group`:
+/// whether each solved, and its JSON line as text, in order.
+fn solve_group(group: &[PathBuf], output: Option<&Path>) -> Vec<(bool, String)> {
+    let loaded: Vec<Result<camber_sketch::Sketch>> =
+        group.par_iter().map(|p| sketch_file::load(p)).collect();
+    let mut sketches = Vec::with_capacity(loaded.len());
+    let loaded: Vec<Result<()>> = loaded
+        .into_iter()
+        .map(|l| l.map(|sketch| sketches.push(sketch)))
+        .collect();
+    let results = camber_sketch::solve_many(&mut sketches);
+    let mut solved = sketches.into_iter().zip(results);
+    let files: Vec<(&PathBuf, Result<_>)> = group
+        .iter()
+        .zip(loaded)
+        .map(|(path, l)| {
+            let file = l.and_then(|()| solved.next().ok_or_else(|| anyhow!("lost the solve")));
+            (path, file)
+        })
+        .collect();
+    files
+        .into_par_iter()
+        .map(|(path, file)| {
+            let name = file_name(path);
+            let outcome = file.and_then(|(sketch, result)| {
+                let report =
+                    result.map_err(|e| anyhow!("solve failed: {}", describe_error(&sketch, &e)))?;
+                if let Some(dir) = output {
+                    sketch_file::save(&dir.join(&name), &sketch)?;
+                }
+                Ok(report)
+            });
+            let (ok, line): (bool, Value) = match outcome {
+                Ok(report) => (true, json!({"file": name, "ok": true, "report": report})),
+                Err(e) => (
+                    false,
+                    json!({"file": name, "ok": false, "error": format!("{e:#}")}),
+                ),
+            };
+            (ok, line.to_string())
+        })
+        .collect()
 }
 
 /// Solves every file of the directory on `--jobs` threads and prints one line per file.
@@ -93,8 +124,12 @@ pub fn run(args: &BatchArgs) -> Result<()> {
         .build()
         .map_err(|e| anyhow!("cannot start {} threads: {e}", args.jobs.unwrap_or(0)))?;
     let output = args.output.as_deref();
-    let lines: Vec<(bool, String)> =
-        pool.install(|| files.par_iter().map(|f| solve_one(f, output)).collect());
+    let lines: Vec<(bool, String)> = pool.install(|| {
+        files
+            .chunks(GROUP)
+            .flat_map(|group| solve_group(group, output))
+            .collect()
+    });
     let failed = lines.iter().filter(|(ok, _)| !ok).count();
     for (_, line) in &lines {
         crate::print_stdout(line)?;

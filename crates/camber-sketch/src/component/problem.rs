@@ -168,6 +168,13 @@ pub struct ComponentProblem {
     pub(crate) plan: camber_solve::Plan,
     /// Storage for the state a solve starts from (it goes back there on failure).
     pub(crate) saved: camber_solve::ProblemState,
+    /// The starting value of every free parameter, in the order of `free`.
+    free_starts: Vec<f64>,
+    /// Whether nothing of the problem but its values depends on where the entities were when
+    /// it was built (no piece read them, no relaxable rows, no eliminations): another sketch
+    /// of the same structure may then be solved on it once its values are refreshed
+    /// ([`ComponentProblem::refresh_values`]).
+    pub(crate) refreshable: bool,
 }
 
 impl ComponentProblem {
@@ -286,6 +293,7 @@ impl ComponentProblem {
                 let u = self.problem.unknown(b, 0)?;
                 self.problem.set_bounds(Var::Unknown(u), lo, hi)?;
                 self.free.push((owner, b));
+                self.free_starts.push(start);
                 (b, true)
             }
             Slot::FreeOf(other, k) => (
@@ -474,6 +482,8 @@ pub(crate) fn build(
         merged_redundant: Vec::new(),
         plan: camber_solve::Plan::new(),
         saved: camber_solve::ProblemState::default(),
+        free_starts: Vec::new(),
+        refreshable: false,
     };
     let mut entities: SmallVec<[&Entity; 16]> = SmallVec::with_capacity(component.entities.len());
     let (mut blocks_needed, mut unknowns_needed) = (0, 0);
@@ -736,6 +746,44 @@ pub(crate) fn build(
 }
 
 impl ComponentProblem {
+    /// Sets the problem's values to what building it from `lookup` would give: every entity's
+    /// points and scalars from `lookup`, every free parameter at its starting value. The
+    /// structure, the residual objects and the plan stay, so a solve after this is a solve of
+    /// a component built from `lookup`, on the kept plan — provided the component's entities
+    /// in `lookup` have the shapes, and its constraints the data, the problem was built from,
+    /// which the caller checks (`crate::session::batch`).
+    ///
+    /// `Ok(false)`, with nothing changed, when the problem is not [`Self::refreshable`] or an
+    /// entity of `lookup` has other counts of points or scalars.
+    ///
+    /// # Errors
+    /// An entity of the component missing from `lookup`; a non-finite value.
+    pub(crate) fn refresh_values(&mut self, lookup: &dyn EntityLookup) -> Result<bool> {
+        if !self.refreshable {
+            return Ok(false);
+        }
+        for (id, b) in &self.layout {
+            let e = lookup.lookup(*id)?;
+            if e.points().len() != b.points || e.scalars().len() != b.scalars {
+                return Ok(false);
+            }
+        }
+        for (id, b) in &self.layout {
+            let e = lookup.lookup(*id)?;
+            let blocks = &self.blocks[b.start..b.start + b.points + b.scalars];
+            for (block, p) in blocks.iter().zip(e.points()) {
+                self.problem.set_block_values(*block, &[p.x, p.y])?;
+            }
+            for (block, v) in blocks[b.points..].iter().zip(e.scalars()) {
+                self.problem.set_block_values(*block, &[v])?;
+            }
+        }
+        for ((_, block), start) in self.free.iter().zip(&self.free_starts) {
+            self.problem.set_block_values(*block, &[*start])?;
+        }
+        Ok(true)
+    }
+
     /// The entities of the component with their points (and radii) read from the unknowns `x`.
     pub(crate) fn entities_at(
         &self,

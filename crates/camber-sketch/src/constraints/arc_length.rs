@@ -222,7 +222,7 @@ impl ConstraintKind for ArcLength {
     fn compile(&self, cx: &mut Compiler<'_>) -> Result<()> {
         let length = positive("length", self.length)?;
         let (basis, slots) = cx.curve_basis(self.curve)?;
-        let e = cx.entity(self.curve)?;
+        let e = cx.entity_values(self.curve)?;
         let points: Vec<[f64; 2]> = e.points().iter().map(|p| [p.x, p.y]).collect();
         let refs: Vec<&[f64]> = points.iter().map(|p| &p[..]).collect();
         let rule = LengthOf::new(basis, &breakpoints(e), &refs, length);

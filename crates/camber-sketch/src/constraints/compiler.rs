@@ -22,9 +22,16 @@ use crate::ground::vocabulary::Contact;
 use crate::residuals::Param;
 
 /// The compilation of one constraint: the entities it may read, and the pieces it wrote.
+///
+/// A kind whose pieces depend on where the entities are now (not only on their kind, shape and
+/// ids: a target read from the current points, a reference length) reads them through
+/// [`Compiler::current`] or [`Compiler::entity_values`], which mark the compilation as
+/// reading values: a prepared component may then not be refreshed with another sketch's values
+/// (`crate::session::batch`).
 pub struct Compiler<'a> {
     lookup: &'a dyn EntityLookup,
     pieces: Pieces,
+    reads_values: std::cell::Cell<bool>,
 }
 
 impl std::fmt::Debug for Compiler<'_> {
@@ -42,12 +49,14 @@ impl<'a> Compiler<'a> {
             lookup,
             // Most kinds write one piece.
             pieces: Pieces::with_capacity(1),
+            reads_values: std::cell::Cell::new(false),
         }
     }
 
-    /// The pieces written.
-    pub(crate) fn finish(self) -> Pieces {
-        self.pieces
+    /// The pieces written, and whether they depend on the entities' current values (see the
+    /// type's documentation).
+    pub(crate) fn finish(self) -> (Pieces, bool) {
+        (self.pieces, self.reads_values.get())
     }
 
     /// Writes a piece.
@@ -83,8 +92,16 @@ impl<'a> Compiler<'a> {
         self.lookup.parameter(name)
     }
 
-    /// An entity.
+    /// An entity, for its kind and shape (its current points and scalars are read through
+    /// [`Compiler::entity_values`]).
     pub(crate) fn entity(&self, id: EntityId) -> Result<&'a Entity> {
+        self.lookup.lookup(id)
+    }
+
+    /// An entity whose current points or scalars the pieces depend on: marks the compilation
+    /// as reading values.
+    pub(crate) fn entity_values(&self, id: EntityId) -> Result<&'a Entity> {
+        self.reads_values.set(true);
         self.lookup.lookup(id)
     }
 
@@ -199,6 +216,7 @@ impl<'a> Compiler<'a> {
 
     /// The current value of a combination.
     pub(crate) fn current(&self, terms: &ETerms) -> Result<[f64; 2]> {
+        self.reads_values.set(true);
         let mut s = [0.0; 2];
         for (e, j, c) in terms {
             let v = combine(self.entity(*e)?.points(), &[(*j, *c)]);

@@ -223,6 +223,12 @@ macro_rules! kinds {
 
             /// Validates against the entities of `lookup` and compiles to pieces.
             pub(crate) fn compile(&self, lookup: &dyn EntityLookup) -> Result<Pieces> {
+                Ok(self.compile_tracked(lookup)?.0)
+            }
+
+            /// [`Constraint::compile`], also saying whether the pieces depend on the
+            /// entities' current values ([`Compiler`]).
+            pub(crate) fn compile_tracked(&self, lookup: &dyn EntityLookup) -> Result<(Pieces, bool)> {
                 let mut cx = Compiler::new(lookup);
                 match self {
                     $(Constraint::$variant(c) => c.compile(&mut cx)?,)*

@@ -170,6 +170,18 @@ impl Sketch {
         comps: Vec<Component>,
         parallel: bool,
     ) -> Result<SketchReport> {
+        self.solve_components_with(comps, parallel, &mut |_, _| None)
+    }
+
+    /// [`Sketch::solve_components_in`], where a component that this sketch has not prepared
+    /// is solved on the problem `donor` gives for it, if any (a problem of the same structure
+    /// with this sketch's values: `crate::session::batch`); the others are built.
+    pub(crate) fn solve_components_with(
+        &mut self,
+        comps: Vec<Component>,
+        parallel: bool,
+        donor: &mut dyn FnMut(&Sketch, &Component) -> Option<crate::component::ComponentProblem>,
+    ) -> Result<SketchReport> {
         // The options depend on the largest coordinate of the whole sketch: worked out once per
         // solve, not once per component (which made many components quadratic).
         let options = self.solve_options();
@@ -190,13 +202,18 @@ impl Sketch {
             .filter(|c| !c.constraints.is_empty())
             .collect();
         // Each component with the problem an earlier solve prepared for it, if any.
-        let jobs: Vec<Job> = comps
+        let mut jobs: Vec<Job> = comps
             .into_iter()
             .map(|comp| {
                 let prepared = self.prepared.take(&comp);
                 (comp, prepared)
             })
             .collect();
+        for (comp, prepared) in &mut jobs {
+            if prepared.is_none() {
+                *prepared = donor(self, comp).map(|cp| (cp, Vec::new()));
+            }
+        }
         let outcomes = if parallel {
             self.solve_each_in_parallel(jobs, &options)?
         } else {
@@ -327,7 +344,7 @@ const PARALLEL_MIN_CONSTRAINTS: usize = 512;
 
 /// Whether the components are solved on rayon's pool: more than one component, more than one
 /// thread to run on, and at least [`PARALLEL_MIN_CONSTRAINTS`] constraints in all.
-fn solves_in_parallel(comps: &[Component]) -> bool {
+pub(crate) fn solves_in_parallel(comps: &[Component]) -> bool {
     comps.iter().filter(|c| !c.constraints.is_empty()).count() > 1
         && comps.iter().map(|c| c.constraints.len()).sum::<usize>() >= PARALLEL_MIN_CONSTRAINTS
         && rayon::current_num_threads() > 1

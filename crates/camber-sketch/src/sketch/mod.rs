@@ -845,8 +845,10 @@ impl Sketch {
         // sketch's map at every one of the many lookups below.
         let lookup = crate::ground::lookup::ComponentEntities::new(self, &comp.entities);
         let mut compiled = Vec::with_capacity(comp.constraints.len());
+        let mut reads_values = false;
         for id in &comp.constraints {
-            let pieces = self.constraint(*id)?.compile(&lookup)?;
+            let (pieces, reads) = self.constraint(*id)?.compile_tracked(&lookup)?;
+            reads_values |= reads;
             let pieces = if self.priority(*id) > 0 {
                 crate::constraints::piece::as_rows(&lookup, pieces)?
             } else {
@@ -861,6 +863,9 @@ impl Sketch {
             .filter(|id| self.priority(*id) > 0)
             .collect();
         let mut cp = build(&lookup, comp, &compiled, &relaxable)?;
+        // Rows of relaxable constraints hold their points' current values, and eliminations
+        // start their auxiliary unknowns from them.
+        cp.refreshable = !reads_values && relaxable.is_empty() && cp.problem.num_aux() == 0;
         for id in relaxable {
             cp.problem.set_priority(id, self.priority(id));
         }

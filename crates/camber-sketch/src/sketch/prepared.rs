@@ -111,6 +111,22 @@ impl Prepared {
         self.edited.insert(constraint);
     }
 
+    /// Takes out every prepared component whose constraints kept their values since it was
+    /// prepared (the others are dropped); nothing is left prepared.
+    pub(crate) fn take_all(&mut self) -> Vec<ComponentProblem> {
+        let taken = std::mem::take(self);
+        taken
+            .by_first
+            .into_values()
+            .filter(|cp| {
+                !cp.component()
+                    .constraints
+                    .iter()
+                    .any(|c| taken.edited.contains(c))
+            })
+            .collect()
+    }
+
     /// Drops every prepared component.
     pub(crate) fn forget_all(&mut self) {
         *self = Self::default();
@@ -120,6 +136,95 @@ impl Prepared {
     #[cfg(test)]
     pub(crate) fn len(&self) -> usize {
         self.by_first.len()
+    }
+}
+
+/// What a component's problem was built from, besides the entities' values: the sketch's
+/// options and named parameters, the component's entities (their kinds and shapes: degree,
+/// knots, NURBS weights), their point weights, its constraints' data and priorities, all as
+/// they were before the solve. Another sketch whose component matches it builds the same
+/// problem up to values, so it may be solved on that problem once the values are refreshed
+/// ([`ComponentProblem::refresh_values`]).
+#[derive(Debug, Clone)]
+pub(crate) struct Signature {
+    component: Component,
+    options: camber_solve::Options,
+    parameters: super::parameters::Parameters,
+    entities: Vec<crate::ground::entity::Entity>,
+    weights: Vec<((EntityId, usize), f64)>,
+    constraints: Vec<(crate::constraints::Constraint, camber_solve::Priority)>,
+}
+
+impl Signature {
+    /// The signature of `comp` in `sketch` as it is now.
+    ///
+    /// # Errors
+    /// An entity or constraint of `comp` missing from `sketch`.
+    pub(crate) fn of(sketch: &super::Sketch, comp: &Component) -> crate::Result<Self> {
+        let mut entities = Vec::with_capacity(comp.entities.len());
+        let mut weights = Vec::new();
+        for id in &comp.entities {
+            entities.push(sketch.entity(*id)?.clone());
+            weights.extend(
+                sketch
+                    .weights
+                    .range((*id, 0)..=(*id, usize::MAX))
+                    .map(|(k, w)| (*k, *w)),
+            );
+        }
+        let mut constraints = Vec::with_capacity(comp.constraints.len());
+        for id in &comp.constraints {
+            constraints.push((sketch.constraint(*id)?.clone(), sketch.priority(*id)));
+        }
+        Ok(Self {
+            component: comp.clone(),
+            options: sketch.options.clone(),
+            parameters: sketch.parameters.clone(),
+            entities,
+            weights,
+            constraints,
+        })
+    }
+
+    /// The component it describes.
+    pub(crate) fn component(&self) -> &Component {
+        &self.component
+    }
+
+    /// Whether `comp` of `sketch` builds the problem this signature's component built, up to
+    /// the entities' values: the same component, options, parameters, constraint data,
+    /// priorities and point weights, and entities of the same kinds and shapes.
+    pub(crate) fn matches(&self, sketch: &super::Sketch, comp: &Component) -> bool {
+        if self.component != *comp
+            || self.options != sketch.options
+            || self.parameters != sketch.parameters
+        {
+            return false;
+        }
+        let same_constraints =
+            comp.constraints
+                .iter()
+                .zip(&self.constraints)
+                .all(|(id, (c, priority))| {
+                    sketch.priority(*id) == *priority
+                        && sketch.constraint(*id).is_ok_and(|d| d == c)
+                });
+        let same_entities = comp.entities.iter().zip(&self.entities).all(|(id, e)| {
+            sketch.entity(*id).is_ok_and(|now| {
+                e.with_points(now.points(), &now.scalars())
+                    .is_ok_and(|reshaped| reshaped == *now)
+            })
+        });
+        let mut weights = comp
+            .entities
+            .iter()
+            .flat_map(|id| sketch.weights.range((*id, 0)..=(*id, usize::MAX)));
+        let same_weights = self.weights.iter().all(|(k, w)| {
+            weights
+                .next()
+                .is_some_and(|(k2, w2)| k == k2 && w.to_bits() == w2.to_bits())
+        }) && weights.next().is_none();
+        same_constraints && same_entities && same_weights
     }
 }
 

@@ -16,7 +16,6 @@ use super::residual::{Function, Functions};
 use super::ExprArg;
 use crate::constraints::piece::{ETerms, Slot};
 use crate::constraints::Compiler;
-use crate::ground::entity::Entity;
 use crate::ground::errors::Error;
 use crate::ground::ids::{EntityId, PointRef};
 
@@ -120,10 +119,6 @@ impl<'c, 'a> SketchScope<'c, 'a> {
         }
     }
 
-    fn entity(&mut self, id: EntityId) -> Result<&'a Entity, String> {
-        self.cx.entity(id).map_err(|e| self.fail(e))
-    }
-
     /// The curve (line, Bézier, B-spline, NURBS, Hermite, composite) of argument `name`.
     fn curve_of(&mut self, name: &str) -> Option<EntityId> {
         match self.args.get(name)? {
@@ -194,7 +189,7 @@ impl<'c, 'a> SketchScope<'c, 'a> {
             }));
         }
         let (basis, points) = self.cx.curve_basis(curve).map_err(|e| self.fail(e))?;
-        let e = self.entity(curve)?;
+        let e = self.cx.entity_values(curve).map_err(|e| self.fail(e))?;
         let now: Vec<[f64; 2]> = e.points().iter().map(|p| [p.x, p.y]).collect();
         let refs: Vec<&[f64]> = now.iter().map(|p| &p[..]).collect();
         let rule = crate::constraints::arc_length::LengthOf::new(
