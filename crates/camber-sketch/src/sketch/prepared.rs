@@ -160,7 +160,7 @@ impl Signature {
     ///
     /// # Errors
     /// An entity or constraint of `comp` missing from `sketch`.
-    pub(crate) fn of(sketch: &super::Sketch, comp: &Component) -> crate::Result<Self> {
+    pub(crate) fn of(sketch: &super::Sketch, comp: &Component) -> crate::ground::errors::Result<Self> {
         let mut entities = Vec::with_capacity(comp.entities.len());
         let mut weights = Vec::new();
         for id in &comp.entities {
