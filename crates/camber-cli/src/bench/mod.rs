@@ -295,6 +295,9 @@ pub struct Row {
     /// not the update's; it is reported, not subtracted.
     #[serde(default)]
     pub timer_s: Option<f64>,
+    /// T: the times are the process's CPU time, not wall time.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub cpu_time: bool,
 }
 
 /// The q-quantile (0 < q ≤ 1) of `sorted` by nearest rank: the ⌈q·n⌉-th smallest.
@@ -336,6 +339,7 @@ fn row(workload: Workload, case: String, times: &[Duration], valid: usize) -> Ro
         same_size_as_previous: false,
         moved_over_min_norm: None,
         timer_s: None,
+        cpu_time: false,
     }
 }
 
@@ -429,6 +433,9 @@ fn notes(r: &Row) -> String {
     }
     if let Some(t) = r.timer_s {
         parts.push(format!("timer {} included", human(t)));
+    }
+    if r.cpu_time {
+        parts.push("CPU time".to_owned());
     }
     if let Some(g) = r.growth {
         parts.push(format!("growth {g:.2}"));
