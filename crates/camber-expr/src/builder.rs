@@ -4,11 +4,26 @@
 //! Every node is a scalar; a vector value is a pair of nodes. An operation whose operands are
 //! all constants is computed at once (with the same arithmetic as the tape) and must give a
 //! finite number; a division by a constant zero is refused where the divisor starts.
+//!
+//! Two rewrites keep the tape as short as the same residual written by hand:
+//! - **affine folding**: a sum, difference, negation, or product or quotient by a constant of
+//!   affine combinations (Σ c·x + k) is one combination again, as long as it stays small
+//!   ([`MAX_FOLDED_TERMS`] inputs), so `P - Q` is two combinations, not four reads and two
+//!   subtractions;
+//! - **common subexpressions**: a node equal to one already written (same operation on the same
+//!   operands, or the same combination) is that node, so `dot(P - Q, P - Q)` computes `P - Q`
+//!   once.
 
 use crate::errors::{Error, Result, TypeWord};
 use crate::ops::{Bin, Fun};
 use crate::types::{Input, Term, Type, Value};
+use std::collections::HashMap;
+
 use crate::MAX_TAPE;
+
+/// The most inputs an affine combination gets by folding (longer sums stay operations, so a
+/// long sum does not copy its terms once per addition).
+pub(crate) const MAX_FOLDED_TERMS: usize = 8;
 
 /// A node index.
 pub(crate) type Reg = u32;
@@ -59,7 +74,21 @@ pub(crate) struct Builder {
     calls: Vec<(u32, Vec<Reg>, Reg)>,
     /// Column of a byte offset.
     pub(crate) columns: Columns,
+    /// Nodes already written, for common subexpressions.
+    memo: HashMap<Key, Reg>,
 }
+
+/// What makes two nodes the same computation (constants by their bits).
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+enum Key {
+    Lin(Vec<(Input, u64)>, u64),
+    Bin(Bin, Reg, Reg),
+    Fun(Fun, Reg),
+    Powi(Reg, i32),
+}
+
+/// An affine combination being folded: its terms and constant.
+type Affine = (Vec<(Input, f64)>, f64);
 
 /// Byte offsets to 1-based character columns of one text.
 #[derive(Debug, Default, Clone)]
@@ -86,6 +115,16 @@ impl Builder {
     /// The column of byte offset `at`.
     pub(crate) fn col(&self, at: usize) -> usize {
         self.columns.of(at)
+    }
+
+    /// Writes `node` unless an equal one exists (see the module documentation).
+    fn push_shared(&mut self, key: Key, node: Node) -> Result<Reg> {
+        if let Some(&r) = self.memo.get(&key) {
+            return Ok(r);
+        }
+        let r = self.push(node, None)?;
+        self.memo.insert(key, r);
+        Ok(r)
     }
 
     fn push(&mut self, node: Node, value: Option<f64>) -> Result<Reg> {
@@ -127,6 +166,92 @@ impl Builder {
         self.consts.get(r as usize).copied().flatten()
     }
 
+    /// The node of Σ c·x + k (zero coefficients dropped; a constant when none is left).
+    fn lin(&mut self, mut terms: Vec<(Input, f64)>, constant: f64, at: usize) -> Result<Reg> {
+        terms.retain(|(_, c)| *c != 0.0);
+        if terms.is_empty() {
+            return self.constant(constant, at);
+        }
+        if !constant.is_finite() || terms.iter().any(|(_, c)| !c.is_finite()) {
+            return Err(Error::NonFinite {
+                column: self.col(at),
+                value: f64::NAN,
+            });
+        }
+        let key = (terms.len() <= MAX_FOLDED_TERMS).then(|| {
+            Key::Lin(
+                terms.iter().map(|(i, c)| (*i, c.to_bits())).collect(),
+                constant.to_bits(),
+            )
+        });
+        if let Some(&r) = key.as_ref().and_then(|k| self.memo.get(k)) {
+            return Ok(r);
+        }
+        if self.nodes.len() + self.terms.len() + terms.len() >= MAX_TAPE {
+            return Err(Error::TooLarge { max: MAX_TAPE });
+        }
+        let start = u32::try_from(self.terms.len()).unwrap_or(u32::MAX);
+        self.terms.extend(terms);
+        let end = u32::try_from(self.terms.len()).unwrap_or(u32::MAX);
+        let r = self.push(
+            Node::Lin {
+                start,
+                end,
+                constant,
+            },
+            None,
+        )?;
+        if let Some(k) = key {
+            self.memo.insert(k, r);
+        }
+        Ok(r)
+    }
+
+    /// The small affine combination node `r` is (a constant is one with no terms).
+    fn affine(&self, r: Reg) -> Option<Affine> {
+        match self.nodes.get(r as usize)? {
+            Node::Const(c) => Some((Vec::new(), *c)),
+            Node::Lin {
+                start,
+                end,
+                constant,
+            } if (*end - *start) as usize <= MAX_FOLDED_TERMS => Some((
+                self.terms.get(*start as usize..*end as usize)?.to_vec(),
+                *constant,
+            )),
+            _ => None,
+        }
+    }
+
+    /// a·α + b·β as one combination, if it stays small (terms of one input added up).
+    fn combine(a: &Affine, alpha: f64, b: &Affine, beta: f64) -> Option<Affine> {
+        let mut terms: Vec<(Input, f64)> = a.0.iter().map(|(i, c)| (*i, c * alpha)).collect();
+        for (i, c) in &b.0 {
+            match terms.iter_mut().find(|(j, _)| j == i) {
+                Some(t) => t.1 += c * beta,
+                None => terms.push((*i, c * beta)),
+            }
+        }
+        let constant = a.1 * alpha + b.1 * beta;
+        let finite = constant.is_finite() && terms.iter().all(|(_, c)| c.is_finite());
+        (finite && terms.len() <= MAX_FOLDED_TERMS).then_some((terms, constant))
+    }
+
+    /// The folded form of `op` on two nodes when both are small affine combinations and the
+    /// result is one too (a product or quotient needs a constant factor or divisor).
+    fn fold_affine(&self, op: Bin, a: Reg, b: Reg) -> Option<Affine> {
+        let (x, y) = (self.affine(a)?, self.affine(b)?);
+        let none = (Vec::new(), 0.0);
+        match op {
+            Bin::Add => Self::combine(&x, 1.0, &y, 1.0),
+            Bin::Sub => Self::combine(&x, 1.0, &y, -1.0),
+            Bin::Mul if y.0.is_empty() => Self::combine(&x, y.1, &none, 0.0),
+            Bin::Mul if x.0.is_empty() => Self::combine(&y, x.1, &none, 0.0),
+            Bin::Div if y.0.is_empty() && y.1 != 0.0 => Self::combine(&x, 1.0 / y.1, &none, 0.0),
+            _ => None,
+        }
+    }
+
     /// The node of one term of an owner's value.
     pub(crate) fn term(&mut self, t: &Term, args: &[Reg], at: usize) -> Result<Reg> {
         match t {
@@ -138,25 +263,7 @@ impl Builder {
                         value: f64::NAN,
                     });
                 }
-                let kept: Vec<(Input, f64)> =
-                    terms.iter().copied().filter(|(_, c)| *c != 0.0).collect();
-                if kept.is_empty() {
-                    return self.constant(*constant, at);
-                }
-                if self.nodes.len() + self.terms.len() + kept.len() >= MAX_TAPE {
-                    return Err(Error::TooLarge { max: MAX_TAPE });
-                }
-                let start = u32::try_from(self.terms.len()).unwrap_or(u32::MAX);
-                self.terms.extend(kept);
-                let end = u32::try_from(self.terms.len()).unwrap_or(u32::MAX);
-                self.push(
-                    Node::Lin {
-                        start,
-                        end,
-                        constant: *constant,
-                    },
-                    None,
-                )
+                self.lin(terms.clone(), *constant, at)
             }
             Term::Call {
                 func,
@@ -232,15 +339,25 @@ impl Builder {
         }
         match (self.const_of(a), self.const_of(b)) {
             (Some(x), Some(y)) => self.constant(op.apply(x, y), at),
-            _ => self.push(Node::Bin(op, a, b), None),
+            _ => match self.fold_affine(op, a, b) {
+                Some((terms, constant)) => self.lin(terms, constant, at),
+                None => self.push_shared(Key::Bin(op, a, b), Node::Bin(op, a, b)),
+            },
         }
     }
 
     /// A function of one scalar node, folded on a constant.
     pub(crate) fn fun(&mut self, f: Fun, a: Reg, at: usize) -> Result<Reg> {
-        match self.const_of(a) {
-            Some(x) => self.constant(f.apply(x), at),
-            None => self.push(Node::Fun(f, a), None),
+        match (self.const_of(a), f) {
+            (Some(x), _) => self.constant(f.apply(x), at),
+            (None, Fun::Neg) => match self.affine(a) {
+                Some((terms, constant)) => {
+                    let negated = terms.into_iter().map(|(i, c)| (i, -c)).collect();
+                    self.lin(negated, -constant, at)
+                }
+                None => self.push_shared(Key::Fun(f, a), Node::Fun(f, a)),
+            },
+            (None, _) => self.push_shared(Key::Fun(f, a), Node::Fun(f, a)),
         }
     }
 
@@ -249,7 +366,7 @@ impl Builder {
         match self.const_of(a) {
             Some(x) => self.constant(x.powi(n), at),
             None if n == 1 => Ok(a),
-            None => self.push(Node::Powi(a, n), None),
+            None => self.push_shared(Key::Powi(a, n), Node::Powi(a, n)),
         }
     }
 

@@ -144,8 +144,8 @@ pub enum Error {
     /// ```
     /// # use camber_expr::{compile, Error, Names};
     /// let names = Names::new().with_scalar("a", 0, 0);
-    /// // Each row within the text limit, but each term of each row is two operations.
-    /// let many = vec!["a*a+".repeat(16_000) + "a"; 9];
+    /// // Each row within the text limit, each a different sum of 16,000 terms.
+    /// let many: Vec<String> = (1..=20).map(|r| format!("{r}*a+") + &"a*a+".repeat(16_000) + "a").collect();
     /// let rows: Vec<&str> = many.iter().map(String::as_str).collect();
     /// assert!(matches!(compile(&rows, &mut names.clone()), Err(Error::TooLarge { .. })));
     /// ```

@@ -112,6 +112,9 @@ pub struct Program {
 /// Registers kept on the stack during an evaluation; more spill to the heap.
 const STACK_REGISTERS: usize = 32;
 
+/// The register file of a small program (most rows a user writes).
+const SMALL_REGISTERS: usize = 8;
+
 impl Program {
     /// Finishes a build whose rows are `rows`.
     pub(crate) fn finish(b: Builder, rows: &[Val]) -> Self {
@@ -358,8 +361,28 @@ impl Program {
     /// `x[block][offset]` (a missing input reads NaN) and calling `ext` for the owner's
     /// functions.
     pub fn eval<T: Scalar, E: Externals + ?Sized>(&self, x: &[&[T]], ext: &E, out: &mut [T]) {
-        let mut regs: SmallVec<[T; STACK_REGISTERS]> =
-            SmallVec::from_elem(T::zero(), self.registers);
+        // The register file in place on the stack, sized to the program (a moved or oversized
+        // file costs more than a small expression's arithmetic).
+        if self.registers <= SMALL_REGISTERS {
+            let mut regs = [T::zero(); SMALL_REGISTERS];
+            self.run(x, ext, &mut regs, out);
+        } else if self.registers <= STACK_REGISTERS {
+            let mut regs = [T::zero(); STACK_REGISTERS];
+            self.run(x, ext, &mut regs, out);
+        } else {
+            let mut regs = vec![T::zero(); self.registers];
+            self.run(x, ext, &mut regs, out);
+        }
+    }
+
+    /// Runs the code on the register file `regs` (at least `registers()` long).
+    fn run<T: Scalar, E: Externals + ?Sized>(
+        &self,
+        x: &[&[T]],
+        ext: &E,
+        regs: &mut [T],
+        out: &mut [T],
+    ) {
         for ins in &self.code {
             match *ins {
                 Ins::Const { dst, value } => regs[dst as usize] = cst(value),
@@ -370,11 +393,8 @@ impl Program {
                     end,
                     constant,
                 } => {
-                    let mut s: T = cst(constant);
-                    for (input, c) in &self.terms[start as usize..end as usize] {
-                        s += cst::<T>(*c) * read(x, *input);
-                    }
-                    regs[dst as usize] = s;
+                    regs[dst as usize] =
+                        combination(x, &self.terms[start as usize..end as usize], constant);
                 }
                 Ins::Bin { dst, op, a, b } => {
                     regs[dst as usize] = op.apply(regs[a as usize], regs[b as usize]);
@@ -407,6 +427,40 @@ impl Program {
             *o = regs[*r as usize];
         }
     }
+}
+
+/// Σ c·x + k, with unit coefficients as plain additions and subtractions (a product of dual
+/// numbers costs as much as any other, whatever the constant).
+#[inline]
+#[allow(clippy::float_cmp)] // exact on purpose: only a coefficient of exactly ±1 is a plain sum
+fn combination<T: Scalar>(x: &[&[T]], terms: &[(Input, f64)], constant: f64) -> T {
+    let term = |c: f64, v: T| {
+        if c == 1.0 {
+            v
+        } else if c == -1.0 {
+            -v
+        } else {
+            cst::<T>(c) * v
+        }
+    };
+    let mut s = match terms.first() {
+        Some((input, c)) => term(*c, read(x, *input)),
+        None => T::zero(),
+    };
+    for (input, c) in terms.iter().skip(1) {
+        let v = read(x, *input);
+        if *c == 1.0 {
+            s += v;
+        } else if *c == -1.0 {
+            s -= v;
+        } else {
+            s += cst::<T>(*c) * v;
+        }
+    }
+    if constant != 0.0 {
+        s += cst::<T>(constant);
+    }
+    s
 }
 
 #[inline]

@@ -158,8 +158,8 @@ fn affinity_is_read_from_the_tape() {
 fn constants_fold_and_registers_are_reused() {
     let folded =
         compile(&["s + (2 * 3 - sqrt(16)) * k"], &mut names()).unwrap_or_else(|e| panic!("{e}"));
-    // s + 2·3 is one fused instruction after reading s.
-    assert_eq!(folded.len(), 2);
+    // s + 2·3 is one affine combination (s + 6): a single instruction.
+    assert_eq!(folded.len(), 1);
     let long = ["s*t + ".repeat(200) + "s"];
     let rows: Vec<&str> = long.iter().map(String::as_str).collect();
     let program = compile(&rows, &mut names()).unwrap_or_else(|e| panic!("{e}"));
@@ -169,6 +169,35 @@ fn constants_fold_and_registers_are_reused() {
         program.registers()
     );
     assert_abs_diff_eq!(eval(&program)[0], -200.0 + 0.5, epsilon = 1e-12);
+}
+
+#[test]
+fn affine_parts_fold_and_repeated_subexpressions_are_computed_once() {
+    // p − q is two combinations (p.x − q.x, p.y − q.y); the second p − q is the first; the dot
+    // product is two products and a sum: five instructions, as by hand.
+    let program = compile(&["dot(p - q, p - q)"], &mut names()).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(program.len(), 5);
+    assert_abs_diff_eq!(eval(&program)[0], 16.0 + 4.0, epsilon = 1e-12);
+    // A combination scaled, negated and shifted stays one: −(2·(p.x − q.x) + s)/4 + 1.
+    let program = compile(&["-(2 * (p.x - q.x) + s) / 4 + 1"], &mut names())
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(program.len(), 1);
+    assert!(program.is_affine());
+    assert_abs_diff_eq!(
+        eval(&program)[0],
+        -(2.0 * 4.0 + 0.5) / 4.0 + 1.0,
+        epsilon = 1e-12
+    );
+    // The same nonlinear node written twice is computed once: sin(s)·sin(s) + sin(s).
+    let program =
+        compile(&["sin(s) * sin(s) + sin(s)"], &mut names()).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(program.len(), 4);
+    let v = 0.5_f64.sin();
+    assert_abs_diff_eq!(eval(&program)[0], v * v + v, epsilon = 1e-15);
+    // x − x is the constant zero, whatever x is.
+    let program = compile(&["(p.x - p.x) * s + 2"], &mut names()).unwrap_or_else(|e| panic!("{e}"));
+    assert!(program.is_affine());
+    assert_abs_diff_eq!(eval(&program)[0], 2.0, epsilon = 1e-15);
 }
 
 #[test]

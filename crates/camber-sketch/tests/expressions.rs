@@ -262,7 +262,12 @@ fn bad_expressions_are_refused_with_the_column_and_nothing_changes() {
             "column 10: unknown name `R`",
         ),
         (
+            // Identically zero: the difference folds to the constant 0.
             Expression::new("", &["P.x / (Q.y - Q.y)"]).with_arg("P", ExprArg::Point(p)).with_arg("Q", ExprArg::Point(q)),
+            "column 7: division by a constant zero",
+        ),
+        (
+            Expression::new("", &["P.x / (Q.y - P.y)"]).with_arg("P", ExprArg::Point(p)).with_arg("Q", ExprArg::Point(q)),
             "",
         ),
         (
