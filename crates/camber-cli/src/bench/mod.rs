@@ -239,7 +239,7 @@ impl Plan {
                 Workload::W6 => self.w6_edits,
                 Workload::W7 => self.w7_sizes.len() * 200,
                 Workload::A => {
-                    3 * self
+                    4 * self
                         .chain_sizes
                         .iter()
                         .map(|&s| self.chain_repeats(s))
