@@ -109,7 +109,7 @@ fn chains_report_growth_between_sizes() {
 }
 
 #[test]
-fn the_analysis_workload_checks_three_sketches() {
+fn the_analysis_workload_checks_four_sketches() {
     let v = bench_json(&["--quick", "--only", "A", "--sizes", "4,8"]);
     let rows = rows(&v);
     let cases: Vec<(&str, &str)> = rows
@@ -124,11 +124,14 @@ fn the_analysis_workload_checks_three_sketches() {
             ("A", "points N=40"),
             ("A", "points N=80"),
             ("A", "ladder N=4"),
-            ("A", "ladder N=8")
+            ("A", "ladder N=8"),
+            ("A", "free points N=40"),
+            ("A", "free points N=80")
         ]
     );
     // Every analysis has the DOF its construction gives; the ladder is fully constrained and
-    // settled by its blocks, with no free-unknown projection.
+    // settled by its blocks, with no free-unknown projection; every free point is a component
+    // of DOF 2.
     for r in rows {
         assert_eq!(n(r, "samples"), 2, "{r}");
         assert_eq!(n(r, "valid"), n(r, "samples"), "{r}");

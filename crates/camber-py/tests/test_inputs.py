@@ -27,8 +27,10 @@ def test_a_priority_given_to_add_constraint_makes_that_constraint_give_way():
     # constraint() gives the file form back with its priority, as a sketch file holds it.
     assert s.constraint(wish)["priority"] == 1
     assert "priority" not in s.constraint(must)
+    # A sketch read from its file keeps the priority, and constraint() gives it back.
     again = camber.Sketch.from_json(s.to_json())
     assert again.priority(wish) == 1
+    assert again.constraint(wish)["priority"] == 1
     # Without the priority the two distances conflict.
     s0 = two_wishes(0)[0]
     with pytest.raises(camber.SolveError, match="conflicting"):

@@ -17,10 +17,12 @@ use camber_sketch::Sketch;
 use camber_sketch::{EntityId, PointRef};
 
 pub mod airfoils;
+mod free_points;
 mod point_chain;
 mod rectangles;
 mod two_curves;
 mod variants;
+pub use free_points::{free_points, free_points_valid};
 pub use point_chain::{point_chain, point_chain_valid};
 pub use rectangles::{w5, w5_at, w5_valid, w5b, Rectangles};
 pub use two_curves::{two_curves, two_curves_valid, TwoCurves, TWO_CURVES_CIRCLES};

@@ -254,7 +254,7 @@ impl Plan {
                 Workload::W7 => self.w7_sizes.len() * 200,
                 Workload::W8 => self.w8_runs * self.w8_variants,
                 Workload::A => {
-                    3 * self
+                    4 * self
                         .chain_sizes
                         .iter()
                         .map(|&s| self.chain_repeats(s))

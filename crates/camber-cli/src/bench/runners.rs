@@ -480,24 +480,28 @@ enum Analysed {
     Points,
     /// The W5b ladder of N cells, fully constrained, from its perturbed start.
     Ladder,
+    /// 10·N free points: 10·N components of one point.
+    Free,
 }
 
 /// A: the DOF analysis (`Sketch::analyze`, as `camber check` runs it) of the W3 chain of N
-/// segments, of the chain of 10·N points held by distances and of the W5b ladder of N cells,
-/// one analysis timed per repeat, each checked against the DOF its construction gives
-/// ([`w3_analysis_valid`], `camber_workloads::point_chain_valid`, [`ladder_analysis_valid`]),
-/// with the growth exponent between sizes.
+/// segments, of the chain of 10·N points held by distances, of the W5b ladder of N cells and
+/// of 10·N free points (as many components), one analysis timed per repeat, each checked
+/// against the DOF its construction gives ([`w3_analysis_valid`],
+/// `camber_workloads::point_chain_valid`, [`ladder_analysis_valid`],
+/// `camber_workloads::free_points_valid`), with the growth exponent between sizes.
 pub(super) fn analysis(plan: &Plan, bar: &ProgressBar) -> Result<Vec<Row>> {
     let mut rows: Vec<Row> = Vec::new();
     for (label, sketch_kind) in [
         ("W3", Analysed::W3),
         ("points", Analysed::Points),
         ("ladder", Analysed::Ladder),
+        ("free points", Analysed::Free),
     ] {
         let mut last: Option<(usize, f64)> = None;
         for &n in &plan.chain_sizes {
             let size = match sketch_kind {
-                Analysed::Points => 10 * n,
+                Analysed::Points | Analysed::Free => 10 * n,
                 Analysed::W3 | Analysed::Ladder => n,
             };
             bar.set_message(format!("A {label} N={size}"));
@@ -505,6 +509,7 @@ pub(super) fn analysis(plan: &Plan, bar: &ProgressBar) -> Result<Vec<Row>> {
                 Analysed::W3 => wl::w3_chain(n)?.0,
                 Analysed::Points => wl::point_chain(size)?,
                 Analysed::Ladder => wl::w5b(n)?.0,
+                Analysed::Free => wl::free_points(size)?,
             };
             let (mut times, mut valid, mut failed) = (Vec::<Duration>::new(), 0, 0);
             for _ in 0..plan.chain_repeats(n) {
@@ -518,6 +523,7 @@ pub(super) fn analysis(plan: &Plan, bar: &ProgressBar) -> Result<Vec<Row>> {
                             Analysed::W3 => w3_analysis_valid(&analyses, n),
                             Analysed::Points => wl::point_chain_valid(&analyses, size),
                             Analysed::Ladder => ladder_analysis_valid(&analyses),
+                            Analysed::Free => wl::free_points_valid(&analyses, size),
                         };
                         valid += usize::from(ok);
                     }

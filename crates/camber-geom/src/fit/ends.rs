@@ -18,7 +18,7 @@
 
 use nalgebra::{Point, SVector};
 
-use super::least_squares::{fit_on_knots, EndRoles, Role};
+use super::least_squares::{fit_on_knots, EndRoles, OnSingular, Role};
 use crate::bspline::BSplineCurve;
 use crate::errors::Result;
 use crate::knots::KnotVector;
@@ -139,13 +139,33 @@ fn beta_of<T: Scalar, const D: usize>(
     }
 }
 
-/// Least squares on `knots` under the end conditions (see the module header).
+/// Least squares on `knots` under the end conditions (see the module header); a singular
+/// system is solved by [`OnSingular::MinimumNorm`].
 pub(crate) fn solve<T: Scalar, const D: usize>(
     points: &[Point<T, D>],
     parameters: &[T],
     degree: usize,
     knots: &KnotVector<T>,
     ends: &Ends<T, D>,
+) -> Result<BSplineCurve<T, D>> {
+    solve_or(
+        points,
+        parameters,
+        degree,
+        knots,
+        ends,
+        OnSingular::MinimumNorm,
+    )
+}
+
+/// [`solve`] with the choice of what a singular system does.
+pub(crate) fn solve_or<T: Scalar, const D: usize>(
+    points: &[Point<T, D>],
+    parameters: &[T],
+    degree: usize,
+    knots: &KnotVector<T>,
+    ends: &Ends<T, D>,
+    on_singular: OnSingular,
 ) -> Result<BSplineCurve<T, D>> {
     let roles = |bs: Option<(T, bool)>, be: Option<(T, bool)>| EndRoles {
         start: end_roles(&ends.start, knots, degree, false, bs),
@@ -157,6 +177,7 @@ pub(crate) fn solve<T: Scalar, const D: usize>(
         degree,
         knots.clone(),
         &roles(None, None),
+        on_singular,
     )?;
     let (g2_start, g2_end) = (has_curvature(&ends.start), has_curvature(&ends.end));
     if degree < 2 || !(g2_start || g2_end) {
@@ -171,7 +192,14 @@ pub(crate) fn solve<T: Scalar, const D: usize>(
         let final_round = round == G2_ROUNDS;
         let bs = g2_start.then(|| (beta_of(&curve, &ends.start, false), final_round));
         let be = g2_end.then(|| (beta_of(&curve, &ends.end, true), final_round));
-        curve = fit_on_knots(points, parameters, degree, knots.clone(), &roles(bs, be))?;
+        curve = fit_on_knots(
+            points,
+            parameters,
+            degree,
+            knots.clone(),
+            &roles(bs, be),
+            on_singular,
+        )?;
     }
     Ok(curve)
 }

@@ -9,7 +9,9 @@
 //! (a data point touches the p + 1 control points of its span, at most D(p + 1) unknowns), so
 //! the system is stored and eliminated by its band; a span without data makes it singular,
 //! and then the minimum-norm solution of a dense SVD is taken (up to [`DENSE_FALLBACK_MAX`]
-//! unknowns).
+//! unknowns), or, when the caller has a curve to fall back on ([`OnSingular::Fail`]), the
+//! system is reported singular at once: the SVD costs O(size³), far more than the O(size) the
+//! rest of a fit charges to its budget.
 
 use nalgebra::{DMatrix, Point, SVector};
 use smallvec::SmallVec;
@@ -25,6 +27,15 @@ use crate::scalar::{cst, re, Scalar};
 /// are singular (a span without data): 2,000 unknowns is a 32 MB copy and a few seconds;
 /// beyond that a singular system is reported instead.
 pub(crate) const DENSE_FALLBACK_MAX: usize = 2_000;
+
+/// What a least-squares fit does when its normal equations are singular (a span without data).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum OnSingular {
+    /// The minimum-norm solution by a dense SVD, up to [`DENSE_FALLBACK_MAX`] unknowns.
+    MinimumNorm,
+    /// [`Error::SingularSystem`] at once (the caller keeps a curve it has).
+    Fail,
+}
 
 /// What a control point of a least-squares fit may do.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -70,13 +81,15 @@ type RowEntries<T, const D: usize> = SmallVec<[(usize, SVector<T, D>); 2 * (INLI
 /// points) for data `points` at `parameters` (inside the knots' domain), with the end roles.
 ///
 /// Errors: [`Error::TooFewControlPoints`] when the roles need more control points than the
-/// knots give, [`Error::SingularSystem`] when the normal equations cannot be solved.
+/// knots give, [`Error::SingularSystem`] when the normal equations cannot be solved (at once
+/// with [`OnSingular::Fail`]).
 pub(crate) fn fit_on_knots<T: Scalar, const D: usize>(
     points: &[Point<T, D>],
     parameters: &[T],
     degree: usize,
     knots: KnotVector<T>,
     roles: &EndRoles<T, D>,
+    on_singular: OnSingular,
 ) -> Result<BSplineCurve<T, D>> {
     let p = degree;
     let count = knots.len().saturating_sub(p + 1);
@@ -93,7 +106,7 @@ pub(crate) fn fit_on_knots<T: Scalar, const D: usize>(
         .chain(&roles.end)
         .any(|r| matches!(r, Role::OnLine(..)));
     if !coupled {
-        return fit_separable(points, parameters, degree, knots, roles, count);
+        return fit_separable(points, parameters, degree, knots, roles, count, on_singular);
     }
     // Unknown numbering: offsets[i] is the first unknown of control point i.
     let mut offsets = Vec::with_capacity(count + 1);
@@ -159,7 +172,7 @@ pub(crate) fn fit_on_knots<T: Scalar, const D: usize>(
             rhs[(r, 0)] += er.dot(&residual);
         }
     }
-    let solution = solve_normal(normal, rhs, size)?;
+    let solution = solve_normal(normal, rhs, size, on_singular)?;
     for (i, point) in control.iter_mut().enumerate() {
         let o = offsets[i];
         match roles.role(i, count) {
@@ -184,6 +197,7 @@ fn fit_separable<T: Scalar, const D: usize>(
     knots: KnotVector<T>,
     roles: &EndRoles<T, D>,
     count: usize,
+    on_singular: OnSingular,
 ) -> Result<BSplineCurve<T, D>> {
     let p = degree;
     let fixed: Vec<Option<Point<T, D>>> = (0..count)
@@ -240,7 +254,7 @@ fn fit_separable<T: Scalar, const D: usize>(
             }
         }
     }
-    let solution = solve_normal(normal, rhs, size)?;
+    let solution = solve_normal(normal, rhs, size, on_singular)?;
     for (i, point) in control.iter_mut().enumerate() {
         if index[i] != usize::MAX {
             for d in 0..D {
@@ -251,19 +265,20 @@ fn fit_separable<T: Scalar, const D: usize>(
     BSplineCurve::try_new(p, knots, control)
 }
 
-/// Solves the normal equations by band elimination, or by the dense SVD's minimum-norm
-/// solution when they are singular and small enough.
+/// Solves the normal equations by band elimination, or, with [`OnSingular::MinimumNorm`], by
+/// the dense SVD's minimum-norm solution when they are singular and small enough.
 fn solve_normal<T: Scalar>(
     normal: BandedMatrix<T>,
     rhs: DMatrix<T>,
     size: usize,
+    on_singular: OnSingular,
 ) -> Result<DMatrix<T>> {
     let singular = Error::SingularSystem {
         what: "least-squares",
     };
     let solution = match normal.clone().solve(rhs.clone()) {
         Some(x) => x,
-        None if size <= DENSE_FALLBACK_MAX => normal
+        None if on_singular == OnSingular::MinimumNorm && size <= DENSE_FALLBACK_MAX => normal
             .to_dense()
             .svd(true, true)
             .solve(&rhs, cst::<T>(1e-13))
