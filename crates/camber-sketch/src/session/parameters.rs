@@ -138,10 +138,9 @@ impl Sketch {
                     change.entities.push(e);
                 }
             }
-            self.replace_constraint_data(id, c);
-        }
-        for e in &change.entities {
-            self.mark_dirty(*e);
+            // Only values changed (a dimension's number, the constants an expression's tape
+            // folds): the readers' components keep their prepared problems and plans.
+            self.replace_constraint_value(id, c);
         }
         Ok(change)
     }
@@ -229,10 +228,7 @@ impl Sketch {
         });
         let updated = apply(c, &bindings, &self.parameters)?;
         updated.compile(self)?;
-        for e in updated.entities() {
-            self.mark_dirty(e);
-        }
-        self.replace_constraint_data(id, updated);
+        self.replace_constraint_value(id, updated);
         self.parameters.bindings.insert(id, bindings);
         Ok(())
     }

@@ -629,16 +629,23 @@ impl Sketch {
             }
         }
         edited.compile(self)?;
-        let entities = edited.entities();
+        self.replace_constraint_value(id, edited);
+        Ok(())
+    }
+
+    /// Stores `c` as constraint `id` when only its values changed (a dimension, a parameter it
+    /// reads): the same entities, so its prepared component is kept and its residuals are
+    /// replaced in place before the next solve (compiled again when they cannot be).
+    pub(crate) fn replace_constraint_value(&mut self, id: ConstraintId, c: Constraint) {
+        let entities = c.entities();
         if let Some(slot) = self.constraints.get_mut(&id) {
-            slot.0 = edited;
+            slot.0 = c;
         }
         self.prepared.edit(id);
         for e in entities {
             self.dirty.insert(e);
         }
         self.revision += 1;
-        Ok(())
     }
 }
 
@@ -865,15 +872,6 @@ impl Sketch {
             cp.problem.set_priority(id, self.priority(id));
         }
         Ok(cp)
-    }
-
-    /// Replaces a constraint's data by a value of the same kind reading the same entities (a
-    /// dimension re-evaluated).
-    pub(crate) fn replace_constraint_data(&mut self, id: ConstraintId, c: Constraint) {
-        if let Some(slot) = self.constraints.get_mut(&id) {
-            slot.0 = c;
-            self.revision += 1;
-        }
     }
 
     /// Marks an entity as changed, so that the next solve solves its component.

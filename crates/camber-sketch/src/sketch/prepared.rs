@@ -6,7 +6,9 @@
 //! A kept problem holds the values its solve wrote back, so it is exactly the sketch's state
 //! for as long as nothing but constraint values change:
 //!
-//! - **a dimension's new value** keeps the prepared component: before its next solve the edited
+//! - **a dimension's new value** ([`crate::Sketch::set_value`], or a parameter the constraint
+//!   reads: [`crate::Sketch::set_parameter`], a dimension bound to it, an expression whose
+//!   tape folds it) keeps the prepared component: before its next solve the edited
 //!   constraint's residual objects are replaced in place (same rows over the same blocks), which
 //!   the plan sees as a change of values ([`camber_solve::Problem::stamps`]); a constraint whose
 //!   pieces do not map one to one onto its residual blocks has its component compiled again;
@@ -172,6 +174,50 @@ mod tests {
         assert_eq!(s.clone().prepared.len(), 0);
         s.set_options(s.options().clone());
         assert_eq!(s.prepared.len(), 0);
+    }
+
+    #[test]
+    fn a_parameter_change_keeps_the_components_that_read_it_and_solves_as_a_fresh_build() {
+        use crate::constraints::expression::{ExprArg, Expression};
+        let (mut s, ds, bs) = two();
+        s.define_parameter("gap", 1.0).unwrap();
+        // Component 0: a dimension bound to the parameter. Component 1: an expression row
+        // whose tape folds the parameter as a constant (the point's height above the fixed
+        // one is half the gap).
+        s.bind_dimension(ds[0], "distance", "2 * gap").unwrap();
+        let fixed = match s.constraint(ds[1]).unwrap() {
+            crate::Constraint::Distance(d) => d.a,
+            _ => unreachable!(),
+        };
+        let (PointRef::Point(a1), PointRef::Point(b1)) = (fixed, PointRef::Point(bs[1])) else {
+            unreachable!()
+        };
+        s.add_constraint(
+            Expression::new("half the gap", &["Q.y - P.y = gap / 2"])
+                .with_arg("P", ExprArg::Point(a1))
+                .with_arg("Q", ExprArg::Point(b1)),
+        )
+        .unwrap();
+        s.solve().unwrap();
+        assert_eq!(s.prepared.len(), 2);
+        for gap in [1.5, 0.25, 1.0] {
+            s.define_parameter("gap", gap).unwrap();
+            // Only values changed: both prepared components stay for the solve to take.
+            assert_eq!(s.prepared.len(), 2, "gap {gap}");
+            let mut fresh = crate::file::from_json(&crate::file::to_json(&s).unwrap()).unwrap();
+            s.solve().unwrap();
+            fresh.solve().unwrap();
+            assert_eq!(s.prepared.len(), 2);
+            let p = |s: &Sketch, e| s.point(PointRef::Point(e)).unwrap();
+            assert!(((p(&s, bs[0]) - Point2::new(0.0, 0.0)).norm() - 2.0 * gap).abs() < 1e-10);
+            assert!(
+                (p(&s, bs[1]).y - 5.0 - gap / 2.0).abs() < 1e-10,
+                "gap {gap}"
+            );
+            for e in bs {
+                assert!((p(&s, e) - p(&fresh, e)).norm() < 1e-10, "gap {gap}");
+            }
+        }
     }
 
     #[test]
