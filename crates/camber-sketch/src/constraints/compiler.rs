@@ -25,7 +25,7 @@ use crate::residuals::Param;
 ///
 /// A kind whose pieces depend on where the entities are now (not only on their kind, shape and
 /// ids: a target read from the current points, a reference length) reads them through
-/// [`Compiler::current`] or [`Compiler::entity_values`], which mark the compilation as
+/// `Compiler::current` or `Compiler::entity_values` (crate-internal), which mark the compilation as
 /// reading values: a prepared component may then not be refreshed with another sketch's values
 /// (`crate::session::batch`).
 pub struct Compiler<'a> {

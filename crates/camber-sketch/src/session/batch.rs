@@ -4,9 +4,9 @@
 //! Variants of one design (other dimensions, other fixed geometry, other starting points)
 //! build the same problem up to its values: the same blocks, bindings, rows and residual
 //! objects. A worker keeps the problems of the last sketch it solved, each with the
-//! [`Signature`] of what it was built from; a component of the next sketch whose signature
+//! signature of what it was built from; a component of the next sketch whose signature
 //! matches is solved on the kept problem, its values refreshed in place
-//! ([`ComponentProblem::refresh_values`]: the entities' points and scalars, the free
+//! (`ComponentProblem::refresh_values`: the entities' points and scalars, the free
 //! parameters' starts), so the evaluator, the patterns and the symbolic factorizations of its
 //! plan serve again. Any other component is built as [`Sketch::solve_all`] builds it. A
 //! problem whose pieces read the entities' values when it was compiled (a fixed combination, a
