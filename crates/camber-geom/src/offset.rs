@@ -20,8 +20,10 @@
 //! **Fitting.** O is sampled at parameters spread evenly over every piece, the samples are fitted
 //! by least squares on those knots to half the tolerance (spans whose data are too far are split
 //! further, see [`crate::fit`]), and the error max |F(s) − O(u)| is measured at seven parameters
-//! between each pair of samples. Until it is within the tolerance the sampling is doubled (at
-//! most eight times); the error reported is the measured one either way.
+//! between each pair of samples. Until it is within the tolerance the sampling of every piece
+//! whose measured error misses it is doubled (at most eight times), the other pieces keep
+//! theirs, so the work follows where the offset is hard, not the size of the curve; the error
+//! reported is the measured one either way.
 //!
 //! The offset is not trimmed: where |d| exceeds the radius of curvature it has cusps and loops,
 //! and across a corner of C the fit bridges the gap; in both cases the measured error says how
@@ -189,18 +191,25 @@ where
         let times = multiplicity(curve, re(distance), breaks[k - 1], breaks[k])?;
         knots.extend(std::iter::repeat_n(normalize(breaks[k]), times));
     }
-    let mut per_piece = START_SAMPLES;
+    // Samples per piece: each piece whose measured error misses the tolerance is sampled twice
+    // as densely in the next round, the others keep theirs (a global doubling made the work
+    // grow faster than the curve: one erring piece among 10⁴ doubled all of them).
+    let pieces = breaks.len() - 1;
+    let mut per_piece = vec![START_SAMPLES; pieces];
     let mut best: Option<OffsetCurve<T>> = None;
     for _ in 0..=MAX_DOUBLINGS {
         // Charged before anything is allocated for the samples.
-        let count = (breaks.len() - 1)
-            .saturating_mul(per_piece)
-            .saturating_add(1);
+        let count = per_piece
+            .iter()
+            .fold(1usize, |total, &n| total.saturating_add(n));
         meter.charge(u64::try_from(count).unwrap_or(u64::MAX))?;
         let mut params = Vec::with_capacity(count);
-        for w in breaks.windows(2) {
-            for j in 0..per_piece {
-                params.push(w[0] + (w[1] - w[0]) * from_usize::<T>(j) / from_usize::<T>(per_piece));
+        let mut piece_of = Vec::with_capacity(count);
+        for (piece, w) in breaks.windows(2).enumerate() {
+            let n = per_piece[piece];
+            for j in 0..n {
+                params.push(w[0] + (w[1] - w[0]) * from_usize::<T>(j) / from_usize::<T>(n));
+                piece_of.push(piece);
             }
         }
         params.push(b);
@@ -215,13 +224,18 @@ where
         }
         let fit = fit_at_parameters(&points, &fit_params, 3, tolerance * 0.5, &knots, &mut meter)?;
         let mut worst = fit.max_error;
-        for w in params.windows(2) {
+        let mut missed = vec![fit.max_error > tolerance; pieces];
+        for (i, w) in params.windows(2).enumerate() {
             meter.charge(2 * (CHECKS_BETWEEN as u64 - 1))?;
             for k in 1..CHECKS_BETWEEN {
                 let u = w[0] + (w[1] - w[0]) * cst::<T>(k as f64 / CHECKS_BETWEEN as f64);
                 let exact = offset_point(curve, distance, u)?;
                 let approx = fit.curve.point(normalize(u).max(T::zero()).min(T::one()))?;
-                worst = worst.max(re((approx - exact).norm()));
+                let e = re((approx - exact).norm());
+                worst = worst.max(e);
+                if e > tolerance {
+                    missed[piece_of[i]] = true;
+                }
             }
         }
         let result = OffsetCurve {
@@ -234,7 +248,11 @@ where
         if best.as_ref().is_none_or(|b| worst < b.max_error) {
             best = Some(result);
         }
-        per_piece *= 2;
+        for (n, &miss) in per_piece.iter_mut().zip(&missed) {
+            if miss {
+                *n *= 2;
+            }
+        }
     }
     best.ok_or(Error::ZeroCount {
         what: "offset samples",
