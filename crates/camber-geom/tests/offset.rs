@@ -4,10 +4,11 @@
 // Test helpers outside #[test] functions unwrap too; a failed unwrap is a failed test.
 #![allow(clippy::unwrap_used)]
 
-use camber_geom::offset::offset;
+use camber_geom::budget::Budget;
+use camber_geom::offset::{offset, offset_with};
 use camber_geom::queries::closest_point;
 use camber_geom::{BSplineCurve2, BezierCurve2, Error, KnotVector, NurbsCurve2, ParametricCurve};
-use nalgebra::Point2;
+use nalgebra::{Point2, Vector2};
 use proptest::prelude::*;
 
 #[test]
@@ -89,5 +90,94 @@ proptest! {
         let p = o.curve.point(f).unwrap();
         let back = closest_point(&c, &p).unwrap();
         prop_assert!((back.distance - d.abs()).abs() < 2.0 * tol, "{} vs {d}", back.distance);
+    }
+}
+
+/// A cubic B-spline wave through `n` control points a tenth apart (self-similar pieces), with
+/// control point `spike` (if any) lifted by 0.3: a sharp bump the offset needs more samples for.
+fn wave(n: usize, spike: Option<usize>) -> BSplineCurve2<f64> {
+    let points = (0..n)
+        .map(|i| {
+            let x = i as f64 / 10.0;
+            let lift = if spike == Some(i) { 0.3 } else { 0.0 };
+            Point2::new(x, (1.3 * x).sin() + 0.3 * (3.1 * x).cos() + lift)
+        })
+        .collect();
+    BSplineCurve2::try_new(3, KnotVector::clamped_uniform(3, n).unwrap(), points).unwrap()
+}
+
+/// The fewest work units `offset_with` succeeds with (to 1 %), by bisection on the budget.
+fn work_needed(c: &BSplineCurve2<f64>, distance: f64, tol: f64) -> u64 {
+    let ok = |w: u64| offset_with(c, distance, tol, &Budget::default().with_max_work(w)).is_ok();
+    let (mut lo, mut hi) = (1u64, 10_000 * c.control_points().len() as u64);
+    let first = offset_with(c, distance, tol, &Budget::default().with_max_work(hi));
+    assert!(first.is_ok(), "no success within {hi} units: {first:?}");
+    while hi - lo > hi / 100 {
+        let mid = lo + (hi - lo) / 2;
+        if ok(mid) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    hi
+}
+
+#[test]
+fn one_hard_piece_costs_the_same_extra_work_on_a_short_and_a_long_curve() {
+    // The work a sharp bump adds must stay near the bump: when one piece that misses the
+    // tolerance made every piece be resampled and refitted, the extra work grew with the
+    // length of the curve (4× here).
+    let (d, tol) = (0.05, 1e-6);
+    let extra = |n: usize| {
+        let plain = work_needed(&wave(n, None), d, tol);
+        let hard = work_needed(&wave(n, Some(40)), d, tol);
+        assert!(
+            hard > plain,
+            "the bump costs nothing at n = {n}: {hard} vs {plain}"
+        );
+        (hard - plain) as f64
+    };
+    let (short, long) = (extra(160), extra(640));
+    assert!(
+        long < 1.5 * short,
+        "extra work {long} at 640 control points against {short} at 160"
+    );
+}
+
+#[test]
+fn a_long_offset_is_smooth_across_its_chunks_and_within_tolerance() {
+    // 300 pieces: the fit is cut into chunks held to the exact offset's position and
+    // derivatives where they meet, so the result has no triple knot and no kink there.
+    let c = wave(303, Some(150));
+    let (d, tol) = (0.05, 1e-6);
+    let o = offset(&c, d, tol).unwrap();
+    assert!(o.max_error <= tol, "{}", o.max_error);
+    let f = &o.curve;
+    let knots = f.knots().as_slice();
+    for w in knots[4..knots.len() - 4].windows(3) {
+        assert!(w[2] - w[0] > 0.0, "triple knot at {}", w[0]);
+    }
+    // C1 at every interior knot: the derivative just before equals the one at it.
+    for &k in &knots[4..knots.len() - 4] {
+        // The left limit, from just before the knot to second order.
+        let mut before = [Vector2::zeros(); 3];
+        f.derivatives_into(k - 1e-9, &mut before).unwrap();
+        let left = before[1] + before[2] * 1e-9;
+        let right = f.derivative(k).unwrap();
+        assert!(
+            (left - right).norm() < 1e-5 * right.norm(),
+            "kink at {k}: {left} vs {right}"
+        );
+    }
+    // The error measured again, independently, at parameters the fit never sampled.
+    let (a, b) = c.domain();
+    for i in 0..=20_000 {
+        let s = (f64::from(i) + 0.37) / 20_001.0;
+        let u = a + (b - a) * s;
+        let (p, t) = c.point_and_derivative(u).unwrap();
+        let exact = p + Vector2::new(-t.y, t.x) * (d / t.norm());
+        let e = (f.point(s).unwrap() - exact).norm();
+        assert!(e <= tol, "error {e} at s = {s}");
     }
 }

@@ -41,6 +41,14 @@ pub(crate) enum EndCondition<T: Scalar, const D: usize> {
         tangent: SVector<T, D>,
         curvature: Option<SVector<T, D>>,
     },
+    /// On this point with this first derivative and, when given, this second derivative
+    /// (with respect to the fit's parameter on [0, 1], in the direction of travel): the first
+    /// two or three control points are then fixed (see [`clamped_roles`]).
+    Clamped {
+        point: Point<T, D>,
+        first: SVector<T, D>,
+        second: Option<SVector<T, D>>,
+    },
 }
 
 /// The conditions at both ends.
@@ -48,6 +56,16 @@ pub(crate) enum EndCondition<T: Scalar, const D: usize> {
 pub(crate) struct Ends<T: Scalar, const D: usize> {
     pub start: EndCondition<T, D>,
     pub end: EndCondition<T, D>,
+}
+
+impl<T: Scalar, const D: usize> Ends<T, D> {
+    /// Whether neither end is held to more than a point (free or fixed ends), so that an
+    /// interpolation of the data keeps them.
+    pub(crate) fn only_points(&self) -> bool {
+        let plain =
+            |c: &EndCondition<T, D>| matches!(c, EndCondition::Free | EndCondition::Fixed(_));
+        plain(&self.start) && plain(&self.end)
+    }
 }
 
 /// The distances (t₁, t₂) of the first two interior knots from the start of a clamped vector
@@ -75,6 +93,11 @@ fn end_roles<T: Scalar, const D: usize>(
     match *condition {
         EndCondition::Free => Vec::new(),
         EndCondition::Fixed(q) => vec![Role::Fixed(q)],
+        EndCondition::Clamped {
+            point,
+            first,
+            second,
+        } => clamped_roles(point, first, second, knots, degree, at_end),
         EndCondition::Joint {
             point,
             tangent,
@@ -99,6 +122,33 @@ fn end_roles<T: Scalar, const D: usize>(
             }
         }
     }
+}
+
+/// The fixed control points of an end held to a point and its derivatives, inwards. At the
+/// start C′(0) = p(P₁ − P₀)/t₁ and C″(0) = (p − 1)/t₁ · (p(P₂ − P₁)/t₂ − p(P₁ − P₀)/t₁), so
+/// P₁ = P₀ + t₁C′/p and P₂ = P₁ + t₂/p · (t₁C″/(p − 1) + C′); the end is the start of the
+/// reversed curve, whose first derivative is −C′ and second C″.
+fn clamped_roles<T: Scalar, const D: usize>(
+    point: Point<T, D>,
+    first: SVector<T, D>,
+    second: Option<SVector<T, D>>,
+    knots: &KnotVector<T>,
+    degree: usize,
+    at_end: bool,
+) -> Vec<Role<T, D>> {
+    if degree == 0 {
+        return vec![Role::Fixed(point)];
+    }
+    let (t1, t2) = end_knots(knots, degree, at_end);
+    let p = from_usize::<T>(degree);
+    let first = if at_end { -first } else { first };
+    let p1 = point + first * (t1 / p);
+    let mut roles = vec![Role::Fixed(point), Role::Fixed(p1)];
+    if let Some(c2) = second.filter(|_| degree >= 2) {
+        let p2 = p1 + (c2 * (t1 / (p - T::one())) + first) * (t2 / p);
+        roles.push(Role::Fixed(p2));
+    }
+    roles
 }
 
 /// Whether a condition asks for curvature.

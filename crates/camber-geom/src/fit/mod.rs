@@ -47,6 +47,7 @@ mod tolerance;
 use nalgebra::Point;
 
 use ends::{EndCondition, Ends};
+pub(crate) use ends::{EndCondition as FitEnd, Ends as FitEnds};
 pub use interpolation::interpolate;
 pub(crate) use interpolation::interpolate_at;
 use least_squares::clamped_knots;

@@ -7,13 +7,13 @@ use nalgebra::Point;
 use super::ends::{solve, Ends};
 use super::interpolation::interpolate_at;
 use super::projection::parametric_distances;
-use super::{check_data, Fit, FitOptions};
+use super::{check_data, Fit};
 use crate::budget::Meter;
 use crate::errors::Result;
 use crate::knots::KnotVector;
 use crate::scalar::{cst, re, Scalar};
 
-/// A B-spline of `degree` with fixed ends whose parametric error |C(ū_k) − Q_k| is within
+/// A B-spline of `degree` held at its ends by `ends` whose parametric error |C(ū_k) − Q_k| is within
 /// `tolerance` at the given `parameters` (increasing from 0 to 1), starting from the interior
 /// knots `initial` (sorted, inside (0, 1), each repeated at most `degree` times, every span
 /// holding data) and halving, between their middle data parameters, every span between
@@ -24,18 +24,26 @@ use crate::scalar::{cst, re, Scalar};
 /// of every span by binary search in the parameters, so a pass costs O(m log m); the passes,
 /// which split every offending span at once, number about log m. Charges one unit per data
 /// point to `meter` twice per pass.
+///
+/// Ends held to more than their points
+/// ([`EndCondition::Clamped`](super::ends::EndCondition::Clamped)) are never given up for an
+/// interpolation: where the splitting stops (no span left to split, or as many control
+/// points as data) the last least-squares curve is returned with its measured error, which may
+/// then exceed `tolerance`.
 pub(crate) fn fit_at_parameters<T: Scalar, const D: usize>(
     points: &[Point<T, D>],
     parameters: &[T],
     degree: usize,
     tolerance: f64,
     initial: &[T],
+    ends: &Ends<T, D>,
     meter: &mut Meter<'_>,
 ) -> Result<Fit<T, D>> {
     check_data(points, degree)?;
     let parameters = parameters.to_vec();
     let p = degree;
-    let ends: Ends<T, D> = FitOptions::default().ends(points);
+    let held = !ends.only_points();
+    let mut last: Option<Fit<T, D>> = None;
     let units = u64::try_from(points.len()).unwrap_or(u64::MAX);
     let mut interior: Vec<T> = initial.to_vec();
     let mut errors = Vec::with_capacity(points.len());
@@ -47,6 +55,9 @@ pub(crate) fn fit_at_parameters<T: Scalar, const D: usize>(
         let count = interior.len() + p + 1;
         meter.charge(units)?;
         if count >= points.len() {
+            if let Some(fit) = last.filter(|_| held) {
+                return Ok(fit);
+            }
             return interpolate_at(points, &parameters, p, None);
         }
         let curve = solve(
@@ -54,7 +65,7 @@ pub(crate) fn fit_at_parameters<T: Scalar, const D: usize>(
             &parameters,
             p,
             &KnotVector::new_unchecked(knots),
-            &ends,
+            ends,
         )?;
         meter.charge(units)?;
         let max_error = parametric_distances(&curve, points, &parameters, &mut errors)?;
@@ -89,7 +100,17 @@ pub(crate) fn fit_at_parameters<T: Scalar, const D: usize>(
                 added.push((strictly[i - 1] + strictly[i]) * cst::<T>(0.5));
             }
         }
+        if held {
+            last = Some(Fit {
+                curve,
+                parameters: parameters.clone(),
+                max_error,
+            });
+        }
         if added.is_empty() {
+            if let Some(fit) = last {
+                return Ok(fit);
+            }
             return interpolate_at(points, &parameters, p, None);
         }
         interior.extend(added);

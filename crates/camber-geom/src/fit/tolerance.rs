@@ -24,7 +24,7 @@ use std::cell::RefCell;
 
 use nalgebra::Point;
 
-use super::ends::{solve, solve_or, EndCondition, Ends};
+use super::ends::{solve, solve_or, Ends};
 use super::interpolation::interpolate_at;
 use super::knot_placement::{index_of, max_interior, parameter_at, refine, separate, Density};
 use super::least_squares::{clamped_knots, OnSingular};
@@ -284,8 +284,7 @@ impl<'a, T: Scalar, const D: usize> Problem<'a, T, D> {
     /// joint of a split fit, where the interpolant cannot hold the joint's tangent, `last`
     /// (the trial with the most knots the data carry) if it is within the tolerance.
     fn interpolation(&self, last: Trial<T, D>, tolerance: f64) -> Result<Trial<T, D>> {
-        let plain = |c: &EndCondition<T, D>| !matches!(c, EndCondition::Joint { .. });
-        if !(plain(&self.ends.start) && plain(&self.ends.end)) {
+        if !self.ends.only_points() {
             return if last.max_error <= tolerance {
                 Ok(last)
             } else {

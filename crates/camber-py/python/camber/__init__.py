@@ -5,7 +5,8 @@ sketches with every constraint kind, solve reports with per-constraint residuals
 analysis, drag sessions, iterative displacement, custom constraints differentiated exactly
 with dual numbers, and batch solving in parallel. Curve operations: arc length and the
 arc-length map, extension, fitting (interpolate, approximate, fit_to_tolerance), knot
-removal, degree reduction, curve-curve intersection and distance, offsets. See docs/python.md.
+removal, degree reduction, curve-curve intersection and distance, offsets; conversions to and
+from scipy and geomdl in ``camber.interop``. See docs/python.md.
 """
 
 from camber._native import (

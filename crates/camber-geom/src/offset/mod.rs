@@ -17,11 +17,23 @@
 //! breakpoint, a jump being a relative difference above 10⁻⁶. At a corner of C (a tangent jump)
 //! the exact offset has a gap, which the fit bridges across its triple knot.
 //!
-//! **Fitting.** O is sampled at parameters spread evenly over every piece, the samples are fitted
-//! by least squares on those knots to half the tolerance (spans whose data are too far are split
-//! further, see [`crate::fit`]), and the error max |F(s) − O(u)| is measured at seven parameters
-//! between each pair of samples. Until it is within the tolerance the sampling is doubled (at
-//! most eight times); the error reported is the measured one either way.
+//! **Chunks.** The pieces are fitted in chunks of about 32, each on its own parameter
+//! σ ∈ [0, 1], so that work spent where the offset is hard stays there: one global fit redid
+//! every piece whenever one missed, and its work grew faster than the curve. A chunk is cut
+//! only at a breakpoint where O is continuous (never at a corner), and both chunks meeting
+//! there are held to the exact offset at it and to as many of its derivatives as the knot
+//! leaves continuous (O′ for multiplicity 2, O′ and O″ for 1, scaled to each chunk's σ; see
+//! the module `jet` for O″). Laid end to end the chunks then join with a triple knot that is C1, and one
+//! copy of it is removed exactly (module `join`): the result has the multiplicities above, except
+//! that a cut at a multiplicity-1 breakpoint keeps two (C2 in fact, C1 in its knots).
+//!
+//! **Fitting a chunk.** O is sampled at parameters spread evenly over every piece, the samples
+//! are fitted by least squares on those knots to half the tolerance (spans whose data are too
+//! far are split further, see [`crate::fit`]), and the error max |F(s) − O(u)| is measured at
+//! every sample and seven parameters between each pair. Until it is within the tolerance the
+//! sampling of every piece whose measured error misses it is doubled (at most eight times),
+//! the other pieces keep theirs; the error reported is the measured one either way, the
+//! largest over the chunks.
 //!
 //! The offset is not trimmed: where |d| exceeds the radius of curvature it has cusps and loops,
 //! and across a corner of C the fit bridges the gap; in both cases the measured error says how
@@ -41,12 +53,19 @@
 
 use nalgebra::{Point2, Vector2};
 
+mod chunk;
+mod jet;
+mod join;
+
+use chunk::{fit_chunk, Chunk};
+use join::{join, Placed};
+
 use crate::bspline::BSplineCurve;
 use crate::budget::{default_limit, Budget};
 use crate::curve::ParametricCurve;
 use crate::errors::{Error, Result};
-use crate::fit::fit_at_parameters;
-use crate::scalar::{cst, from_usize, re, Scalar};
+use crate::fit::{FitEnd, FitEnds};
+use crate::scalar::{cst, re, Scalar};
 
 /// An offset curve and how far it is from the exact offset.
 #[derive(Debug, Clone, PartialEq)]
@@ -57,12 +76,8 @@ pub struct OffsetCurve<T: Scalar> {
     pub max_error: f64,
 }
 
-/// Samples per piece to start with.
-const START_SAMPLES: usize = 8;
-/// Doublings of the sampling before giving up on the tolerance.
-const MAX_DOUBLINGS: usize = 8;
-/// Measurement points between consecutive samples.
-const CHECKS_BETWEEN: usize = 8;
+/// Pieces per chunk: the fit is cut into independent chunks of about this many pieces.
+const CHUNK_PIECES: usize = 32;
 /// A relative difference above this between the two sides of a breakpoint is a jump.
 const JUMP: f64 = 1e-6;
 /// How far before a breakpoint its left side is read, as a fraction of the piece on its left.
@@ -89,10 +104,20 @@ fn jumps(x: &Vector2<f64>, y: &Vector2<f64>) -> bool {
     (x - y).norm() > JUMP * x.norm().max(y.norm())
 }
 
-/// The multiplicity of the fit's knot at the interior breakpoint `u` (the piece on its left
-/// starting at `before`): 3 where the tangent direction of C or O′ = C′·(1 − dκ) jumps, 2 where
-/// only O″ can (C‴ jumps), 1 otherwise.
-fn multiplicity<T, C>(curve: &C, distance: f64, before: T, u: T) -> Result<usize>
+/// How the offset behaves at an interior breakpoint of the curve.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+struct Breakpoint {
+    /// The multiplicity of the fit's knot there: 3 where the tangent direction of C or
+    /// O′ = C′·(1 − dκ) jumps, 2 where only O″ can (C‴ jumps), 1 otherwise.
+    multiplicity: usize,
+    /// Whether the tangent direction of C jumps (or vanishes) there: the exact offset has a
+    /// gap, which only a fit across the breakpoint can bridge.
+    corner: bool,
+}
+
+/// The breakpoint `u` (the piece on its left starting at `before`), its two sides compared
+/// just before and at it.
+fn breakpoint<T, C>(curve: &C, distance: f64, before: T, u: T) -> Result<Breakpoint>
 where
     T: Scalar,
     C: ParametricCurve<T, 2> + ?Sized,
@@ -108,22 +133,25 @@ where
     }
     let ([_, l1, l2, l3], [_, r1, r2, r3]) = (sides[0], sides[1]);
     let (nl, nr) = (l1.norm(), r1.norm());
-    if nl <= 0.0 || nr <= 0.0 {
-        return Ok(3);
+    let at = |multiplicity, corner| Breakpoint {
+        multiplicity,
+        corner,
+    };
+    if nl <= 0.0 || nr <= 0.0 || jumps(&(l1 / nl), &(r1 / nr)) {
+        return Ok(at(3, true));
     }
     // O′ = C′·(1 − dκ), κ = (x′y″ − y′x″)/|C′|³.
     let o1 = |c1: &Vector2<f64>, c2: &Vector2<f64>| {
         let kappa = (c1.x * c2.y - c1.y * c2.x) / c1.norm().powi(3);
         c1 * (1.0 - distance * kappa)
     };
-    let direction = jumps(&(l1 / nl), &(r1 / nr));
-    if direction || jumps(&o1(&l1, &l2), &o1(&r1, &r2)) {
-        return Ok(3);
+    if jumps(&o1(&l1, &l2), &o1(&r1, &r2)) {
+        return Ok(at(3, false));
     }
     if jumps(&l2, &r2) || jumps(&l3, &r3) {
-        return Ok(2);
+        return Ok(at(2, false));
     }
-    Ok(1)
+    Ok(at(1, false))
 }
 
 /// The offset of the planar `curve` at signed `distance` (length units; positive to the left
@@ -181,62 +209,99 @@ where
     breaks.push(b);
     let mut meter = budget.meter("offset", default_limit(breaks.len()));
     meter.charge(0)?;
-    let normalize = |u: T| (u - a) / (b - a);
-    // The fit's knots at the breakpoints, each as often as O's continuity there asks.
-    let mut knots: Vec<T> = Vec::new();
+    let mut inner = Vec::with_capacity(breaks.len() - 2);
     for k in 1..breaks.len() - 1 {
         meter.charge(8)?;
-        let times = multiplicity(curve, re(distance), breaks[k - 1], breaks[k])?;
-        knots.extend(std::iter::repeat_n(normalize(breaks[k]), times));
+        inner.push(breakpoint(curve, re(distance), breaks[k - 1], breaks[k])?);
     }
-    let mut per_piece = START_SAMPLES;
-    let mut best: Option<OffsetCurve<T>> = None;
-    for _ in 0..=MAX_DOUBLINGS {
-        // Charged before anything is allocated for the samples.
-        let count = (breaks.len() - 1)
-            .saturating_mul(per_piece)
-            .saturating_add(1);
-        meter.charge(u64::try_from(count).unwrap_or(u64::MAX))?;
-        let mut params = Vec::with_capacity(count);
-        for w in breaks.windows(2) {
-            for j in 0..per_piece {
-                params.push(w[0] + (w[1] - w[0]) * from_usize::<T>(j) / from_usize::<T>(per_piece));
+    let multiplicities: Vec<usize> = inner.iter().map(|p| p.multiplicity).collect();
+    let cuts = chunk_cuts(&inner);
+    // The exact offset and as many of its derivatives as the knot's multiplicity leaves
+    // continuous, at every cut: both chunks meeting there are held to the same values.
+    let mut joints = Vec::with_capacity(cuts.len());
+    for &k in &cuts {
+        meter.charge(8)?;
+        joints.push(jet::offset_jet(curve, distance, breaks[k])?);
+    }
+    let normalize = |u: T| (u - a) / (b - a);
+    let mut placed = Vec::with_capacity(cuts.len() + 1);
+    let mut worst = 0.0_f64;
+    let bounds: Vec<usize> = std::iter::once(0)
+        .chain(cuts.iter().copied())
+        .chain(std::iter::once(breaks.len() - 1))
+        .collect();
+    for (c, w) in bounds.windows(2).enumerate() {
+        let (first, last) = (w[0], w[1]);
+        let length = breaks[last] - breaks[first];
+        // Held at a cut to the joint's derivatives up to order 3 − multiplicity, in σ.
+        let held = |joint: usize| {
+            let (point, d1, d2) = joints[joint];
+            match multiplicities[cuts[joint] - 1] {
+                1 => FitEnd::Clamped {
+                    point,
+                    first: d1 * length,
+                    second: Some(d2 * (length * length)),
+                },
+                2 => FitEnd::Clamped {
+                    point,
+                    first: d1 * length,
+                    second: None,
+                },
+                _ => FitEnd::Fixed(point),
             }
-        }
-        params.push(b);
-        let points = params
-            .iter()
-            .map(|&u| offset_point(curve, distance, u))
-            .collect::<Result<Vec<_>>>()?;
-        let mut fit_params: Vec<T> = params.iter().map(|&u| normalize(u)).collect();
-        fit_params[0] = T::zero();
-        if let Some(last) = fit_params.last_mut() {
-            *last = T::one();
-        }
-        let fit = fit_at_parameters(&points, &fit_params, 3, tolerance * 0.5, &knots, &mut meter)?;
-        let mut worst = fit.max_error;
-        for w in params.windows(2) {
-            meter.charge(2 * (CHECKS_BETWEEN as u64 - 1))?;
-            for k in 1..CHECKS_BETWEEN {
-                let u = w[0] + (w[1] - w[0]) * cst::<T>(k as f64 / CHECKS_BETWEEN as f64);
-                let exact = offset_point(curve, distance, u)?;
-                let approx = fit.curve.point(normalize(u).max(T::zero()).min(T::one()))?;
-                worst = worst.max(re((approx - exact).norm()));
-            }
-        }
-        let result = OffsetCurve {
-            curve: fit.curve,
-            max_error: worst,
         };
-        if worst <= tolerance {
-            return Ok(result);
-        }
-        if best.as_ref().is_none_or(|b| worst < b.max_error) {
-            best = Some(result);
-        }
-        per_piece *= 2;
+        let start = if c == 0 {
+            FitEnd::Fixed(offset_point(curve, distance, a)?)
+        } else {
+            held(c - 1)
+        };
+        let end = if c == cuts.len() {
+            FitEnd::Fixed(offset_point(curve, distance, b)?)
+        } else {
+            held(c)
+        };
+        let chunk = Chunk {
+            breaks: &breaks[first..=last],
+            multiplicities: &multiplicities[first..last - 1],
+            ends: FitEnds { start, end },
+        };
+        let fit = fit_chunk(curve, distance, tolerance, &chunk, &mut meter)?;
+        worst = worst.max(fit.max_error);
+        placed.push(Placed {
+            curve: fit.curve,
+            start: normalize(breaks[first]),
+            end: normalize(breaks[last]),
+            smooth_end: c < cuts.len() && multiplicities[cuts[c] - 1] < 3,
+        });
     }
-    best.ok_or(Error::ZeroCount {
-        what: "offset samples",
+    let curve = if placed.len() == 1 {
+        placed.pop().map(|p| p.curve).ok_or(Error::ZeroCount {
+            what: "offset chunks",
+        })?
+    } else {
+        join(&placed)?
+    };
+    Ok(OffsetCurve {
+        curve,
+        max_error: worst,
     })
+}
+
+/// The breakpoints (indices into the curve's breakpoints, whose interior ones `inner` holds
+/// from index 1) where the fit is cut into chunks of about [`CHUNK_PIECES`] pieces: never at a
+/// corner (the fit bridges the offset's gap there), and never leaving a last chunk of fewer
+/// than half as many pieces.
+fn chunk_cuts(inner: &[Breakpoint]) -> Vec<usize> {
+    let pieces = inner.len() + 1;
+    let mut cuts = Vec::new();
+    let mut since = 0;
+    for (i, p) in inner.iter().enumerate() {
+        let k = i + 1;
+        since += 1;
+        if since >= CHUNK_PIECES && !p.corner && pieces - k >= CHUNK_PIECES / 2 {
+            cuts.push(k);
+            since = 0;
+        }
+    }
+    cuts
 }
