@@ -22,7 +22,7 @@ use crate::component::ComponentProblem;
 use crate::ground::errors::Result;
 use crate::ground::ids::EntityId;
 use crate::session::solve::SketchReport;
-use crate::sketch::prepared::Signature;
+use crate::sketch::prepared::{Signature, Swept};
 use crate::sketch::Sketch;
 
 /// Solves every sketch (every component, as [`Sketch::solve_all`]), each from its own values;
@@ -84,12 +84,47 @@ pub fn solve_many(sketches: &mut [Sketch]) -> Vec<Result<SketchReport>> {
 #[derive(Debug, Default)]
 pub(crate) struct Worker {
     kept: HashMap<EntityId, (Signature, ComponentProblem)>,
+    /// What the sketches may change besides entity values (a sweep's parameters).
+    swept: Swept,
+    /// How many components were solved on a kept problem.
+    reused: usize,
 }
 
 impl Worker {
+    /// A worker for the variants of a sweep: sketches that differ from one another only in
+    /// the entities' values and in the parameters of `swept` (the constraints reading them
+    /// are compiled again and replaced in place on the kept problem).
+    pub(crate) fn for_sweep(swept: Swept) -> Self {
+        Self {
+            swept,
+            ..Self::default()
+        }
+    }
+
+    /// How many components this worker solved on a kept problem (not built).
+    pub(crate) fn reused(&self) -> usize {
+        self.reused
+    }
+
     /// Solves every component of `sketch` (as [`Sketch::solve_all`]), each on a kept problem
     /// of the same structure when there is one; keeps the sketch's problems for the next.
     pub(crate) fn solve(&mut self, sketch: &mut Sketch) -> Result<SketchReport> {
+        let comps = sketch.components();
+        self.solve_components(sketch, comps)
+    }
+
+    /// [`Worker::solve`] for the components [`Sketch::solve`] would solve (the dirty ones).
+    pub(crate) fn solve_dirty(&mut self, sketch: &mut Sketch) -> Result<SketchReport> {
+        let comps = sketch.dirty_components();
+        self.solve_components(sketch, comps)
+    }
+
+    /// Solves `comps` of `sketch` on kept problems where it can.
+    fn solve_components(
+        &mut self,
+        sketch: &mut Sketch,
+        comps: Vec<crate::component::Component>,
+    ) -> Result<SketchReport> {
         // A batch cancelled through the sketches' options starts none of the sketches left.
         if sketch
             .options()
@@ -101,17 +136,22 @@ impl Worker {
                 camber_solve::Error::Cancelled,
             ));
         }
-        let comps = sketch.components();
         let parallel = crate::session::solve::solves_in_parallel(&comps);
         // What each problem solved now was built from, by its component's first entity.
         let mut signatures: HashMap<EntityId, Signature> = HashMap::new();
-        let kept = &mut self.kept;
+        let (kept, swept, reused) = (&mut self.kept, &self.swept, &mut self.reused);
         let report = sketch.solve_components_with(comps, parallel, &mut |s, comp| {
             let first = *comp.entities.first()?;
             if let Some((sig, mut cp)) = kept.remove(&first) {
-                if sig.matches(s, comp) && cp.refresh_values(s).unwrap_or(false) {
+                // The signature stays valid for the next variant: what differs between
+                // variants (the swept readers) is never compared.
+                let refreshed = sig.matches_except(s, comp, swept).is_some_and(|edited| {
+                    cp.refresh_values(s).unwrap_or(false) && s.replace_edited(&mut cp, &edited)
+                });
+                if refreshed {
                     signatures.insert(first, sig);
-                    return Some(cp);
+                    *reused += 1;
+                    return Some((cp, Vec::new()));
                 }
             }
             // Built by the solve from the sketch as it is now.

@@ -6,6 +6,9 @@ use rayon::prelude::*;
 
 use crate::constraints::Constraint;
 use crate::ground::errors::{Error, Result};
+use crate::session::batch::Worker;
+use crate::session::solve::SketchReport;
+use crate::sketch::prepared::Swept;
 use crate::sketch::Sketch;
 
 /// Parameter values by column: `names[k]` takes `columns[k][i]` in variant i.
@@ -83,6 +86,12 @@ pub struct VariantResult {
 /// variant is a copy of `base` with the row's parameters set ([`Sketch::define_parameter`]),
 /// re-solved where they are read. One failure stays on its row.
 ///
+/// The rows are split into one contiguous run per worker; a worker solves each variant's
+/// components on the prepared problems of its previous variant when only the swept
+/// parameters differ (their readers' residuals replaced in place, the values refreshed from
+/// `base`), so a component is compiled once per worker, not once per row. Each variant is
+/// still solved from `base`'s values: its answer is that of solving it alone.
+///
 /// ```
 /// use camber_sketch::constraints::Distance;
 /// use camber_sketch::parameters::sweep::{solve_variants, Table};
@@ -122,12 +131,48 @@ pub fn solve_variants(
             what: "threads",
             detail: e.to_string(),
         })?;
+    let swept = Swept {
+        parameters: table.names().iter().cloned().collect(),
+        readers: table
+            .names()
+            .iter()
+            .flat_map(|n| base.parameter_readers(n))
+            .collect(),
+    };
     Ok(pool.install(|| {
-        (0..table.rows())
-            .into_par_iter()
-            .map(|i| variant(base, table, i))
-            .collect()
+        // One contiguous run of rows per thread, each run on one worker keeping the prepared
+        // problems of its last variant.
+        let rows: Vec<usize> = (0..table.rows()).collect();
+        let run = rows.len().div_ceil(rayon::current_num_threads()).max(1);
+        let runs: Vec<Vec<VariantResult>> = rows
+            .par_chunks(run)
+            .map(|chunk| {
+                let mut worker = Worker::for_sweep(swept.clone());
+                chunk
+                    .iter()
+                    .map(|&i| result_of(i, &solve_row(&mut worker, base, table, i)))
+                    .collect()
+            })
+            .collect();
+        runs.into_iter().flatten().collect()
     }))
+}
+
+/// Variant `row` of `base`, solved by `worker` (on the problems it kept from its last
+/// variant where the structure matches; the answer is that of [`Sketch::solve`] on a copy of
+/// `base` with the row's parameters set).
+fn solve_row(
+    worker: &mut Worker,
+    base: &Sketch,
+    table: &Table,
+    row: usize,
+) -> (Sketch, Result<SketchReport>) {
+    let mut s = base.clone();
+    let outcome = table
+        .row(row)
+        .try_for_each(|(n, v)| s.define_parameter(n, v).map(|_| ()))
+        .and_then(|()| worker.solve_dirty(&mut s));
+    (s, outcome)
 }
 
 /// The free parameters of one constraint with their values: an expression's `{"free": v}`
@@ -162,12 +207,8 @@ fn free_parameters(c: &Constraint) -> Vec<(String, f64)> {
         .collect()
 }
 
-fn variant(base: &Sketch, table: &Table, row: usize) -> VariantResult {
-    let mut s = base.clone();
-    let outcome = table
-        .row(row)
-        .try_for_each(|(n, v)| s.define_parameter(n, v).map(|_| ()))
-        .and_then(|()| s.solve());
+/// The row of results of a solved variant.
+fn result_of(row: usize, (s, outcome): &(Sketch, Result<SketchReport>)) -> VariantResult {
     match outcome {
         Ok(report) => VariantResult {
             row,
@@ -194,5 +235,127 @@ fn variant(base: &Sketch, table: &Table, row: usize) -> VariantResult {
             free: Vec::new(),
             error: Some(e.to_string()),
         },
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used)] // a failed unwrap is a failed test
+
+    use super::*;
+    use crate::constraints::{Distance, Fixed};
+    use crate::PointRef;
+    use nalgebra::Point2;
+
+    /// A fixed point, a second at `gap` from it and a third at `reach` from the second: one
+    /// nonlinear component reading both parameters.
+    fn chain() -> Sketch {
+        let mut s = Sketch::new();
+        let a = s.add_point(Point2::new(0.0, 0.0)).unwrap();
+        let b = s.add_point(Point2::new(1.2, 0.3)).unwrap();
+        let c = s.add_point(Point2::new(2.0, 1.1)).unwrap();
+        s.define_parameter("gap", 1.0).unwrap();
+        s.define_parameter("reach", 1.0).unwrap();
+        s.add_constraint(Fixed::point(PointRef::Point(a))).unwrap();
+        let d = s
+            .add_constraint(Distance {
+                a: PointRef::Point(a),
+                b: PointRef::Point(b),
+                distance: 1.0,
+            })
+            .unwrap();
+        s.bind_dimension(d, "distance", "gap").unwrap();
+        let e = s
+            .add_constraint(Distance {
+                a: PointRef::Point(b),
+                b: PointRef::Point(c),
+                distance: 1.0,
+            })
+            .unwrap();
+        s.bind_dimension(e, "distance", "reach * 2 - gap").unwrap();
+        s
+    }
+
+    fn diffuser() -> Sketch {
+        let path = concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../../examples/sketches/diffuser_parametric.json"
+        );
+        crate::file::from_json(&std::fs::read_to_string(path).unwrap()).unwrap()
+    }
+
+    /// Solves every row of `table` on one sweep worker and checks each against the variant
+    /// solved alone (a copy of `base`, the row's parameters set, [`Sketch::solve`]): the same
+    /// outcome, every point within 1e-12, the same free parameters and residuals. Returns how
+    /// many components the worker solved on a kept problem.
+    fn sweep_equals_each_alone(base: &Sketch, table: &Table) -> usize {
+        let swept = Swept {
+            parameters: table.names().iter().cloned().collect(),
+            readers: table
+                .names()
+                .iter()
+                .flat_map(|n| base.parameter_readers(n))
+                .collect(),
+        };
+        let mut worker = Worker::for_sweep(swept);
+        for i in 0..table.rows() {
+            let (swept_sketch, outcome) = solve_row(&mut worker, base, table, i);
+            let mut alone = base.clone();
+            let alone_outcome = table
+                .row(i)
+                .try_for_each(|(n, v)| alone.define_parameter(n, v).map(|_| ()))
+                .and_then(|()| alone.solve());
+            assert_eq!(outcome.is_ok(), alone_outcome.is_ok(), "row {i}");
+            for ((id, e), (id2, e2)) in swept_sketch.entities().zip(alone.entities()) {
+                assert_eq!(id, id2);
+                for (p, q) in e.points().iter().zip(e2.points()) {
+                    assert!((p - q).norm() <= 1e-12, "row {i}, {id}: {p} vs {q}");
+                }
+            }
+            let (r, r_alone) = (
+                result_of(i, &(swept_sketch, outcome)),
+                result_of(i, &(alone, alone_outcome)),
+            );
+            assert_eq!(r.free.len(), r_alone.free.len(), "row {i}");
+            for (f, g) in r.free.iter().zip(&r_alone.free) {
+                assert_eq!((f.0, &f.1), (g.0, &g.1));
+                assert!((f.2 - g.2).abs() <= 1e-12, "row {i}: {f:?} vs {g:?}");
+            }
+            assert!(
+                (r.max_residual - r_alone.max_residual).abs() <= 1e-12
+                    || (r.max_residual.is_nan() && r_alone.max_residual.is_nan()),
+                "row {i}"
+            );
+            assert_eq!(r.error, r_alone.error, "row {i}");
+        }
+        worker.reused()
+    }
+
+    #[test]
+    fn a_sweep_reuses_the_prepared_component_and_answers_as_each_variant_alone() {
+        let base = chain();
+        let gaps: Vec<f64> = (0..8).map(|i| 0.6 + 0.15 * f64::from(i)).collect();
+        let reaches: Vec<f64> = (0..8).map(|i| 1.3 - 0.05 * f64::from(i)).collect();
+        let table = Table::try_new(vec![("gap".into(), gaps), ("reach".into(), reaches)]).unwrap();
+        // One component, compiled for the first row and solved on that problem for the 7 others.
+        assert_eq!(sweep_equals_each_alone(&base, &table), 7);
+        // A row the sketch refuses (a negative distance) stays on its row and the rows after
+        // it still take the kept problem of the last solved variant.
+        let table = Table::try_new(vec![("gap".into(), vec![1.0, -1.0, 1.5, 0.8])]).unwrap();
+        assert_eq!(sweep_equals_each_alone(&base, &table), 2);
+    }
+
+    #[test]
+    fn a_sweep_over_contacts_answers_as_each_variant_alone() {
+        // Circles placed and sized by parameters, a curve tangent to one at a free parameter:
+        // its pieces read a free parameter, so its component is built again (never replaced in
+        // place); the answers are those of each variant alone all the same.
+        let base = diffuser();
+        let table = Table::try_new(vec![
+            ("r3".into(), vec![0.065, 0.07, 0.075, 0.072]),
+            ("y3".into(), vec![0.035, 0.04, 0.045, 0.041]),
+        ])
+        .unwrap();
+        sweep_equals_each_alone(&base, &table);
     }
 }

@@ -54,16 +54,24 @@ impl Prepared {
         &mut self,
         comp: &Component,
     ) -> Option<(ComponentProblem, Vec<ConstraintId>)> {
-        let first = *comp.entities.first()?;
-        let cp = self.by_first.remove(&first)?;
-        self.release(&cp);
-        let edited: Vec<ConstraintId> = cp
-            .component()
+        // The component is solved now, on its prepared problem or on one built from the
+        // constraints as they are: either way their edits are taken into account.
+        let mut edited: Vec<ConstraintId> = comp
             .constraints
             .iter()
             .copied()
             .filter(|c| self.edited.remove(c))
             .collect();
+        let first = *comp.entities.first()?;
+        let cp = self.by_first.remove(&first)?;
+        self.release(&cp);
+        edited.extend(
+            cp.component()
+                .constraints
+                .iter()
+                .copied()
+                .filter(|c| self.edited.remove(c)),
+        );
         (cp.component() == comp).then_some((cp, edited))
     }
 
@@ -197,22 +205,48 @@ impl Signature {
     }
 
     /// Whether `comp` of `sketch` builds the problem this signature's component built, up to
-    /// the entities' values: the same component, options, parameters, constraint data,
-    /// priorities and point weights, and entities of the same kinds and shapes.
-    pub(crate) fn matches(&self, sketch: &super::Sketch, comp: &Component) -> bool {
-        if self.component != *comp
-            || self.options != sketch.options
-            || self.parameters != sketch.parameters
-        {
-            return false;
+    /// the entities' values: the same component, options, constraint data, priorities and
+    /// point weights, entities of the same kinds and shapes, and the same parameters, except
+    /// that the parameters named in `swept` (a sweep's table: empty for `crate::solve_many`)
+    /// may hold other values and the constraints reading them other data. `Some` with the
+    /// constraints of `comp` that read a swept parameter (to be compiled again and replaced in
+    /// place, as after a parameter change of one sketch: `Sketch::replace_constraint_value`)
+    /// when it matches; `None` otherwise.
+    pub(crate) fn matches_except(
+        &self,
+        sketch: &super::Sketch,
+        comp: &Component,
+        swept: &Swept,
+    ) -> Option<Vec<ConstraintId>> {
+        let same_parameters = self.parameters.bindings == sketch.parameters.bindings
+            && self.parameters.values.len() == sketch.parameters.values.len()
+            && self
+                .parameters
+                .values
+                .iter()
+                .zip(&sketch.parameters.values)
+                .all(|((n, v), (m, w))| {
+                    n == m && (v == w || swept.parameters.contains(n.as_str()))
+                });
+        if self.component != *comp || self.options != sketch.options || !same_parameters {
+            return None;
         }
+        let mut edited = Vec::new();
         let same_constraints =
             comp.constraints
                 .iter()
                 .zip(&self.constraints)
                 .all(|(id, (c, priority))| {
-                    sketch.priority(*id) == *priority
-                        && sketch.constraint(*id).is_ok_and(|d| d == c)
+                    let Ok(now) = sketch.constraint(*id) else {
+                        return false;
+                    };
+                    // A reader is compiled again even with the same data: an expression
+                    // folds the parameters' values into its tape.
+                    let reader = swept.readers.contains(id);
+                    if reader {
+                        edited.push(*id);
+                    }
+                    sketch.priority(*id) == *priority && (reader || now == c)
                 });
         let same_entities = comp.entities.iter().zip(&self.entities).all(|(id, e)| {
             sketch.entity(*id).is_ok_and(|now| {
@@ -229,8 +263,18 @@ impl Signature {
                 .next()
                 .is_some_and(|(k2, w2)| k == k2 && w.to_bits() == w2.to_bits())
         }) && weights.next().is_none();
-        same_constraints && same_entities && same_weights
+        (same_constraints && same_entities && same_weights).then_some(edited)
     }
+}
+
+/// What the variants of a sweep may change against each other: the swept parameters'
+/// values and the data of the constraints that read them.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Swept {
+    /// The parameters the table sets.
+    pub(crate) parameters: BTreeSet<String>,
+    /// Every constraint reading one of them ([`crate::Sketch::parameter_readers`]).
+    pub(crate) readers: BTreeSet<ConstraintId>,
 }
 
 #[cfg(test)]
