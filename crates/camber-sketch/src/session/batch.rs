@@ -102,6 +102,7 @@ impl Worker {
     }
 
     /// How many components this worker solved on a kept problem (not built).
+    #[cfg(test)]
     pub(crate) fn reused(&self) -> usize {
         self.reused
     }
@@ -151,7 +152,7 @@ impl Worker {
                 if refreshed {
                     signatures.insert(first, sig);
                     *reused += 1;
-                    return Some((cp, Vec::new()));
+                    return Some(cp);
                 }
             }
             // Built by the solve from the sketch as it is now.

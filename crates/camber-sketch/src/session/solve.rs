@@ -175,19 +175,12 @@ impl Sketch {
 
     /// [`Sketch::solve_components_in`], where a component that this sketch has not prepared
     /// is solved on the problem `donor` gives for it, if any (a problem of the same structure
-    /// with this sketch's values: `crate::session::batch`), the residuals of the constraints
-    /// it names replaced first; the others are built.
+    /// with this sketch's values and edits: `crate::session::batch`); the others are built.
     pub(crate) fn solve_components_with(
         &mut self,
         comps: Vec<Component>,
         parallel: bool,
-        donor: &mut dyn FnMut(
-            &Sketch,
-            &Component,
-        ) -> Option<(
-            crate::component::ComponentProblem,
-            Vec<crate::ground::ids::ConstraintId>,
-        )>,
+        donor: &mut dyn FnMut(&Sketch, &Component) -> Option<crate::component::ComponentProblem>,
     ) -> Result<SketchReport> {
         // The options depend on the largest coordinate of the whole sketch: worked out once per
         // solve, not once per component (which made many components quadratic).
@@ -218,7 +211,7 @@ impl Sketch {
             .collect();
         for (comp, prepared) in &mut jobs {
             if prepared.is_none() {
-                *prepared = donor(self, comp);
+                *prepared = donor(self, comp).map(|cp| (cp, Vec::new()));
             }
         }
         let outcomes = if parallel {
