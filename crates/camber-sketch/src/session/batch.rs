@@ -29,6 +29,9 @@ use crate::sketch::Sketch;
 /// one result per sketch, in order. A sketch that fails is left exactly as it was and the
 /// others go on.
 ///
+/// A sketch whose options' cancel flag ([`camber_solve::Options::cancel`]) is raised when its
+/// turn comes is not started: its result is [`camber_solve::Error::Cancelled`].
+///
 /// On rayon's current pool: one thread (for instance inside a pool of one, or with
 /// `RAYON_NUM_THREADS=1`) solves the sketches one after another with no task overhead; more
 /// threads split them into one contiguous run per thread. Each run keeps the prepared problems
@@ -87,6 +90,17 @@ impl Worker {
     /// Solves every component of `sketch` (as [`Sketch::solve_all`]), each on a kept problem
     /// of the same structure when there is one; keeps the sketch's problems for the next.
     pub(crate) fn solve(&mut self, sketch: &mut Sketch) -> Result<SketchReport> {
+        // A batch cancelled through the sketches' options starts none of the sketches left.
+        if sketch
+            .options()
+            .cancel
+            .as_ref()
+            .is_some_and(camber_solve::CancelFlag::is_cancelled)
+        {
+            return Err(crate::ground::errors::Error::Solve(
+                camber_solve::Error::Cancelled,
+            ));
+        }
         let comps = sketch.components();
         let parallel = crate::session::solve::solves_in_parallel(&comps);
         // What each problem solved now was built from, by its component's first entity.
@@ -171,6 +185,29 @@ mod tests {
         assert_ne!(kept_stamps(&w), Some(stamps));
         // The batch leaves nothing prepared in the sketches it solved.
         assert_eq!(third.prepared.len(), 0);
+    }
+
+    #[test]
+    fn a_sketch_cancelled_before_its_turn_is_not_started() {
+        let flag = camber_solve::CancelFlag::new();
+        let mut sketches = vec![at_distance(0.0, 1.0), at_distance(1.0, 2.0)];
+        for s in &mut sketches {
+            s.set_options(s.options().clone().with_cancel(Some(flag.clone())));
+        }
+        let before: Vec<String> = sketches
+            .iter()
+            .map(|s| crate::file::to_json(s).unwrap())
+            .collect();
+        flag.cancel();
+        for r in solve_many(&mut sketches) {
+            assert!(matches!(
+                r,
+                Err(crate::Error::Solve(camber_solve::Error::Cancelled))
+            ));
+        }
+        for (s, b) in sketches.iter().zip(before) {
+            assert_eq!(crate::file::to_json(s).unwrap(), b);
+        }
     }
 
     #[test]
