@@ -244,6 +244,44 @@ fn quadratic_spline_offsets_meet_the_tolerance_with_few_points() {
 }
 
 #[test]
+fn far_query_points_are_measured_without_overflow() {
+    // |p − C|² overflows f64 beyond ~1.3e154: the distance came back infinite.
+    let c: BezierCurve2<f64> = BezierCurve2::try_new(vec![
+        Point2::new(0.0, 0.0),
+        Point2::new(1.0, 2.0),
+        Point2::new(3.0, -1.0),
+        Point2::new(4.0, 0.0),
+    ])
+    .unwrap();
+    for p in [
+        Point2::new(0.0, 1.3407807929942597e154),
+        Point2::new(1e300, 1e300),
+        Point2::new(-1.7e308, 2.0_f64),
+    ] {
+        let near = closest_point(&c, &p).unwrap();
+        assert!(near.distance.is_finite(), "{p}: {}", near.distance);
+        // From that far every point of the curve is at |p| to within the curve's size.
+        let expected = p.coords.iter().fold(0.0_f64, |m, x| m.max(x.abs()));
+        assert!(
+            near.distance >= expected * (1.0 - 1e-9),
+            "{p}: {}",
+            near.distance
+        );
+        assert!(near.distance <= expected * 1.5, "{p}: {}", near.distance);
+    }
+    // A point near the curve gets the same answer as before the scaling (σ = 1 there).
+    let near = closest_point(&c, &Point2::new(2.0, 3.0)).unwrap();
+    let brute = (0..=100_000)
+        .map(|i| (c.point(f64::from(i) / 1e5).unwrap() - Point2::new(2.0, 3.0)).norm())
+        .fold(f64::INFINITY, f64::min);
+    assert!(
+        (near.distance - brute).abs() < 1e-8,
+        "{} vs {brute}",
+        near.distance
+    );
+}
+
+#[test]
 fn nan_queries_are_typed_errors() {
     let c = wave(3, 8);
     assert!(matches!(

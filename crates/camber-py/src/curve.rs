@@ -17,7 +17,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyTuple;
 use pyo3::IntoPyObjectExt;
 
-use crate::arrays::{points_array, rows_array, vector, Params};
+use crate::arrays::{points, points_array, refuse_complex, rows_array, vector, Params, RealArray2};
 use crate::errors::{geometry, input};
 
 /// Any curve the package handles, in the plane or in space.
@@ -153,6 +153,59 @@ pub(crate) fn scalar_map(
     }
 }
 
+/// The curve of a 3-D `inner` for the query `what`.
+fn spatial<'a>(
+    inner: &'a AnyCurve,
+    what: &str,
+) -> PyResult<&'a (dyn ParametricCurve<f64, 3> + Sync)> {
+    Ok(match inner {
+        AnyCurve::Bezier3(c) => c,
+        AnyCurve::BSpline3(c) => c,
+        AnyCurve::Nurbs3(c) => c,
+        AnyCurve::Hermite3(c) => c,
+        _ => {
+            return Err(input(format!(
+                "{what}: the point's dimension is not the curve's"
+            )))
+        }
+    })
+}
+
+/// The closest points of `curve` to every point of `pts`, as arrays (parameters (n,), points
+/// (n, D), distances (n,)); the GIL released, Ctrl-C honoured between points.
+fn closest_arrays<'py, const D: usize>(
+    py: Python<'py>,
+    curve: &(dyn ParametricCurve<f64, D> + Sync),
+    pts: &[Point<f64, D>],
+) -> PyResult<Bound<'py, PyTuple>> {
+    let found = crate::interrupt::run_geometry(py, |budget| {
+        let mut params = Vec::with_capacity(pts.len());
+        let mut coords = Vec::with_capacity(pts.len() * D);
+        let mut distances = Vec::with_capacity(pts.len());
+        for p in pts {
+            if budget.is_stopped() {
+                return Err(camber_geom::Error::Cancelled {
+                    operation: "closest_point",
+                });
+            }
+            let c = closest_point(curve, p)?;
+            params.push(c.parameter);
+            coords.extend_from_slice(c.point.coords.as_slice());
+            distances.push(c.distance);
+        }
+        Ok((params, coords, distances))
+    })?;
+    let (params, coords, distances) = found;
+    PyTuple::new(
+        py,
+        [
+            PyArray1::from_vec(py, params).into_any(),
+            rows_array(py, coords, D).into_any(),
+            PyArray1::from_vec(py, distances).into_any(),
+        ],
+    )
+}
+
 fn closest_tuple<'py, const D: usize>(
     py: Python<'py>,
     c: ClosestPoint<f64, D>,
@@ -284,32 +337,46 @@ impl Curve {
         scalar_map(py, u, |u| signed_curvature(c, u))
     }
 
-    /// The point of the curve closest to `point`: (parameter, point, distance).
+    /// The point of the curve closest to `point`: (parameter, point, distance). For an
+    /// (n, d) array of points (any dtype numpy casts to float, any memory layout): arrays of
+    /// shape (n,), (n, d) and (n,), computed with the GIL released (Ctrl-C stops between
+    /// points).
     fn closest_point<'py>(
         &self,
         py: Python<'py>,
-        point: Vec<f64>,
+        point: &Bound<'py, PyAny>,
     ) -> PyResult<Bound<'py, PyTuple>> {
+        refuse_complex(point, "point")?;
+        // A 2-D array is many points even when it has none.
+        let table = point
+            .getattr("ndim")
+            .and_then(|n| n.extract::<usize>())
+            .is_ok_and(|n| n == 2);
+        if let Some(one) = (!table).then(|| point.extract::<Vec<f64>>().ok()).flatten() {
+            return match self.inner.dim() {
+                2 => {
+                    let p = Point::from(vector::<2>(&one, "point")?);
+                    let c = planar(&self.inner, "closest_point")?;
+                    closest_tuple(py, py.detach(|| closest_point(c, &p)).map_err(geometry)?)
+                }
+                _ => {
+                    let p = Point::from(vector::<3>(&one, "point")?);
+                    let c = spatial(&self.inner, "closest_point")?;
+                    closest_tuple(py, py.detach(|| closest_point(c, &p)).map_err(geometry)?)
+                }
+            };
+        }
+        let many: RealArray2<'_> = point.extract()?;
         match self.inner.dim() {
             2 => {
-                let p = Point::from(vector::<2>(&point, "point")?);
+                let pts = points::<2>(&many, "points")?;
                 let c = planar(&self.inner, "closest_point")?;
-                closest_tuple(py, py.detach(|| closest_point(c, &p)).map_err(geometry)?)
+                closest_arrays(py, c, &pts)
             }
             _ => {
-                let p = Point::from(vector::<3>(&point, "point")?);
-                let c: &(dyn ParametricCurve<f64, 3> + Sync) = match &self.inner {
-                    AnyCurve::Bezier3(c) => c,
-                    AnyCurve::BSpline3(c) => c,
-                    AnyCurve::Nurbs3(c) => c,
-                    AnyCurve::Hermite3(c) => c,
-                    _ => {
-                        return Err(input(
-                            "closest_point: the point's dimension is not the curve's",
-                        ))
-                    }
-                };
-                closest_tuple(py, py.detach(|| closest_point(c, &p)).map_err(geometry)?)
+                let pts = points::<3>(&many, "points")?;
+                let c = spatial(&self.inner, "closest_point")?;
+                closest_arrays(py, c, &pts)
             }
         }
     }
@@ -476,6 +543,13 @@ impl Curve {
     /// The curve in camber's JSON curve form.
     fn to_json(&self) -> PyResult<String> {
         each!(&self.inner, c => serde_json::to_string(c)).map_err(|e| input(e.to_string()))
+    }
+
+    /// Pickling goes through camber's curve JSON: `type(c).from_json(c.to_json())`, exact
+    /// (numbers are written in their shortest round-trip form).
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, (String,))> {
+        let text = slf.borrow().to_json()?;
+        Ok((slf.get_type().getattr("from_json")?, (text,)))
     }
 
     fn __repr__(&self) -> String {

@@ -108,6 +108,30 @@ impl Sketch {
         self.clone()
     }
 
+    /// The sketch as plain Python values (dicts, lists, numbers, strings): the file format
+    /// read by `json.loads`.
+    fn to_dict(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
+        let text = self.to_json()?;
+        Ok(py.import("json")?.call_method1("loads", (text,))?.unbind())
+    }
+
+    /// Reads a sketch from plain Python values in the file format (what `to_dict` gives).
+    #[staticmethod]
+    fn from_dict(py: Python<'_>, data: &Bound<'_, PyAny>) -> PyResult<Self> {
+        let text: String = py
+            .import("json")?
+            .call_method1("dumps", (data,))?
+            .extract()?;
+        Self::from_json(py, &text)
+    }
+
+    /// Pickling goes through the file format: `Sketch.from_json(sketch.to_json())`. A sketch
+    /// holding a Python custom constraint has no file form, so it cannot be pickled.
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, (String,))> {
+        let text = slf.borrow().to_json()?;
+        Ok((slf.get_type().getattr("from_json")?, (text,)))
+    }
+
     /// Adds a point entity; returns its id.
     fn add_point(&mut self, at: Vec<f64>) -> PyResult<u64> {
         let p = xy(&at, "at")?;

@@ -171,3 +171,25 @@ def test_knot_insertion_never_moves_the_curve(u, times):
     b = camber.BSplineCurve.clamped_uniform(3, [[0, 0], [1, 2], [2, -1], [3, 2], [4, 0], [5, 1]])
     v = np.linspace(0, 1, 23)
     np.testing.assert_allclose(b.insert_knot(u, times).evaluate(v), b.evaluate(v), atol=1e-11)
+
+
+def test_closest_point_takes_an_array_of_points_and_answers_like_one_at_a_time():
+    c = camber.BSplineCurve(
+        3, [0, 0, 0, 0, 0.5, 1, 1, 1, 1], np.array([[0, 0], [1, 2], [2, -1], [3, 1], [4, 0.0]])
+    )
+    rng = np.random.default_rng(7)
+    pts = rng.uniform(-1, 5, size=(40, 2))
+    for arg in (pts, pts.astype(np.float32), pts[::-1], pts.T.copy().T, pts.tolist()):
+        u, q, d = c.closest_point(arg)
+        expected = np.asarray(arg, dtype=float)
+        assert u.shape == (40,) and q.shape == (40, 2) and d.shape == (40,)
+        for i, p in enumerate(expected):
+            ui, qi, di = c.closest_point(p)
+            assert u[i] == ui and d[i] == di
+            np.testing.assert_array_equal(q[i], qi)
+    u, q, d = c.closest_point(np.zeros((0, 2)))
+    assert u.shape == (0,) and q.shape == (0, 2)
+    with pytest.raises(camber.CamberError, match=r"\(n, 2\)"):
+        c.closest_point(np.zeros((3, 3)))
+    with pytest.raises(camber.GeometryError):
+        c.closest_point(np.array([[0.0, 0.0], [np.nan, 1.0]]))

@@ -332,3 +332,48 @@ def test_bsplines_from_hostile_knots_and_degrees_are_refused_or_finite(degree, k
         return
     a, b = c.domain
     call(c.evaluate, np.linspace(a, b, 7))
+
+
+@hostile
+@given(points=arrays(), query=arrays())
+def test_closest_points_of_hostile_point_arrays_are_refused_or_finite(points, query):
+    c = camber.BSplineCurve(3, [0, 0, 0, 0, 0.5, 1, 1, 1, 1], [[0, 0], [1, 2], [2, -1], [3, 1], [4, 0]])
+    call(c.closest_point, query)
+    call(c.closest_point, points)
+
+
+class _Spline:
+    """A duck-typed scipy BSpline: anything with t, c and k."""
+
+    def __init__(self, t, c, k):
+        self.t, self.c, self.k = t, c, k
+
+
+@hostile
+@given(t=st.one_of(arrays(max_dims=1), st.lists(numbers, max_size=10)), c=arrays(), k=counts)
+def test_hostile_scipy_like_splines_are_refused_or_come_in_finite(t, c, k):
+    from camber.interop import from_scipy, to_geomdl, to_scipy
+
+    curve = call(from_scipy, _Spline(t, c, k))
+    if isinstance(curve, Exception):
+        return
+    a, b = curve.domain
+    call(curve.evaluate, np.linspace(a, b, 5))
+    call(to_scipy, curve)
+    call(to_geomdl, curve)
+
+
+@hostile
+@given(degree=counts, knots=st.lists(numbers, max_size=10), points=arrays(), weights=arrays(max_dims=1))
+def test_hostile_geomdl_like_curves_are_refused_or_come_in_finite(degree, knots, points, weights):
+    from types import SimpleNamespace
+
+    from camber.interop import from_geomdl
+
+    ctrl = points.tolist() if isinstance(points, np.ndarray) else points
+    duck = SimpleNamespace(degree=degree, knotvector=knots, ctrlpts=ctrl, weights=weights.tolist())
+    curve = call(from_geomdl, duck)
+    if isinstance(curve, Exception):
+        return
+    a, b = curve.domain
+    call(curve.evaluate, np.linspace(a, b, 5))

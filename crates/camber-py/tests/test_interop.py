@@ -172,3 +172,51 @@ def test_any_bspline_round_trips_exactly_through_both_libraries(c):
     u = params(c, 17)
     scale = 1.0 + np.max(np.abs(c.control_points))
     assert np.max(np.abs(to_scipy(c)(u) - c.evaluate(u))) < 1e-12 * scale
+
+
+def every_curve_kind():
+    pts = np.array([[0.0, 0.0], [1.0, 2.0 / 3.0], [2.5, -1.0], [3.0, 0.1]])
+    return [
+        camber.BezierCurve(pts),
+        wave(2),
+        wave(3),
+        quarter_circle(),
+        camber.BezierCurve(pts).to_hermite(),
+    ]
+
+
+@pytest.mark.parametrize("curve", every_curve_kind(), ids=lambda c: type(c).__name__)
+def test_curves_pickle_to_the_same_numbers(curve):
+    import pickle
+
+    back = pickle.loads(pickle.dumps(curve))
+    assert type(back) is type(curve)
+    assert back.to_json() == curve.to_json()
+    u = np.linspace(*curve.domain, 23)
+    np.testing.assert_array_equal(back.evaluate(u), curve.evaluate(u))
+
+
+def test_a_sketch_pickles_and_goes_through_plain_dicts(sketches):
+    import copy
+    import json
+    import pickle
+
+    s = camber.Sketch.load(sketches / "blade_section.json")
+    for back in (pickle.loads(pickle.dumps(s)), copy.deepcopy(s), camber.Sketch.from_dict(s.to_dict())):
+        assert back.to_json() == s.to_json()
+    d = s.to_dict()
+    assert d == json.loads(s.to_json())
+    assert isinstance(d, dict)
+    # A dict that is not a sketch is refused as a file error, naming what is wrong.
+    with pytest.raises(camber.FileError):
+        camber.Sketch.from_dict({"entities": "none"})
+
+
+def test_a_sketch_with_a_python_constraint_refuses_to_pickle():
+    import pickle
+
+    s = camber.Sketch()
+    p, q = s.add_point([0, 0]), s.add_point([3, 0])
+    s.add_custom(lambda x: [x[2] - x[0] - 1.0], [p, q], dim=1, name="unit apart", affine=True)
+    with pytest.raises(camber.CamberError):
+        pickle.dumps(s)

@@ -7,24 +7,44 @@ use crate::curve::ParametricCurve;
 use crate::errors::{Error, Result};
 use crate::scalar::{cst, re, Scalar};
 
-/// h(u) = ½|C(u) − p|², h′ = (C − p)·C′, h″ = |C′|² + (C − p)·C″; measure |C − p|.
+/// h(u) = ½|C(u) − p|²/σ², h′ = (C − p)·C′/σ², h″ = (|C′|² + (C − p)·C″)/σ²; measure |C − p|.
+/// σ is a power of two near the query point's size (1 for points within the unit box), so a
+/// far point's squares do not overflow and σ changes nothing but the exponent.
 struct SquaredDistance<T: Scalar, const D: usize> {
     target: Point<T, D>,
+    /// 1/σ.
+    inverse_scale: f64,
 }
 
 impl<T: Scalar, const D: usize> Field<T, D> for SquaredDistance<T, D> {
     fn eval(&self, d: &[SVector<T, D>; 3]) -> [T; 3] {
-        let w = d[0] - self.target.coords;
+        let k = cst::<T>(self.inverse_scale);
+        let w = (d[0] - self.target.coords) * k;
+        let (d1, d2) = (d[1] * k, d[2] * k);
         [
             w.norm_squared() * cst::<T>(0.5),
-            w.dot(&d[1]),
-            d[1].norm_squared() + w.dot(&d[2]),
+            w.dot(&d1),
+            d1.norm_squared() + w.dot(&d2),
         ]
     }
 
     fn measure(&self, d: &[SVector<T, D>; 3], _h: T) -> T {
-        (d[0] - self.target.coords).norm()
+        // |w| = m·|w/m| with m the largest component: no overflow for any finite w.
+        let w = d[0] - self.target.coords;
+        let m = w.iter().fold(0.0_f64, |m, c| m.max(re(*c).abs()));
+        if m > 1e-300 && m.is_finite() {
+            (w * cst::<T>(1.0 / m)).norm() * cst::<T>(m)
+        } else {
+            w.norm()
+        }
     }
+}
+
+/// 1/σ for the query point `p`: σ = 2^⌈log₂ max(|p|∞, 1)⌉.
+fn inverse_scale<T: Scalar, const D: usize>(p: &Point<T, D>) -> f64 {
+    let size = p.coords.iter().fold(1.0_f64, |m, c| m.max(re(*c).abs()));
+    // size ≤ f64::MAX, so the exponent is at most 1024 and 2^−1024 is a (subnormal) f64.
+    2.0_f64.powi(-(size.log2().ceil() as i32))
 }
 
 /// The point of `curve` closest to `p`, with [`QueryOptions::default`].
@@ -86,7 +106,10 @@ where
             });
         }
     }
-    let field = SquaredDistance { target: *p };
+    let field = SquaredDistance {
+        target: *p,
+        inverse_scale: inverse_scale(p),
+    };
     let found = scan(curve, &field, opts)?;
     let mut best = found.samples.first().copied();
     for s in found.samples.iter().chain(&found.extrema) {
