@@ -266,8 +266,7 @@ impl Fixture {
             if let camber_sketch::Constraint::ArcTangentToLine(t) = c {
                 assert_eq!(t.arc, k);
                 let sign = travel(&|id| s.entity(id).unwrap().clone(), k, t.end, t.line).signum();
-                let recorded = if t.sense == Sense::Agree { 1.0 } else { -1.0 };
-                assert_eq!(sign, recorded);
+                assert_eq!(sign > 0.0, t.sense == Sense::Agree);
                 self.tangencies.push((k, t.end, t.line, sign));
             }
         }
