@@ -18,7 +18,9 @@
 //! solution pulling toward it (so each step moves the rest of the sketch as little as it can),
 //! with the full selection as fallback, then the orientation and contact checks of a solve and
 //! the active set of honest contact (`component::solve`). An update that fails leaves the
-//! session at its previous state; the sketch itself is unchanged until [`DragSession::finish`].
+//! session at its previous state, and the next update starts from that state (the last
+//! accepted solution, never the refused one); the sketch itself is unchanged until
+//! [`DragSession::finish`].
 //!
 //! How the point can move ([`Freedom`]) comes from the constraints linearized at the session's
 //! start ([`camber_solve::mobility`]); for a point that slides on a nonlinear component the
@@ -223,6 +225,10 @@ pub struct DragSession {
     wish: bool,
     /// The reduced unknowns at the session's start (a warm start's point before any update).
     z_start: Vec<f64>,
+    /// The reduced unknowns of the last accepted update (empty before the first): where the
+    /// next update's warm start begins. Not the plan's last solution, which a refused update
+    /// (solved, then failing a check of the solved state) leaves at the refused state.
+    accepted: Vec<f64>,
     /// The unknowns before an update (scratch: which entities it moved).
     before: Vec<f64>,
     /// What the last update changed (its storage reused by the next).
@@ -364,6 +370,7 @@ impl Sketch {
             unknowns,
             wish,
             z_start,
+            accepted: Vec::new(),
             before: Vec::new(),
             last: DragUpdate::default(),
             centre,
@@ -415,11 +422,10 @@ impl DragSession {
         let start = if self.cp.nonlinear.is_none() {
             Start::Cold
         } else {
-            let last = self.cp.plan.last_solution();
-            let from = if last.is_empty() {
+            let from = if self.accepted.is_empty() {
                 self.z_start.clone()
             } else {
-                last.to_vec()
+                self.accepted.clone()
             };
             Start::Warm {
                 toward: from.clone(),
@@ -429,6 +435,11 @@ impl DragSession {
         match crate::component::solve::solve(&mut self.cp, &self.shapes, &self.options, start) {
             Ok(report) => {
                 self.moved = true;
+                if self.cp.nonlinear.is_some() {
+                    self.accepted.clear();
+                    self.accepted
+                        .extend_from_slice(self.cp.plan.last_solution());
+                }
                 self.cp
                     .moved_entities_into(&self.before, &mut self.last.moved);
                 // The report has one entry per constraint: sorted by id, the pin left out.
