@@ -269,6 +269,12 @@ fn far_query_points_are_measured_without_overflow() {
         );
         assert!(near.distance <= expected * 1.5, "{p}: {}", near.distance);
     }
+    // A distance beyond the largest f64 is refused, not answered as infinity.
+    let beyond = closest_point(&c, &Point2::new(1.3e308, 1.3e308));
+    assert!(
+        matches!(beyond, Err(Error::NonFinite { value, .. }) if value.is_infinite()),
+        "{beyond:?}"
+    );
     // A point near the curve gets the same answer as before the scaling (σ = 1 there).
     let near = closest_point(&c, &Point2::new(2.0, 3.0)).unwrap();
     let brute = (0..=100_000)

@@ -134,6 +134,15 @@ where
     } else {
         best
     };
+    // Only a distance beyond the largest f64 (a point near ±1.8e308 in every coordinate) is
+    // not finite here: refused rather than answered as infinity.
+    if !re(best.measure).is_finite() {
+        return Err(Error::NonFinite {
+            what: "distance from the query point to the curve",
+            index: 0,
+            value: re(best.measure),
+        });
+    }
     Ok(ClosestPoint {
         parameter: best.u,
         point: best.point,

@@ -19,6 +19,15 @@ from camber._native import BezierCurve, BSplineCurve, NurbsCurve
 __all__ = ["to_scipy", "from_scipy", "to_geomdl", "from_geomdl"]
 
 
+def _real(values, what):
+    """``values`` as a float array, refusing complex numbers (numpy would drop their imaginary
+    parts with only a warning)."""
+    a = np.asarray(values)
+    if np.iscomplexobj(a) or (a.dtype == object and any(isinstance(v, complex) for v in a.flat)):
+        raise TypeError(f"the {what} are complex; camber curves are real")
+    return a.astype(float)
+
+
 def _knotted(curve):
     """(degree, knots, control points, weights or None) of a Bézier, B-spline or NURBS curve."""
     if isinstance(curve, NurbsCurve):
@@ -61,8 +70,8 @@ def from_scipy(spline):
     Raises ValueError for coefficients that are not one row of 2 or 3 numbers per control
     point, or too few of them; camber's own checks name any bad knot or value.
     """
-    t = np.asarray(spline.t, dtype=float)
-    c = np.asarray(spline.c, dtype=float)
+    t = _real(spline.t, "knots")
+    c = _real(spline.c, "coefficients")
     k = int(spline.k)
     n = len(t) - k - 1
     if c.ndim != 2 or c.shape[1] not in (2, 3):
@@ -103,14 +112,16 @@ def from_geomdl(curve):
     Raises ValueError for a geomdl curve of dimension other than 2 or 3.
     """
     degree = int(curve.degree)
-    knots = [float(u) for u in curve.knotvector]
-    points = np.asarray(curve.ctrlpts, dtype=float)
+    knots = _real(curve.knotvector, "knots").tolist()
+    points = _real(curve.ctrlpts, "control points")
     if points.ndim != 2 or points.shape[1] not in (2, 3):
         raise ValueError(
             f"the geomdl curve's control points have shape {points.shape}; camber curves "
             "have 2 or 3 coordinates"
         )
     weights = getattr(curve, "weights", None)
-    if weights is not None and any(w != 1.0 for w in weights):
-        return NurbsCurve(degree, knots, points, [float(w) for w in weights])
+    if weights is not None:
+        weights = _real(weights, "weights")
+        if np.any(weights != 1.0):
+            return NurbsCurve(degree, knots, points, weights.tolist())
     return BSplineCurve(degree, knots, points)
