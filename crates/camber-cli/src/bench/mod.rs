@@ -250,11 +250,7 @@ impl Plan {
             n += match w {
                 Workload::W1 => 2 * self.w1_runs * 200,
                 Workload::W2 => 4 * self.w2_trials + self.w1_runs * 200,
-                Workload::W3
-                | Workload::W3a
-                | Workload::W5
-                | Workload::W5b
-                | Workload::W5r => self
+                Workload::W3 | Workload::W3a | Workload::W5 | Workload::W5b | Workload::W5r => self
                     .chain_sizes
                     .iter()
                     .map(|&s| self.chain_repeats(s))

@@ -273,7 +273,10 @@ pub(super) fn rectangles(plan: &Plan, ladder: bool, bar: &ProgressBar) -> Result
     let workload = if ladder { Workload::W5b } else { Workload::W5 };
     sized_solves(plan, workload, bar, |n| {
         let (sketch, layout) = if ladder { wl::w5b(n)? } else { wl::w5(n)? };
-        Ok((sketch, Box::new(move |s: &Sketch| wl::w5_valid(s, &layout, TOL))))
+        Ok((
+            sketch,
+            Box::new(move |s: &Sketch| wl::w5_valid(s, &layout, TOL)),
+        ))
     })
 }
 
@@ -282,7 +285,10 @@ pub(super) fn rectangles(plan: &Plan, ladder: bool, bar: &ProgressBar) -> Result
 pub(super) fn rounded_rectangles(plan: &Plan, bar: &ProgressBar) -> Result<Vec<Row>> {
     sized_solves(plan, Workload::W5r, bar, |n| {
         let (sketch, layout) = wl::w5r(n)?;
-        Ok((sketch, Box::new(move |s: &Sketch| wl::w5r_valid(s, &layout, TOL))))
+        Ok((
+            sketch,
+            Box::new(move |s: &Sketch| wl::w5r_valid(s, &layout, TOL)),
+        ))
     })
 }
 
