@@ -271,7 +271,7 @@ impl Sketch {
     }
 
     /// The point weights of entity `id` that differ from 1, by point index.
-    fn weights_of(&self, id: EntityId) -> Vec<(usize, f64)> {
+    fn weights_of(&self, id: EntityId) -> PointWeights {
         self.weights
             .range((id, 0)..=(id, usize::MAX))
             .map(|((_, index), w)| (*index, *w))
@@ -279,12 +279,15 @@ impl Sketch {
     }
 }
 
+/// Point weights of one entity: (point index, weight).
+type PointWeights = Vec<(usize, f64)>;
+
 /// What a fillet changed so far, to put back if a later step fails.
 struct Journal {
     /// The sketch's next automatic id before the fillet.
     next_id: u64,
     /// Each trimmed line as it was, with its point weights.
-    lines: Vec<(EntityId, Entity, Vec<(usize, f64)>)>,
+    lines: Vec<(EntityId, Entity, PointWeights)>,
     /// Each removed corner coincidence with its priority.
     removed: Vec<(ConstraintId, Constraint, Option<camber_solve::Priority>)>,
     /// The arc, once added.
