@@ -76,13 +76,15 @@ fn height(k: usize) -> f64 {
 }
 
 /// One rounded rectangle with its lower-left design corner at `a`, added to `s` and recorded
-/// in `r`; its points then moved by the start perturbation.
+/// in `r`: with W5's two lengths when `dimensioned`, and its points then moved by the start
+/// perturbation when a generator is given.
 fn add_rounded(
     s: &mut Sketch,
     r: &mut RoundedRectangles,
-    rng: &mut Lcg,
+    rng: Option<&mut Lcg>,
     a: Point2<f64>,
     (w, h): (f64, f64),
+    dimensioned: bool,
 ) -> Result<()> {
     let rho = W5R_RADIUS;
     let (b, c, d) = (
@@ -128,7 +130,12 @@ fn add_rounded(
         s.add_constraint(Vertical::line(l))?;
         r.lines.vertical.push(l);
     }
-    for (l, length) in [(bottom, w - 2.0 * rho), (left, h - 2.0 * rho)] {
+    let lengths = if dimensioned {
+        vec![(bottom, w - 2.0 * rho), (left, h - 2.0 * rho)]
+    } else {
+        Vec::new()
+    };
+    for (l, length) in lengths {
         s.add_constraint(camber_sketch::constraints::Distance {
             a: PointRef::Start(l),
             b: PointRef::End(l),
@@ -139,6 +146,11 @@ fn add_rounded(
     let fixed = PointRef::Start(bottom);
     s.add_constraint(camber_sketch::constraints::Fixed::point(fixed))?;
     r.lines.fixed.push((fixed, s.point(fixed)?));
+    r.lines.lines.extend(lines);
+    r.arcs.extend(arcs.iter().copied());
+    let Some(rng) = rng else {
+        return Ok(());
+    };
     // The start: every point moved but the fixed one (its draws discarded).
     let mut offset = || W5R_DELTA * (2.0 * rng.unit() - 1.0);
     for (i, l) in lines.iter().enumerate() {
@@ -162,8 +174,6 @@ fn add_rounded(
         }
         s.set_entity(*k, Entity::Arc(blocks))?;
     }
-    r.lines.lines.extend(lines);
-    r.arcs.extend(arcs);
     Ok(())
 }
 
@@ -189,8 +199,36 @@ pub fn w5r(n: usize) -> Result<(Sketch, RoundedRectangles)> {
     for k in 0..n {
         let (col, row) = (k % columns, k / columns);
         let a = Point2::new(2.0 * col as f64, 2.0 * row as f64);
-        add_rounded(&mut s, &mut r, &mut rng, a, (width(k), height(k)))?;
+        add_rounded(
+            &mut s,
+            &mut r,
+            Some(&mut rng),
+            a,
+            (width(k), height(k)),
+            true,
+        )?;
     }
+    Ok((s, r))
+}
+
+/// The bundled sketch `rounded_plate.json`: one W5r rectangle (2 × 1.2 with corners rounded
+/// to ρ = 0.2, as drawn, not perturbed) without its two lengths, so its width and height are
+/// free (DOF 2) and a drag of a corner arc stretches it with every tangency and radius kept.
+///
+/// ```
+/// let (mut s, r) = camber_workloads::rounded_plate()?;
+/// assert!(camber_workloads::w5r_valid(&s, &r, 1e-9)); // drawn satisfied
+/// let dof: usize = s.analyze()?.iter().map(|a| a.analysis.dof).sum();
+/// assert_eq!(dof, 2);
+/// # Ok::<(), camber_sketch::Error>(())
+/// ```
+///
+/// # Errors
+/// None in practice.
+pub fn rounded_plate() -> Result<(Sketch, RoundedRectangles)> {
+    let mut s = Sketch::new();
+    let mut r = RoundedRectangles::default();
+    add_rounded(&mut s, &mut r, None, Point2::origin(), (2.0, 1.2), false)?;
     Ok((s, r))
 }
 
