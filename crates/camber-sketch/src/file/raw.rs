@@ -16,6 +16,11 @@ fn pt(p: Xy) -> Point2<f64> {
     Point2::new(p[0], p[1])
 }
 
+/// Whether `x ≤ tol`; false for NaN, so a comparison that cannot be made refuses.
+fn within(x: f64, tol: f64) -> bool {
+    x <= tol
+}
+
 fn vec(v: Xy) -> Vector2<f64> {
     Vector2::new(v[0], v[1])
 }
@@ -284,7 +289,7 @@ impl RawShape {
         let r = vs.norm();
         let tol = 1e-9 * r.max(1.0);
         if let Some(given) = radius {
-            if !((given - r).abs() <= tol) {
+            if !within((given - r).abs(), tol) {
                 return Some(("radius", format!("radius {given} disagrees with the distance {r} of the start point from the centre")));
             }
         }
@@ -296,7 +301,7 @@ impl RawShape {
                 let off = (a - v.y.atan2(v.x) + std::f64::consts::PI)
                     .rem_euclid(std::f64::consts::TAU)
                     - std::f64::consts::PI;
-                if !(off.abs() * v.norm() <= tol) {
+                if !within(off.abs() * v.norm(), tol) {
                     return Some((field, format!("{field} {a} disagrees with the direction of the arc's {} point from the centre", if field == "start_angle" { "start" } else { "end" })));
                 }
             }
