@@ -222,35 +222,50 @@ impl<T: Scalar> CircularArc<T> {
     /// # Errors
     /// None for a valid arc (the kernel's checks of the NURBS curve pass).
     pub fn to_nurbs(&self) -> Result<NurbsCurve2<T>> {
-        let pieces = ((re(self.sweep) / FRAC_PI_2).ceil() as usize).clamp(1, 4);
-        let n = cst::<T>(pieces as f64);
-        let delta = self.sweep / n;
-        let half = delta / cst::<T>(2.0);
-        let w = half.cos();
-        let mut points = Vec::with_capacity(2 * pieces + 1);
-        let mut weights = Vec::with_capacity(2 * pieces + 1);
-        let mut knots = vec![T::zero(); 3];
-        points.push(self.start_point());
-        weights.push(T::one());
-        for k in 0..pieces {
-            let a0 = self.start_angle + delta * cst::<T>(k as f64);
-            let corner = self.center
-                + Vector2::new((a0 + half).cos(), (a0 + half).sin()) * (self.radius / w);
-            points.push(corner);
-            weights.push(w);
-            points.push(self.point_at_angle(a0 + delta));
-            weights.push(T::one());
-            let knot = if k + 1 == pieces {
-                T::one()
-            } else {
-                cst::<T>((k + 1) as f64 / pieces as f64)
-            };
-            knots.push(knot);
-            knots.push(knot);
-        }
-        knots.push(T::one());
+        let (points, weights, knots) = unit_rational_arc(self.start_angle, self.sweep);
+        let points = points
+            .into_iter()
+            .map(|p| self.center + p.coords * self.radius)
+            .collect();
         NurbsCurve2::try_new(2, KnotVector::try_new(knots)?, points, weights)
     }
+}
+
+/// The rational quadratic form of the unit circle's arc from angle `start` counter-clockwise
+/// through `sweep` ∈ (0, 2π]: n = ⌈sweep/90°⌉ pieces of equal sweep Δ, control points
+/// (cos θₖ, sin θₖ), the corner (cos θₘ, sin θₘ)/cos(Δ/2) and (cos θₖ₊₁, sin θₖ₊₁), weights
+/// 1, cos(Δ/2), 1, and the clamped knot vector with double interior knots k/n. Any affine
+/// image of these control points with the same weights and knots is the affine image of the
+/// arc (rational curves are affinely invariant), which is how circular and elliptic arcs get
+/// their exact NURBS forms.
+pub(crate) fn unit_rational_arc<T: Scalar>(start: T, sweep: T) -> (Vec<Point2<T>>, Vec<T>, Vec<T>) {
+    let pieces = ((re(sweep) / FRAC_PI_2).ceil() as usize).clamp(1, 4);
+    let n = cst::<T>(pieces as f64);
+    let delta = sweep / n;
+    let half = delta / cst::<T>(2.0);
+    let w = half.cos();
+    let unit = |a: T| Point2::new(a.cos(), a.sin());
+    let mut points = Vec::with_capacity(2 * pieces + 1);
+    let mut weights = Vec::with_capacity(2 * pieces + 1);
+    let mut knots = vec![T::zero(); 3];
+    points.push(unit(start));
+    weights.push(T::one());
+    for k in 0..pieces {
+        let a0 = start + delta * cst::<T>(k as f64);
+        points.push(Point2::from(unit(a0 + half).coords / w));
+        weights.push(w);
+        points.push(unit(a0 + delta));
+        weights.push(T::one());
+        let knot = if k + 1 == pieces {
+            T::one()
+        } else {
+            cst::<T>((k + 1) as f64 / pieces as f64)
+        };
+        knots.push(knot);
+        knots.push(knot);
+    }
+    knots.push(T::one());
+    (points, weights, knots)
 }
 
 #[cfg(test)]

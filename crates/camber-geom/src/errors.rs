@@ -145,6 +145,21 @@ pub enum Error {
         /// The radius.
         value: f64,
     },
+    /// A semi-axis of an ellipse or elliptic arc is zero or negative.
+    ///
+    /// ```
+    /// use camber_geom::{Ellipse, Error};
+    /// use nalgebra::Point2;
+    /// let err = Ellipse::try_new(Point2::new(0.0, 0.0), 2.0, -0.5, 0.0).unwrap_err();
+    /// assert_eq!(err, Error::NonPositiveSemiAxis { axis: "b", value: -0.5 });
+    /// ```
+    #[error("semi-axis {axis} of the ellipse ({value}) is not positive")]
+    NonPositiveSemiAxis {
+        /// Which semi-axis: "a" (along the rotated x axis) or "b".
+        axis: &'static str,
+        /// Its value.
+        value: f64,
+    },
     /// A circular arc whose sweep, end angle − start angle reduced modulo 2π, is zero: its
     /// start and end coincide (a whole turn is a circle, not an arc).
     ///

@@ -1,10 +1,11 @@
 //! camber-geom: the scalar-generic geometry kernel of camber.
 //!
-//! Bézier, B-spline, NURBS and cubic Hermite curves, lines, segments and circles, composite
-//! curves and curve queries. Every evaluator is generic over one bound, [`Scalar`]
-//! (`nalgebra::RealField + Copy`), so the same code evaluates with `f64` and with forward-mode
-//! dual numbers: differentiating a curve point with respect to its control points needs no
-//! derivative code of its own. This crate knows nothing of constraints or solvers.
+//! Bézier, B-spline, NURBS and cubic Hermite curves, lines, segments, circles, circular arcs,
+//! ellipses and elliptic arcs, composite curves and curve queries. Every evaluator is generic
+//! over one bound, [`Scalar`] (`nalgebra::RealField + Copy`), so the same code evaluates with
+//! `f64` and with forward-mode dual numbers: differentiating a curve point with respect to its
+//! control points needs no derivative code of its own. This crate knows nothing of constraints
+//! or solvers.
 //!
 //! ```
 //! use camber_geom::{BSplineCurve2, KnotVector, ParametricCurve};
@@ -51,6 +52,7 @@ pub mod budget;
 pub mod composite;
 pub mod curve;
 pub mod degree_reduction;
+pub mod ellipse;
 pub mod errors;
 pub mod extend;
 pub mod fit;
@@ -71,6 +73,7 @@ pub use bspline::{BSplineCurve, BSplineCurve2, BSplineCurve3};
 pub use budget::Budget;
 pub use composite::{CompositeCurve, CompositeCurve2, CompositeCurve3, Continuity, JointReport};
 pub use curve::ParametricCurve;
+pub use ellipse::{Ellipse, EllipticArc};
 pub use errors::{Error, Result};
 pub use hermite::{HermiteCurve, HermiteCurve2, HermiteCurve3};
 pub use knot_ops::{BezierPiece, ControlNet};
