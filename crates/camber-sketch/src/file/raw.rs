@@ -2,11 +2,14 @@
 //! snake-case tags and named fields, and the conversions both ways. Constraints are read and
 //! written in their kinds' own forms ([`crate::constraints`]), one JSON object each.
 
-use camber_geom::{BSplineCurve2, BezierCurve2, CircularArc, KnotVector, NurbsCurve2};
+use camber_geom::{
+    BSplineCurve2, BezierCurve2, CircularArc, Ellipse, EllipticArc, KnotVector, NurbsCurve2,
+};
 use nalgebra::{Point2, Vector2};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 
+use crate::ground::ellipse_blocks::frame_angle;
 use crate::ground::entity::Entity;
 use crate::ground::hermite_chain::{HermiteChain, Join};
 
@@ -67,6 +70,20 @@ pub(super) enum KeyedShape {
         start_angle: f64,
         end_angle: f64,
     },
+    Ellipse {
+        center: Xy,
+        semi_axis_a: f64,
+        semi_axis_b: f64,
+        rotation: f64,
+    },
+    EllipticArc {
+        center: Xy,
+        semi_axis_a: f64,
+        semi_axis_b: f64,
+        rotation: f64,
+        start_angle: f64,
+        end_angle: f64,
+    },
     Bezier {
         control_points: Vec<Xy>,
     },
@@ -109,6 +126,32 @@ impl From<KeyedShape> for RawShape {
             } => RawShape::Arc {
                 center,
                 radius,
+                start_angle,
+                end_angle,
+            },
+            KeyedShape::Ellipse {
+                center,
+                semi_axis_a,
+                semi_axis_b,
+                rotation,
+            } => RawShape::Ellipse {
+                center,
+                semi_axis_a,
+                semi_axis_b,
+                rotation,
+            },
+            KeyedShape::EllipticArc {
+                center,
+                semi_axis_a,
+                semi_axis_b,
+                rotation,
+                start_angle,
+                end_angle,
+            } => RawShape::EllipticArc {
+                center,
+                semi_axis_a,
+                semi_axis_b,
+                rotation,
                 start_angle,
                 end_angle,
             },
@@ -167,6 +210,20 @@ pub(super) enum RawShape {
         start_angle: f64,
         end_angle: f64,
     },
+    Ellipse {
+        center: Xy,
+        semi_axis_a: f64,
+        semi_axis_b: f64,
+        rotation: f64,
+    },
+    EllipticArc {
+        center: Xy,
+        semi_axis_a: f64,
+        semi_axis_b: f64,
+        rotation: f64,
+        start_angle: f64,
+        end_angle: f64,
+    },
     Bezier {
         control_points: Vec<Xy>,
     },
@@ -202,6 +259,8 @@ impl RawShape {
             RawShape::Line { .. } => "line",
             RawShape::Circle { .. } => "circle",
             RawShape::Arc { .. } => "arc",
+            RawShape::Ellipse { .. } => "ellipse",
+            RawShape::EllipticArc { .. } => "elliptic_arc",
             RawShape::Bezier { .. } => "bezier",
             RawShape::Bspline { .. } => "bspline",
             RawShape::Nurbs { .. } => "nurbs",
@@ -227,6 +286,32 @@ impl RawShape {
             } => Entity::arc(&CircularArc::try_new(
                 pt(center),
                 radius,
+                start_angle,
+                end_angle,
+            )?),
+            RawShape::Ellipse {
+                center,
+                semi_axis_a,
+                semi_axis_b,
+                rotation,
+            } => Entity::ellipse(&Ellipse::try_new(
+                pt(center),
+                semi_axis_a,
+                semi_axis_b,
+                rotation,
+            )?),
+            RawShape::EllipticArc {
+                center,
+                semi_axis_a,
+                semi_axis_b,
+                rotation,
+                start_angle,
+                end_angle,
+            } => Entity::elliptic_arc(&EllipticArc::try_new(
+                pt(center),
+                semi_axis_a,
+                semi_axis_b,
+                rotation,
                 start_angle,
                 end_angle,
             )?),
@@ -289,6 +374,34 @@ impl RawShape {
                     radius: vs.norm(),
                     start_angle: vs.y.atan2(vs.x),
                     end_angle: ve.y.atan2(ve.x),
+                }
+            }
+            Entity::Ellipse {
+                points: [c, v],
+                semi_axis_b,
+            } => {
+                // The blocks' ellipse: a = |V − C|, rotation atan2(V − C) ∈ (−π, π].
+                let w = v - c;
+                RawShape::Ellipse {
+                    center: xy_p(c),
+                    semi_axis_a: w.norm(),
+                    semi_axis_b: *semi_axis_b,
+                    rotation: w.y.atan2(w.x),
+                }
+            }
+            Entity::EllipticArc {
+                points: [c, v, s, e],
+                semi_axis_b,
+            } => {
+                // The ends' parametric angles, atan2 ∈ (−π, π].
+                let w = v - c;
+                RawShape::EllipticArc {
+                    center: xy_p(c),
+                    semi_axis_a: w.norm(),
+                    semi_axis_b: *semi_axis_b,
+                    rotation: w.y.atan2(w.x),
+                    start_angle: frame_angle(c, v, *semi_axis_b, s),
+                    end_angle: frame_angle(c, v, *semi_axis_b, e),
                 }
             }
             Entity::Bezier(c) => RawShape::Bezier {
