@@ -16,10 +16,10 @@
 use std::sync::Arc;
 
 use camber_solve::{Residual, Scalar};
-use nalgebra::Vector2;
 use serde::{Deserialize, Serialize};
 
-use super::arc_tangent_to_line::ArcEnd;
+use super::shared::arc_ends::ArcEnd;
+use super::shared::ellipses::{end_block, travel};
 use super::glyph::{self, Glyph};
 use super::{Compiler, ConstraintKind, Entities};
 use crate::constraints::check::{SolvedCheck, SolvedState};
@@ -44,11 +44,6 @@ pub struct EllipticArcTangentToLine {
     /// Whether the arc's counter-clockwise travel at that end agrees with B − A or opposes it.
     #[serde(default)]
     pub sense: Sense,
-}
-
-/// The point block of an elliptic arc's end: 2 the start, 3 the end.
-pub(crate) fn end_block(end: ArcEnd) -> usize {
-    end.block() + 1
 }
 
 /// g of the module documentation over the blocks [C, V, b, P, A, B].
@@ -90,23 +85,6 @@ impl Residual for EllipseLineTangency {
         let (ud, vd) = (dot(w, d), cross(w, d));
         out[0] = (b * b * xa * ud + a2 * ya * vd) / (a2 * a * b * d_len);
     }
-}
-
-/// The counter-clockwise tangent E′ = −(a/b)·y′·u + (b/a)·x′·v at the point P of the ellipse
-/// of blocks [C, V] and b (f64).
-pub(crate) fn travel(
-    c: &nalgebra::Point2<f64>,
-    v: &nalgebra::Point2<f64>,
-    b: f64,
-    p: &nalgebra::Point2<f64>,
-) -> Vector2<f64> {
-    let w = v - c;
-    let a = w.norm();
-    let u = w / a;
-    let n = Vector2::new(-u.y, u.x);
-    let d = p - c;
-    let (x, y) = (d.dot(&u), d.dot(&n));
-    u * (-(a / b) * y) + n * ((b / a) * x)
 }
 
 impl ConstraintKind for EllipticArcTangentToLine {

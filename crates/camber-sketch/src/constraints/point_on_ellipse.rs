@@ -13,11 +13,12 @@ use std::sync::Arc;
 use serde::{Deserialize, Serialize};
 
 use super::compiler::distinct;
+use super::shared::ellipses::ellipse_kind;
 use super::glyph::{self, Glyph};
 use super::{Compiler, ConstraintKind, Entities};
 use crate::constraints::check::{SolvedCheck, SolvedState};
 use crate::constraints::piece::Slot;
-use crate::ground::entity::{combine, Entity};
+use crate::ground::entity::combine;
 use crate::ground::errors::{Error, Result};
 use crate::ground::ids::{EntityId, PointRef};
 use crate::ground::lookup::EntityLookup;
@@ -32,19 +33,6 @@ pub struct PointOnEllipse {
     pub point: PointRef,
     /// The ellipse or elliptic arc entity.
     pub ellipse: EntityId,
-}
-
-/// Fails unless `id` is an ellipse or an elliptic arc; `true` for an arc.
-pub(crate) fn ellipse_kind(e: &Entity, id: EntityId) -> Result<bool> {
-    match e {
-        Entity::Ellipse { .. } => Ok(false),
-        Entity::EllipticArc { .. } => Ok(true),
-        other => Err(Error::WrongEntityKind {
-            entity: id,
-            expected: "ellipse or elliptic arc",
-            found: other.kind_name(),
-        }),
-    }
 }
 
 impl ConstraintKind for PointOnEllipse {

@@ -8,7 +8,7 @@ use serde::{Deserialize, Serialize};
 
 use super::compiler::positive;
 use super::glyph::Glyph;
-use super::point_on_ellipse::ellipse_kind;
+use super::shared::ellipses::ellipse_kind;
 use super::{Compiler, ConstraintKind, Entities};
 use crate::constraints::piece::Slot;
 use crate::ground::errors::{Error, Result};
