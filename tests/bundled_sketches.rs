@@ -9,7 +9,10 @@ use std::path::PathBuf;
 
 use camber::sketch::file::{from_json, to_json};
 use camber::sketch::Sketch;
-use camber_workloads::{two_curves, two_curves_valid, w2_bspline7, w2_valid, w3a_chain, w3a_valid};
+use camber_workloads::{
+    rounded_plate, two_curves, two_curves_valid, w2_bspline7, w2_valid, w3a_chain, w3a_valid,
+    w5r_valid,
+};
 
 fn path(name: &str) -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -74,6 +77,15 @@ fn the_large_chain_is_w3a_and_solves_valid() {
 }
 
 #[test]
+fn the_rounded_plate_is_its_builder_and_stays_valid_when_solved() {
+    let (built, r) = rounded_plate().unwrap();
+    let mut s = bundled("rounded_plate.json", &built);
+    assert!(w5r_valid(&s, &r, 1e-9), "drawn satisfied");
+    solve_and_round_trip("rounded_plate.json", &mut s);
+    assert!(w5r_valid(&s, &r, 1e-9));
+}
+
+#[test]
 fn every_bundled_sketch_round_trips_and_solves() {
     let mut names: Vec<String> = std::fs::read_dir(path(""))
         .unwrap()
@@ -90,6 +102,7 @@ fn every_bundled_sketch_round_trips_and_solves() {
     for expected in [
         "blade_section.json",
         "diffuser.json",
+        "rounded_plate.json",
         "two_curves.json",
         "w3a_chain_1000.json",
     ] {

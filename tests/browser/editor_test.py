@@ -34,6 +34,7 @@ from playwright.sync_api import sync_playwright
 ROOT = Path(__file__).resolve().parents[2]
 BLADE = ROOT / "examples" / "sketches" / "blade_section.json"
 PARAMETRIC = ROOT / "examples" / "sketches" / "diffuser_parametric.json"
+PLATE = ROOT / "examples" / "sketches" / "rounded_plate.json"
 CHROMIUM = os.environ.get("CHROMIUM", "/usr/bin/chromium")
 SHOTS = ROOT / "target" / "browser"
 
@@ -211,6 +212,89 @@ def check_expression_labels(editor):
     check(not errors, f"the page reported errors: {errors}")
 
 
+def point_of(pts, ref):
+    """The point a file's point reference names, from the editor's points per entity: a line's
+    start and end are its points 0 and 1, an arc's its points 1 and 2 (0 is the centre)."""
+    (where, target), = ref.items()
+    if where == "control":
+        return pts[target[0]][target[1]]
+    if where == "point":
+        return pts[target][0]
+    arc = len(pts[target]) == 3
+    return pts[target][(1 if where == "start" else 2) if arc else (0 if where == "start" else -1)]
+
+
+def check_arc_constraints(state, sketch_file, original):
+    """Every constraint of the rounded plate holds, recomputed from the editor's points: the
+    joins, each fillet arc's radius, its tangency to its line at its end with the sense drawn,
+    the horizontals and verticals, the fixed corner."""
+    for c in state["components"]:
+        check(c["residual"] <= RESIDUAL_TOLERANCE, f"component {c['entities']}: residual {c['residual']}")
+    pts = points(state)
+    for c in json.loads(sketch_file.read_text())["constraints"]:
+        kind = c["kind"]
+        if kind == "coincident":
+            gap = math.dist(point_of(pts, c["a"]), point_of(pts, c["b"]))
+            check(gap <= RESIDUAL_TOLERANCE, f"coincident {c['id']}: {gap} apart")
+        elif kind == "radius":
+            centre, start, end = pts[c["circle"]]
+            for p in (start, end):
+                check(abs(math.dist(centre, p) - c["radius"]) <= RESIDUAL_TOLERANCE, f"radius {c['id']}: {math.dist(centre, p)}")
+        elif kind == "arc_tangent_to_line":
+            centre, start, end = pts[c["arc"]]
+            p = start if c["end"] == "start" else end
+            a, b = pts[c["line"]]
+            d = (b[0] - a[0], b[1] - a[1])
+            r = (p[0] - centre[0], p[1] - centre[1])
+            along = (r[0] * d[0] + r[1] * d[1]) / math.hypot(*d)
+            check(abs(along) <= RESIDUAL_TOLERANCE, f"arc_tangent_to_line {c['id']}: the radius is {along} off the normal")
+            travel = -r[1] * d[0] + r[0] * d[1]
+            check((travel > 0) == (c["sense"] == "agree"), f"arc_tangent_to_line {c['id']}: the arc turned against its sense")
+        elif kind in ("horizontal", "vertical"):
+            a, b = pts[c["of"]["line"]]
+            k = 1 if kind == "horizontal" else 0
+            check(abs(a[k] - b[k]) <= RESIDUAL_TOLERANCE, f"{kind} {c['id']}: {a} to {b}")
+        elif kind == "fixed":
+            ref = c["target"]["point"]
+            check(point_of(pts, ref) == point_of(original, ref), f"fixed {c['id']} moved")
+        else:
+            raise Failure(f"the test does not know constraint kind {kind}")
+
+
+def check_arc_drag(binary, work):
+    """The editor draws the rounded plate's fillet arcs, and dragging the end of a corner arc
+    with the mouse stretches the plate with every join, radius and tangency kept."""
+    plate = work / "rounded_plate.json"
+    shutil.copy(PLATE, plate)
+    editor = Editor(binary, plate)
+    errors = []
+    try:
+        original = points(editor.state())
+        arcs = [e["id"] for e in json.loads(plate.read_text())["entities"] if e["kind"] == "arc"]
+        check(len(arcs) == 4, f"the plate has 4 arcs: {arcs}")
+        with sync_playwright() as p:
+            browser = p.chromium.launch(executable_path=CHROMIUM, headless=True, args=["--no-sandbox"])
+            page = browser.new_page(viewport={"width": 1200, "height": 800})
+            page.on("pageerror", lambda e: errors.append(f"page error: {e}"))
+            page.goto(editor.url)
+            page.wait_for_selector("#layer-points circle[data-entity]")
+            for arc in arcs:
+                check(handle(page, arc, 2).count() == 1, f"no handle for the end of arc {arc}")
+            # The top-right arc: its end joins the top line; the bottom-left corner is fixed.
+            corner = arcs[1]
+            after = drag(page, editor, corner, 2, 40, -30)
+            moved = points(after)
+            check(moved[corner][2] != original[corner][2], f"the arc end did not move: {moved[corner][2]}")
+            check_arc_constraints(after, plate, original)
+            width = moved[1][0][0] - moved[3][0][0]
+            check(abs(width - 2.0) > 1e-3, f"the drag did not stretch the plate: width {width}")
+            page.screenshot(path=str(SHOTS / "editor_arcs.png"))
+            browser.close()
+    finally:
+        editor.stop()
+    check(not errors, f"the page reported errors: {errors}")
+
+
 def main():
     binary = Path(sys.argv[1] if len(sys.argv) > 1 else ROOT / "target" / "release" / "camber")
     check(binary.exists(), f"{binary} does not exist (build it first)")
@@ -356,6 +440,11 @@ def main():
         diffuser.write_text(PARAMETRIC.read_text().replace('"r3":0.07', '"r3":0.08'))
         editor = Editor(binary, diffuser)
         check_expression_labels(editor)
+
+        # 10. Arcs: the rounded plate's fillets are drawn and an arc end drags with every
+        # tangency kept.
+        editor.stop()
+        check_arc_drag(binary, work)
     finally:
         editor.stop()
         shutil.rmtree(work, ignore_errors=True)

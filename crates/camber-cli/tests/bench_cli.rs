@@ -108,6 +108,35 @@ fn chains_report_growth_between_sizes() {
     }
 }
 
+/// W5r (rectangles rounded by fillet arcs) runs at the given sizes beside W5, every solve valid
+/// by its own check (radii, quarter-turn sweeps, tangency senses, W5's line check), each
+/// rectangle a component of its own solved by Newton.
+#[test]
+fn rounded_rectangles_are_reported_beside_rectangles() {
+    let v = bench_json(&["--quick", "--only", "W5,w5r", "--sizes", "4,8"]);
+    let rows = rows(&v);
+    let cases: Vec<(&str, &str)> = rows
+        .iter()
+        .map(|r| (r["workload"].as_str().unwrap(), r["case"].as_str().unwrap()))
+        .collect();
+    assert_eq!(
+        cases,
+        [("W5", "N=4"), ("W5", "N=8"), ("W5r", "N=4"), ("W5r", "N=8")]
+    );
+    for r in &rows[2..] {
+        assert_eq!(n(r, "valid"), n(r, "samples"), "{r}");
+        assert_eq!(n(r, "failed"), 0, "{r}");
+        let size = n(r, "size");
+        let components: u64 = r["solvers"]
+            .as_object()
+            .unwrap()
+            .values()
+            .map(|c| c.as_u64().unwrap())
+            .sum();
+        assert_eq!(components, size * n(r, "samples"), "{r}");
+    }
+}
+
 #[test]
 fn the_analysis_workload_checks_four_sketches() {
     let v = bench_json(&["--quick", "--only", "A", "--sizes", "4,8"]);

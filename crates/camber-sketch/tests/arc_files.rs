@@ -123,3 +123,60 @@ fn arc_kinds_on_other_entities_fail_to_load() {
         "constraint 2 (point_on_arc): entity 1 is a circle, expected arc"
     );
 }
+
+/// A solved arc sketch saved and loaded is the same sketch bit for bit: the file holds the
+/// arc's end points as well as its radius and angles (which alone would round).
+#[test]
+fn a_solved_arc_sketch_saves_and_loads_exactly() {
+    let mut s = from_json(FILE).unwrap();
+    s.solve().unwrap();
+    let text = to_json(&s).unwrap();
+    let back = from_json(&text).unwrap();
+    assert_eq!(to_json(&back).unwrap(), text);
+    for ((_, a), (_, b)) in s.entities().zip(back.entities()) {
+        assert_eq!(a, b);
+    }
+}
+
+/// The end-point form alone loads; an arc whose radius or angles disagree with its end
+/// points, or that gives half of a form, is refused at the field with the values.
+#[test]
+fn arc_forms_must_be_complete_and_agree() {
+    let load = |arc: &str| {
+        from_json(&format!(
+            r#"{{"version":1,"entities":[{{"id":0,"kind":"arc",{arc}}}]}}"#
+        ))
+        .map_err(|e| e.to_string())
+    };
+    let s = load(r#""center":[1,1],"start":[2,1],"end":[1,2]"#).unwrap();
+    let arc = s.entities().next().unwrap().1.as_arc().unwrap();
+    assert_relative_eq!(arc.radius(), 1.0, epsilon = 1e-15);
+    assert_relative_eq!(arc.sweep(), std::f64::consts::FRAC_PI_2, epsilon = 1e-15);
+    let both = r#""center":[1,1],"radius":1,"start_angle":0,"end_angle":1.5707963267948966,"start":[2,1],"end":[1,2]"#;
+    assert!(load(both).is_ok());
+    for (arc, path, words) in [
+        (
+            r#""center":[1,1],"radius":1.5,"start_angle":0,"end_angle":1.5707963267948966,"start":[2,1],"end":[1,2]"#,
+            "entities[0].radius",
+            "radius 1.5 disagrees",
+        ),
+        (
+            r#""center":[1,1],"radius":1,"start_angle":0,"end_angle":3,"start":[2,1],"end":[1,2]"#,
+            "entities[0].end_angle",
+            "end_angle 3 disagrees",
+        ),
+        (
+            r#""center":[1,1],"start":[2,1]"#,
+            "entities[0].end",
+            "not its end point",
+        ),
+        (
+            r#""center":[1,1],"radius":1,"end_angle":1"#,
+            "entities[0].start_angle",
+            "missing field `start_angle`",
+        ),
+    ] {
+        let e = load(arc).unwrap_err();
+        assert!(e.contains(path) && e.contains(words), "{arc}: {e}");
+    }
+}

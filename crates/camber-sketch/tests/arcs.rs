@@ -470,3 +470,22 @@ fn a_solve_that_would_turn_an_arc_inside_out_is_refused() {
     s.solve().unwrap();
     assert_relative_eq!(solved(&s, a).sweep(), 0.6, epsilon = 1e-10);
 }
+
+/// Each W5r rectangle (4 lines, 4 fillet arcs, W5's dimensions on the trimmed lines) counts 36
+/// unknowns' worth of freedom against 36 rows: the analysis must find every rectangle fully
+/// determined with no row redundant or conflicting, so a fillet adds no hidden freedom and
+/// hides no dependent row.
+#[test]
+fn filleted_rectangles_are_fully_constrained_with_nothing_redundant() {
+    let (mut s, _) = camber_workloads::w5r(3).unwrap();
+    s.solve().unwrap();
+    let analyses = s.analyze().unwrap();
+    assert_eq!(analyses.len(), 3);
+    for a in &analyses {
+        assert_eq!(a.analysis.dof, 0, "{:?}", a.analysis);
+        assert!(a.analysis.redundant.is_empty(), "{:?}", a.analysis);
+        assert!(a.analysis.partly_redundant.is_empty(), "{:?}", a.analysis);
+        assert!(a.analysis.conflicting.is_empty(), "{:?}", a.analysis);
+        assert!(a.freedom.is_empty(), "{:?}", a.freedom);
+    }
+}

@@ -20,11 +20,13 @@ pub mod airfoils;
 mod free_points;
 mod point_chain;
 mod rectangles;
+mod rounded;
 mod two_curves;
 mod variants;
 pub use free_points::{free_points, free_points_valid};
 pub use point_chain::{point_chain, point_chain_valid};
 pub use rectangles::{w5, w5_at, w5_valid, w5b, Rectangles};
+pub use rounded::{rounded_plate, w5r, w5r_valid, RoundedRectangles, Tangency, W5R_RADIUS};
 pub use two_curves::{two_curves, two_curves_valid, TwoCurves, TWO_CURVES_CIRCLES};
 pub use variants::{w8_circles, w8_variants, Circles};
 

@@ -65,6 +65,10 @@ pub enum Workload {
     /// W5b: one ladder of cells (the rectangles' constraints in one component).
     #[value(alias = "w5b", alias = "W5B")]
     W5b,
+    /// W5r: W5's rectangles with their four corners rounded by fillet arcs (4 lines, 4 arcs
+    /// tangent at both ends, each rectangle fully constrained).
+    #[value(alias = "w5r", alias = "W5R")]
+    W5r,
     /// W6: W5 with 1,000 rectangles solved, then one rectangle's width edited and the sketch
     /// re-solved (the edit and the re-solve timed).
     #[value(alias = "w6")]
@@ -90,7 +94,7 @@ pub enum Workload {
 
 impl Workload {
     /// Every workload, in table order.
-    pub const ALL: [Workload; 12] = [
+    pub const ALL: [Workload; 13] = [
         Workload::W1,
         Workload::W2,
         Workload::W3,
@@ -98,6 +102,7 @@ impl Workload {
         Workload::W4,
         Workload::W5,
         Workload::W5b,
+        Workload::W5r,
         Workload::W6,
         Workload::W7,
         Workload::W8,
@@ -105,7 +110,7 @@ impl Workload {
         Workload::T,
     ];
 
-    /// "W1", "W2", "W3", "W3a", "W4", "W5", "W5b", "W6", "W7", "W8", "A", "T".
+    /// "W1", "W2", "W3", "W3a", "W4", "W5", "W5b", "W5r", "W6", "W7", "W8", "A", "T".
     pub fn name(self) -> &'static str {
         match self {
             Workload::W1 => "W1",
@@ -115,6 +120,7 @@ impl Workload {
             Workload::W4 => "W4",
             Workload::W5 => "W5",
             Workload::W5b => "W5b",
+            Workload::W5r => "W5r",
             Workload::W6 => "W6",
             Workload::W7 => "W7",
             Workload::W8 => "W8",
@@ -142,7 +148,7 @@ pub struct Plan {
     pub w1_runs: usize,
     /// W2: perturbed starts per representation and δ.
     pub w2_trials: usize,
-    /// W3, W3a, W5 and W5b: chain lengths, rectangle and cell counts N.
+    /// W3, W3a, W5, W5b and W5r: chain lengths, rectangle and cell counts N.
     pub chain_sizes: Vec<usize>,
     /// W4: independent components in the sketch.
     pub w4_components: usize,
@@ -164,7 +170,7 @@ pub struct Plan {
 
 impl Plan {
     /// WORKLOADS.md as written: W1 200 targets × 5 runs, W2 100 trials per representation and
-    /// δ, W3, W3a, W5 and W5b for N = 10, 100, 1,000, 10,000, W4 with 10,000 components; and
+    /// δ, W3, W3a, W5, W5b and W5r for N = 10, 100, 1,000, 10,000, W4 with 10,000 components; and
     /// the toolkit workload T at N = 1,000, 10,000, 100,000 control points.
     pub fn standard() -> Self {
         Plan {
@@ -215,7 +221,7 @@ impl Plan {
         self
     }
 
-    /// Replaces the sizes N of W3, W3a, W5 and W5b.
+    /// Replaces the sizes N of W3, W3a, W5, W5b and W5r.
     pub fn with_chain_sizes(mut self, sizes: &[usize]) -> Self {
         if !sizes.is_empty() {
             self.chain_sizes = sizes.to_vec();
@@ -244,7 +250,7 @@ impl Plan {
             n += match w {
                 Workload::W1 => 2 * self.w1_runs * 200,
                 Workload::W2 => 4 * self.w2_trials + self.w1_runs * 200,
-                Workload::W3 | Workload::W3a | Workload::W5 | Workload::W5b => self
+                Workload::W3 | Workload::W3a | Workload::W5 | Workload::W5b | Workload::W5r => self
                     .chain_sizes
                     .iter()
                     .map(|&s| self.chain_repeats(s))
@@ -406,6 +412,7 @@ pub fn run(plan: &Plan, bar: &ProgressBar) -> Result<Vec<Row>> {
             Workload::W4 => rows.push(runners::w4(plan, bar)?),
             Workload::W5 => rows.extend(runners::rectangles(plan, false, bar)?),
             Workload::W5b => rows.extend(runners::rectangles(plan, true, bar)?),
+            Workload::W5r => rows.extend(runners::rounded_rectangles(plan, bar)?),
             Workload::W6 => rows.push(runners::w6(plan, bar)?),
             Workload::W7 => rows.extend(runners::w7(plan, bar)?),
             Workload::W8 => rows.push(runners::w8(plan, bar)?),

@@ -271,10 +271,43 @@ pub(super) fn w4(plan: &Plan, bar: &ProgressBar) -> Result<Row> {
 /// from the perturbed start, with the growth exponent of the median between sizes.
 pub(super) fn rectangles(plan: &Plan, ladder: bool, bar: &ProgressBar) -> Result<Vec<Row>> {
     let workload = if ladder { Workload::W5b } else { Workload::W5 };
+    sized_solves(plan, workload, bar, |n| {
+        let (sketch, layout) = if ladder { wl::w5b(n)? } else { wl::w5(n)? };
+        Ok((
+            sketch,
+            Box::new(move |s: &Sketch| wl::w5_valid(s, &layout, TOL)),
+        ))
+    })
+}
+
+/// W5r for every size, as W5: N rounded rectangles, one full solve timed per repeat from the
+/// perturbed start, judged by [`wl::w5r_valid`].
+pub(super) fn rounded_rectangles(plan: &Plan, bar: &ProgressBar) -> Result<Vec<Row>> {
+    sized_solves(plan, Workload::W5r, bar, |n| {
+        let (sketch, layout) = wl::w5r(n)?;
+        Ok((
+            sketch,
+            Box::new(move |s: &Sketch| wl::w5r_valid(s, &layout, TOL)),
+        ))
+    })
+}
+
+/// A sketch to solve and its validity check.
+type Judged = (Sketch, Box<dyn Fn(&Sketch) -> bool>);
+
+/// For every size N of the plan: the sketch `build(N)` solved from its start
+/// `plan.chain_repeats(N)` times (each solve timed on its own, each result judged by the
+/// check), with the growth exponent of the median between sizes.
+fn sized_solves(
+    plan: &Plan,
+    workload: Workload,
+    bar: &ProgressBar,
+    build: impl Fn(usize) -> camber_sketch::Result<Judged>,
+) -> Result<Vec<Row>> {
     let mut rows: Vec<Row> = Vec::new();
     for &n in &plan.chain_sizes {
         bar.set_message(format!("{} N={n}", workload.name()));
-        let (sketch, layout) = if ladder { wl::w5b(n)? } else { wl::w5(n)? };
+        let (sketch, is_valid) = build(n)?;
         let (mut times, mut valid, mut failed) = (Vec::<Duration>::new(), 0, 0);
         let mut solvers = BTreeMap::new();
         for _ in 0..plan.chain_repeats(n) {
@@ -287,7 +320,7 @@ pub(super) fn rectangles(plan: &Plan, ladder: bool, bar: &ProgressBar) -> Result
                 Ok(report) => count_solvers(&mut solvers, &report),
                 Err(_) => failed += 1,
             }
-            valid += usize::from(wl::w5_valid(&s, &layout, TOL));
+            valid += usize::from(is_valid(&s));
         }
         let mut r = row(workload, format!("N={n}"), &times, valid);
         r.size = Some(n);

@@ -20,7 +20,7 @@ pub struct BenchArgs {
     /// A small run (fewer trials and sizes; labelled "quick"), for smoke tests.
     #[arg(long)]
     pub quick: bool,
-    /// Sizes N for W3, W3a (segments), W5 (rectangles) and W5b (cells) instead of
+    /// Sizes N for W3, W3a (segments), W5, W5r (rectangles) and W5b (cells) instead of
     /// 10,100,1000,10000; each from 1 to 100000.
     #[arg(long, value_delimiter = ',', value_name = "N", value_parser = chain_size)]
     pub sizes: Vec<usize>,

@@ -499,9 +499,13 @@ fn load_entity(i: usize, mut value: Value) -> std::result::Result<RawEntity, Fil
             };
             shape(inner, message)
         })?;
+    let shape_of: raw::RawShape = shape_of.into();
+    if let Some((field, message)) = shape_of.arc_form_problem() {
+        return Err(shape(format!("entities[{i}].{field}"), message));
+    }
     Ok(RawEntity {
         id,
-        shape: shape_of.into(),
+        shape: shape_of,
     })
 }
 

@@ -19,6 +19,11 @@ fn pt(p: Xy) -> Point2<f64> {
     Point2::new(p[0], p[1])
 }
 
+/// Whether `x ≤ tol`; false for NaN, so a comparison that cannot be made refuses.
+fn within(x: f64, tol: f64) -> bool {
+    x <= tol
+}
+
 fn vec(v: Xy) -> Vector2<f64> {
     Vector2::new(v[0], v[1])
 }
@@ -66,9 +71,16 @@ pub(super) enum KeyedShape {
     },
     Arc {
         center: Xy,
-        radius: f64,
-        start_angle: f64,
-        end_angle: f64,
+        #[serde(default)]
+        radius: Option<f64>,
+        #[serde(default)]
+        start_angle: Option<f64>,
+        #[serde(default)]
+        end_angle: Option<f64>,
+        #[serde(default)]
+        start: Option<Xy>,
+        #[serde(default)]
+        end: Option<Xy>,
     },
     Ellipse {
         center: Xy,
@@ -123,11 +135,15 @@ impl From<KeyedShape> for RawShape {
                 radius,
                 start_angle,
                 end_angle,
+                start,
+                end,
             } => RawShape::Arc {
                 center,
                 radius,
                 start_angle,
                 end_angle,
+                start,
+                end,
             },
             KeyedShape::Ellipse {
                 center,
@@ -204,11 +220,20 @@ pub(super) enum RawShape {
         center: Xy,
         radius: f64,
     },
+    /// By radius and angles (the author's form), by its end points (exact), or both (as
+    /// saved): [`RawShape::arc_form_problem`] says which are complete and agree.
     Arc {
         center: Xy,
-        radius: f64,
-        start_angle: f64,
-        end_angle: f64,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        radius: Option<f64>,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        start_angle: Option<f64>,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        end_angle: Option<f64>,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        start: Option<Xy>,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        end: Option<Xy>,
     },
     Ellipse {
         center: Xy,
@@ -269,6 +294,80 @@ impl RawShape {
         }
     }
 
+    /// For an arc: the field and the reason when its form is incomplete (neither the radius
+    /// and both angles nor both end points) or its two forms disagree (the radius against
+    /// |start − center|, an angle against the direction of its end point from the centre, each
+    /// within 10⁻⁹·max(1, r) as a distance). `None` for every other shape.
+    pub(super) fn arc_form_problem(&self) -> Option<(&'static str, String)> {
+        let RawShape::Arc {
+            center,
+            radius,
+            start_angle,
+            end_angle,
+            start,
+            end,
+        } = self
+        else {
+            return None;
+        };
+        let angles = (radius, start_angle, end_angle);
+        let points = match (start, end) {
+            (Some(s), Some(e)) => (pt(*s), pt(*e)),
+            (Some(_), None) => {
+                return Some((
+                    "end",
+                    "the arc gives its start point but not its end point".into(),
+                ))
+            }
+            (None, Some(_)) => {
+                return Some((
+                    "start",
+                    "the arc gives its end point but not its start point".into(),
+                ))
+            }
+            (None, None) => {
+                return match angles {
+                    (Some(_), Some(_), Some(_)) => None,
+                    (None, ..) => Some((
+                        "radius",
+                        "missing field `radius` (or give `start` and `end` points)".into(),
+                    )),
+                    (_, None, _) => Some((
+                        "start_angle",
+                        "missing field `start_angle` (or give `start` and `end` points)".into(),
+                    )),
+                    (.., None) => Some((
+                        "end_angle",
+                        "missing field `end_angle` (or give `start` and `end` points)".into(),
+                    )),
+                };
+            }
+        };
+        let c = pt(*center);
+        let (vs, ve) = (points.0 - c, points.1 - c);
+        let r = vs.norm();
+        let tol = 1e-9 * r.max(1.0);
+        if let Some(given) = radius {
+            if !within((given - r).abs(), tol) {
+                return Some(("radius", format!("radius {given} disagrees with the distance {r} of the start point from the centre")));
+            }
+        }
+        for (field, given, v) in [
+            ("start_angle", start_angle, vs),
+            ("end_angle", end_angle, ve),
+        ] {
+            if let Some(a) = given {
+                let off = (a - v.y.atan2(v.x) + std::f64::consts::PI)
+                    .rem_euclid(std::f64::consts::TAU)
+                    - std::f64::consts::PI;
+                if !within(off.abs() * v.norm(), tol) {
+                    return Some((field, format!("{field} {a} disagrees with the direction of the arc's {} point from the centre", if field == "start_angle" { "start" } else { "end" })));
+                }
+            }
+        }
+        None
+    }
+
     pub(super) fn into_entity(self) -> crate::ground::errors::Result<Entity> {
         let pts = |v: Vec<Xy>| v.into_iter().map(pt).collect::<Vec<_>>();
         Ok(match self {
@@ -278,16 +377,25 @@ impl RawShape {
                 center: pt(center),
                 radius,
             },
+            // The end points, when given, are the arc exactly (checked against the radius and
+            // angles by `arc_form_problem`); a missing number is refused as not finite.
+            RawShape::Arc {
+                center,
+                start: Some(start),
+                end: Some(end),
+                ..
+            } => Entity::Arc([pt(center), pt(start), pt(end)]),
             RawShape::Arc {
                 center,
                 radius,
                 start_angle,
                 end_angle,
+                ..
             } => Entity::arc(&CircularArc::try_new(
                 pt(center),
-                radius,
-                start_angle,
-                end_angle,
+                radius.unwrap_or(f64::NAN),
+                start_angle.unwrap_or(f64::NAN),
+                end_angle.unwrap_or(f64::NAN),
             )?),
             RawShape::Ellipse {
                 center,
@@ -366,14 +474,17 @@ impl RawShape {
                 radius: *radius,
             },
             Entity::Arc([c, s, e]) => {
-                // The blocks' arc: radius |S − C|, angles in (−π, π] (atan2), so a loaded
-                // file's angles come back reduced.
+                // The blocks' arc for a reader: radius |S − C|, angles in (−π, π] (atan2), so
+                // a loaded file's angles come back reduced; and the blocks themselves, so that
+                // saving and loading is the identity (angles and a radius would round).
                 let (vs, ve) = (s - c, e - c);
                 RawShape::Arc {
                     center: xy_p(c),
-                    radius: vs.norm(),
-                    start_angle: vs.y.atan2(vs.x),
-                    end_angle: ve.y.atan2(ve.x),
+                    radius: Some(vs.norm()),
+                    start_angle: Some(vs.y.atan2(vs.x)),
+                    end_angle: Some(ve.y.atan2(ve.x)),
+                    start: Some(xy_p(s)),
+                    end: Some(xy_p(e)),
                 }
             }
             Entity::Ellipse {

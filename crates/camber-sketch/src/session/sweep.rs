@@ -131,14 +131,7 @@ pub fn solve_variants(
             what: "threads",
             detail: e.to_string(),
         })?;
-    let swept = Swept {
-        parameters: table.names().iter().cloned().collect(),
-        readers: table
-            .names()
-            .iter()
-            .flat_map(|n| base.parameter_readers(n))
-            .collect(),
-    };
+    let swept = swept_by(base, table);
     Ok(pool.install(|| {
         // One contiguous run of rows per thread, each run on one worker keeping the prepared
         // problems of its last variant.
@@ -156,6 +149,19 @@ pub fn solve_variants(
             .collect();
         runs.into_iter().flatten().collect()
     }))
+}
+
+/// What the variants of `table` may change against each other: its parameters and every
+/// constraint of `base` that reads one of them.
+fn swept_by(base: &Sketch, table: &Table) -> Swept {
+    Swept {
+        parameters: table.names().iter().cloned().collect(),
+        readers: table
+            .names()
+            .iter()
+            .flat_map(|n| base.parameter_readers(n))
+            .collect(),
+    }
 }
 
 /// Variant `row` of `base`, solved by `worker` (on the problems it kept from its last
@@ -289,15 +295,7 @@ mod tests {
     /// outcome, every point within 1e-12, the same free parameters and residuals. Returns how
     /// many components the worker solved on a kept problem.
     fn sweep_equals_each_alone(base: &Sketch, table: &Table) -> usize {
-        let swept = Swept {
-            parameters: table.names().iter().cloned().collect(),
-            readers: table
-                .names()
-                .iter()
-                .flat_map(|n| base.parameter_readers(n))
-                .collect(),
-        };
-        let mut worker = Worker::for_sweep(swept);
+        let mut worker = Worker::for_sweep(swept_by(base, table));
         for i in 0..table.rows() {
             let (swept_sketch, outcome) = solve_row(&mut worker, base, table, i);
             let mut alone = base.clone();

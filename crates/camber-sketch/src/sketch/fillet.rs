@@ -142,71 +142,91 @@ impl Sketch {
         let geometry =
             camber_geom::CircularArc::try_new(center, radius, angle(start.1), angle(end.1))?;
 
-        let mut next = self.clone();
         let near = |s: &Side| PointRef::Control(s.line, s.near);
         let (na, nb) = (near(&a), near(&b));
-        let same = |p: PointRef, q: PointRef, s: &Sketch| -> bool {
-            let block = |r: PointRef| -> Option<(EntityId, usize)> {
-                let e = s.entity(r.entity()).ok()?;
-                match e.resolve(r).ok()?.as_slice() {
-                    [(j, _)] => Some((r.entity(), *j)),
-                    _ => None,
-                }
-            };
-            block(p).is_some() && block(p) == block(q)
-        };
-        let corner: Vec<ConstraintId> = next
-            .constraints()
-            .filter_map(|(id, c)| match c {
-                Constraint::Coincident(k)
-                    if (same(k.a, na, &next) && same(k.b, nb, &next))
-                        || (same(k.a, nb, &next) && same(k.b, na, &next)) =>
-                {
-                    Some(id)
-                }
+        let block = |r: PointRef| -> Option<(EntityId, usize)> {
+            let e = self.entity(r.entity()).ok()?;
+            match e.resolve(r).ok()?.as_slice() {
+                [(j, _)] => Some((r.entity(), *j)),
                 _ => None,
+            }
+        };
+        let same = |p: PointRef, q: PointRef| block(p).is_some() && block(p) == block(q);
+        // The corner's coincidences read both lines: only the constraints at the first line
+        // are looked at, so a fillet costs the same in a sketch of any size.
+        let corner: Vec<ConstraintId> = self
+            .constraints_at(first)
+            .into_iter()
+            .filter(|id| match self.constraint(*id) {
+                Ok(Constraint::Coincident(k)) => {
+                    (same(k.a, na) && same(k.b, nb)) || (same(k.a, nb) && same(k.b, na))
+                }
+                _ => false,
             })
             .collect();
-        for id in &corner {
-            next.remove_constraint(*id)?;
-        }
-        for (s, p) in [(&a, ta), (&b, tb)] {
-            let mut ends = if s.line == first { la } else { lb };
-            ends[s.near] = p;
-            next.set_entity(s.line, Entity::Line(ends))?;
-        }
-        let arc = next.add_arc(&geometry)?;
-        let mut added = Vec::with_capacity(5);
-        for (s, arc_end) in [(start.0, ArcEnd::Start), (end.0, ArcEnd::End)] {
-            added.push(next.add_constraint(Coincident {
-                a: near(s),
-                b: arc_end.point(arc),
+        let mut journal = Journal {
+            next_id: self.next_id,
+            lines: Vec::with_capacity(2),
+            removed: Vec::with_capacity(corner.len()),
+            arc: None,
+            added: Vec::with_capacity(5),
+        };
+        // The steps, each recorded in the journal so that a failure puts everything back.
+        let apply = |sk: &mut Sketch, j: &mut Journal| -> Result<EntityId> {
+            for id in &corner {
+                let priority = sk.priorities.get(id).copied();
+                // A coincidence has no value, so no parameter binding to keep.
+                let c = sk.remove_constraint(*id)?;
+                j.removed.push((*id, c, priority));
+            }
+            for (side, p) in [(&a, ta), (&b, tb)] {
+                let mut ends = if side.line == first { la } else { lb };
+                j.lines
+                    .push((side.line, Entity::Line(ends), sk.weights_of(side.line)));
+                ends[side.near] = p;
+                sk.set_entity(side.line, Entity::Line(ends))?;
+            }
+            let arc = sk.add_arc(&geometry)?;
+            j.arc = Some(arc);
+            for (side, arc_end) in [(start.0, ArcEnd::Start), (end.0, ArcEnd::End)] {
+                j.added.push(sk.add_constraint(Coincident {
+                    a: near(side),
+                    b: arc_end.point(arc),
+                })?);
+                // The sense the drawn arc has: its counter-clockwise travel along B − A or not.
+                let p = if arc_end == ArcEnd::Start {
+                    geometry.start_point()
+                } else {
+                    geometry.end_point()
+                };
+                let r = p - center;
+                let [l0, l1] = if side.line == first { la } else { lb };
+                let sense = if Vector2::new(-r.y, r.x).dot(&(l1 - l0)) > 0.0 {
+                    Sense::Agree
+                } else {
+                    Sense::Oppose
+                };
+                j.added.push(sk.add_constraint(ArcTangentToLine {
+                    arc,
+                    end: arc_end,
+                    line: side.line,
+                    sense,
+                })?);
+            }
+            j.added.push(sk.add_constraint(Radius {
+                circle: arc,
+                radius,
             })?);
-            // The sense the drawn arc has: its counter-clockwise travel along B − A or not.
-            let p = if arc_end == ArcEnd::Start {
-                geometry.start_point()
-            } else {
-                geometry.end_point()
-            };
-            let r = p - center;
-            let [la0, la1] = if s.line == first { la } else { lb };
-            let sense = if Vector2::new(-r.y, r.x).dot(&(la1 - la0)) > 0.0 {
-                Sense::Agree
-            } else {
-                Sense::Oppose
-            };
-            added.push(next.add_constraint(ArcTangentToLine {
-                arc,
-                end: arc_end,
-                line: s.line,
-                sense,
-            })?);
-        }
-        added.push(next.add_constraint(Radius {
-            circle: arc,
-            radius,
-        })?);
-        *self = next;
+            Ok(arc)
+        };
+        let arc = match apply(self, &mut journal) {
+            Ok(arc) => arc,
+            Err(e) => {
+                self.undo_fillet(journal);
+                return Err(e);
+            }
+        };
+        let added = journal.added;
         Ok(Fillet {
             arc,
             geometry,
@@ -214,6 +234,66 @@ impl Sketch {
             removed: corner,
         })
     }
+}
+
+impl Sketch {
+    /// Puts back what a failed fillet changed, newest first: the added constraints and arc
+    /// removed, the lines restored with their weights, the corner coincidences added again
+    /// under their ids and priorities, and the next automatic id as it was.
+    fn undo_fillet(&mut self, journal: Journal) {
+        for id in journal.added.iter().rev() {
+            let removed = self.remove_constraint(*id);
+            debug_assert!(
+                removed.is_ok(),
+                "a constraint the fillet added: {removed:?}"
+            );
+        }
+        if let Some(arc) = journal.arc {
+            let removed = self.remove_entity(arc);
+            debug_assert!(removed.is_ok(), "the fillet's arc: {removed:?}");
+        }
+        for (line, entity, weights) in journal.lines.into_iter().rev() {
+            // It was valid with the constraints reading it, which are the same again.
+            let restored = self.set_entity(line, entity);
+            debug_assert!(restored.is_ok(), "a line as it was: {restored:?}");
+            for (index, w) in weights {
+                self.weights.insert((line, index), w);
+            }
+        }
+        for (id, c, priority) in journal.removed.into_iter().rev() {
+            let restored = self.add_constraint_with_id(id, c);
+            debug_assert!(restored.is_ok(), "a corner as it was: {restored:?}");
+            if let Some(p) = priority {
+                self.priorities.insert(id, p);
+            }
+        }
+        self.next_id = journal.next_id;
+    }
+
+    /// The point weights of entity `id` that differ from 1, by point index.
+    fn weights_of(&self, id: EntityId) -> PointWeights {
+        self.weights
+            .range((id, 0)..=(id, usize::MAX))
+            .map(|((_, index), w)| (*index, *w))
+            .collect()
+    }
+}
+
+/// Point weights of one entity: (point index, weight).
+type PointWeights = Vec<(usize, f64)>;
+
+/// What a fillet changed so far, to put back if a later step fails.
+struct Journal {
+    /// The sketch's next automatic id before the fillet.
+    next_id: u64,
+    /// Each trimmed line as it was, with its point weights.
+    lines: Vec<(EntityId, Entity, PointWeights)>,
+    /// Each removed corner coincidence with its priority.
+    removed: Vec<(ConstraintId, Constraint, Option<camber_solve::Priority>)>,
+    /// The arc, once added.
+    arc: Option<EntityId>,
+    /// The constraints added.
+    added: Vec<ConstraintId>,
 }
 
 #[cfg(test)]
@@ -299,6 +379,43 @@ mod tests {
         );
         assert!(f.removed.is_empty());
         s.solve().unwrap();
+    }
+
+    /// A fillet that fails half way (here: the sketch's ids run out after its arc is added)
+    /// puts everything back: the corner under its id and priority, the lines with their
+    /// weights, no arc, and the same next automatic id.
+    #[test]
+    fn a_fillet_failing_half_way_leaves_the_sketch_as_it_was() {
+        let mut s = Sketch::new();
+        let a = s.add_line(Point2::new(2.0, 0.0), Point2::origin()).unwrap();
+        let b = s.add_line(Point2::origin(), Point2::new(0.0, 2.0)).unwrap();
+        let corner = s
+            .add_constraint(Coincident {
+                a: PointRef::End(a),
+                b: PointRef::Start(b),
+            })
+            .unwrap();
+        s.set_priority(corner, 2).unwrap();
+        s.set_weight(PointRef::Control(a, 1), 3.0).unwrap();
+        // The next automatic id is the last one: the arc takes it, the first constraint
+        // added after it finds it taken.
+        s.add_entity_with_id(EntityId(u64::MAX - 1), Entity::Point(Point2::new(9.0, 9.0)))
+            .unwrap();
+        let before = crate::file::to_json(&s).unwrap();
+        let mut twin = s.clone();
+        assert!(matches!(
+            s.fillet(a, b, 0.5),
+            Err(Error::DuplicateId { .. })
+        ));
+        assert_eq!(crate::file::to_json(&s).unwrap(), before);
+        assert_eq!(s.priority(corner), 2);
+        // Weights are not in the file: checked on their own, bit for bit.
+        let weight = crate::ground::lookup::EntityLookup::weight(&s, a, 1);
+        assert_eq!(weight.to_bits(), 3f64.to_bits());
+        assert_eq!(
+            s.add_point(Point2::origin()).unwrap(),
+            twin.add_point(Point2::origin()).unwrap()
+        );
     }
 
     #[test]

@@ -471,13 +471,9 @@ impl Sketch {
             }
             None => return Err(Error::UnknownEntity { entity: id }),
         };
-        let readers: Vec<ConstraintId> = self
-            .constraints
-            .iter()
-            .filter(|(_, (c, _))| c.entities().contains(&id))
-            .map(|(cid, _)| *cid)
-            .collect();
-        for cid in readers {
+        // The graph's neighbours of the entity: every constraint reading it, and those reading
+        // a constraint that reads it (checked too: they depend on it as well).
+        for cid in self.constraints_at(id) {
             let outcome = self.constraint(cid).and_then(|c| c.compile(self));
             if let Err(e) = outcome {
                 if let Some(slot) = self.entities.get_mut(&id) {
@@ -585,15 +581,8 @@ impl Sketch {
         if !self.constraints.contains_key(&id) {
             return Err(Error::UnknownConstraint { constraint: id });
         }
-        if let Some((by, _)) = self
-            .constraints
-            .iter()
-            .find(|(_, (c, _))| c.reads_constraints().contains(&id))
-        {
-            return Err(Error::ConstraintInUse {
-                constraint: id,
-                by: *by,
-            });
+        if let Some(by) = self.readers_of(id) {
+            return Err(Error::ConstraintInUse { constraint: id, by });
         }
         let (c, node) = self
             .constraints
@@ -926,6 +915,44 @@ impl Sketch {
 
     /// Marks an entity as changed by something other than a constraint's value: its prepared
     /// component is dropped ([`prepared`]).
+    /// The constraints joined to entity `id` in the graph: those reading it and those reading
+    /// the free parameters of a constraint that reads it. Empty for an unknown entity.
+    pub(crate) fn constraints_at(&self, id: EntityId) -> Vec<ConstraintId> {
+        let Some((_, node)) = self.entities.get(&id) else {
+            return Vec::new();
+        };
+        let mut out: Vec<ConstraintId> = self
+            .graph
+            .neighbors(*node)
+            .filter_map(|n| match self.graph.node_weight(n) {
+                Some(Node::Constraint(c)) => Some(*c),
+                _ => None,
+            })
+            .collect();
+        out.sort_unstable();
+        out.dedup();
+        out
+    }
+
+    /// A constraint that reads the free parameters of constraint `id`, if any. A reader is
+    /// joined in the graph to every entity of `id`, so only the constraints at the first of
+    /// them are looked at (all constraints when `id` reads no entity).
+    fn readers_of(&self, id: ConstraintId) -> Option<ConstraintId> {
+        let reads = |c: &Constraint| c.reads_constraints().contains(&id);
+        let first = self.constraints.get(&id)?.0.entities().first().copied();
+        match first {
+            Some(e) => self
+                .constraints_at(e)
+                .into_iter()
+                .find(|by| *by != id && self.constraints.get(by).is_some_and(|(c, _)| reads(c))),
+            None => self
+                .constraints
+                .iter()
+                .find(|(_, (c, _))| reads(c))
+                .map(|(by, _)| *by),
+        }
+    }
+
     fn touch(&mut self, id: EntityId) {
         self.prepared.forget_entity(id);
         self.dirty.insert(id);
