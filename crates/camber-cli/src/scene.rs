@@ -21,6 +21,8 @@ pub fn kind_word(e: &Entity) -> &'static str {
         Entity::Line(_) => "line",
         Entity::Circle { .. } => "circle",
         Entity::Arc(_) => "arc",
+        Entity::Ellipse { .. } => "ellipse",
+        Entity::EllipticArc { .. } => "elliptic_arc",
         Entity::Bezier(_) => "bezier",
         Entity::BSpline(_) => "bspline",
         Entity::Nurbs(_) => "nurbs",

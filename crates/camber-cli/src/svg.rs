@@ -264,6 +264,42 @@ impl Svg {
         );
     }
 
+    /// An ellipse, exact: SVG's `ellipse` rotated by −θ (its y axis points down, so the
+    /// model's counter-clockwise rotation is SVG's clockwise one).
+    pub fn ellipse(&mut self, e: &camber_geom::Ellipse<f64>, style: &Style) {
+        let attrs = self.style_attrs(style);
+        let (cx, cy) = (self.sx(e.center().x), self.sy(e.center().y));
+        let _ = writeln!(
+            self.body,
+            r#"<ellipse cx="{cx}" cy="{cy}" rx="{}" ry="{}" transform="rotate({} {cx} {cy})" {attrs}/>"#,
+            num(e.semi_axis_a() * self.scale),
+            num(e.semi_axis_b() * self.scale),
+            num(-e.rotation().to_degrees()),
+        );
+    }
+
+    /// An elliptic arc, as the path's elliptical-arc command (exact): radii a, b, x-axis
+    /// rotation −θ in degrees, sweep flag 0 (the model's counter-clockwise run), large-arc
+    /// flag for parametric sweeps above π (SVG measures the sweep on the ellipse scaled to a
+    /// circle, which is the parametric angle).
+    pub fn elliptic_arc(&mut self, arc: &camber_geom::EllipticArc<f64>, style: &Style) {
+        let attrs = self.style_attrs(style);
+        let (p, q) = (arc.start_point(), arc.end_point());
+        let e = arc.ellipse();
+        let large = u8::from(arc.sweep() > std::f64::consts::PI);
+        let _ = writeln!(
+            self.body,
+            r#"<path d="M {} {} A {} {} {} {large} 0 {} {}" {attrs}/>"#,
+            self.sx(p.x),
+            self.sy(p.y),
+            num(e.semi_axis_a() * self.scale),
+            num(e.semi_axis_b() * self.scale),
+            num(-e.rotation().to_degrees()),
+            self.sx(q.x),
+            self.sy(q.y)
+        );
+    }
+
     /// A dot marking a point: a filled circle of `radius_units` units.
     pub fn dot(&mut self, p: Point2<f64>, radius_units: f64, colour: &str) {
         self.circle(p, radius_units * self.unit, &Style::filled(colour));
@@ -391,6 +427,38 @@ mod tests {
         );
         assert!(
             doc.contains(r#"d="M 200 0 A 200 200 0 1 0 0 200""#),
+            "{doc}"
+        );
+    }
+
+    #[test]
+    fn ellipses_are_exact_elements_and_path_arcs_turning_the_model_way() {
+        use std::f64::consts::FRAC_PI_2;
+        let bbox = BBox::of([Point2::new(-1.0, -1.0), Point2::new(1.0, 1.0)]);
+        let mut svg = Svg::new(bbox, 0.0);
+        let upright = camber_geom::Ellipse::try_new(Point2::origin(), 1.0, 0.5, FRAC_PI_2).unwrap();
+        svg.ellipse(&upright, &Style::stroke("black", 1.0));
+        let flat = camber_geom::Ellipse::try_new(Point2::origin(), 1.0, 0.5, 0.0).unwrap();
+        svg.elliptic_arc(
+            &flat.arc(0.0, FRAC_PI_2).unwrap(),
+            &Style::stroke("black", 1.0),
+        );
+        svg.elliptic_arc(
+            &flat.arc(0.0, -FRAC_PI_2).unwrap(),
+            &Style::stroke("black", 1.0),
+        );
+        let doc = svg.finish();
+        assert!(
+            doc.contains(r#"rx="200" ry="100" transform="rotate(-90 "#),
+            "{doc}"
+        );
+        // From (1, 0) to the top (0, 0.5), a quarter; to the bottom the long way round.
+        assert!(
+            doc.contains(r#"d="M 200 0 A 200 100 0 0 0 0 -100""#),
+            "{doc}"
+        );
+        assert!(
+            doc.contains(r#"d="M 200 0 A 200 100 0 1 0 0 100""#),
             "{doc}"
         );
     }

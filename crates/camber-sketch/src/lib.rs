@@ -80,7 +80,9 @@ pub mod parameters {
 }
 
 pub use batch::solve_many;
-pub use ground::{curve_eval, entity, errors, hermite_chain, ids, lookup, vocabulary};
+pub use ground::{
+    curve_eval, ellipse_blocks, entity, errors, hermite_chain, ids, lookup, vocabulary,
+};
 pub use session::{analysis, batch, displacement, drag, solve};
 pub use sketch::warnings;
 

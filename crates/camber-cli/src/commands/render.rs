@@ -174,6 +174,16 @@ pub fn picture(sketch: &Sketch, combs: bool) -> Result<String> {
                     svg.arc(&arc, &Style::stroke(CURVE, 2.0));
                 }
             }
+            Entity::Ellipse { .. } => {
+                if let Some(ellipse) = e.as_ellipse() {
+                    svg.ellipse(&ellipse, &Style::stroke(CURVE, 2.0));
+                }
+            }
+            Entity::EllipticArc { .. } => {
+                if let Some(arc) = e.as_elliptic_arc() {
+                    svg.elliptic_arc(&arc, &Style::stroke(CURVE, 2.0));
+                }
+            }
             _ => {}
         }
     }

@@ -9,6 +9,7 @@
 
 pub(crate) mod arcs;
 pub(crate) mod contact;
+pub(crate) mod ellipses;
 pub(crate) mod merge;
 pub mod problem;
 pub(crate) mod solve;

@@ -739,6 +739,28 @@ pub(crate) fn build(
             }
         }
     }
+    // Every elliptic arc's two rows (its ends on its ellipse), unless all its blocks are
+    // fixed.
+    for id in &component.entities {
+        if let Entity::EllipticArc { .. } = lookup.lookup(*id)? {
+            // A wholly fixed arc needs no rows (they would be constant, so redundant).
+            let whole = compiled.iter().any(|(_, pieces)| {
+                pieces
+                    .iter()
+                    .any(|p| matches!(p, Piece::FixEntity(e) if e == id))
+            });
+            let mut free = false;
+            for j in 0..4 {
+                free |= !is(&fixed, cp.point_block(*id, j)?);
+            }
+            free |= !is(&fixed, cp.scalar_block(*id, 0)?);
+            if free && !whole {
+                for row in super::ellipses::elliptic_arc_rows(*id) {
+                    cp.add_piece(crate::residuals::ellipse::ELLIPSE_ROW, &row)?;
+                }
+            }
+        }
+    }
     for (id, piece) in &rows {
         cp.add_piece(*id, piece)?;
     }

@@ -17,6 +17,7 @@ use camber_solve::{Residual, Scalar};
 use nalgebra::Vector2;
 use serde::{Deserialize, Serialize};
 
+pub use super::shared::arc_ends::ArcEnd;
 use super::glyph::{self, Glyph};
 use super::shared::radii::Round;
 use super::{Compiler, ConstraintKind, Entities};
@@ -24,38 +25,10 @@ use crate::constraints::check::{SolvedCheck, SolvedState};
 use crate::constraints::piece::Slot;
 use crate::ground::entity::Entity;
 use crate::ground::errors::{Error, Result};
-use crate::ground::ids::{EntityId, PointRef};
+use crate::ground::ids::EntityId;
 use crate::ground::lookup::EntityLookup;
 use crate::ground::vocabulary::Sense;
 use crate::residuals::curve::{dot, sub};
-
-/// Which end of an arc: `"start"` or `"end"`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum ArcEnd {
-    /// The start (block 1).
-    Start,
-    /// The end (block 2).
-    End,
-}
-
-impl ArcEnd {
-    /// The arc's point block of this end.
-    pub fn block(self) -> usize {
-        match self {
-            ArcEnd::Start => 1,
-            ArcEnd::End => 2,
-        }
-    }
-
-    /// The end as a point reference of `arc`.
-    pub fn point(self, arc: EntityId) -> PointRef {
-        match self {
-            ArcEnd::Start => PointRef::Start(arc),
-            ArcEnd::End => PointRef::End(arc),
-        }
-    }
-}
 
 /// The arc's tangent at one end runs along the line, with a sense (one row).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]

@@ -369,4 +369,10 @@ kinds! {
     PointOnArc => point_on_arc::PointOnArc,
     /// An arc's tangent at one end along a line entity.
     ArcTangentToLine => arc_tangent_to_line::ArcTangentToLine,
+    /// A point on an ellipse or an elliptic arc (within its sweep).
+    PointOnEllipse => point_on_ellipse::PointOnEllipse,
+    /// One semi-axis of an ellipse or elliptic arc.
+    SemiAxis => semi_axis::SemiAxis,
+    /// An elliptic arc's tangent at one end along a line entity.
+    EllipticArcTangentToLine => elliptic_arc_tangent_to_line::EllipticArcTangentToLine,
 }

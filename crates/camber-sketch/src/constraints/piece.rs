@@ -23,7 +23,8 @@ pub(crate) type ETerms = SmallVec<[(EntityId, usize, f64); 8]>;
 pub enum Slot {
     /// Point `index` of an entity (two unknowns x, y).
     Point(EntityId, usize),
-    /// The radius of a circle entity (one unknown).
+    /// The scalar block of an entity (one unknown): a circle's radius, an ellipse's or an
+    /// elliptic arc's semi-axis b.
     Radius(EntityId),
     /// A new free parameter of the constraint, starting at `start`, bounded to [lo, hi]; a
     /// successful solve stores it back into the constraint (the k-th such slot of a
@@ -146,9 +147,10 @@ pub(crate) fn as_rows(
                 for (j, at) in entity.points().iter().enumerate() {
                     out.push(fixed_point(e, j, *at));
                 }
-                if let crate::ground::entity::Entity::Circle { radius, .. } = entity {
+                // The scalar block (a circle's radius, an ellipse's b) held by a row.
+                for value in entity.scalars() {
                     out.push(Piece::General {
-                        residual: Arc::new(crate::residuals::affine::RadiusValue::new(*radius)),
+                        residual: Arc::new(crate::residuals::affine::RadiusValue::new(value)),
                         slots: vec![Slot::Radius(e)],
                         check: None,
                     });

@@ -2,11 +2,14 @@
 //! snake-case tags and named fields, and the conversions both ways. Constraints are read and
 //! written in their kinds' own forms ([`crate::constraints`]), one JSON object each.
 
-use camber_geom::{BSplineCurve2, BezierCurve2, CircularArc, KnotVector, NurbsCurve2};
+use camber_geom::{
+    BSplineCurve2, BezierCurve2, CircularArc, Ellipse, EllipticArc, KnotVector, NurbsCurve2,
+};
 use nalgebra::{Point2, Vector2};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 
+use crate::ground::ellipse_blocks::frame_angle;
 use crate::ground::entity::Entity;
 use crate::ground::hermite_chain::{HermiteChain, Join};
 
@@ -79,6 +82,20 @@ pub(super) enum KeyedShape {
         #[serde(default)]
         end: Option<Xy>,
     },
+    Ellipse {
+        center: Xy,
+        semi_axis_a: f64,
+        semi_axis_b: f64,
+        rotation: f64,
+    },
+    EllipticArc {
+        center: Xy,
+        semi_axis_a: f64,
+        semi_axis_b: f64,
+        rotation: f64,
+        start_angle: f64,
+        end_angle: f64,
+    },
     Bezier {
         control_points: Vec<Xy>,
     },
@@ -127,6 +144,32 @@ impl From<KeyedShape> for RawShape {
                 end_angle,
                 start,
                 end,
+            },
+            KeyedShape::Ellipse {
+                center,
+                semi_axis_a,
+                semi_axis_b,
+                rotation,
+            } => RawShape::Ellipse {
+                center,
+                semi_axis_a,
+                semi_axis_b,
+                rotation,
+            },
+            KeyedShape::EllipticArc {
+                center,
+                semi_axis_a,
+                semi_axis_b,
+                rotation,
+                start_angle,
+                end_angle,
+            } => RawShape::EllipticArc {
+                center,
+                semi_axis_a,
+                semi_axis_b,
+                rotation,
+                start_angle,
+                end_angle,
             },
             KeyedShape::Bezier { control_points } => RawShape::Bezier { control_points },
             KeyedShape::Bspline {
@@ -192,6 +235,20 @@ pub(super) enum RawShape {
         #[serde(default, skip_serializing_if = "Option::is_none")]
         end: Option<Xy>,
     },
+    Ellipse {
+        center: Xy,
+        semi_axis_a: f64,
+        semi_axis_b: f64,
+        rotation: f64,
+    },
+    EllipticArc {
+        center: Xy,
+        semi_axis_a: f64,
+        semi_axis_b: f64,
+        rotation: f64,
+        start_angle: f64,
+        end_angle: f64,
+    },
     Bezier {
         control_points: Vec<Xy>,
     },
@@ -227,6 +284,8 @@ impl RawShape {
             RawShape::Line { .. } => "line",
             RawShape::Circle { .. } => "circle",
             RawShape::Arc { .. } => "arc",
+            RawShape::Ellipse { .. } => "ellipse",
+            RawShape::EllipticArc { .. } => "elliptic_arc",
             RawShape::Bezier { .. } => "bezier",
             RawShape::Bspline { .. } => "bspline",
             RawShape::Nurbs { .. } => "nurbs",
@@ -338,6 +397,32 @@ impl RawShape {
                 start_angle.unwrap_or(f64::NAN),
                 end_angle.unwrap_or(f64::NAN),
             )?),
+            RawShape::Ellipse {
+                center,
+                semi_axis_a,
+                semi_axis_b,
+                rotation,
+            } => Entity::ellipse(&Ellipse::try_new(
+                pt(center),
+                semi_axis_a,
+                semi_axis_b,
+                rotation,
+            )?),
+            RawShape::EllipticArc {
+                center,
+                semi_axis_a,
+                semi_axis_b,
+                rotation,
+                start_angle,
+                end_angle,
+            } => Entity::elliptic_arc(&EllipticArc::try_new(
+                pt(center),
+                semi_axis_a,
+                semi_axis_b,
+                rotation,
+                start_angle,
+                end_angle,
+            )?),
             RawShape::Bezier { control_points } => {
                 Entity::Bezier(BezierCurve2::try_new(pts(control_points))?)
             }
@@ -400,6 +485,34 @@ impl RawShape {
                     end_angle: Some(ve.y.atan2(ve.x)),
                     start: Some(xy_p(s)),
                     end: Some(xy_p(e)),
+                }
+            }
+            Entity::Ellipse {
+                points: [c, v],
+                semi_axis_b,
+            } => {
+                // The blocks' ellipse: a = |V − C|, rotation atan2(V − C) ∈ (−π, π].
+                let w = v - c;
+                RawShape::Ellipse {
+                    center: xy_p(c),
+                    semi_axis_a: w.norm(),
+                    semi_axis_b: *semi_axis_b,
+                    rotation: w.y.atan2(w.x),
+                }
+            }
+            Entity::EllipticArc {
+                points: [c, v, s, e],
+                semi_axis_b,
+            } => {
+                // The ends' parametric angles, atan2 ∈ (−π, π].
+                let w = v - c;
+                RawShape::EllipticArc {
+                    center: xy_p(c),
+                    semi_axis_a: w.norm(),
+                    semi_axis_b: *semi_axis_b,
+                    rotation: w.y.atan2(w.x),
+                    start_angle: frame_angle(c, v, *semi_axis_b, s),
+                    end_angle: frame_angle(c, v, *semi_axis_b, e),
                 }
             }
             Entity::Bezier(c) => RawShape::Bezier {

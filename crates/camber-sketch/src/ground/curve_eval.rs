@@ -114,6 +114,7 @@ impl CurveBasis {
             Entity::BSpline(c) => (c.degree(), c.knots().clone(), None),
             Entity::Nurbs(c) => (c.degree(), c.knots().clone(), Some(c.weights().to_vec())),
             Entity::Point(_) | Entity::Circle { .. } | Entity::Arc(_) => return None,
+            Entity::Ellipse { .. } | Entity::EllipticArc { .. } => return None,
             Entity::Hermite(_) | Entity::Composite(_) => return None,
         };
         Some(Self {

@@ -23,11 +23,14 @@
 //! blocks (an affine constraint); those with a free parameter, distances, angles and lengths are
 //! nonlinear.
 
-use camber_geom::{BSplineCurve2, BezierCurve2, CircularArc, NurbsCurve2};
+use camber_geom::{BSplineCurve2, BezierCurve2, CircularArc, Ellipse, EllipticArc, NurbsCurve2};
 use nalgebra::Point2;
 use smallvec::SmallVec;
 
 use crate::ground::curve_eval::CurveBasis;
+use crate::ground::ellipse_blocks::{
+    box_corners, ellipse_blocks, ellipse_of_blocks, elliptic_arc_blocks, elliptic_arc_of_blocks,
+};
 use crate::ground::errors::{Error, Result};
 use crate::ground::hermite_chain::HermiteChain;
 use crate::ground::ids::{EntityId, PointRef};
@@ -67,6 +70,28 @@ pub enum Entity {
     /// constraint that reads a point reads them: `Start(e)` / `Control(e, 1)` and `End(e)` /
     /// `Control(e, 2)`; `Control(e, 0)` is the centre. Make one with [`Entity::arc`].
     Arc([Point2<f64>; 3]),
+    /// An ellipse, stored by its blocks [centre, a-axis vertex] and its semi-axis b (a scalar
+    /// block): a = |V − C|, rotation atan2(V − C); 5 DOF, no row of its own
+    /// ([`crate::ellipse_blocks`]). `Control(e, 0)` is the centre, `Control(e, 1)` the vertex
+    /// (a point on the ellipse). Make one with [`Entity::ellipse`].
+    Ellipse {
+        /// [centre, a-axis vertex].
+        points: [Point2<f64>; 2],
+        /// The semi-axis b (> 0), perpendicular to the a-axis.
+        semi_axis_b: f64,
+    },
+    /// An elliptic arc, stored by its blocks [centre, a-axis vertex, start, end] and its
+    /// semi-axis b: it runs counter-clockwise from the start to the end, whose parametric
+    /// angles are read from where they lie; two rows of its own hold both ends on the ellipse,
+    /// so it has 9 − 2 = 7 DOF ([`crate::ellipse_blocks`]). Its ends are point blocks:
+    /// `Start(e)` / `Control(e, 2)` and `End(e)` / `Control(e, 3)`. Make one with
+    /// [`Entity::elliptic_arc`].
+    EllipticArc {
+        /// [centre, a-axis vertex, start, end].
+        points: [Point2<f64>; 4],
+        /// The semi-axis b (> 0), perpendicular to the a-axis.
+        semi_axis_b: f64,
+    },
     /// A Bézier curve on [0, 1].
     Bezier(BezierCurve2<f64>),
     /// A B-spline curve.
@@ -102,7 +127,12 @@ impl Entity {
             Entity::BSpline(c) => Some(c),
             Entity::Nurbs(c) => Some(c),
             Entity::Hermite(c) | Entity::Composite(c) => Some(c),
-            Entity::Point(_) | Entity::Line(_) | Entity::Circle { .. } | Entity::Arc(_) => None,
+            Entity::Point(_)
+            | Entity::Line(_)
+            | Entity::Circle { .. }
+            | Entity::Arc(_)
+            | Entity::Ellipse { .. }
+            | Entity::EllipticArc { .. } => None,
         }
     }
 
@@ -120,6 +150,75 @@ impl Entity {
     /// ```
     pub fn arc(arc: &CircularArc<f64>) -> Entity {
         Entity::Arc([*arc.center(), arc.start_point(), arc.end_point()])
+    }
+
+    /// The ellipse entity of an ellipse: blocks [centre, a-axis vertex] and b.
+    ///
+    /// ```
+    /// use camber_geom::Ellipse;
+    /// use camber_sketch::Entity;
+    /// use nalgebra::Point2;
+    /// let e = Entity::ellipse(&Ellipse::try_new(Point2::new(1.0, 1.0), 2.0, 0.5, std::f64::consts::FRAC_PI_2)?);
+    /// assert!((e.points()[1] - Point2::new(1.0, 3.0)).norm() < 1e-15);
+    /// assert!((e.as_ellipse().unwrap().semi_axis_b() - 0.5).abs() < 1e-15);
+    /// # Ok::<(), camber_geom::Error>(())
+    /// ```
+    pub fn ellipse(e: &Ellipse<f64>) -> Entity {
+        let (points, semi_axis_b) = ellipse_blocks(e);
+        Entity::Ellipse {
+            points,
+            semi_axis_b,
+        }
+    }
+
+    /// The elliptic arc entity of an elliptic arc: blocks [centre, a-axis vertex, start, end]
+    /// and b.
+    ///
+    /// ```
+    /// use camber_geom::EllipticArc;
+    /// use camber_sketch::Entity;
+    /// use nalgebra::Point2;
+    /// let arc = EllipticArc::try_new(Point2::new(0.0, 0.0), 2.0, 1.0, 0.0, 0.0, std::f64::consts::FRAC_PI_2)?;
+    /// let e = Entity::elliptic_arc(&arc);
+    /// assert!((e.points()[3] - Point2::new(0.0, 1.0)).norm() < 1e-15);
+    /// let back = e.as_elliptic_arc().unwrap();
+    /// assert!((back.sweep() - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
+    /// # Ok::<(), camber_geom::Error>(())
+    /// ```
+    pub fn elliptic_arc(arc: &EllipticArc<f64>) -> Entity {
+        let (points, semi_axis_b) = elliptic_arc_blocks(arc);
+        Entity::EllipticArc {
+            points,
+            semi_axis_b,
+        }
+    }
+
+    /// The ellipse of an ellipse entity, or the whole ellipse of an elliptic arc, read from its
+    /// blocks; `None` for other entities and for blocks that make no ellipse.
+    pub fn as_ellipse(&self) -> Option<Ellipse<f64>> {
+        match self {
+            Entity::Ellipse {
+                points,
+                semi_axis_b,
+            } => ellipse_of_blocks(points, *semi_axis_b).ok(),
+            Entity::EllipticArc {
+                points,
+                semi_axis_b,
+            } => ellipse_of_blocks(&[points[0], points[1]], *semi_axis_b).ok(),
+            _ => None,
+        }
+    }
+
+    /// The elliptic arc of an elliptic arc entity, read from its blocks; `None` for other
+    /// entities and for blocks that make no arc.
+    pub fn as_elliptic_arc(&self) -> Option<EllipticArc<f64>> {
+        match self {
+            Entity::EllipticArc {
+                points,
+                semi_axis_b,
+            } => elliptic_arc_of_blocks(points, *semi_axis_b).ok(),
+            _ => None,
+        }
     }
 
     /// The circular arc of an arc entity, read from its blocks: radius |S − C|, start angle
@@ -155,6 +254,8 @@ impl Entity {
             Entity::Line(_) => "line",
             Entity::Circle { .. } => "circle",
             Entity::Arc(_) => "arc",
+            Entity::Ellipse { .. } => "ellipse",
+            Entity::EllipticArc { .. } => "elliptic arc",
             Entity::Bezier(_) => "Bézier curve",
             Entity::BSpline(_) => "B-spline curve",
             Entity::Nurbs(_) => "NURBS curve",
@@ -171,6 +272,8 @@ impl Entity {
             Entity::Point(p) => std::slice::from_ref(p),
             Entity::Line(ends) => ends,
             Entity::Arc(blocks) => blocks,
+            Entity::Ellipse { points, .. } => points,
+            Entity::EllipticArc { points, .. } => points,
             Entity::Circle { center, .. } => std::slice::from_ref(center),
             Entity::Bezier(c) => c.control_points(),
             Entity::BSpline(c) => c.control_points(),
@@ -195,6 +298,10 @@ impl Entity {
     pub fn hull_points(&self) -> std::borrow::Cow<'_, [Point2<f64>]> {
         match self {
             Entity::Hermite(c) | Entity::Composite(c) => c.bezier_points().into(),
+            Entity::Ellipse { .. } | Entity::EllipticArc { .. } => match self.as_ellipse() {
+                Some(e) => box_corners(&e).into(),
+                None => self.points().into(),
+            },
             other => other.points().into(),
         }
     }
@@ -226,10 +333,13 @@ impl Entity {
         }
     }
 
-    /// Scalar unknowns besides the points (the circle radius), in block order after the points.
+    /// Scalar unknowns besides the points (the circle radius, an ellipse's semi-axis b), in block order after the points.
     pub fn scalars(&self) -> SmallVec<[f64; 1]> {
         match self {
             Entity::Circle { radius, .. } => smallvec::smallvec![*radius],
+            Entity::Ellipse { semi_axis_b, .. } | Entity::EllipticArc { semi_axis_b, .. } => {
+                smallvec::smallvec![*semi_axis_b]
+            }
             _ => SmallVec::new(),
         }
     }
@@ -283,6 +393,26 @@ impl Entity {
                 arc_of_blocks(&blocks)?;
                 Entity::Arc(blocks)
             }
+            Entity::Ellipse { semi_axis_b, .. } => {
+                expect(2)?;
+                let points = [points[0], points[1]];
+                let semi_axis_b = scalars.first().copied().unwrap_or(*semi_axis_b);
+                ellipse_of_blocks(&points, semi_axis_b)?;
+                Entity::Ellipse {
+                    points,
+                    semi_axis_b,
+                }
+            }
+            Entity::EllipticArc { semi_axis_b, .. } => {
+                expect(4)?;
+                let points = [points[0], points[1], points[2], points[3]];
+                let semi_axis_b = scalars.first().copied().unwrap_or(*semi_axis_b);
+                elliptic_arc_of_blocks(&points, semi_axis_b)?;
+                Entity::EllipticArc {
+                    points,
+                    semi_axis_b,
+                }
+            }
             Entity::Bezier(c) => {
                 expect(c.control_points().len())?;
                 Entity::Bezier(BezierCurve2::try_new(points.to_vec())?)
@@ -304,7 +434,11 @@ impl Entity {
     pub fn is_curve(&self) -> bool {
         !matches!(
             self,
-            Entity::Point(_) | Entity::Circle { .. } | Entity::Arc(_)
+            Entity::Point(_)
+                | Entity::Circle { .. }
+                | Entity::Arc(_)
+                | Entity::Ellipse { .. }
+                | Entity::EllipticArc { .. }
         )
     }
 
@@ -315,7 +449,11 @@ impl Entity {
             Entity::BSpline(c) => Some(c.knots().domain(c.degree())),
             Entity::Nurbs(c) => Some(c.knots().domain(c.degree())),
             Entity::Hermite(c) | Entity::Composite(c) => Some((0.0, c.segment_count() as f64)),
-            Entity::Point(_) | Entity::Circle { .. } | Entity::Arc(_) => None,
+            Entity::Point(_)
+            | Entity::Circle { .. }
+            | Entity::Arc(_)
+            | Entity::Ellipse { .. }
+            | Entity::EllipticArc { .. } => None,
         }
     }
 
@@ -330,7 +468,11 @@ impl Entity {
             Entity::Bezier(c) => return c.degree() >= 1,
             Entity::BSpline(c) => (c.degree(), c.knots().as_slice()),
             Entity::Nurbs(c) => (c.degree(), c.knots().as_slice()),
-            Entity::Point(_) | Entity::Circle { .. } | Entity::Arc(_) => return false,
+            Entity::Point(_)
+            | Entity::Circle { .. }
+            | Entity::Arc(_)
+            | Entity::Ellipse { .. }
+            | Entity::EllipticArc { .. } => return false,
         };
         let run: &[f64] = if at_end {
             &knots[knots.len() - 1 - degree..]
@@ -415,12 +557,17 @@ impl Entity {
                 }
             }
             PointRef::Start(_) | PointRef::End(_) => {
-                // An arc's ends are its blocks 1 and 2.
-                if let Entity::Arc(_) = self {
+                // An arc's ends are its blocks 1 and 2, an elliptic arc's 2 and 3.
+                let first = match self {
+                    Entity::Arc(_) => Some(1),
+                    Entity::EllipticArc { .. } => Some(2),
+                    _ => None,
+                };
+                if let Some(first) = first {
                     let index = if matches!(r, PointRef::Start(_)) {
-                        1
+                        first
                     } else {
-                        2
+                        first + 1
                     };
                     return Ok(smallvec::smallvec![(index, 1.0)]);
                 }
@@ -482,9 +629,29 @@ impl Entity {
         if let Entity::Arc(blocks) = self {
             arc_of_blocks(blocks).map_err(|reason| Error::InvalidArc { entity: id, reason })?;
         }
+        let invalid_ellipse = |reason| Error::InvalidEllipse { entity: id, reason };
+        match self {
+            Entity::Ellipse {
+                points,
+                semi_axis_b,
+            } => {
+                ellipse_of_blocks(points, *semi_axis_b).map_err(invalid_ellipse)?;
+            }
+            Entity::EllipticArc {
+                points,
+                semi_axis_b,
+            } => {
+                elliptic_arc_of_blocks(points, *semi_axis_b).map_err(invalid_ellipse)?;
+            }
+            _ => {}
+        }
         if !matches!(
             self,
-            Entity::Point(_) | Entity::Circle { .. } | Entity::Arc(_)
+            Entity::Point(_)
+                | Entity::Circle { .. }
+                | Entity::Arc(_)
+                | Entity::Ellipse { .. }
+                | Entity::EllipticArc { .. }
         ) {
             let points = self.hull_points();
             let spread = points

@@ -148,6 +148,28 @@ pub enum Error {
         /// What the kernel refused, with the value.
         reason: camber_geom::Error,
     },
+    /// An ellipse or elliptic arc the kernel refuses: a semi-axis that is not positive (the
+    /// a-axis vertex at the centre, b ≤ 0), an end at the centre, a sweep of zero, a value that
+    /// is not finite; the reason carries the value.
+    ///
+    /// ```
+    /// use camber_sketch::{Entity, EntityId, Error, Sketch};
+    /// use nalgebra::Point2;
+    /// let mut s = Sketch::new();
+    /// let points = [Point2::new(0.0, 0.0), Point2::new(2.0, 0.0)];
+    /// let err = s.add_entity(Entity::Ellipse { points, semi_axis_b: -1.0 }).unwrap_err();
+    /// assert_eq!(err, Error::InvalidEllipse {
+    ///     entity: EntityId(0),
+    ///     reason: camber_geom::Error::NonPositiveSemiAxis { axis: "b", value: -1.0 },
+    /// });
+    /// ```
+    #[error("{entity} (ellipse): {reason}")]
+    InvalidEllipse {
+        /// The ellipse or elliptic arc.
+        entity: EntityId,
+        /// What the kernel refused, with the value.
+        reason: camber_geom::Error,
+    },
     /// Two lines that cannot be filleted with the radius asked for: parallel or collinear
     /// lines, or a radius whose tangent points fall beyond a line's far end.
     ///
@@ -480,6 +502,8 @@ fn constraint_name(id: ConstraintId) -> String {
         "the drag target".to_owned()
     } else if id == crate::ground::ids::ARC_ROW {
         "an arc's own row (its end on its circle)".to_owned()
+    } else if id == crate::ground::ids::ELLIPSE_ROW {
+        "an elliptic arc's own rows (its ends on its ellipse)".to_owned()
     } else {
         id.to_string()
     }

@@ -89,3 +89,7 @@ pub const DRAG_CONSTRAINT: ConstraintId = ConstraintId(u64::MAX);
 /// The constraint id owning every arc's own row |E − C| − |S − C| = 0 (its end on the circle
 /// of its centre and start; `crate::residuals::arc`). Reports call it "an arc's own row".
 pub const ARC_ROW: ConstraintId = ConstraintId(u64::MAX - 1);
+
+/// The owner of an elliptic arc's own rows (its start and end on its ellipse,
+/// `crate::residuals::ellipse`). Reports call it "an elliptic arc's own rows".
+pub const ELLIPSE_ROW: ConstraintId = ConstraintId(u64::MAX - 2);

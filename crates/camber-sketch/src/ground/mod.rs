@@ -4,6 +4,7 @@
 
 pub(crate) mod curve_ends;
 pub mod curve_eval;
+pub mod ellipse_blocks;
 pub mod entity;
 pub mod errors;
 pub mod hermite_chain;

@@ -209,6 +209,45 @@ impl Sketch {
         self.add_entity(Entity::arc(arc))
     }
 
+    /// Adds an ellipse (blocks [centre, a-axis vertex] and b, see [`Entity::Ellipse`]).
+    ///
+    /// # Errors
+    /// As [`Sketch::add_entity`].
+    ///
+    /// ```
+    /// use camber_geom::Ellipse;
+    /// use camber_sketch::Sketch;
+    /// use nalgebra::Point2;
+    /// let mut s = Sketch::new();
+    /// s.add_ellipse(&Ellipse::try_new(Point2::new(0.0, 0.0), 2.0, 1.0, 0.3)?)?;
+    /// // Centre, vertex and b: 5 DOF.
+    /// assert_eq!(s.analyze()?[0].analysis.dof, 5);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn add_ellipse(&mut self, ellipse: &camber_geom::Ellipse<f64>) -> Result<EntityId> {
+        self.add_entity(Entity::ellipse(ellipse))
+    }
+
+    /// Adds an elliptic arc (blocks [centre, a-axis vertex, start, end] and b, see
+    /// [`Entity::EllipticArc`]).
+    ///
+    /// # Errors
+    /// As [`Sketch::add_entity`].
+    ///
+    /// ```
+    /// use camber_geom::EllipticArc;
+    /// use camber_sketch::Sketch;
+    /// use nalgebra::Point2;
+    /// let mut s = Sketch::new();
+    /// s.add_elliptic_arc(&EllipticArc::try_new(Point2::new(0.0, 0.0), 2.0, 1.0, 0.3, 0.0, 2.0)?)?;
+    /// // 9 unknowns less its two rows (both ends on the ellipse): 7 DOF.
+    /// assert_eq!(s.analyze()?[0].analysis.dof, 7);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn add_elliptic_arc(&mut self, arc: &camber_geom::EllipticArc<f64>) -> Result<EntityId> {
+        self.add_entity(Entity::elliptic_arc(arc))
+    }
+
     /// Adds a Bézier curve.
     ///
     /// # Errors

@@ -1,0 +1,44 @@
+//! What the ellipse kinds share: the check that an entity is an ellipse or an elliptic arc,
+//! the block of an elliptic arc's end, and its direction of travel there.
+
+use nalgebra::Vector2;
+
+use super::arc_ends::ArcEnd;
+use crate::ground::entity::Entity;
+use crate::ground::errors::{Error, Result};
+use crate::ground::ids::EntityId;
+
+/// Fails unless `id` is an ellipse or an elliptic arc; `true` for an arc.
+pub(crate) fn ellipse_kind(e: &Entity, id: EntityId) -> Result<bool> {
+    match e {
+        Entity::Ellipse { .. } => Ok(false),
+        Entity::EllipticArc { .. } => Ok(true),
+        other => Err(Error::WrongEntityKind {
+            entity: id,
+            expected: "ellipse or elliptic arc",
+            found: other.kind_name(),
+        }),
+    }
+}
+
+/// The point block of an elliptic arc's end: 2 the start, 3 the end.
+pub(crate) fn end_block(end: ArcEnd) -> usize {
+    end.block() + 1
+}
+
+/// The counter-clockwise tangent E′ = −(a/b)·y′·u + (b/a)·x′·v at the point P of the ellipse
+/// of blocks [C, V] and b (f64).
+pub(crate) fn travel(
+    c: &nalgebra::Point2<f64>,
+    v: &nalgebra::Point2<f64>,
+    b: f64,
+    p: &nalgebra::Point2<f64>,
+) -> Vector2<f64> {
+    let w = v - c;
+    let a = w.norm();
+    let u = w / a;
+    let n = Vector2::new(-u.y, u.x);
+    let d = p - c;
+    let (x, y) = (d.dot(&u), d.dot(&n));
+    u * (-(a / b) * y) + n * ((b / a) * x)
+}
