@@ -47,7 +47,7 @@ pub enum Error {
     },
     /// The entity is of a kind the operation does not accept (a parameter on a point, a
     /// tangent of a circle, …).
-    #[error("{entity} is a {found}, expected {expected}")]
+    #[error("{entity} is {} {found}, expected {expected}", article(found))]
     WrongEntityKind {
         /// The entity.
         entity: EntityId,
@@ -550,5 +550,40 @@ fn number(x: f64) -> String {
         format!("{x}")
     } else {
         format!("{x:e}")
+    }
+}
+
+/// "an" before a kind name that starts with a vowel ("an arc", "an ellipse"), "a" otherwise.
+fn article(kind: &str) -> &'static str {
+    if kind.starts_with(['a', 'e', 'i', 'o', 'u']) {
+        "an"
+    } else {
+        "a"
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_wrong_kind_reads_as_english() {
+        let wrong = |found| Error::WrongEntityKind {
+            entity: EntityId(3),
+            expected: "line",
+            found,
+        };
+        assert_eq!(
+            wrong("arc").to_string(),
+            "entity 3 is an arc, expected line"
+        );
+        assert_eq!(
+            wrong("elliptic arc").to_string(),
+            "entity 3 is an elliptic arc, expected line"
+        );
+        assert_eq!(
+            wrong("circle").to_string(),
+            "entity 3 is a circle, expected line"
+        );
     }
 }
