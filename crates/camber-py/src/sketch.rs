@@ -150,6 +150,46 @@ impl Sketch {
         Ok(self.inner.add_circle(c, radius).map_err(errors::sketch)?.0)
     }
 
+    /// Adds a circular arc, counter-clockwise from `start_angle` to `end_angle` (radians) on the
+    /// circle of `center` and `radius` (> 0); returns its id. Its points are 0 the centre, 1
+    /// the start, 2 the end (`{"start": arc}`, `{"end": arc}` name its ends).
+    fn add_arc(
+        &mut self,
+        center: Vec<f64>,
+        radius: f64,
+        start_angle: f64,
+        end_angle: f64,
+    ) -> PyResult<u64> {
+        let c = xy(&center, "center")?;
+        let arc = camber_geom::CircularArc::try_new(c, radius, start_angle, end_angle)
+            .map_err(errors::geometry)?;
+        Ok(self.inner.add_arc(&arc).map_err(errors::sketch)?.0)
+    }
+
+    /// Rounds the corner between two lines with an arc of `radius` tangent to both, trimming
+    /// them to its tangent points and holding it by constraints (a coincident and an
+    /// `arc_tangent_to_line` at each end, the `radius`); a coincidence that joined the corner
+    /// is removed. Returns `{"arc": id, "added": [ids], "removed": [ids]}`. A fillet that
+    /// cannot be made (parallel lines, a radius too large for a line) raises and changes
+    /// nothing.
+    fn fillet(
+        &mut self,
+        py: Python<'_>,
+        first: u64,
+        second: u64,
+        radius: f64,
+    ) -> PyResult<Py<PyAny>> {
+        let f = self
+            .inner
+            .fillet(EntityId(first), EntityId(second), radius)
+            .map_err(errors::sketch)?;
+        let d = PyDict::new(py);
+        d.set_item("arc", f.arc.0)?;
+        d.set_item("added", f.added.iter().map(|c| c.0).collect::<Vec<_>>())?;
+        d.set_item("removed", f.removed.iter().map(|c| c.0).collect::<Vec<_>>())?;
+        Ok(d.into_any().unbind())
+    }
+
     /// Adds a planar Bézier, B-spline or NURBS curve (a `camber` curve object); returns its id.
     fn add_curve(&mut self, curve: PyRef<'_, Curve>) -> PyResult<u64> {
         let id = match &curve.inner {
@@ -188,7 +228,8 @@ impl Sketch {
         to_python(py, &entity_to_value(e).map_err(errors::file)?)
     }
 
-    /// A curve entity (or line) as a camber curve object, for evaluation and plotting.
+    /// A curve entity (or a line, or an arc as its exact NURBS form) as a camber curve object,
+    /// for evaluation and plotting.
     fn curve(&self, py: Python<'_>, id: u64) -> PyResult<Py<PyAny>> {
         let e = self.inner.entity(EntityId(id)).map_err(errors::sketch)?;
         let inner = match e {
@@ -198,6 +239,15 @@ impl Sketch {
             Entity::Line([a, b]) => AnyCurve::Bezier2(
                 camber_geom::BezierCurve2::try_new(vec![*a, *b]).map_err(errors::geometry)?,
             ),
+            // An arc as its exact rational form (quadratic pieces of at most a quarter turn).
+            Entity::Arc(_) => match e.as_arc() {
+                Some(arc) => AnyCurve::Nurbs2(arc.to_nurbs().map_err(errors::geometry)?),
+                None => {
+                    return Err(errors::SketchError::new_err(format!(
+                        "entity {id} is an arc whose ends are at the centre"
+                    )))
+                }
+            },
             other => {
                 return Err(errors::SketchError::new_err(format!(
                     "entity {id} is a {}, not a curve",

@@ -1,0 +1,95 @@
+"""Arcs from Python: an arc added by centre, radius and angles, its file form and its exact
+NURBS form on the circle, a fillet of a right-angled corner against its closed form (centre
+and tangent points at the radius from the corner's sides), solved with every constraint kept,
+an impossible fillet refused with nothing changed, and arcs surviving pickling bit for bit."""
+
+import math
+import pickle
+
+import numpy as np
+import pytest
+
+import camber
+
+
+def corner(radius=None):
+    """Lines (2, 0)→(0, 0) and (0, 0)→(0, 2) joined at the origin, the far ends fixed."""
+    s = camber.Sketch()
+    a = s.add_line([2.0, 0.0], [0.0, 0.0])
+    b = s.add_line([0.0, 0.0], [0.0, 2.0])
+    joint = s.add_constraint("coincident", a={"end": a}, b={"start": b})
+    s.add_constraint("fixed", target={"point": {"start": a}})
+    s.add_constraint("fixed", target={"point": {"end": b}})
+    return s, a, b, joint
+
+
+def test_an_arc_has_its_file_form_and_an_exact_nurbs_form():
+    s = camber.Sketch()
+    arc = s.add_arc([1.0, 2.0], 1.5, 0.25, 2.0)
+    form = s.entity(arc)
+    assert form["kind"] == "arc"
+    assert form["radius"] == pytest.approx(1.5, abs=1e-15)
+    assert form["start_angle"] == pytest.approx(0.25, abs=1e-15)
+    assert form["end_angle"] == pytest.approx(2.0, abs=1e-15)
+    np.testing.assert_allclose(s.point({"start": arc}), [1 + 1.5 * math.cos(0.25), 2 + 1.5 * math.sin(0.25)], atol=1e-15)
+    curve = s.curve(arc)
+    assert isinstance(curve, camber.NurbsCurve)
+    lo, hi = curve.domain
+    on = curve.evaluate(np.linspace(lo, hi, 17))
+    np.testing.assert_allclose(np.hypot(on[:, 0] - 1.0, on[:, 1] - 2.0), 1.5, atol=1e-13)
+    np.testing.assert_allclose(curve.evaluate(hi), s.point({"end": arc}), atol=1e-13)
+
+
+def test_bad_arcs_are_refused_with_the_value():
+    s = camber.Sketch()
+    with pytest.raises(camber.GeometryError, match="-1"):
+        s.add_arc([0.0, 0.0], -1.0, 0.0, 1.0)
+    with pytest.raises(camber.GeometryError, match="sweeps no angle"):
+        s.add_arc([0.0, 0.0], 1.0, 2.0, 2.0)
+    with pytest.raises(camber.GeometryError, match="center"):
+        s.add_arc([0.0], 1.0, 0.0, 1.0)
+    assert s.entity_ids() == []
+
+
+def test_the_fillet_of_a_right_angle_meets_its_closed_form_and_solves():
+    s, a, b, joint = corner()
+    dof = [c["analysis"]["dof"] for c in s.analyze()]
+    f = s.fillet(a, b, 0.5)
+    assert f["removed"] == [joint]
+    assert len(f["added"]) == 5
+    arc = f["arc"]
+    # A right angle: the centre is at (r, r), the tangent points at r along each side.
+    np.testing.assert_allclose(s.point({"control": [arc, 0]}), [0.5, 0.5], atol=1e-15)
+    np.testing.assert_allclose(s.point({"end": a}), [0.5, 0.0], atol=1e-15)
+    np.testing.assert_allclose(s.point({"start": b}), [0.0, 0.5], atol=1e-15)
+    assert s.entity(arc)["radius"] == pytest.approx(0.5, abs=1e-15)
+    # The fillet adds no freedom: the corner point's 2 become the arc's.
+    assert [c["analysis"]["dof"] for c in s.analyze()] == dof == [2]
+    s.solve()
+    c = s.point({"control": [arc, 0]})
+    for end in ("start", "end"):
+        assert np.linalg.norm(s.point({end: arc}) - c) == pytest.approx(0.5, abs=1e-10)
+
+
+def test_an_impossible_fillet_raises_and_changes_nothing():
+    s, a, b, _ = corner()
+    before = s.to_json()
+    with pytest.raises(camber.SketchError, match="beyond a line's far end"):
+        s.fillet(a, b, 5.0)
+    with pytest.raises(camber.SketchError, match="to itself"):
+        s.fillet(a, a, 0.5)
+    assert s.to_json() == before
+
+
+def test_a_sketch_with_arcs_pickles_bit_for_bit():
+    s, a, b, _ = corner()
+    arc = s.fillet(a, b, 0.3)["arc"]
+    # An end moved off the circle: solved back onto it only to the tolerance, which a file
+    # of radius and angles alone would round away.
+    end = s.point({"end": arc})
+    s.set_point({"control": [arc, 2]}, end + [0.01, -0.02])
+    s.solve()
+    back = pickle.loads(pickle.dumps(s))
+    assert back.to_json() == s.to_json()
+    for e in s.entity_ids():
+        assert back.entity(e) == s.entity(e)
