@@ -375,4 +375,6 @@ kinds! {
     SemiAxis => semi_axis::SemiAxis,
     /// An elliptic arc's tangent at one end along a line entity.
     EllipticArcTangentToLine => elliptic_arc_tangent_to_line::EllipticArcTangentToLine,
+    /// An elliptic arc's travel at one end along a curve's tangent at one of its ends.
+    EllipticArcTangentToCurve => elliptic_arc_tangent_to_curve::EllipticArcTangentToCurve,
 }
