@@ -133,3 +133,85 @@ fn ellipse_kinds_on_other_entities_fail_to_load() {
         "constraint 2 (point_on_ellipse): entity 1 is a circle, expected ellipse or elliptic arc"
     );
 }
+
+/// A solved ellipse sketch saved and loaded is the same sketch bit for bit: the file holds the
+/// a-axis vertex and the arc's end points beside the numbers (which alone would round).
+#[test]
+fn a_solved_ellipse_sketch_saves_and_loads_exactly() {
+    let mut s = from_json(FILE).unwrap();
+    s.solve().unwrap();
+    let text = to_json(&s).unwrap();
+    assert!(text.contains(r#""vertex""#), "{text}");
+    let back = from_json(&text).unwrap();
+    assert_eq!(to_json(&back).unwrap(), text);
+    for ((_, a), (_, b)) in s.entities().zip(back.entities()) {
+        assert_eq!(a, b);
+    }
+}
+
+/// The point form alone loads; numbers that disagree with the points, or half a point form,
+/// are refused at the field with the value.
+#[test]
+fn ellipse_forms_must_be_complete_and_agree() {
+    let load = |kind: &str, fields: &str| {
+        from_json(&format!(
+            r#"{{"version":1,"entities":[{{"id":0,"kind":"{kind}",{fields}}}]}}"#
+        ))
+        .map_err(|e| e.to_string())
+    };
+    // a = 2 along +y (rotation π/2), b = 1; the arc from the vertex (φ = 0) to φ = π/2.
+    let points = r#""center":[1,1],"semi_axis_b":1,"vertex":[1,3],"start":[1,3],"end":[0,1]"#;
+    let s = load("elliptic_arc", points).unwrap();
+    let arc = s.entities().next().unwrap().1.as_elliptic_arc().unwrap();
+    assert_relative_eq!(arc.ellipse().semi_axis_a(), 2.0, epsilon = 1e-15);
+    assert_relative_eq!(
+        arc.ellipse().rotation(),
+        std::f64::consts::FRAC_PI_2,
+        epsilon = 1e-15
+    );
+    assert_relative_eq!(arc.sweep(), std::f64::consts::FRAC_PI_2, epsilon = 1e-15);
+    assert!(load(
+        "ellipse",
+        r#""center":[1,1],"semi_axis_b":1,"vertex":[1,3]"#
+    )
+    .is_ok());
+    let agreeing = format!(
+        r#"{points},"semi_axis_a":2,"rotation":1.5707963267948966,"start_angle":0,"end_angle":1.5707963267948966"#
+    );
+    assert!(load("elliptic_arc", &agreeing).is_ok());
+    for (kind, fields, path, words) in [
+        (
+            "ellipse",
+            r#""center":[1,1],"semi_axis_b":1,"vertex":[1,3],"semi_axis_a":2.5"#.to_owned(),
+            "entities[0].semi_axis_a",
+            "semi_axis_a 2.5 disagrees",
+        ),
+        (
+            "ellipse",
+            r#""center":[1,1],"semi_axis_b":1,"vertex":[1,3],"rotation":0"#.to_owned(),
+            "entities[0].rotation",
+            "rotation 0 disagrees",
+        ),
+        (
+            "elliptic_arc",
+            format!(r#"{points},"end_angle":3"#),
+            "entities[0].end_angle",
+            "end_angle 3 disagrees",
+        ),
+        (
+            "elliptic_arc",
+            r#""center":[1,1],"semi_axis_b":1,"vertex":[1,3],"start":[1,3]"#.to_owned(),
+            "entities[0].end",
+            "missing field `end`",
+        ),
+        (
+            "ellipse",
+            r#""center":[1,1],"semi_axis_b":1,"semi_axis_a":2"#.to_owned(),
+            "entities[0].rotation",
+            "missing field `rotation`",
+        ),
+    ] {
+        let e = load(kind, &fields).unwrap_err();
+        assert!(e.contains(path) && e.contains(words), "{fields}: {e}");
+    }
+}

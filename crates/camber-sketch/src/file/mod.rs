@@ -500,7 +500,10 @@ fn load_entity(i: usize, mut value: Value) -> std::result::Result<RawEntity, Fil
             shape(inner, message)
         })?;
     let shape_of: raw::RawShape = shape_of.into();
-    if let Some((field, message)) = shape_of.arc_form_problem() {
+    if let Some((field, message)) = shape_of
+        .arc_form_problem()
+        .or_else(|| shape_of.ellipse_form_problem())
+    {
         return Err(shape(format!("entities[{i}].{field}"), message));
     }
     Ok(RawEntity {

@@ -84,17 +84,31 @@ pub(super) enum KeyedShape {
     },
     Ellipse {
         center: Xy,
-        semi_axis_a: f64,
+        #[serde(default)]
+        semi_axis_a: Option<f64>,
         semi_axis_b: f64,
-        rotation: f64,
+        #[serde(default)]
+        rotation: Option<f64>,
+        #[serde(default)]
+        vertex: Option<Xy>,
     },
     EllipticArc {
         center: Xy,
-        semi_axis_a: f64,
+        #[serde(default)]
+        semi_axis_a: Option<f64>,
         semi_axis_b: f64,
-        rotation: f64,
-        start_angle: f64,
-        end_angle: f64,
+        #[serde(default)]
+        rotation: Option<f64>,
+        #[serde(default)]
+        start_angle: Option<f64>,
+        #[serde(default)]
+        end_angle: Option<f64>,
+        #[serde(default)]
+        vertex: Option<Xy>,
+        #[serde(default)]
+        start: Option<Xy>,
+        #[serde(default)]
+        end: Option<Xy>,
     },
     Bezier {
         control_points: Vec<Xy>,
@@ -150,11 +164,13 @@ impl From<KeyedShape> for RawShape {
                 semi_axis_a,
                 semi_axis_b,
                 rotation,
+                vertex,
             } => RawShape::Ellipse {
                 center,
                 semi_axis_a,
                 semi_axis_b,
                 rotation,
+                vertex,
             },
             KeyedShape::EllipticArc {
                 center,
@@ -163,6 +179,9 @@ impl From<KeyedShape> for RawShape {
                 rotation,
                 start_angle,
                 end_angle,
+                vertex,
+                start,
+                end,
             } => RawShape::EllipticArc {
                 center,
                 semi_axis_a,
@@ -170,6 +189,9 @@ impl From<KeyedShape> for RawShape {
                 rotation,
                 start_angle,
                 end_angle,
+                vertex,
+                start,
+                end,
             },
             KeyedShape::Bezier { control_points } => RawShape::Bezier { control_points },
             KeyedShape::Bspline {
@@ -235,19 +257,36 @@ pub(super) enum RawShape {
         #[serde(default, skip_serializing_if = "Option::is_none")]
         end: Option<Xy>,
     },
+    /// By semi-axis a and rotation (and, for an arc, its angles), by its points (the a-axis
+    /// vertex, and the arc's ends: exact), or both (as saved): see
+    /// [`RawShape::ellipse_form_problem`].
     Ellipse {
         center: Xy,
-        semi_axis_a: f64,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        semi_axis_a: Option<f64>,
         semi_axis_b: f64,
-        rotation: f64,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        rotation: Option<f64>,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        vertex: Option<Xy>,
     },
     EllipticArc {
         center: Xy,
-        semi_axis_a: f64,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        semi_axis_a: Option<f64>,
         semi_axis_b: f64,
-        rotation: f64,
-        start_angle: f64,
-        end_angle: f64,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        rotation: Option<f64>,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        start_angle: Option<f64>,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        end_angle: Option<f64>,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        vertex: Option<Xy>,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        start: Option<Xy>,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        end: Option<Xy>,
     },
     Bezier {
         control_points: Vec<Xy>,
@@ -368,6 +407,114 @@ impl RawShape {
         None
     }
 
+    /// For an ellipse or an elliptic arc: the field and the reason when neither form is
+    /// complete (the numbers: semi-axis a, rotation and, for an arc, both angles; the points:
+    /// the a-axis vertex and, for an arc, both ends) or when given numbers disagree with the
+    /// points (a against |vertex − center|, the rotation against the vertex's direction, an
+    /// angle against the parametric angle of its end point, each within 10⁻⁹·max(1, a, b) as a
+    /// distance). `None` for every other shape.
+    pub(super) fn ellipse_form_problem(&self) -> Option<(&'static str, String)> {
+        let (center, a, b, rotation, angles, vertex, ends) = match self {
+            RawShape::Ellipse {
+                center,
+                semi_axis_a,
+                semi_axis_b,
+                rotation,
+                vertex,
+            } => (
+                center,
+                semi_axis_a,
+                *semi_axis_b,
+                rotation,
+                None,
+                vertex,
+                None,
+            ),
+            RawShape::EllipticArc {
+                center,
+                semi_axis_a,
+                semi_axis_b,
+                rotation,
+                start_angle,
+                end_angle,
+                vertex,
+                start,
+                end,
+            } => (
+                center,
+                semi_axis_a,
+                *semi_axis_b,
+                rotation,
+                Some([("start_angle", start_angle), ("end_angle", end_angle)]),
+                vertex,
+                Some([("start", start), ("end", end)]),
+            ),
+            _ => return None,
+        };
+        let given_points = [("vertex", vertex)]
+            .into_iter()
+            .chain(ends.into_iter().flatten())
+            .collect::<Vec<_>>();
+        let missing_point = given_points
+            .iter()
+            .find(|(_, p)| p.is_none())
+            .map(|(f, _)| *f);
+        let any_point = given_points.iter().any(|(_, p)| p.is_some());
+        let numbers = [("semi_axis_a", a), ("rotation", rotation)]
+            .into_iter()
+            .chain(angles.into_iter().flatten())
+            .collect::<Vec<_>>();
+        let Some(v) = vertex.filter(|_| missing_point.is_none()) else {
+            if let (true, Some(field)) = (any_point, missing_point) {
+                return Some((
+                    field,
+                    format!("missing field `{field}`: give every point of the point form or none"),
+                ));
+            }
+            return numbers.iter().find(|(_, x)| x.is_none()).map(|(field, _)| {
+                (
+                    *field,
+                    format!(
+                        "missing field `{field}` (or give the points: `vertex`{})",
+                        if ends.is_some() {
+                            ", `start` and `end`"
+                        } else {
+                            ""
+                        }
+                    ),
+                )
+            });
+        };
+        let (c, v) = (pt(*center), pt(v));
+        let w = v - c;
+        let a_points = w.norm();
+        let tol = 1e-9 * a_points.max(b.abs()).max(1.0);
+        if let Some(given) = a {
+            if !within((given - a_points).abs(), tol) {
+                return Some(("semi_axis_a", format!("semi_axis_a {given} disagrees with the distance {a_points} of the vertex from the centre")));
+            }
+        }
+        let turn = |x: f64| {
+            (x + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU) - std::f64::consts::PI
+        };
+        if let Some(given) = rotation {
+            if !within(turn(given - w.y.atan2(w.x)).abs() * a_points, tol) {
+                return Some(("rotation", format!("rotation {given} disagrees with the direction of the vertex from the centre")));
+            }
+        }
+        if let (Some(angles), Some(ends)) = (angles, ends) {
+            for ((field, given), (_, point)) in angles.into_iter().zip(ends) {
+                if let (Some(phi), Some(p)) = (given, point) {
+                    let at = frame_angle(&c, &v, b, &pt(*p));
+                    if !within(turn(phi - at).abs() * a_points.max(b.abs()), tol) {
+                        return Some((field, format!("{field} {phi} disagrees with the parametric angle {at} of the arc's {} point", if field == "start_angle" { "start" } else { "end" })));
+                    }
+                }
+            }
+        }
+        None
+    }
+
     pub(super) fn into_entity(self) -> crate::ground::errors::Result<Entity> {
         let pts = |v: Vec<Xy>| v.into_iter().map(pt).collect::<Vec<_>>();
         Ok(match self {
@@ -397,17 +544,40 @@ impl RawShape {
                 start_angle.unwrap_or(f64::NAN),
                 end_angle.unwrap_or(f64::NAN),
             )?),
+            // The points, when given, are the entity exactly (checked against the numbers by
+            // `ellipse_form_problem`); a missing number is refused as not finite.
+            RawShape::Ellipse {
+                center,
+                semi_axis_b,
+                vertex: Some(v),
+                ..
+            } => Entity::Ellipse {
+                points: [pt(center), pt(v)],
+                semi_axis_b,
+            },
             RawShape::Ellipse {
                 center,
                 semi_axis_a,
                 semi_axis_b,
                 rotation,
+                ..
             } => Entity::ellipse(&Ellipse::try_new(
                 pt(center),
-                semi_axis_a,
+                semi_axis_a.unwrap_or(f64::NAN),
                 semi_axis_b,
-                rotation,
+                rotation.unwrap_or(f64::NAN),
             )?),
+            RawShape::EllipticArc {
+                center,
+                semi_axis_b,
+                vertex: Some(v),
+                start: Some(p),
+                end: Some(q),
+                ..
+            } => Entity::EllipticArc {
+                points: [pt(center), pt(v), pt(p), pt(q)],
+                semi_axis_b,
+            },
             RawShape::EllipticArc {
                 center,
                 semi_axis_a,
@@ -415,13 +585,14 @@ impl RawShape {
                 rotation,
                 start_angle,
                 end_angle,
+                ..
             } => Entity::elliptic_arc(&EllipticArc::try_new(
                 pt(center),
-                semi_axis_a,
+                semi_axis_a.unwrap_or(f64::NAN),
                 semi_axis_b,
-                rotation,
-                start_angle,
-                end_angle,
+                rotation.unwrap_or(f64::NAN),
+                start_angle.unwrap_or(f64::NAN),
+                end_angle.unwrap_or(f64::NAN),
             )?),
             RawShape::Bezier { control_points } => {
                 Entity::Bezier(BezierCurve2::try_new(pts(control_points))?)
@@ -495,24 +666,29 @@ impl RawShape {
                 let w = v - c;
                 RawShape::Ellipse {
                     center: xy_p(c),
-                    semi_axis_a: w.norm(),
+                    semi_axis_a: Some(w.norm()),
                     semi_axis_b: *semi_axis_b,
-                    rotation: w.y.atan2(w.x),
+                    rotation: Some(w.y.atan2(w.x)),
+                    vertex: Some(xy_p(v)),
                 }
             }
             Entity::EllipticArc {
                 points: [c, v, s, e],
                 semi_axis_b,
             } => {
-                // The ends' parametric angles, atan2 ∈ (−π, π].
+                // The ends' parametric angles, atan2 ∈ (−π, π], for a reader; and the points
+                // themselves, so that saving and loading is the identity.
                 let w = v - c;
                 RawShape::EllipticArc {
                     center: xy_p(c),
-                    semi_axis_a: w.norm(),
+                    semi_axis_a: Some(w.norm()),
                     semi_axis_b: *semi_axis_b,
-                    rotation: w.y.atan2(w.x),
-                    start_angle: frame_angle(c, v, *semi_axis_b, s),
-                    end_angle: frame_angle(c, v, *semi_axis_b, e),
+                    rotation: Some(w.y.atan2(w.x)),
+                    start_angle: Some(frame_angle(c, v, *semi_axis_b, s)),
+                    end_angle: Some(frame_angle(c, v, *semi_axis_b, e)),
+                    vertex: Some(xy_p(v)),
+                    start: Some(xy_p(s)),
+                    end: Some(xy_p(e)),
                 }
             }
             Entity::Bezier(c) => RawShape::Bezier {
