@@ -72,10 +72,8 @@ fn declaration_end(text: &[u8], from: usize) -> (usize, bool) {
                 b'"' | b'\'' => quote = Some(c),
                 b'[' => brackets += 1,
                 b']' => brackets = brackets.saturating_sub(1),
-                b'<' if brackets > 0 => {
-                    if !matches!(text.get(i + 1), Some(b'!' | b'?')) {
-                        markup = true;
-                    }
+                b'<' if brackets > 0 && !matches!(text.get(i + 1), Some(b'!' | b'?')) => {
+                    markup = true;
                 }
                 b'>' if brackets == 0 => return (i + 1, markup),
                 _ => {}
