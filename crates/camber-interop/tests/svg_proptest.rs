@@ -38,10 +38,9 @@ fn interpret(cmds: &[Command]) -> (String, Vec<Option<Curve>>) {
         let o = if rel { cur } else { p(0.0, 0.0) };
         let at = |i: usize| p(o.x + f[i], o.y + f[i + 1]);
         let (mut nc, mut nq) = (None, None);
-        let seg: Option<(Vec<Point2<f64>>, Option<(f64, f64, f64, bool, bool)>)>;
         if k == LETTERS.len() {
             text.push_str(if rel { " z" } else { " Z" });
-            seg = (cur != start).then(|| (vec![cur, start], None));
+            let seg = (cur != start).then(|| vec![cur, start]);
             cur = start;
             last_c = None;
             last_q = None;
@@ -103,7 +102,7 @@ fn interpret(cmds: &[Command]) -> (String, Vec<Option<Curve>>) {
                 if from == to {
                     curves.push(None);
                 } else if rx == 0.0 || ry == 0.0 {
-                    curves.push(curve((vec![from, to], None)));
+                    curves.push(curve(vec![from, to]));
                 } else {
                     curves.push(Some(Box::new(svg_arc(from, to, (rx, ry), rot, fa, fs))));
                 }
@@ -117,12 +116,12 @@ fn interpret(cmds: &[Command]) -> (String, Vec<Option<Curve>>) {
         cur = *points.last().unwrap();
         last_c = nc;
         last_q = nq;
-        curves.push(curve((points, None)));
+        curves.push(curve(points));
     }
     (text, curves)
 }
 
-fn curve((points, _): (Vec<Point2<f64>>, Option<(f64, f64, f64, bool, bool)>)) -> Option<Curve> {
+fn curve(points: Vec<Point2<f64>>) -> Option<Curve> {
     let first = points[0];
     if points.iter().all(|q| *q == first) {
         return None;
