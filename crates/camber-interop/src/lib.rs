@@ -5,5 +5,6 @@
 //! and exporters live one format a module.
 
 mod report;
+pub mod svg;
 
 pub use report::{Imported, Skipped};
