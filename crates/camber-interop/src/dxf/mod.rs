@@ -60,16 +60,16 @@ mod plane;
 mod read;
 mod write;
 
-/// The largest DXF input [`read`] takes by default, in bytes (256 MiB).
+/// The largest DXF input [`read()`] takes by default, in bytes (256 MiB).
 pub const DEFAULT_MAX_BYTES: usize = 256 << 20;
 
-/// The most entities [`read`] takes from one file by default.
+/// The most entities [`read()`] takes from one file by default.
 pub const DEFAULT_MAX_ENTITIES: usize = 1_000_000;
 
 /// The most control points or knots of one SPLINE: DXF stores their counts as 16-bit integers.
 pub const MAX_SPLINE_ITEMS: usize = i16::MAX as usize;
 
-/// How [`read`] imports a file.
+/// How [`read()`] imports a file.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ReadOptions {
     /// End points of different entities at most this far apart (drawing units) are joined by
@@ -92,7 +92,7 @@ impl Default for ReadOptions {
     }
 }
 
-/// The encoding [`write`] produces.
+/// The encoding [`write()`] produces.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Form {
     /// ASCII DXF: readable, every number in its shortest exact decimal form.
