@@ -20,6 +20,8 @@
 //!   stays readable.
 //! - [`fit()`]: a point file (JSON, columns, Selig or Lednicer) parsed and fitted to a
 //!   tolerance, whole and split at the leading edge; a fit is within its tolerance.
+//! - [`svg()`]: SVG path data or a whole document imported into a sketch; every coincident
+//!   join holds as imported and the sketch saves to a file that loads again.
 //! - [`toolkit()`]: one or two curves and some numbers through every curve-toolkit operation
 //!   under a small work budget; its documentation lists the promises checked.
 //!
@@ -41,8 +43,10 @@ mod expression;
 pub use expression::expression;
 
 mod fit;
+mod svg;
 mod toolkit;
 pub use fit::{fit, FIT_WORK};
+pub use svg::svg;
 pub use toolkit::{toolkit, TOOLKIT_WORK};
 
 /// The largest input any target reads, in bytes (libFuzzer's `-max_len` should not exceed it).

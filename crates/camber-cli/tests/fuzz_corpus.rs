@@ -68,3 +68,8 @@ fn fit_corpus_replays() {
 fn toolkit_corpus_replays() {
     replay("toolkit", fuzz_support::toolkit);
 }
+
+#[test]
+fn svg_corpus_replays() {
+    replay("svg", fuzz_support::svg);
+}

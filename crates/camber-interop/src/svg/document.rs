@@ -23,6 +23,7 @@ use svgtypes::PathSegment;
 use super::affine::Affine;
 use super::builder::Builder;
 use super::errors::{Error, Item};
+use super::nesting::{self, Finding};
 use super::options::SvgOptions;
 use crate::Imported;
 
@@ -88,8 +89,31 @@ pub fn import_document(svg_text: &str, options: &SvgOptions) -> Result<Imported,
             max: options.max_input_bytes,
         });
     }
+    match nesting::scan(svg_text, options.max_depth) {
+        Some(Finding::TooDeep(t)) => {
+            return Err(Error::TooDeep {
+                item: Item::Element {
+                    tag: t.tag,
+                    id: None,
+                    line: line_of(svg_text, t.offset),
+                },
+                depth: t.depth,
+                max: options.max_depth,
+            })
+        }
+        Some(Finding::MarkupInDtd { offset }) => {
+            return Err(Error::Xml {
+                message: format!(
+                    "the DTD at line {} could declare elements in its entities, which are not read",
+                    line_of(svg_text, offset)
+                ),
+            })
+        }
+        None => {}
+    }
     // Editors write DOCTYPEs with entity declarations; the reader guards against entity
-    // expansion attacks itself, and the node budget bounds the rest.
+    // expansion attacks itself, the node budget bounds the rest, and the scan above refused
+    // entities that could hold elements.
     let parsing = ParsingOptions {
         allow_dtd: true,
         nodes_limit: options.max_nodes,
@@ -175,6 +199,13 @@ pub fn import_document(svg_text: &str, options: &SvgOptions) -> Result<Imported,
         }
     }
     Ok(b.finish())
+}
+
+/// The line (from 1) of a byte offset.
+fn line_of(text: &str, offset: usize) -> u32 {
+    let before = text.as_bytes().get(..offset).unwrap_or(text.as_bytes());
+    let lines = before.iter().filter(|c| **c == b'\n').count() + 1;
+    u32::try_from(lines).unwrap_or(u32::MAX)
 }
 
 fn is_svg(node: &Node<'_, '_>) -> bool {

@@ -47,6 +47,7 @@ mod document;
 mod ellipse_map;
 mod errors;
 mod joins;
+mod nesting;
 mod options;
 
 pub use document::import_document;
