@@ -27,7 +27,7 @@
 //! camber check SKETCH.json [--json]                     DOF, redundant and conflicting constraints
 //! camber render SKETCH.json -o PIC.svg [--combs]        draw a sketch with constraint glyphs
 //! camber edit SKETCH.json [--port N] [--bind ADDR --allow-remote] [-o OUT.json] [--open]
-//! camber import DRAWING.dxf -o SKETCH.json [--join-tolerance T] [--strict]   DXF → sketch
+//! camber import DRAWING.dxf|PICTURE.svg -o SKETCH.json [--join-tolerance T] [--strict]
 //! camber export SKETCH.json -o DRAWING.dxf [--binary]   a sketch's geometry as DXF
 //! camber demo [-o DIR]                                  solve the bundled blade section
 //! camber bench [--only W2,W3] [--quick] [--sizes N,…] [--json]   the standard workloads
@@ -122,8 +122,8 @@ pub enum Command {
     Bench(bench_cmd::BenchArgs),
     /// Solve every sketch file of a directory in parallel: one JSON line per file.
     Batch(batch::BatchArgs),
-    /// Import a DXF file as a sketch: lines, circles, arcs, ellipses, polylines and splines,
-    /// joins as coincident constraints, layers as tags; what is left out is listed.
+    /// Import a DXF file or an SVG document as a sketch: lines, circles, arcs, ellipses,
+    /// polylines, splines and paths, with their joins; what is left out is listed.
     Import(import::ImportArgs),
     /// Export a sketch's geometry as a DXF file (text, or binary with --binary).
     Export(export::ExportArgs),

@@ -1,5 +1,5 @@
-//! `camber import` and `camber export` on DXF files: a bundled sketch out and back in, skipped
-//! items on stderr, `--strict`, and refused formats.
+//! `camber import` and `camber export` on DXF files (and `camber import` on an SVG document):
+//! a bundled sketch out and back in, skipped items on stderr, `--strict`, and refused formats.
 #![allow(clippy::unwrap_used)] // helpers outside #[test] functions unwrap like the tests do
 
 use std::path::PathBuf;
@@ -142,4 +142,27 @@ fn unknown_formats_and_bad_files_are_refused_plainly() {
         .assert()
         .code(2)
         .stderr(predicate::str::contains("unknown output format"));
+}
+
+#[test]
+fn an_svg_document_imports_with_its_joins() {
+    let dir = tempfile::tempdir().unwrap();
+    let svg = dir.path().join("slot.svg");
+    // A slot: two lines and two half circles, closed; every join smooth.
+    std::fs::write(
+        &svg,
+        r#"<svg xmlns="http://www.w3.org/2000/svg"><path d="M 0 0 L 4 0 A 1 1 0 0 0 4 -2 L 0 -2 A 1 1 0 0 0 0 0 Z"/><text>note</text></svg>"#,
+    )
+    .unwrap();
+    let out = dir.path().join("slot.json");
+    camber()
+        .arg("import")
+        .arg(&svg)
+        .arg("-o")
+        .arg(&out)
+        .assert()
+        .success()
+        .stdout(predicate::str::contains("imported 4 entities"))
+        .stderr(predicate::str::contains("skipped:").and(predicate::str::contains("text")));
+    camber().arg("check").arg(&out).assert().success();
 }

@@ -73,3 +73,8 @@ fn toolkit_corpus_replays() {
 fn dxf_corpus_replays() {
     replay("dxf", fuzz_support::dxf);
 }
+
+#[test]
+fn svg_corpus_replays() {
+    replay("svg", fuzz_support::svg);
+}

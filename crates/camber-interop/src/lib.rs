@@ -7,5 +7,6 @@
 pub mod dxf;
 mod joins;
 mod report;
+pub mod svg;
 
 pub use report::{Imported, Skipped};

@@ -1,9 +1,9 @@
-//! `camber import`: geometry from another format (DXF) into a sketch file.
+//! `camber import`: geometry from another format (DXF, SVG) into a sketch file.
 
 use std::path::{Path, PathBuf};
 
 use anyhow::{anyhow, bail, Result};
-use camber_interop::{dxf, Imported};
+use camber_interop::{dxf, svg, Imported};
 use clap::Args;
 
 use crate::curve_file::read_bytes;
@@ -11,13 +11,15 @@ use crate::curve_file::read_bytes;
 /// Arguments of `camber import`.
 #[derive(Debug, Args)]
 pub struct ImportArgs {
-    /// The file to import: a DXF file (`.dxf`, text or binary).
+    /// The file to import: a DXF file (`.dxf`, text or binary) or an SVG document (`.svg`:
+    /// its paths and basic shapes, the picture kept upright).
     pub input: PathBuf,
     /// The sketch file to write.
     #[arg(short, long)]
     pub output: PathBuf,
-    /// End points of different entities at most this far apart (drawing units) are joined by
-    /// coincident constraints; 0 joins only equal points, a negative value none.
+    /// DXF: end points of different entities at most this far apart (drawing units) are
+    /// joined by coincident constraints; 0 joins only equal points, a negative value none.
+    /// (SVG joins follow the paths: each segment to the next.)
     #[arg(long, default_value_t = 1e-9, allow_negative_numbers = true)]
     pub join_tolerance: f64,
     /// Fail (and write nothing) when any item of the file is left out.
@@ -29,6 +31,7 @@ pub struct ImportArgs {
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Format {
     Dxf,
+    Svg,
 }
 
 fn format_of(path: &Path) -> Result<Format> {
@@ -38,8 +41,9 @@ fn format_of(path: &Path) -> Result<Format> {
         .unwrap_or_default();
     match ext.as_str() {
         "dxf" => Ok(Format::Dxf),
+        "svg" => Ok(Format::Svg),
         _ => bail!(
-            "{}: unknown input format {:?}: camber import reads .dxf files",
+            "{}: unknown input format {:?}: camber import reads .dxf and .svg files",
             path.display(),
             ext
         ),
@@ -78,6 +82,18 @@ pub fn import(path: &Path, join_tolerance: f64) -> Result<Imported> {
                 ..dxf::ReadOptions::default()
             };
             dxf::read(&bytes, &options).map_err(|e| anyhow!("{}: {e}", path.display()))
+        }
+        Format::Svg => {
+            let text = std::str::from_utf8(&bytes).map_err(|e| {
+                anyhow!(
+                    "{}: not UTF-8 text (at byte {})",
+                    path.display(),
+                    e.valid_up_to()
+                )
+            })?;
+            let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+            svg::import_document(text, &svg::SvgOptions::default())
+                .map_err(|e| anyhow!("{}: {e}", path.display()))
         }
     }
 }
