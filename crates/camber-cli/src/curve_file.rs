@@ -285,6 +285,27 @@ pub fn read_text(path: &Path) -> Result<String> {
 /// # Ok::<(), anyhow::Error>(())
 /// ```
 pub fn read_text_limited(path: &Path, max_bytes: u64) -> Result<String> {
+    let bytes = read_bytes_limited(path, max_bytes)?;
+    let text = String::from_utf8(bytes).map_err(|e| {
+        anyhow!(
+            "{}: not UTF-8 text (at byte {})",
+            path.display(),
+            e.utf8_error().valid_up_to()
+        )
+    })?;
+    Ok(match text.strip_prefix('\u{feff}') {
+        Some(rest) => rest.to_owned(),
+        None => text,
+    })
+}
+
+/// Reads a whole file of at most [`input_limit`] bytes as bytes (a binary DXF file, say).
+pub fn read_bytes(path: &Path) -> Result<Vec<u8>> {
+    read_bytes_limited(path, input_limit())
+}
+
+/// [`read_bytes`] with the limit given, refused as [`read_text_limited`] refuses.
+pub fn read_bytes_limited(path: &Path, max_bytes: u64) -> Result<Vec<u8>> {
     use std::io::Read as _;
     let cannot = |e: std::io::Error| anyhow!("{}: cannot read: {}", path.display(), IoReason(&e));
     let file = std::fs::File::open(path).map_err(cannot)?;
@@ -299,17 +320,7 @@ pub fn read_text_limited(path: &Path, max_bytes: u64) -> Result<String> {
             describe_size(max_bytes)
         );
     }
-    let text = String::from_utf8(bytes).map_err(|e| {
-        anyhow!(
-            "{}: not UTF-8 text (at byte {})",
-            path.display(),
-            e.utf8_error().valid_up_to()
-        )
-    })?;
-    Ok(match text.strip_prefix('\u{feff}') {
-        Some(rest) => rest.to_owned(),
-        None => text,
-    })
+    Ok(bytes)
 }
 
 /// Writes a whole text file; the error names the file and the system's reason.

@@ -20,6 +20,8 @@
 //!   stays readable.
 //! - [`fit()`]: a point file (JSON, columns, Selig or Lednicer) parsed and fitted to a
 //!   tolerance, whole and split at the leading edge; a fit is within its tolerance.
+//! - [`dxf()`]: DXF bytes (text or binary) imported as a sketch, saved and loaded, exported
+//!   and imported again; its documentation lists the promises checked.
 //! - [`svg()`]: SVG path data or a whole document imported into a sketch; every coincident
 //!   join holds as imported and the sketch saves to a file that loads again.
 //! - [`toolkit()`]: one or two curves and some numbers through every curve-toolkit operation
@@ -42,9 +44,11 @@ use crate::editor::EditorState;
 mod expression;
 pub use expression::expression;
 
+mod dxf;
 mod fit;
 mod svg;
 mod toolkit;
+pub use dxf::dxf;
 pub use fit::{fit, FIT_WORK};
 pub use svg::svg;
 pub use toolkit::{toolkit, TOOLKIT_WORK};

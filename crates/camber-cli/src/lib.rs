@@ -27,6 +27,8 @@
 //! camber check SKETCH.json [--json]                     DOF, redundant and conflicting constraints
 //! camber render SKETCH.json -o PIC.svg [--combs]        draw a sketch with constraint glyphs
 //! camber edit SKETCH.json [--port N] [--bind ADDR --allow-remote] [-o OUT.json] [--open]
+//! camber import DRAWING.dxf|PICTURE.svg -o SKETCH.json [--join-tolerance T] [--strict]
+//! camber export SKETCH.json -o DRAWING.dxf [--binary]   a sketch's geometry as DXF
 //! camber demo [-o DIR]                                  solve the bundled blade section
 //! camber bench [--only W2,W3] [--quick] [--sizes N,…] [--json]   the standard workloads
 //! ```
@@ -60,8 +62,8 @@ use anyhow::Result;
 use clap::{Parser, Subcommand};
 
 use commands::{
-    batch, bench as bench_cmd, check, demo, edit, eval, fit, intersect, op, render, render_curve,
-    solve, surface,
+    batch, bench as bench_cmd, check, demo, edit, eval, export, fit, import, intersect, op, render,
+    render_curve, solve, surface,
 };
 
 /// The camber command line: curve files, surface deformation and SVG pictures.
@@ -120,6 +122,11 @@ pub enum Command {
     Bench(bench_cmd::BenchArgs),
     /// Solve every sketch file of a directory in parallel: one JSON line per file.
     Batch(batch::BatchArgs),
+    /// Import a DXF file or an SVG document as a sketch: lines, circles, arcs, ellipses,
+    /// polylines, splines and paths, with their joins; what is left out is listed.
+    Import(import::ImportArgs),
+    /// Export a sketch's geometry as a DXF file (text, or binary with --binary).
+    Export(export::ExportArgs),
 }
 
 /// Which operation works on which curve type, shown under `camber op --help`.
@@ -151,6 +158,8 @@ pub fn run(cli: &Cli) -> Result<()> {
         Command::Demo(a) => demo::run(a),
         Command::Bench(a) => bench_cmd::run(a),
         Command::Batch(a) => batch::run(a),
+        Command::Import(a) => import::run(a),
+        Command::Export(a) => export::run(a),
     }
 }
 

@@ -61,6 +61,18 @@ fn resolve(path: &Path) -> Result<PathBuf> {
 /// An output that is one of `inputs` or appears twice (nothing is written then); a file that
 /// cannot be written (every temporary file is removed and no target changes).
 pub fn write_all(inputs: &[&Path], outputs: &[(PathBuf, String)]) -> Result<()> {
+    write_all_of(inputs, outputs)
+}
+
+/// [`write_all`] for outputs of bytes (a binary DXF file, say).
+///
+/// # Errors
+/// As [`write_all`].
+pub fn write_all_bytes(inputs: &[&Path], outputs: &[(PathBuf, Vec<u8>)]) -> Result<()> {
+    write_all_of(inputs, outputs)
+}
+
+fn write_all_of<C: AsRef<[u8]>>(inputs: &[&Path], outputs: &[(PathBuf, C)]) -> Result<()> {
     let input_files: Vec<PathBuf> = inputs
         .iter()
         .filter_map(|p| std::fs::canonicalize(p).ok())
@@ -92,7 +104,7 @@ pub fn write_all(inputs: &[&Path], outputs: &[(PathBuf, String)]) -> Result<()> 
         }
     };
     for ((path, text), target) in outputs.iter().zip(&targets) {
-        match write_temporary(target, text) {
+        match write_temporary(target, text.as_ref()) {
             Ok(tmp) => written.push(tmp),
             Err(e) => {
                 clean(&written);
@@ -113,9 +125,9 @@ pub fn write_all(inputs: &[&Path], outputs: &[(PathBuf, String)]) -> Result<()> 
     Ok(())
 }
 
-/// Writes `text` to a new temporary file beside `target` (same directory, so the rename is
+/// Writes `text` (bytes) to a new temporary file beside `target` (same directory, so the rename is
 /// atomic), with `target`'s permissions when it exists; returns the temporary path.
-fn write_temporary(target: &Path, text: &str) -> std::result::Result<PathBuf, String> {
+fn write_temporary(target: &Path, text: &[u8]) -> std::result::Result<PathBuf, String> {
     use std::io::Write as _;
     let dir = target.parent().unwrap_or(Path::new("."));
     let name = target
@@ -137,7 +149,7 @@ fn write_temporary(target: &Path, text: &str) -> std::result::Result<PathBuf, St
         }
     };
     let result = file
-        .write_all(text.as_bytes())
+        .write_all(text)
         .and_then(|()| file.sync_all())
         .and_then(|()| match std::fs::metadata(target) {
             Ok(meta) => std::fs::set_permissions(&tmp, meta.permissions()),

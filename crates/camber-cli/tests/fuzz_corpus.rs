@@ -70,6 +70,11 @@ fn toolkit_corpus_replays() {
 }
 
 #[test]
+fn dxf_corpus_replays() {
+    replay("dxf", fuzz_support::dxf);
+}
+
+#[test]
 fn svg_corpus_replays() {
     replay("svg", fuzz_support::svg);
 }

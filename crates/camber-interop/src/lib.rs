@@ -4,6 +4,8 @@
 //! could not bring in ([`Skipped`]), so nothing in a file is ever dropped silently. Importers
 //! and exporters live one format a module.
 
+pub mod dxf;
+mod joins;
 mod report;
 pub mod svg;
 

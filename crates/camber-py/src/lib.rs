@@ -25,6 +25,7 @@ pub mod curve;
 pub mod curve_kinds;
 pub mod curve_ops;
 pub mod custom;
+pub mod dxf;
 pub mod errors;
 pub mod expression;
 pub mod interrupt;
@@ -42,6 +43,8 @@ fn camber_native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     curve_ops::register(m)?;
     sketch::register(m)?;
     m.add_function(wrap_pyfunction!(batch::solve_many, m)?)?;
+    m.add_function(wrap_pyfunction!(dxf::read_dxf, m)?)?;
+    m.add_function(wrap_pyfunction!(dxf::write_dxf, m)?)?;
     m.add_function(wrap_pyfunction!(eval_loop_seconds, m)?)?;
     m.add_function(wrap_pyfunction!(custom::custom_derivatives, m)?)?;
     m.add_function(wrap_pyfunction!(surface::creased_face_case, m)?)?;

@@ -222,6 +222,20 @@ impl Sketch {
         self.inner.constraints().map(|(id, _)| id.0).collect()
     }
 
+    /// Labels an entity with a tag (a free name such as the DXF layer it came from; saved in
+    /// files, never read by a solve), or clears it with `None`.
+    #[pyo3(signature = (id, tag))]
+    fn set_tag(&mut self, id: u64, tag: Option<&str>) -> PyResult<()> {
+        self.inner
+            .set_tag(EntityId(id), tag)
+            .map_err(errors::sketch)
+    }
+
+    /// An entity's tag, `None` when it has none.
+    fn tag(&self, id: u64) -> Option<String> {
+        self.inner.tag(EntityId(id)).map(str::to_owned)
+    }
+
     /// An entity's file form as a dict (`{"kind": "bezier", "control_points": …}`).
     fn entity(&self, py: Python<'_>, id: u64) -> PyResult<Py<PyAny>> {
         let e = self.inner.entity(EntityId(id)).map_err(errors::sketch)?;

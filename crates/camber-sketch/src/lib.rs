@@ -97,7 +97,7 @@ pub use errors::{Error, Result};
 pub use hermite_chain::{HermiteChain, Join};
 pub use ids::{ConstraintId, EntityId, PointRef};
 pub use lookup::EntityLookup;
-pub use sketch::Sketch;
+pub use sketch::{Sketch, MAX_TAG_LEN};
 pub use solve::{ComponentReport, SketchReport};
 pub use vocabulary::{
     CircleSide, Contact, FixTarget, LineSide, Rotation, Sense, TangentForm, Target,

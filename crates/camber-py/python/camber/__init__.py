@@ -29,7 +29,9 @@ from camber._native import (
     deform_case_to_g1,
     fit_to_tolerance,
     interpolate,
+    read_dxf,
     solve_many as _solve_many,
+    write_dxf,
 )
 from camber.reports import SolveReport
 
@@ -48,6 +50,8 @@ def solve_many(items, threads=None, parameters=None):
 
 
 __all__ = [
+    "read_dxf",
+    "write_dxf",
     "ArcLengthMap",
     "BezierCurve",
     "BSplineCurve",

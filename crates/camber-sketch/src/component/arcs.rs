@@ -25,22 +25,24 @@ pub(crate) fn arc_row(arc: EntityId) -> Piece {
     }
 }
 
-/// The arc's sweep changes by at most π in a solve (see the module documentation).
+/// The sweep of an arc, circular or elliptic ([`crate::Entity::sweep`]), changes by at most π
+/// in a solve (see the module documentation).
 #[derive(Debug, Clone, Copy, PartialEq)]
-struct SweepKept {
-    arc: EntityId,
+pub(crate) struct SweepKept {
+    /// The arc.
+    pub(crate) arc: EntityId,
 }
 
 impl SolvedCheck for SweepKept {
     fn verify(&self, state: &SolvedState<'_>) -> Result<()> {
-        let before = state.before.lookup(self.arc)?.as_arc();
-        let after = state.entity(self.arc)?.as_arc();
+        let before = state.before.lookup(self.arc)?.sweep();
+        let after = state.entity(self.arc)?.sweep();
         match (before, after) {
-            (Some(b), Some(a)) if (a.sweep() - b.sweep()).abs() > std::f64::consts::PI => {
+            (Some(b), Some(a)) if (a - b).abs() > std::f64::consts::PI => {
                 Err(Error::ArcTurnedInsideOut {
                     entity: self.arc,
-                    before: b.sweep(),
-                    after: a.sweep(),
+                    before: b,
+                    after: a,
                 })
             }
             _ => Ok(()),

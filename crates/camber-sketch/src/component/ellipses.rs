@@ -6,13 +6,14 @@
 //! angles of S and E, reduced into (0, 2π)), and the rows see only the blocks, so a solve could
 //! carry one end past the other and make the arc its complement on the ellipse. The check
 //! refuses a solve that changes the sweep by more than π, with
-//! [`Error::ArcTurnedInsideOut`]; the sketch is then left as it was.
+//! [`crate::Error::ArcTurnedInsideOut`]; the sketch is then left as it was (the check is
+//! [`super::arcs`]' own, read through [`crate::Entity::sweep`]).
 
 use std::sync::Arc;
 
-use crate::constraints::check::{SolvedCheck, SolvedState};
+use super::arcs::SweepKept;
+use crate::constraints::check::SolvedCheck;
 use crate::constraints::piece::{Piece, Slot};
-use crate::ground::errors::{Error, Result};
 use crate::ground::ids::EntityId;
 
 /// The rows of an elliptic arc: its end `end` (block 2 the start, 3 the end) on its ellipse,
@@ -29,27 +30,4 @@ pub(crate) fn elliptic_arc_rows(arc: EntityId) -> [Piece; 2] {
         check,
     };
     [row(2, Some(Arc::new(SweepKept { arc }))), row(3, None)]
-}
-
-/// The elliptic arc's sweep changes by at most π in a solve.
-#[derive(Debug, Clone, Copy, PartialEq)]
-struct SweepKept {
-    arc: EntityId,
-}
-
-impl SolvedCheck for SweepKept {
-    fn verify(&self, state: &SolvedState<'_>) -> Result<()> {
-        let before = state.before.lookup(self.arc)?.as_elliptic_arc();
-        let after = state.entity(self.arc)?.as_elliptic_arc();
-        match (before, after) {
-            (Some(b), Some(a)) if (a.sweep() - b.sweep()).abs() > std::f64::consts::PI => {
-                Err(Error::ArcTurnedInsideOut {
-                    entity: self.arc,
-                    before: b.sweep(),
-                    after: a.sweep(),
-                })
-            }
-            _ => Ok(()),
-        }
-    }
 }

@@ -16,7 +16,8 @@
 //!
 //! Each constraint kind's file form is its own struct's serde form under its tag
 //! ([`crate::constraints`]): the fields are named as in Rust, so a new kind needs nothing here.
-//! Entities have a file form of their own (private here). Any constraint may carry
+//! Entities have a file form of their own (private here) and may carry `"tag": "NAME"` (see
+//! [`Sketch::set_tag`]). Any constraint may carry
 //! `"priority": P` (0–255; absent means 0, required): see [`Sketch::set_priority`].
 //!
 //! Loading ([`from_json`], [`from_json_with`]) runs in three stages, each reporting its own
@@ -308,6 +309,7 @@ pub fn from_json_with(
         })?;
         sketch
             .add_entity_with_id(EntityId(e.id), entity)
+            .and_then(|id| sketch.set_tag(id, e.tag.as_deref()))
             .map_err(|source| FileError::Entity {
                 id: e.id,
                 kind,
@@ -460,6 +462,16 @@ fn load_entity(i: usize, mut value: Value) -> std::result::Result<RawEntity, Fil
         })?,
         None => return Err(shape(format!("entities[{i}]"), "missing field `id`".into())),
     };
+    let tag = match map.remove("tag") {
+        None => None,
+        Some(Value::String(t)) => Some(t),
+        Some(v) => {
+            return Err(shape(
+                format!("entities[{i}].tag"),
+                format!("expected a tag, a string, found {v}"),
+            ))
+        }
+    };
     let kind = match map.remove("kind") {
         Some(Value::String(k)) => k,
         Some(v) => {
@@ -508,6 +520,7 @@ fn load_entity(i: usize, mut value: Value) -> std::result::Result<RawEntity, Fil
     }
     Ok(RawEntity {
         id,
+        tag,
         shape: shape_of,
     })
 }
@@ -644,6 +657,7 @@ pub fn to_json(sketch: &Sketch) -> std::result::Result<String, FileError> {
         .entities()
         .map(|(id, e)| RawEntity {
             id: id.0,
+            tag: sketch.tag(id).map(str::to_owned),
             shape: RawShape::from_entity(e),
         })
         .collect();

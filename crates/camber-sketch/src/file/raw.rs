@@ -48,6 +48,9 @@ pub(super) struct RawSketch {
 #[derive(Serialize, Deserialize)]
 pub(super) struct RawEntity {
     pub(super) id: u64,
+    /// The entity's tag (`Sketch::set_tag`), written only when there is one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub(super) tag: Option<String>,
     #[serde(flatten)]
     pub(super) shape: RawShape,
 }

@@ -231,6 +231,17 @@ impl Entity {
         }
     }
 
+    /// The sweep (radians, in (0, 2π)) of a circular or elliptic arc, read from its blocks:
+    /// the angle of the end less that of the start, counter-clockwise (parametric angles for
+    /// an elliptic arc); `None` for other entities and for blocks that make no arc.
+    pub fn sweep(&self) -> Option<f64> {
+        match self {
+            Entity::Arc(_) => self.as_arc().map(|a| a.sweep()),
+            Entity::EllipticArc { .. } => self.as_elliptic_arc().map(|a| a.sweep()),
+            _ => None,
+        }
+    }
+
     /// C(s) and C′(s) of a curve entity in f64 through the geometry kernel, a line counting as
     /// the segment (1 − s)·P₀ + s·P₁; `None` for points and circles or s outside the domain.
     ///

@@ -317,6 +317,16 @@ pub enum Error {
         /// The offending weight.
         value: f64,
     },
+    /// An entity tag that is too long or holds a control character.
+    #[error("tag {tag:?} of entity {entity}: {reason}")]
+    InvalidTag {
+        /// The entity.
+        entity: EntityId,
+        /// The offending tag (its first 64 characters when longer).
+        tag: String,
+        /// What is wrong with it.
+        reason: &'static str,
+    },
     /// A number that must be positive (a radius, a distance) is not.
     #[error("{what} {} must be a positive finite number", Readable(*value))]
     NotPositive {

@@ -81,6 +81,8 @@ pub struct Sketch {
     weights: BTreeMap<(EntityId, usize), f64>,
     /// Priority tiers of constraints that may be relaxed; absent = 0 (required).
     priorities: BTreeMap<ConstraintId, Priority>,
+    /// Free labels of entities ([`Sketch::set_tag`]); absent = no tag.
+    tags: BTreeMap<EntityId, String>,
     /// The components compiled and solved by earlier solves, kept with their plans
     /// ([`prepared`]).
     pub(crate) prepared: prepared::Prepared,
@@ -132,6 +134,7 @@ impl Sketch {
             options,
             weights: BTreeMap::new(),
             priorities: BTreeMap::new(),
+            tags: BTreeMap::new(),
             prepared: prepared::Prepared::default(),
             parameters: parameters::Parameters::default(),
         }
@@ -423,8 +426,67 @@ impl Sketch {
         self.prepared.forget_entity(id);
         self.dirty.remove(&id);
         self.weights.retain(|(entity, _), _| *entity != id);
+        self.tags.remove(&id);
         self.revision += 1;
         Ok(e)
+    }
+}
+
+/// The longest entity tag, in bytes.
+pub const MAX_TAG_LEN: usize = 255;
+
+/// # Tags
+impl Sketch {
+    /// Labels an entity with a tag, a free name such as the DXF layer it came from, or clears
+    /// its tag with `None`. Tags are saved in sketch files and never affect a solve.
+    ///
+    /// ```
+    /// use camber_sketch::{Entity, Sketch};
+    /// use nalgebra::Point2;
+    /// let mut s = Sketch::new();
+    /// let line = s.add_entity(Entity::Line([Point2::new(0.0, 0.0), Point2::new(1.0, 0.0)]))?;
+    /// s.set_tag(line, Some("OUTLINE"))?;
+    /// assert_eq!(s.tag(line), Some("OUTLINE"));
+    /// assert!(s.set_tag(line, Some("two\nlines")).is_err());
+    /// s.set_tag(line, None)?;
+    /// assert_eq!(s.tag(line), None);
+    /// # Ok::<(), camber_sketch::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`Error::UnknownEntity`]; [`Error::InvalidTag`] for an empty tag, one longer than
+    /// [`MAX_TAG_LEN`] bytes or one holding a control character. Nothing changes then.
+    pub fn set_tag(&mut self, id: EntityId, tag: Option<&str>) -> Result<()> {
+        if !self.entities.contains_key(&id) {
+            return Err(Error::UnknownEntity { entity: id });
+        }
+        let Some(tag) = tag else {
+            self.tags.remove(&id);
+            return Ok(());
+        };
+        let reason = if tag.is_empty() {
+            Some("a tag is not empty")
+        } else if tag.len() > MAX_TAG_LEN {
+            Some("a tag has at most 255 bytes")
+        } else if tag.chars().any(char::is_control) {
+            Some("a tag holds no control character")
+        } else {
+            None
+        };
+        if let Some(reason) = reason {
+            return Err(Error::InvalidTag {
+                entity: id,
+                tag: tag.chars().take(64).collect(),
+                reason,
+            });
+        }
+        self.tags.insert(id, tag.to_owned());
+        Ok(())
+    }
+
+    /// The tag of an entity ([`Sketch::set_tag`]), `None` when it has none or does not exist.
+    pub fn tag(&self, id: EntityId) -> Option<&str> {
+        self.tags.get(&id).map(String::as_str)
     }
 }
 

@@ -1,0 +1,5 @@
+#!/bin/sh -e
+
+cargo test
+cargo fmt --all -- --check
+cargo clippy --all

@@ -1,0 +1,3 @@
+use crate::DxfError;
+
+pub type DxfResult<T> = Result<T, DxfError>;

@@ -1,0 +1,8 @@
+#[cfg(test)]
+mod encoding;
+
+#[cfg(test)]
+mod integration;
+
+#[cfg(test)]
+mod pointers;
