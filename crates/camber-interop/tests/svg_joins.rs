@@ -128,3 +128,25 @@ fn the_tangent_tolerance_decides_what_is_smooth() {
     let strict = SvgOptions::default().with_tangent_tolerance(1e-4);
     assert_eq!(tags(&import_path(d, &strict).unwrap()), ["coincident"]);
 }
+
+#[test]
+fn a_closed_single_curve_joins_its_end_to_its_own_start() {
+    // A loop: one cubic from (0, 0) back to (0, 0), its end tangents opposite (a corner).
+    let corner = import("M 0 0 C 2 2 -2 2 0 0 Z");
+    assert_eq!(tags(&corner), ["coincident"]);
+    assert!(corner.skipped.is_empty(), "{:?}", corner.skipped);
+    // A teardrop whose ends leave and arrive along one direction: smooth, but no kind joins
+    // a curve to itself, so it is listed.
+    let smooth = import("M 0 0 C 1 0 2 2 0 2 C -2 2 -1 0 0 0 Z");
+    assert_eq!(tags(&smooth), ["g1_join_free", "g1_join_free"]);
+    let looped = import("M 0 0 C 3 0 -3 0 0 0 Z");
+    assert_eq!(tags(&looped), ["coincident"]);
+    assert!(
+        looped
+            .skipped
+            .iter()
+            .any(|s| s.reason.contains("with itself")),
+        "{:?}",
+        looped.skipped
+    );
+}

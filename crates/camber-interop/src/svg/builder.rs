@@ -123,13 +123,14 @@ impl<'a> Builder<'a> {
             }
             placed.push((p, seg));
         }
-        if let (Some((_, close_letter)), Some((last, last_seg)), Some((first, first_seg))) =
-            (sub.closed, placed.last(), placed.first())
-        {
-            let _ = close_letter;
-            let (last, last_seg, first, first_seg) =
-                (last.clone(), *last_seg, first.clone(), *first_seg);
-            self.add_join(item, (&last, last_seg), (&first, first_seg))?;
+        if sub.closed {
+            if let (Some((last, last_seg)), Some((first, first_seg))) =
+                (placed.last(), placed.first())
+            {
+                let (last, last_seg) = (last.clone(), *last_seg);
+                let (first, first_seg) = (first.clone(), *first_seg);
+                self.add_join(item, (&last, last_seg), (&first, first_seg))?;
+            }
         }
         Ok(())
     }

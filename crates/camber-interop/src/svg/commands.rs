@@ -43,8 +43,8 @@ pub(crate) struct Segment {
 pub(crate) struct Subpath {
     /// The segments in drawing order.
     pub(crate) segments: Vec<Segment>,
-    /// The `Z` command's index and letter, when the subpath is closed.
-    pub(crate) closed: Option<(usize, char)>,
+    /// Whether a `Z` closed it.
+    pub(crate) closed: bool,
 }
 
 /// The pen state between commands.
@@ -182,7 +182,7 @@ where
             PathSegment::ClosePath { .. } => {
                 let back = (from != state.start).then_some(Shape::Line([from, state.start]));
                 if let Some(last) = out.last_mut() {
-                    last.closed = Some((index, letter));
+                    last.closed = true;
                 }
                 open = false;
                 back

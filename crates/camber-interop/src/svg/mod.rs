@@ -18,7 +18,7 @@
 //! - `M`/`m` starts a subpath; `L`, `H`, `V` (and `Z` when it draws a side) make
 //!   [`Entity::Line`](camber_sketch::Entity::Line)s; `C`/`S` cubic and `Q`/`T` quadratic
 //!   [`Entity::Bezier`](camber_sketch::Entity::Bezier)s, `S` and `T` reflecting the previous
-//!   control point as SVG says ([`commands`](self) module notes).
+//!   `C`/`S` (`Q`/`T`) control point about the current point, as SVG says.
 //! - `A` becomes a circular arc when its ellipse, after the transform, is round, else an
 //!   elliptic arc; radii of 0 make a line, radii too small to reach both ends are scaled up
 //!   (SVG 1.1 F.6.6), ends at one point draw nothing.
@@ -33,7 +33,7 @@
 //! Consecutive segments of a subpath (and the last and first of a closed one) get a
 //! `coincident` constraint; when their directions of travel agree within
 //! [`SvgOptions::tangent_tolerance`] (default 10⁻³ rad) a G1 kind too, the one that fits the
-//! pair (table in [`joins`](self) notes). A smooth join of a pair no kind fits (a circular
+//! pair (the table is in docs/interop.md, "SVG paths"). A smooth join of a pair no kind fits (a circular
 //! arc with a Bézier or another arc) keeps its coincidence only and is listed in
 //! [`Imported::skipped`](crate::Imported::skipped), so the imported sketch states exactly the
 //! constraints it holds and no invented ones.
