@@ -242,8 +242,11 @@ impl Sketch {
         to_python(py, &entity_to_value(e).map_err(errors::file)?)
     }
 
-    /// A curve entity (or a line, or an arc as its exact NURBS form) as a camber curve object,
-    /// for evaluation and plotting.
+    /// A curve entity as a camber curve object with the same points at the same parameters,
+    /// for evaluation and plotting: a line as a Bézier curve of degree 1, a Hermite curve as
+    /// itself, a composite as the exact cubic B-spline over its segments' Bézier points (on
+    /// [0, n], interior knots three times), an arc, ellipse or elliptic arc as its exact NURBS
+    /// form. Points and circles raise `SketchError`.
     fn curve(&self, py: Python<'_>, id: u64) -> PyResult<Py<PyAny>> {
         let e = self.inner.entity(EntityId(id)).map_err(errors::sketch)?;
         let inner = match e {
@@ -262,6 +265,25 @@ impl Sketch {
                     )))
                 }
             },
+            Entity::Ellipse { .. } | Entity::EllipticArc { .. } => {
+                // `as_ellipse` gives an elliptic arc's whole ellipse too: ask by kind.
+                let nurbs = match (e, e.as_ellipse(), e.as_elliptic_arc()) {
+                    (Entity::EllipticArc { .. }, _, Some(arc)) => arc.to_nurbs(),
+                    (Entity::Ellipse { .. }, Some(ellipse), _) => ellipse.to_nurbs(),
+                    _ => {
+                        return Err(errors::SketchError::new_err(format!(
+                            "entity {id} is an {} whose blocks make no curve",
+                            e.kind_name()
+                        )))
+                    }
+                };
+                AnyCurve::Nurbs2(nurbs.map_err(errors::geometry)?)
+            }
+            Entity::Hermite(chain) => AnyCurve::Hermite2(chain.segment(0).map_err(errors::sketch)?),
+            Entity::Composite(chain) => AnyCurve::BSpline2(
+                camber_geom::BSplineCurve2::try_new(3, chain.knots(), chain.bezier_points())
+                    .map_err(errors::geometry)?,
+            ),
             other => {
                 return Err(errors::SketchError::new_err(format!(
                     "entity {id} is a {}, not a curve",

@@ -13,6 +13,14 @@
 //! (≤ [`ROUNDING_ULPS`]·ε·|I₂|), or whose width can no longer be halved, is *settled*: splitting
 //! it would only measure rounding. The tolerance is clamped to [`floor`] = [`FLOOR_ULPS`]·ε·Λ
 //! (the length is first estimated by the unrefined leaves); the tolerance used is reported.
+//!
+//! **Dips of the speed.** Where C′ passes through or near zero (a cusp, or a curve that turns
+//! back on itself along a line) the speed has a kink or a sharp dip, which a polynomial rule
+//! cannot follow; when the dip lies between a leaf's outermost nodes in both I₁ and I₂, both
+//! rules smooth it over alike and the estimate misses the error. So each piece is also cut at
+//! the local minima of the speed: the sign changes from − to + of g(u) = C′(u)·C″(u) (half the
+//! derivative of |C′|²), found on [`DIP_SAMPLES`] samples per piece and bisected to the last
+//! bits. On each side of such a cut the speed is smooth again.
 
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
@@ -27,6 +35,9 @@ pub(super) const GAUSS_POINTS: usize = 8;
 
 /// A leaf whose estimate is within this many ulps of its value is settled (rounding only).
 pub(super) const ROUNDING_ULPS: f64 = 32.0;
+
+/// Samples of C′·C″ per piece when looking for the minima of the speed.
+pub(super) const DIP_SAMPLES: usize = 32;
 
 /// The smallest tolerance honoured, in ulps of the curve's length.
 pub const FLOOR_ULPS: f64 = 64.0;
@@ -117,6 +128,75 @@ where
         });
     }
     Ok(value)
+}
+
+/// g(u) = C′(u)·C″(u) in f64, half the derivative of the squared speed.
+fn speed_slope<T, const D: usize, C>(curve: &C, u: f64) -> Result<f64>
+where
+    T: Scalar,
+    C: ParametricCurve<T, D> + ?Sized,
+{
+    let mut d = [nalgebra::SVector::<T, D>::zeros(); 3];
+    curve.derivatives_into(cst::<T>(u), &mut d)?;
+    Ok(re(d[1].dot(&d[2])))
+}
+
+/// The interior local minima of the speed on (a, b): where g = C′·C″ changes sign from − to +
+/// between two of [`DIP_SAMPLES`] evenly spaced samples, bisected until the bracket is a few
+/// ulps wide (or lands on a sample where g is 0). Charges every evaluation to `meter`.
+fn speed_minima<T, const D: usize, C>(
+    curve: &C,
+    a: f64,
+    b: f64,
+    meter: &mut Meter<'_>,
+) -> Result<Vec<f64>>
+where
+    T: Scalar,
+    C: ParametricCurve<T, D> + ?Sized,
+{
+    let mut found = Vec::new();
+    if b.partial_cmp(&a) != Some(Ordering::Greater) {
+        return Ok(found);
+    }
+    meter.charge(DIP_SAMPLES as u64 + 1)?;
+    let at = |k: usize| {
+        if k == DIP_SAMPLES {
+            b
+        } else {
+            a + (b - a) * (k as f64 / DIP_SAMPLES as f64)
+        }
+    };
+    let g: Vec<f64> = (0..=DIP_SAMPLES)
+        .map(|k| speed_slope(curve, at(k)))
+        .collect::<Result<_>>()?;
+    for k in 0..DIP_SAMPLES {
+        let (g0, g1) = (g[k], g[k + 1]);
+        if k > 0 && g0 == 0.0 && g[k - 1] < 0.0 && g1 > 0.0 {
+            found.push(at(k));
+        } else if g0 < 0.0 && g1 > 0.0 {
+            let (mut lo, mut hi) = (at(k), at(k + 1));
+            // Each halving costs one evaluation; 64 reach any f64 bracket's last bits.
+            for _ in 0..64 {
+                let mid = 0.5 * (lo + hi);
+                if !(mid > lo && mid < hi) {
+                    break;
+                }
+                meter.charge(1)?;
+                let gm = speed_slope(curve, mid)?;
+                if gm < 0.0 {
+                    lo = mid;
+                } else if gm > 0.0 {
+                    hi = mid;
+                } else {
+                    lo = mid;
+                    hi = mid;
+                    break;
+                }
+            }
+            found.push(0.5 * (lo + hi));
+        }
+    }
+    Ok(found)
 }
 
 /// Checks that a tolerance is finite and positive.
@@ -278,13 +358,23 @@ where
         return Ok(out);
     }
     let nodes = gauss_legendre();
-    let mut cuts = vec![u0];
+    let mut pieces = vec![u0];
     for b in curve.breakpoints() {
-        if b > u0 && b < u1 && cuts.last().is_some_and(|&l| b > l) {
-            cuts.push(b);
+        if b > u0 && b < u1 && pieces.last().is_some_and(|&l| b > l) {
+            pieces.push(b);
         }
     }
-    cuts.push(u1);
+    pieces.push(u1);
+    let mut cuts = vec![u0];
+    for pair in pieces.windows(2) {
+        for m in speed_minima(curve, re(pair[0]), re(pair[1]), meter)? {
+            let m = cst::<T>(m);
+            if cuts.last().is_some_and(|&l| m > l) && m < pair[1] {
+                cuts.push(m);
+            }
+        }
+        cuts.push(pair[1]);
+    }
     let mut leaves: Vec<Leaf<T>> = Vec::with_capacity(cuts.len() - 1);
     for pair in cuts.windows(2) {
         let (a, b) = (pair[0], pair[1]);
