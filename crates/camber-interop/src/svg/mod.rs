@@ -49,11 +49,18 @@ mod errors;
 mod joins;
 mod nesting;
 mod options;
+mod placement;
+mod references;
+mod shapes;
+mod style;
+mod units;
+mod viewport;
 
 pub use document::import_document;
 pub use ellipse_map::CIRCLE_TOLERANCE;
 pub use errors::{Error, Item};
-pub use options::{Orientation, SvgOptions};
+pub use options::{Orientation, SketchUnits, SvgOptions};
+pub use units::{Unit, PX_PER_INCH};
 
 use crate::Imported;
 
