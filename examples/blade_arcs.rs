@@ -17,8 +17,9 @@ use nalgebra::{Point2, Vector2};
 /// The bundled file (examples/sketches/blade_arcs.json).
 pub const BLADE: &str = include_str!("sketches/blade_arcs.json");
 
-/// The leading-edge elliptic arc and the trailing-edge circular arc of the bundled file.
+/// The leading-edge elliptic arc of the bundled file.
 pub const LEADING_EDGE: EntityId = EntityId(1);
+/// The trailing-edge circular arc of the bundled file.
 pub const TRAILING_EDGE: EntityId = EntityId(3);
 
 /// A Bézier side's end point and tangent C′ there, from its control points: C(0) = P₀,
@@ -92,6 +93,7 @@ pub fn check_joints(s: &Sketch) -> Result<(f64, f64, usize), String> {
     Ok((gap, sin, count))
 }
 
+/// Loads the bundled blade, drags its leading edge and checks every joint after each drag.
 pub fn run() -> Result<(), Box<dyn std::error::Error>> {
     let mut sketch = file::from_json(BLADE)?;
     for a in sketch.analyze()? {
