@@ -260,3 +260,38 @@ fn bad_use_offsets_are_typed_errors() {
     let doc = r##"<svg><path id="p" d="M 0 0 L 1 0"/><use href="#p" x="1e308" transform="scale(1e10)"/></svg>"##;
     assert!(import_document(doc, &raw()).is_err());
 }
+
+#[test]
+fn a_use_bomb_of_a_large_hidden_group_costs_no_more_than_its_budget() {
+    // A hidden group of 20,000 paths drawn 10⁵ times: asking 10⁵ times whether it holds
+    // shapes would walk 2·10⁹ elements; it is asked once.
+    let mut doc = String::from(r#"<svg><defs><g id="l0" display="none">"#);
+    for _ in 0..20_000 {
+        doc += r#"<path d="M 0 0 L 1 0"/>"#;
+    }
+    doc += "</g>";
+    for k in 1..=5 {
+        doc += &format!(r#"<g id="l{k}">"#);
+        for _ in 0..10 {
+            doc += &format!(r##"<use href="#l{}"/>"##, k - 1);
+        }
+        doc += "</g>";
+    }
+    doc += r##"</defs><use href="#l5"/></svg>"##;
+    let t = Instant::now();
+    assert!(matches!(
+        import_document(&doc, &raw()),
+        Err(Error::TooManyUseElements { .. })
+    ));
+    assert!(t.elapsed() < Duration::from_secs(5), "{:?}", t.elapsed());
+}
+
+#[test]
+fn definitions_inside_a_drawn_group_are_listed_once() {
+    let doc = r##"<svg><defs><g id="g"><path d="M 0 0 L 1 0"/><defs><circle r="1"/></defs></g></defs>
+      <use href="#g"/><use href="#g" x="5"/></svg>"##;
+    let out = import_document(doc, &raw()).unwrap();
+    assert_eq!(out.sketch.entities().count(), 2);
+    assert_eq!(out.skipped.len(), 1, "{:?}", out.skipped);
+    assert!(out.skipped[0].reason.contains("the 1 shape(s)"));
+}

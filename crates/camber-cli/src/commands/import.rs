@@ -12,7 +12,7 @@ use crate::curve_file::read_bytes;
 #[derive(Debug, Args)]
 pub struct ImportArgs {
     /// The file to import: a DXF file (`.dxf`, text or binary) or an SVG document (`.svg`:
-    /// its paths and basic shapes, the picture kept upright).
+    /// its paths, basic shapes and `use` references, the picture kept upright).
     pub input: PathBuf,
     /// The sketch file to write.
     #[arg(short, long)]

@@ -21,9 +21,10 @@
 //!   nothing (`title`, `desc`, `metadata`, gradients, filters, …) and elements of other
 //!   namespaces (an editor's metadata) are passed over without a note.
 
+use std::collections::{HashMap, HashSet};
 use std::str::FromStr;
 
-use roxmltree::{Document, Node, ParsingOptions};
+use roxmltree::{Document, Node, NodeId, ParsingOptions};
 
 use super::affine::Affine;
 use super::builder::Builder;
@@ -145,6 +146,8 @@ pub fn import_document(svg_text: &str, options: &SvgOptions) -> Result<Imported,
         refs: References::new(&doc),
         options,
         use_elements: 0,
+        draws: HashMap::new(),
+        definitions_listed: HashSet::new(),
         stack: vec![Visit {
             node: root,
             ctm: Affine::identity(),
@@ -204,6 +207,12 @@ struct Walk<'a, 'i, 'o> {
     refs: References<'a, 'i>,
     options: &'o SvgOptions,
     use_elements: usize,
+    /// Whether an element holds something drawn, by element: asked of every `display: none`
+    /// element each time a reference draws it, answered once.
+    draws: HashMap<NodeId, bool>,
+    /// The definitions elements listed already (a reference drawing a group that holds one
+    /// would list it again, and count its shapes again, at every instance).
+    definitions_listed: HashSet<NodeId>,
     stack: Vec<Visit<'a, 'i>>,
 }
 
@@ -237,7 +246,8 @@ impl<'a, 'i> Walk<'a, 'i, '_> {
         }
         let tag = node.tag_name().name();
         if style::display_none(&node) {
-            if draws(&node) {
+            let draws = *self.draws.entry(node.id()).or_insert_with(|| draws(&node));
+            if draws {
                 b.skip(
                     item.to_string(),
                     "display is none: it and what it holds are not drawn".into(),
@@ -292,7 +302,11 @@ impl<'a, 'i> Walk<'a, 'i, '_> {
                 false
             }
             _ if DEFINITIONS.contains(&tag) => {
-                let unreferenced = self.unreferenced_shapes(&node);
+                let unreferenced = if self.definitions_listed.insert(node.id()) {
+                    self.unreferenced_shapes(&node)
+                } else {
+                    0
+                };
                 if unreferenced > 0 {
                     b.skip(
                         item.to_string(),
