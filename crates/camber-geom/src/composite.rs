@@ -47,8 +47,14 @@ use crate::scalar::{cst, from_usize, re, Scalar};
 /// assert!((joint.tangent_angle - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
 /// # Ok::<(), camber_geom::Error>(())
 /// ```
-pub struct CompositeCurve<T: Scalar, const D: usize> {
-    pieces: Vec<Box<dyn ParametricCurve<T, D>>>,
+///
+/// The pieces are boxed trait objects by default; any one curve type `P` may hold them instead
+/// (an enum of the kinds a caller uses), which keeps the chain `Clone`, `Send` and `Sync`
+/// whenever `P` is.
+#[derive(Clone)]
+pub struct CompositeCurve<T: Scalar, const D: usize, P = Box<dyn ParametricCurve<T, D>>> {
+    pieces: Vec<P>,
+    _scalar: std::marker::PhantomData<fn() -> T>,
 }
 
 /// A planar composite curve.
@@ -56,7 +62,7 @@ pub type CompositeCurve2<T> = CompositeCurve<T, 2>;
 /// A spatial composite curve.
 pub type CompositeCurve3<T> = CompositeCurve<T, 3>;
 
-impl<T: Scalar, const D: usize> fmt::Debug for CompositeCurve<T, D> {
+impl<T: Scalar, const D: usize, P> fmt::Debug for CompositeCurve<T, D, P> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.debug_struct("CompositeCurve")
             .field("pieces", &self.pieces.len())
@@ -66,9 +72,9 @@ impl<T: Scalar, const D: usize> fmt::Debug for CompositeCurve<T, D> {
 
 /// # Construction
 impl<T: Scalar, const D: usize> CompositeCurve<T, D> {
-    /// The chain of `pieces` in order. Fails with [`Error::ZeroCount`] for an empty chain and
-    /// with [`Error::InvalidInterval`] / [`Error::NonFinite`] if a piece reports a domain that
-    /// is not a finite interval a < b.
+    /// The chain of boxed `pieces` in order. Fails with [`Error::ZeroCount`] for an empty chain
+    /// and with [`Error::InvalidInterval`] / [`Error::NonFinite`] if a piece reports a domain
+    /// that is not a finite interval a < b.
     ///
     /// ```
     /// use camber_geom::{CompositeCurve, Error};
@@ -76,6 +82,28 @@ impl<T: Scalar, const D: usize> CompositeCurve<T, D> {
     /// assert_eq!(err, Error::ZeroCount { what: "pieces of a composite curve" });
     /// ```
     pub fn try_new(pieces: Vec<Box<dyn ParametricCurve<T, D>>>) -> Result<Self> {
+        Self::try_from_pieces(pieces)
+    }
+}
+
+impl<T: Scalar, const D: usize, P: ParametricCurve<T, D>> CompositeCurve<T, D, P> {
+    /// The chain of `pieces` of one curve type `P` in order, with the checks of
+    /// [`try_new`](CompositeCurve::try_new).
+    ///
+    /// ```
+    /// use camber_geom::{BezierCurve2, CompositeCurve, ParametricCurve};
+    /// use nalgebra::Point2;
+    /// let seg = |a: [f64; 2], b: [f64; 2]| {
+    ///     BezierCurve2::try_new(vec![Point2::from(a), Point2::from(b)])
+    /// };
+    /// let chain = CompositeCurve::try_from_pieces(vec![
+    ///     seg([0.0, 0.0], [1.0, 0.0])?,
+    ///     seg([1.0, 0.0], [1.0, 1.0])?,
+    /// ])?;
+    /// assert_eq!(chain.point(1.5)?, Point2::new(1.0, 0.5));
+    /// # Ok::<(), camber_geom::Error>(())
+    /// ```
+    pub fn try_from_pieces(pieces: Vec<P>) -> Result<Self> {
         if pieces.is_empty() {
             return Err(Error::ZeroCount {
                 what: "pieces of a composite curve",
@@ -85,14 +113,22 @@ impl<T: Scalar, const D: usize> CompositeCurve<T, D> {
             let (a, b) = piece.domain();
             check_interval(a, b)?;
         }
-        Ok(Self { pieces })
+        Ok(Self {
+            pieces,
+            _scalar: std::marker::PhantomData,
+        })
     }
 }
 
-impl<T: Scalar, const D: usize> CompositeCurve<T, D> {
+impl<T: Scalar, const D: usize, P: ParametricCurve<T, D>> CompositeCurve<T, D, P> {
     /// The pieces in order.
-    pub fn pieces(&self) -> &[Box<dyn ParametricCurve<T, D>>] {
+    pub fn pieces(&self) -> &[P] {
         &self.pieces
+    }
+
+    /// The pieces in order, taken out of the chain.
+    pub fn into_pieces(self) -> Vec<P> {
+        self.pieces
     }
 
     /// Number of pieces n (at least 1); the global domain is [0, n].
@@ -105,9 +141,23 @@ impl<T: Scalar, const D: usize> CompositeCurve<T, D> {
         self.pieces.is_empty()
     }
 
-    /// The piece holding global parameter `s` (the right-hand piece at a joint, the last piece
-    /// at s = n), the local parameter u and the scale b_i − a_i. `s` must be in [0, n].
-    fn locate(&self, s: T) -> Option<(&dyn ParametricCurve<T, D>, T, T)> {
+    /// The piece holding global parameter `s` and the piece's own parameter there: (i, u)
+    /// with u = a_i + (s − i)(b_i − a_i), exact at both ends of the piece. At a joint the
+    /// right-hand piece, at s = n the last one.
+    ///
+    /// Fails with [`Error::ParameterOutsideDomain`] or [`Error::NonFinite`] for s outside
+    /// [0, n].
+    pub fn piece_at(&self, s: T) -> Result<(usize, T)> {
+        check_parameter(s, self.domain())?;
+        let (i, u, _) = self.locate(s).ok_or(Error::ZeroCount {
+            what: "pieces of a composite curve",
+        })?;
+        Ok((i, u))
+    }
+
+    /// The piece index, local parameter u and scale b_i − a_i of global parameter `s`, which
+    /// must be in [0, n].
+    fn locate(&self, s: T) -> Option<(usize, T, T)> {
         let last = self.pieces.len().checked_sub(1)?;
         let floor = re(s).floor();
         // s is checked to lie in [0, n], so the floor is a small non-negative integer.
@@ -126,7 +176,7 @@ impl<T: Scalar, const D: usize> CompositeCurve<T, D> {
         } else {
             b - len * (T::one() - t)
         };
-        Some((piece.as_ref(), u, len))
+        Some((i, u, len))
     }
 
     /// The continuity report of every joint, in order (n − 1 reports for n pieces).
@@ -145,7 +195,9 @@ impl<T: Scalar, const D: usize> CompositeCurve<T, D> {
     }
 }
 
-impl<T: Scalar, const D: usize> ParametricCurve<T, D> for CompositeCurve<T, D> {
+impl<T: Scalar, const D: usize, P: ParametricCurve<T, D>> ParametricCurve<T, D>
+    for CompositeCurve<T, D, P>
+{
     /// Each piece's own pieces (exact where the piece has a Bézier form, sampled with
     /// [`sampled_pieces`] where not), moved onto the piece's global interval [i, i + 1].
     fn bezier_enclosure(&self) -> Result<Option<Vec<RationalPiece<D>>>> {
@@ -153,7 +205,7 @@ impl<T: Scalar, const D: usize> ParametricCurve<T, D> for CompositeCurve<T, D> {
         for (i, piece) in self.pieces.iter().enumerate() {
             let local = match piece.bezier_enclosure()? {
                 Some(local) => local,
-                None => sampled_pieces(piece.as_ref())?,
+                None => sampled_pieces(piece)?,
             };
             let (a, b) = piece.domain();
             let (a, b) = (re(a), re(b));
@@ -183,10 +235,10 @@ impl<T: Scalar, const D: usize> ParametricCurve<T, D> for CompositeCurve<T, D> {
 
     fn derivatives_into(&self, s: T, out: &mut [SVector<T, D>]) -> Result<()> {
         check_parameter(s, self.domain())?;
-        let (piece, u, len) = self.locate(s).ok_or(Error::ZeroCount {
+        let (i, u, len) = self.locate(s).ok_or(Error::ZeroCount {
             what: "pieces of a composite curve",
         })?;
-        piece.derivatives_into(u, out)?;
+        self.pieces[i].derivatives_into(u, out)?;
         let mut scale = T::one();
         for d in out.iter_mut().skip(1) {
             scale *= len;

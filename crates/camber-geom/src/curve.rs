@@ -89,6 +89,47 @@ pub trait ParametricCurve<T: Scalar, const D: usize> {
     }
 }
 
+/// A boxed curve is the curve it holds (so chains of boxed trait objects are curves).
+impl<T: Scalar, const D: usize, C: ParametricCurve<T, D> + ?Sized> ParametricCurve<T, D>
+    for Box<C>
+{
+    fn domain(&self) -> (T, T) {
+        (**self).domain()
+    }
+
+    fn derivatives_into(&self, u: T, out: &mut [SVector<T, D>]) -> Result<()> {
+        (**self).derivatives_into(u, out)
+    }
+
+    fn breakpoints(&self) -> Vec<T> {
+        (**self).breakpoints()
+    }
+
+    fn bezier_enclosure(&self) -> Result<Option<Vec<RationalPiece<D>>>> {
+        (**self).bezier_enclosure()
+    }
+
+    fn point(&self, u: T) -> Result<Point<T, D>> {
+        (**self).point(u)
+    }
+
+    fn derivative(&self, u: T) -> Result<SVector<T, D>> {
+        (**self).derivative(u)
+    }
+
+    fn point_and_derivative(&self, u: T) -> Result<(Point<T, D>, SVector<T, D>)> {
+        (**self).point_and_derivative(u)
+    }
+
+    fn second_order(&self, u: T) -> Result<[SVector<T, D>; 3]> {
+        (**self).second_order(u)
+    }
+
+    fn derivatives(&self, u: T, order: usize) -> Result<Vec<SVector<T, D>>> {
+        (**self).derivatives(u, order)
+    }
+}
+
 /// The highest derivative order [`ParametricCurve::derivatives`] computes. Above a polynomial
 /// curve's degree every derivative is zero, and a rational curve's high derivatives leave the
 /// f64 range long before this order (they grow like k!).

@@ -290,3 +290,42 @@ proptest! {
         prop_assert!(j.position_gap < 1e-12 && j.second_derivative_mismatch < 1e-12);
     }
 }
+
+#[test]
+fn piece_at_names_the_piece_and_its_own_parameter() {
+    // Pieces on [0, 0.5] and [0.5, 2]: s = 1.5 is u = 0.5 + 1.5 · 0.5 = 1.25 on piece 1.
+    let c = chain(vec![poly(&CUBIC, (0.0, 0.5)), poly(&CUBIC, (0.5, 2.0))]);
+    assert_eq!(c.piece_at(0.0).unwrap(), (0, 0.0));
+    assert_eq!(c.piece_at(0.5).unwrap(), (0, 0.25));
+    assert_eq!(c.piece_at(1.0).unwrap(), (1, 0.5));
+    assert_eq!(c.piece_at(1.5).unwrap(), (1, 1.25));
+    assert_eq!(c.piece_at(2.0).unwrap(), (1, 2.0));
+    assert!(matches!(
+        c.piece_at(2.5),
+        Err(Error::ParameterOutsideDomain { .. })
+    ));
+    assert!(c.piece_at(f64::NAN).is_err());
+}
+
+#[test]
+fn a_chain_of_one_concrete_piece_type_is_cloneable_and_shareable_across_threads() {
+    use camber_geom::BezierCurve2;
+    fn send_sync<T: Send + Sync + Clone>(_: &T) {}
+    let seg = |a: [f64; 2], b: [f64; 2]| {
+        BezierCurve2::try_new(vec![Point2::from(a), Point2::from(b)]).unwrap()
+    };
+    let c: CompositeCurve<f64, 2, BezierCurve2<f64>> = CompositeCurve::try_from_pieces(vec![
+        seg([0.0, 0.0], [1.0, 0.0]),
+        seg([1.0, 0.0], [1.0, 2.0]),
+    ])
+    .unwrap();
+    send_sync(&c);
+    let copy = c.clone();
+    let p = std::thread::scope(|scope| scope.spawn(|| copy.point(1.25)).join().unwrap()).unwrap();
+    assert_abs_diff_eq!(p, Point2::new(1.0, 0.5), epsilon = 1e-15);
+    assert_eq!(c.pieces().len(), 2);
+    assert_eq!(
+        c.into_pieces()[1].control_points()[1],
+        Point2::new(1.0, 2.0)
+    );
+}

@@ -1,7 +1,8 @@
 //! The curve classes: a base class `Curve` holding any camber-geom curve in 2 or 3 dimensions,
 //! with evaluation vectorised over numpy arrays of parameters (the GIL released during the
 //! loop) and the queries; the subclasses `BezierCurve`, `BSplineCurve`, `NurbsCurve` and
-//! `HermiteCurve` (module `curve_kinds`) add construction and each kind's operations.
+//! `HermiteCurve` (module `curve_kinds`) and `CompositeCurve` (module `composite`) add
+//! construction and each kind's operations.
 
 use camber_geom::queries::{
     closest_point, curvature, distance_to_circle, distance_to_line, intersect_circle,
@@ -18,6 +19,7 @@ use pyo3::types::PyTuple;
 use pyo3::IntoPyObjectExt;
 
 use crate::arrays::{points, points_array, refuse_complex, rows_array, vector, Params, RealArray2};
+use crate::composite::Chain;
 use crate::errors::{geometry, input};
 
 /// Any curve the package handles, in the plane or in space.
@@ -39,6 +41,10 @@ pub enum AnyCurve {
     Hermite2(HermiteCurve<f64, 2>),
     /// A spatial cubic Hermite curve.
     Hermite3(HermiteCurve<f64, 3>),
+    /// A planar chain of curves under one global parameter.
+    Composite2(Chain<2>),
+    /// A spatial chain of curves under one global parameter.
+    Composite3(Chain<3>),
 }
 
 /// Runs `$body` with `$c` bound to the concrete curve, whatever its kind and dimension.
@@ -53,6 +59,8 @@ macro_rules! each {
             $crate::curve::AnyCurve::Nurbs3($c) => $body,
             $crate::curve::AnyCurve::Hermite2($c) => $body,
             $crate::curve::AnyCurve::Hermite3($c) => $body,
+            $crate::curve::AnyCurve::Composite2($c) => $body,
+            $crate::curve::AnyCurve::Composite3($c) => $body,
         }
     };
 }
@@ -68,6 +76,7 @@ pub fn planar<'a>(
         AnyCurve::BSpline2(c) => c,
         AnyCurve::Nurbs2(c) => c,
         AnyCurve::Hermite2(c) => c,
+        AnyCurve::Composite2(c) => c,
         _ => return Err(input(format!("{what} needs a planar curve (2 columns)"))),
     })
 }
@@ -79,7 +88,8 @@ impl AnyCurve {
             AnyCurve::Bezier2(_)
             | AnyCurve::BSpline2(_)
             | AnyCurve::Nurbs2(_)
-            | AnyCurve::Hermite2(_) => 2,
+            | AnyCurve::Hermite2(_)
+            | AnyCurve::Composite2(_) => 2,
             _ => 3,
         }
     }
@@ -95,6 +105,8 @@ impl AnyCurve {
             AnyCurve::Nurbs3(c) => AnyCurve::Nurbs3(c.reversed()),
             AnyCurve::Hermite2(c) => AnyCurve::Hermite2(c.reversed()),
             AnyCurve::Hermite3(c) => AnyCurve::Hermite3(c.reversed()),
+            AnyCurve::Composite2(c) => AnyCurve::Composite2(c.reversed()),
+            AnyCurve::Composite3(c) => AnyCurve::Composite3(c.reversed()),
         }
     }
 }
@@ -163,6 +175,7 @@ fn spatial<'a>(
         AnyCurve::BSpline3(c) => c,
         AnyCurve::Nurbs3(c) => c,
         AnyCurve::Hermite3(c) => c,
+        AnyCurve::Composite3(c) => c,
         _ => {
             return Err(input(format!(
                 "{what}: the point's dimension is not the curve's"
@@ -237,7 +250,7 @@ fn intersections<'py>(
 }
 
 /// A parametric curve (base class of `BezierCurve`, `BSplineCurve`, `NurbsCurve`,
-/// `HermiteCurve`): evaluation, derivatives, curvature and queries.
+/// `HermiteCurve`, `CompositeCurve`): evaluation, derivatives, curvature and queries.
 ///
 /// Evaluation methods take one parameter (a float) or many (a 1-D array) and loop in Rust with
 /// the GIL released: `curve.evaluate(np.linspace(0, 1, 10**6))` returns a (10⁶, d) array.

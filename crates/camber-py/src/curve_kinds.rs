@@ -11,6 +11,7 @@ use pyo3::IntoPyObjectExt;
 use serde::de::DeserializeOwned;
 
 use crate::arrays::{columns, points, points_array, vector, RealArray2};
+use crate::composite::CompositeCurve_;
 use crate::curve::{AnyCurve, Curve};
 use crate::curve_ops::{continuity as ext_continuity, curve_end};
 use crate::errors::{geometry, input};
@@ -22,6 +23,7 @@ pub fn class_name(c: &AnyCurve) -> &'static str {
         AnyCurve::BSpline2(_) | AnyCurve::BSpline3(_) => "BSplineCurve",
         AnyCurve::Nurbs2(_) | AnyCurve::Nurbs3(_) => "NurbsCurve",
         AnyCurve::Hermite2(_) | AnyCurve::Hermite3(_) => "HermiteCurve",
+        AnyCurve::Composite2(_) | AnyCurve::Composite3(_) => "CompositeCurve",
     }
 }
 
@@ -33,6 +35,7 @@ pub fn wrap(py: Python<'_>, inner: AnyCurve) -> PyResult<Py<PyAny>> {
         "BezierCurve" => Py::new(py, base.add_subclass(BezierCurve_))?.into_py_any(py),
         "BSplineCurve" => Py::new(py, base.add_subclass(BSplineCurve_))?.into_py_any(py),
         "NurbsCurve" => Py::new(py, base.add_subclass(NurbsCurve_))?.into_py_any(py),
+        "CompositeCurve" => Py::new(py, base.add_subclass(CompositeCurve_))?.into_py_any(py),
         _ => Py::new(py, base.add_subclass(HermiteCurve_))?.into_py_any(py),
     }
 }
@@ -52,6 +55,8 @@ fn control_points_of<'py>(py: Python<'py>, c: &AnyCurve) -> Bound<'py, PyArray2<
         AnyCurve::Nurbs3(c) => points_array(py, c.control_points()),
         AnyCurve::Hermite2(c) => points_array(py, &[c.p0(), c.p1()]),
         AnyCurve::Hermite3(c) => points_array(py, &[c.p0(), c.p1()]),
+        AnyCurve::Composite2(c) => points_array(py, &c.control_points()),
+        AnyCurve::Composite3(c) => points_array(py, &c.control_points()),
     }
 }
 
@@ -689,5 +694,6 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<BSplineCurve_>()?;
     m.add_class::<NurbsCurve_>()?;
     m.add_class::<HermiteCurve_>()?;
+    m.add_class::<CompositeCurve_>()?;
     Ok(())
 }

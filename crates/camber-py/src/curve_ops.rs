@@ -164,6 +164,7 @@ fn pieces2(c: &AnyCurve) -> Option<&(dyn BezierPieces<2> + Sync)> {
         AnyCurve::BSpline2(c) => c,
         AnyCurve::Nurbs2(c) => c,
         AnyCurve::Hermite2(c) => c,
+        AnyCurve::Composite2(c) => c,
         _ => return None,
     })
 }
@@ -175,6 +176,7 @@ fn pieces3(c: &AnyCurve) -> Option<&(dyn BezierPieces<3> + Sync)> {
         AnyCurve::BSpline3(c) => c,
         AnyCurve::Nurbs3(c) => c,
         AnyCurve::Hermite3(c) => c,
+        AnyCurve::Composite3(c) => c,
         _ => return None,
     })
 }

@@ -21,6 +21,7 @@
 
 pub mod arrays;
 pub mod batch;
+pub mod composite;
 pub mod curve;
 pub mod curve_kinds;
 pub mod curve_ops;

@@ -10,8 +10,9 @@
 //! | line or Bézier, line or Bézier | `g1_join_free` (its rows include the coincidence)        |
 //! | circular arc, line             | `coincident` + `arc_tangent_to_line`                     |
 //! | elliptic arc, line             | `coincident` + `elliptic_arc_tangent_to_line`            |
+//! | circular arc, Bézier           | `coincident` + `arc_tangent_to_curve`                    |
 //! | elliptic arc, Bézier           | `coincident` + `elliptic_arc_tangent_to_curve`           |
-//! | circular arc, Bézier or arc; elliptic arc, arc; a segment closing on itself | `coincident` only, and a note in `skipped`: no kind holds that tangency |
+//! | arc, arc (circular or elliptic); a segment closing on itself | `coincident` only, and a note in `skipped`: no kind holds that tangency |
 //!
 //! A join where a Bézier's end derivative vanishes (an end control point doubled) has no
 //! direction to keep and gets its coincidence only. The sense of each tangency is read from
@@ -20,7 +21,8 @@
 
 use camber_sketch::constraints::arc_tangent_to_line::ArcEnd;
 use camber_sketch::constraints::{
-    ArcTangentToLine, Coincident, EllipticArcTangentToCurve, EllipticArcTangentToLine, G1JoinFree,
+    ArcTangentToCurve, ArcTangentToLine, Coincident, EllipticArcTangentToCurve,
+    EllipticArcTangentToLine, G1JoinFree,
 };
 use camber_sketch::{Constraint, Entity, EntityId, PointRef, Sense};
 use nalgebra::{Point2, Vector2};
@@ -229,21 +231,32 @@ pub(crate) fn join(first: &Placed, second: &Placed, tangent_tolerance: f64) -> J
                 .into(),
             )
         }
-        (Kind::Elliptic, Kind::Curve) | (Kind::Curve, Kind::Elliptic) => {
-            let (arc, arc_at_end, curve, curve_at_end) = arc_pair(k1 == Kind::Elliptic);
-            Some(
+        (Kind::Arc | Kind::Elliptic, Kind::Curve) | (Kind::Curve, Kind::Arc | Kind::Elliptic) => {
+            let (arc, arc_at_end, curve, curve_at_end) = arc_pair(k2 == Kind::Curve);
+            let (end, curve_end) = (arc.end(arc_at_end), curve.end(curve_at_end));
+            let sense = sense(
+                arc.own_tangent(arc_at_end)
+                    .dot(&curve.own_tangent(curve_at_end)),
+            );
+            Some(if matches!(arc.entity, Entity::Arc(_)) {
+                ArcTangentToCurve {
+                    arc: arc.id,
+                    end,
+                    curve: curve.id,
+                    curve_end,
+                    sense,
+                }
+                .into()
+            } else {
                 EllipticArcTangentToCurve {
                     arc: arc.id,
-                    end: arc.end(arc_at_end),
+                    end,
                     curve: curve.id,
-                    curve_end: curve.end(curve_at_end),
-                    sense: sense(
-                        arc.own_tangent(arc_at_end)
-                            .dot(&curve.own_tangent(curve_at_end)),
-                    ),
+                    curve_end,
+                    sense,
                 }
-                .into(),
-            )
+                .into()
+            })
         }
         _ => None,
     };

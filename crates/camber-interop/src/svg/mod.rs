@@ -40,8 +40,8 @@
 //! Consecutive segments of a subpath (and the last and first of a closed one) get a
 //! `coincident` constraint; when their directions of travel agree within
 //! [`SvgOptions::tangent_tolerance`] (default 10⁻³ rad) a G1 kind too, the one that fits the
-//! pair (the table is in docs/interop.md, "SVG paths"). A smooth join of a pair no kind fits (a circular
-//! arc with a Bézier or another arc) keeps its coincidence only and is listed in
+//! pair (the table is in docs/interop.md, "SVG paths"). A smooth join of a pair no kind fits (an
+//! arc with another arc) keeps its coincidence only and is listed in
 //! [`Imported::skipped`](crate::Imported::skipped), so the imported sketch states exactly the
 //! constraints it holds and no invented ones.
 

@@ -1,6 +1,6 @@
 """camber: geometric constraints on parametric curves, from Python.
 
-Curves (Bézier, B-spline, NURBS, Hermite) from numpy arrays with vectorised evaluation,
+Curves (Bézier, B-spline, NURBS, Hermite, and composite chains of them) from numpy arrays with vectorised evaluation,
 sketches with every constraint kind, solve reports with per-constraint residuals, the DOF
 analysis, drag sessions, iterative displacement, custom constraints differentiated exactly
 with dual numbers, and batch solving in parallel. Curve operations: arc length and the
@@ -14,6 +14,7 @@ from camber._native import (
     BezierCurve,
     BSplineCurve,
     CamberError,
+    CompositeCurve,
     Curve,
     DragSession,
     FileError,
@@ -56,6 +57,7 @@ __all__ = [
     "BezierCurve",
     "BSplineCurve",
     "CamberError",
+    "CompositeCurve",
     "Curve",
     "DragSession",
     "FileError",

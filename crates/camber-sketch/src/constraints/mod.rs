@@ -369,6 +369,8 @@ kinds! {
     PointOnArc => point_on_arc::PointOnArc,
     /// An arc's tangent at one end along a line entity.
     ArcTangentToLine => arc_tangent_to_line::ArcTangentToLine,
+    /// An arc's travel at one end along a curve's tangent at one of its ends.
+    ArcTangentToCurve => arc_tangent_to_curve::ArcTangentToCurve,
     /// A point on an ellipse or an elliptic arc (within its sweep).
     PointOnEllipse => point_on_ellipse::PointOnEllipse,
     /// One semi-axis of an ellipse or elliptic arc.
