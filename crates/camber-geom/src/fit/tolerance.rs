@@ -20,7 +20,7 @@
 //!
 //! Interpolation is the answer only when the knots would be as many as the data carry.
 
-use std::cell::{Cell, RefCell};
+use std::cell::RefCell;
 
 use nalgebra::Point;
 
@@ -117,9 +117,6 @@ pub(crate) struct Problem<'a, T: Scalar, const D: usize> {
     measure: ErrorMeasure,
     /// Charged per trial: one unit per data point and least-squares solve or foot-point pass.
     meter: RefCell<Meter<'a>>,
-    /// The least span error the error densities count (length units): 0 for a fit with a given
-    /// count, [`TOLERANCE_FLOOR`]·τ while fitting to the tolerance τ.
-    floor: Cell<f64>,
 }
 
 impl<'a, T: Scalar, const D: usize> Problem<'a, T, D> {
@@ -141,7 +138,6 @@ impl<'a, T: Scalar, const D: usize> Problem<'a, T, D> {
             ends,
             measure,
             meter: RefCell::new(budget.meter("fitting", default_limit(points.len()))),
-            floor: Cell::new(0.0),
         }
     }
 
@@ -239,20 +235,16 @@ impl<'a, T: Scalar, const D: usize> Problem<'a, T, D> {
         })
     }
 
-    /// The best trial with `count` interior knots spread by the error density of `guide`.
-    fn spread(&self, count: usize, guide: &Trial<T, D>) -> Result<Trial<T, D>> {
+    /// The best trial with `count` interior knots spread by the error density of `guide`, every
+    /// span counted as erring `floor` at least (length units; [`TOLERANCE_FLOOR`]·τ while
+    /// fitting to the tolerance τ, 0 for the best fit of a given count).
+    fn spread(&self, count: usize, guide: &Trial<T, D>, floor: f64) -> Result<Trial<T, D>> {
         let n = self.points.len();
-        let density = Density::from_errors(
-            &guide.interior,
-            &guide.errors,
-            self.degree,
-            self.floor.get(),
-        );
+        let density = Density::from_errors(&guide.interior, &guide.errors, self.degree, floor);
         let knots = separate(&density.equidistribute(count), n, self.degree);
         let mut best = self.trial(knots)?;
         for _ in 0..RESPREADS {
-            let density =
-                Density::from_errors(&best.interior, &best.errors, self.degree, self.floor.get());
+            let density = Density::from_errors(&best.interior, &best.errors, self.degree, floor);
             let knots = separate(&density.equidistribute(count), n, self.degree);
             let next = self.trial(knots)?;
             if next.max_error < best.max_error {
@@ -270,7 +262,7 @@ impl<'a, T: Scalar, const D: usize> Problem<'a, T, D> {
         let count = interior.len();
         let mut best = self.trial(interior)?;
         for _ in 0..ADAPTIVE_ROUNDS {
-            let next = self.spread(count, &best)?;
+            let next = self.spread(count, &best, 0.0)?;
             if next.max_error < best.max_error {
                 best = next;
             } else {
@@ -344,7 +336,7 @@ impl<'a, T: Scalar, const D: usize> Problem<'a, T, D> {
     pub fn fit_to_tolerance(&self, tolerance: f64) -> Result<Trial<T, D>> {
         let p = self.degree;
         let limit = max_interior(self.points.len(), p);
-        self.floor.set(TOLERANCE_FLOOR * tolerance);
+        let floor = TOLERANCE_FLOOR * tolerance;
         // Refinement up to a feasible count.
         let mut interior: Vec<f64> = Vec::new();
         let feasible = loop {
@@ -361,7 +353,7 @@ impl<'a, T: Scalar, const D: usize> Problem<'a, T, D> {
                 // above the tolerance near interpolation). The count grows by at least an
                 // eighth instead, knots spread by the error density, so the refinement
                 // reaches the largest count in O(log m) trials, not one per knot or two.
-                let density = Density::from_errors(&t.interior, &t.errors, p, self.floor.get());
+                let density = Density::from_errors(&t.interior, &t.errors, p, floor);
                 next = separate(&density.equidistribute(least), self.points.len(), p);
             }
             if t.knot_count() >= limit || next.len() <= t.knot_count() {
@@ -392,12 +384,12 @@ impl<'a, T: Scalar, const D: usize> Problem<'a, T, D> {
         // succeeds; then bisection between the largest failed count and the best.
         let mut failed: Option<usize> = None;
         for _ in 0..PREDICTIONS {
-            let density = Density::from_errors(&best.interior, &best.errors, p, self.floor.get());
+            let density = Density::from_errors(&best.interior, &best.errors, p, floor);
             let guess = density.predicted_count(tolerance, p);
             if guess >= best.knot_count() || failed.is_some_and(|f| guess <= f) {
                 break;
             }
-            let t = self.spread(guess, &best)?;
+            let t = self.spread(guess, &best, floor)?;
             if t.max_error <= tolerance {
                 best = t;
             } else {
@@ -408,7 +400,7 @@ impl<'a, T: Scalar, const D: usize> Problem<'a, T, D> {
         let mut lo = failed.map_or(0, |f| f + 1);
         while lo < best.knot_count() {
             let mid = lo + (best.knot_count() - lo) / 2;
-            let t = self.spread(mid, &best)?;
+            let t = self.spread(mid, &best, floor)?;
             if t.max_error <= tolerance && t.knot_count() < best.knot_count() {
                 best = t;
             } else {
