@@ -27,7 +27,7 @@
 //! camber check SKETCH.json [--json]                     DOF, redundant and conflicting constraints
 //! camber render SKETCH.json -o PIC.svg [--combs]        draw a sketch with constraint glyphs
 //! camber edit SKETCH.json [--port N] [--bind ADDR --allow-remote] [-o OUT.json] [--open]
-//! camber import DRAWING.dxf|PICTURE.svg -o SKETCH.json [--join-tolerance T] [--strict]
+//! camber import DRAWING.dxf|PICTURE.svg -o SKETCH.json [--join-tolerance T] [--svg-units U] [--strict]
 //! camber export SKETCH.json -o DRAWING.dxf [--binary]   a sketch's geometry as DXF
 //! camber demo [-o DIR]                                  solve the bundled blade section
 //! camber bench [--only W2,W3] [--quick] [--sizes N,…] [--json]   the standard workloads

@@ -166,3 +166,53 @@ fn an_svg_document_imports_with_its_joins() {
         .stderr(predicate::str::contains("skipped:").and(predicate::str::contains("text")));
     camber().arg("check").arg(&out).assert().success();
 }
+
+#[test]
+fn an_svg_in_millimetres_imports_in_user_units_or_millimetres() {
+    let dir = tempfile::tempdir().unwrap();
+    let svg = dir.path().join("plate.svg");
+    // 100 mm × 50 mm drawn in a 200 × 100 viewBox: the line to (200, 100) ends at (100, −50) mm
+    // upright.
+    std::fs::write(
+        &svg,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="50mm" viewBox="0 0 200 100"><line x1="0" y1="0" x2="200" y2="100"/></svg>"#,
+    )
+    .unwrap();
+    let line_end = |units: &str| {
+        let out = dir.path().join(format!("{units}.json"));
+        camber()
+            .arg("import")
+            .arg(&svg)
+            .arg("-o")
+            .arg(&out)
+            .arg("--svg-units")
+            .arg(units)
+            .assert()
+            .success()
+            .stdout(predicate::str::contains("imported 1 entities"));
+        let sketch =
+            camber_sketch::file::from_json(&std::fs::read_to_string(&out).unwrap()).unwrap();
+        let (_, line) = sketch.entities().next().unwrap();
+        line.points()[1]
+    };
+    let user = line_end("user");
+    assert!(
+        (user - nalgebra::Point2::new(200.0, -100.0)).norm() < 1e-12,
+        "{user}"
+    );
+    let mm = line_end("mm");
+    assert!(
+        (mm - nalgebra::Point2::new(100.0, -50.0)).norm() < 1e-12,
+        "{mm}"
+    );
+    camber()
+        .arg("import")
+        .arg(&svg)
+        .arg("-o")
+        .arg(dir.path().join("x.json"))
+        .arg("--svg-units")
+        .arg("furlong")
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("furlong"));
+}

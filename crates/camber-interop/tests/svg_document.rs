@@ -69,7 +69,7 @@ fn a_rect_with_one_radius_uses_it_for_both_and_clamps_it_to_half_a_side() {
 
 #[test]
 fn what_is_not_imported_is_listed_with_its_element() {
-    let doc = "<svg xmlns=\"http://www.w3.org/2000/svg\">\n<text>a</text>\n<image href=\"x.png\"/>\n<use href=\"#p\"/>\n<defs><path id=\"p\" d=\"M 0 0 L 1 1\"/></defs>\n<svg viewBox=\"0 0 1 1\"><path d=\"M 0 0 L 1 1\"/></svg>\n<path id=\"empty\"/>\n<rect width=\"2mm\" height=\"1\"/>\n<circle r=\"0\"/>\n<g transform=\"scale(0)\"><path d=\"M 0 0 L 1 1\"/></g>\n<blink/>\n<title>not listed</title>\n</svg>";
+    let doc = "<svg xmlns=\"http://www.w3.org/2000/svg\">\n<text>a</text>\n<image href=\"x.png\"/>\n<use href=\"#nowhere\"/>\n<defs><path id=\"p\" d=\"M 0 0 L 1 1\"/></defs>\n<svg viewBox=\"0 0 1 1\"><path d=\"M 0 0 L 1 1\"/></svg>\n<path id=\"empty\"/>\n<rect width=\"2em\" height=\"1\"/>\n<circle r=\"0\"/>\n<g transform=\"scale(0)\"><path d=\"M 0 0 L 1 1\"/></g>\n<blink/>\n<title>not listed</title>\n</svg>";
     let out = import_document(doc, &raw()).unwrap();
     assert_eq!(out.sketch.entities().count(), 0);
     let places: Vec<&str> = out.skipped.iter().map(|s| s.location.as_str()).collect();
@@ -93,7 +93,17 @@ fn what_is_not_imported_is_listed_with_its_element() {
         "{}",
         out.skipped[3]
     );
-    assert!(out.skipped[6].reason.contains("unit"), "{}", out.skipped[6]);
+    assert!(
+        out.skipped[2].reason.contains("nowhere"),
+        "{}",
+        out.skipped[2]
+    );
+    assert!(
+        out.skipped[4].reason.contains("not known"),
+        "{}",
+        out.skipped[4]
+    );
+    assert!(out.skipped[6].reason.contains("em"), "{}", out.skipped[6]);
     assert!(
         out.skipped[8].reason.contains("singular"),
         "{}",

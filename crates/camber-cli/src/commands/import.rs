@@ -12,7 +12,7 @@ use crate::curve_file::read_bytes;
 #[derive(Debug, Args)]
 pub struct ImportArgs {
     /// The file to import: a DXF file (`.dxf`, text or binary) or an SVG document (`.svg`:
-    /// its paths and basic shapes, the picture kept upright).
+    /// its paths, basic shapes and `use` references, the picture kept upright).
     pub input: PathBuf,
     /// The sketch file to write.
     #[arg(short, long)]
@@ -22,9 +22,24 @@ pub struct ImportArgs {
     /// (SVG joins follow the paths: each segment to the next.)
     #[arg(long, default_value_t = 1e-9, allow_negative_numbers = true)]
     pub join_tolerance: f64,
+    /// SVG: the sketch's units: `user` (the default: the root's user units, the numbers
+    /// written in the file) or a physical unit, `mm`, `cm`, `in`, `pt`, `pc` or `px` (the
+    /// root's viewBox placed on its width × height, at 96 px per inch).
+    #[arg(long, default_value = "user", value_parser = parse_svg_units)]
+    pub svg_units: svg::SketchUnits,
     /// Fail (and write nothing) when any item of the file is left out.
     #[arg(long)]
     pub strict: bool,
+}
+
+/// `user` or a unit's symbol.
+fn parse_svg_units(text: &str) -> Result<svg::SketchUnits, String> {
+    if text == "user" {
+        return Ok(svg::SketchUnits::User);
+    }
+    svg::Unit::from_symbol(text)
+        .map(svg::SketchUnits::Physical)
+        .ok_or_else(|| format!("{text:?} is not user, mm, cm, in, pt, pc or px"))
 }
 
 /// The input formats `camber import` reads, by file extension.
@@ -53,7 +68,7 @@ fn format_of(path: &Path) -> Result<Format> {
 /// Imports the file, writes the sketch, lists what was left out on stderr and prints a
 /// summary line on stdout.
 pub fn run(args: &ImportArgs) -> Result<()> {
-    let imported = import(&args.input, args.join_tolerance)?;
+    let imported = import(&args.input, args.join_tolerance, args.svg_units)?;
     for s in &imported.skipped {
         eprintln!("skipped: {}: {s}", args.input.display());
     }
@@ -68,11 +83,11 @@ pub fn run(args: &ImportArgs) -> Result<()> {
     crate::print_stdout(&summary(&imported))
 }
 
-/// Reads and imports one file.
+/// Reads and imports one file (`svg_units` for an SVG document).
 ///
 /// # Errors
 /// An unknown extension, an unreadable or malformed file; messages start with the file name.
-pub fn import(path: &Path, join_tolerance: f64) -> Result<Imported> {
+pub fn import(path: &Path, join_tolerance: f64, svg_units: svg::SketchUnits) -> Result<Imported> {
     let format = format_of(path)?;
     let bytes = read_bytes(path)?;
     match format {
@@ -92,7 +107,7 @@ pub fn import(path: &Path, join_tolerance: f64) -> Result<Imported> {
                 )
             })?;
             let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-            svg::import_document(text, &svg::SvgOptions::default())
+            svg::import_document(text, &svg::SvgOptions::default().with_units(svg_units))
                 .map_err(|e| anyhow!("{}: {e}", path.display()))
         }
     }

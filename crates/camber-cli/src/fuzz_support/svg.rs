@@ -1,24 +1,31 @@
 //! The svg fuzz target: bytes → SVG import (a document when the text starts with `<`, path
-//! data otherwise).
+//! data otherwise; a document both in user units and in millimetres).
 //!
 //! The promises checked are listed on [`svg`].
 
-use camber_interop::svg::{import_document, import_path, SvgOptions};
+use camber_interop::svg::{import_document, import_path, SketchUnits, SvgOptions, Unit};
+use camber_interop::Imported;
 use camber_sketch::Constraint;
 
 use super::{reloads, text};
 
 /// Imports `data` as SVG. Promises: the import returns a typed error or a sketch; every
 /// coincident join it made holds as imported (its two points within the length tolerance,
-/// relative to the coordinates' size); the sketch saves to a file that loads again.
+/// relative to the coordinates' size); the sketch saves to a file that loads again. A document
+/// is imported in user units and again in millimetres, with the same promises.
 pub fn svg(data: &[u8]) {
     let Some(text) = text(data) else { return };
     let options = SvgOptions::default();
-    let result = if text.trim_start().starts_with('<') {
-        import_document(text, &options)
+    if text.trim_start().starts_with('<') {
+        check(import_document(text, &options), &options);
+        let mm = options.with_units(SketchUnits::Physical(Unit::Millimetre));
+        check(import_document(text, &mm), &mm);
     } else {
-        import_path(text, &options)
-    };
+        check(import_path(text, &options), &options);
+    }
+}
+
+fn check(result: Result<Imported, camber_interop::svg::Error>, options: &SvgOptions) {
     let imported = match result {
         Ok(i) => i,
         Err(e) => {

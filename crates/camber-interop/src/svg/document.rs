@@ -1,30 +1,41 @@
 //! Whole SVG documents: every `<path>` (and the basic shapes) under the root `<svg>`, each
-//! drawn under the `transform` of its ancestors composed from the root inwards with its own.
+//! drawn under the `transform` of its ancestors composed from the root inwards with its own,
+//! and under the placement of every `svg` viewport it is in.
 //!
-//! - Groups (`g`, `a`, `switch`, a nested `svg` without placement) are walked; a nested `svg`
-//!   with `x`, `y` or `viewBox` is listed as skipped (its viewport placement is not applied).
-//! - `path` is read as path data; `line`, `polyline`, `polygon` and `rect` (rounded corners
-//!   as quarter arcs) as the path SVG 2 says they equal; `circle` and `ellipse` become a
-//!   circle or an ellipse entity (a circle under a non-uniform scale becomes an ellipse).
+//! - Groups (`g`, `a`, `switch`) are walked; a nested `svg` places its content by its `x`,
+//!   `y`, `width`, `height`, `viewBox` and `preserveAspectRatio` ([`super::placement`]), as
+//!   does the root when the sketch is in physical units ([`super::SketchUnits`]).
+//! - `path` and the basic shapes are read by [`super::shapes`], their lengths in any absolute
+//!   unit or as percentages of their viewport ([`super::units`]).
+//! - `use` draws the element its `href` (or `xlink:href`) `#id` references, as a child of the
+//!   `use` translated by its `x`, `y`; a `symbol` or an `svg` so drawn is placed as a
+//!   viewport of the `use`'s `width` and `height`. A reference leading back to an element it
+//!   is drawing is [`Error::ReferenceLoop`]; the elements drawn through references are counted
+//!   against [`SvgOptions::max_use_elements`], and their depth against `max_depth`.
+//! - `display: none` leaves out an element and its content, `visibility: hidden` a shape
+//!   ([`super::style`]); both are listed as skipped.
 //! - Definitions (`defs`, `symbol`, `clipPath`, `mask`, `marker`, `pattern`) draw nothing
-//!   themselves: one holding shapes is listed as skipped with their count.
-//! - `text`, `image`, `use`, `foreignObject` and SVG elements the importer does not know are
-//!   listed as skipped; elements that draw nothing (`title`, `desc`, `metadata`, `style`,
-//!   gradients, filters, …) and elements of other namespaces (an editor's metadata) are not.
-//! - Lengths are user units (plain numbers or `px`); another unit lists its shape as skipped.
-//!   The root's `viewBox`, `width` and `height` are not applied: the sketch is in user units.
+//!   where they stand: shapes inside one that no `use` references are listed as skipped.
+//! - `text`, `image`, `foreignObject` and SVG elements the importer does not know are listed
+//!   as skipped, and so is a style sheet (its rules are not applied); elements that draw
+//!   nothing (`title`, `desc`, `metadata`, gradients, filters, …) and elements of other
+//!   namespaces (an editor's metadata) are passed over without a note.
 
+use std::collections::{HashMap, HashSet};
 use std::str::FromStr;
 
-use nalgebra::Point2;
-use roxmltree::{Document, Node, ParsingOptions};
-use svgtypes::PathSegment;
+use roxmltree::{Document, Node, NodeId, ParsingOptions};
 
 use super::affine::Affine;
 use super::builder::Builder;
 use super::errors::{Error, Item};
 use super::nesting::{self, Finding};
 use super::options::SvgOptions;
+use super::placement::{self, Placed};
+use super::references::{drawn_through_use, href, References, Target};
+use super::shapes::{self, length, malformed, Place};
+use super::style;
+use super::viewport::translation;
 use crate::Imported;
 
 const SVG_NAMESPACE: &str = "http://www.w3.org/2000/svg";
@@ -95,7 +106,7 @@ pub fn import_document(svg_text: &str, options: &SvgOptions) -> Result<Imported,
                 item: Item::Element {
                     tag: t.tag,
                     id: None,
-                    line: line_of(svg_text, t.offset),
+                    line: Lines::new(svg_text).of(t.offset),
                 },
                 depth: t.depth,
                 max: options.max_depth,
@@ -105,7 +116,7 @@ pub fn import_document(svg_text: &str, options: &SvgOptions) -> Result<Imported,
             return Err(Error::Xml {
                 message: format!(
                     "the DTD at line {} could declare elements in its entities, which are not read",
-                    line_of(svg_text, offset)
+                    Lines::new(svg_text).of(offset)
                 ),
             })
         }
@@ -127,22 +138,127 @@ pub fn import_document(svg_text: &str, options: &SvgOptions) -> Result<Imported,
             root: root.tag_name().name().to_string(),
         });
     }
+    let lines = Lines::new(svg_text);
     let mut b = Builder::new(options);
+    let mut walk = Walk {
+        doc: &doc,
+        lines: &lines,
+        refs: References::new(&doc),
+        options,
+        use_elements: 0,
+        draws: HashMap::new(),
+        definitions_listed: HashSet::new(),
+        stack: vec![Visit {
+            node: root,
+            ctm: Affine::identity(),
+            depth: 0,
+            viewport: None,
+            hidden: false,
+            chain: None,
+            instance: None,
+        }],
+    };
     // Depth-first in document order with an explicit stack: nesting cannot overflow the
     // call stack, and the depth budget is checked on the way down.
-    let mut stack: Vec<(Node<'_, '_>, Affine, usize)> = vec![(root, Affine::identity(), 0)];
-    while let Some((node, parent_ctm, depth)) = stack.pop() {
-        let item = item_of(&doc, &node);
-        if depth > options.max_depth {
+    while let Some(v) = walk.stack.pop() {
+        walk.visit(&mut b, v)?;
+    }
+    Ok(b.finish())
+}
+
+/// An element to draw: under its parent's map `ctm` (user units to the sketch's frame, before
+/// the y flip), at `depth`, in a viewport of size `viewport` (user units), its parent's
+/// shapes `hidden` or not, drawn through the reference chain `chain` (`None` where it stands
+/// in the document), and for a `symbol` or `svg` drawn by a `use`, the `use`'s width and
+/// height where given.
+struct Visit<'a, 'i> {
+    node: Node<'a, 'i>,
+    ctm: Affine,
+    depth: usize,
+    viewport: Option<(f64, f64)>,
+    hidden: bool,
+    chain: Option<usize>,
+    instance: Option<(Option<f64>, Option<f64>)>,
+}
+
+/// The line starts of the text, for an element's line by a binary search.
+struct Lines(Vec<usize>);
+
+impl Lines {
+    fn new(text: &str) -> Self {
+        Lines(
+            text.bytes()
+                .enumerate()
+                .filter(|(_, c)| *c == b'\n')
+                .map(|(k, _)| k)
+                .collect(),
+        )
+    }
+
+    /// The line (from 1) of a byte offset.
+    fn of(&self, offset: usize) -> u32 {
+        u32::try_from(self.0.partition_point(|&nl| nl < offset) + 1).unwrap_or(u32::MAX)
+    }
+}
+
+struct Walk<'a, 'i, 'o> {
+    doc: &'a Document<'i>,
+    lines: &'a Lines,
+    refs: References<'a, 'i>,
+    options: &'o SvgOptions,
+    use_elements: usize,
+    /// Whether an element holds something drawn, by element: asked of every `display: none`
+    /// element each time a reference draws it, answered once.
+    draws: HashMap<NodeId, bool>,
+    /// The definitions elements listed already (a reference drawing a group that holds one
+    /// would list it again, and count its shapes again, at every instance).
+    definitions_listed: HashSet<NodeId>,
+    stack: Vec<Visit<'a, 'i>>,
+}
+
+impl<'a, 'i> Walk<'a, 'i, '_> {
+    fn item(&self, node: &Node<'_, '_>) -> Item {
+        Item::Element {
+            tag: node.tag_name().name().to_string(),
+            id: node.attribute("id").map(str::to_string),
+            line: self.lines.of(node.range().start),
+        }
+    }
+
+    fn visit(&mut self, b: &mut Builder<'_>, v: Visit<'a, 'i>) -> Result<(), Error> {
+        let node = v.node;
+        let item = self.item(&node);
+        if v.depth > self.options.max_depth {
             return Err(Error::TooDeep {
                 item,
-                depth,
-                max: options.max_depth,
+                depth: v.depth,
+                max: self.options.max_depth,
             });
         }
-        let ctm = match node.attribute("transform") {
-            Some(t) => parent_ctm.then_inner(&transform(&item, t)?),
-            None => parent_ctm,
+        if v.chain.is_some() {
+            self.use_elements += 1;
+            if self.use_elements > self.options.max_use_elements {
+                return Err(Error::TooManyUseElements {
+                    item,
+                    max: self.options.max_use_elements,
+                });
+            }
+        }
+        let tag = node.tag_name().name();
+        if style::display_none(&node) {
+            let draws = *self.draws.entry(node.id()).or_insert_with(|| draws(&node));
+            if draws {
+                b.skip(
+                    item.to_string(),
+                    "display is none: it and what it holds are not drawn".into(),
+                );
+            }
+            return Ok(());
+        }
+        let hidden = style::hidden(&node, v.hidden);
+        let mut ctm = match node.attribute("transform") {
+            Some(t) => v.ctm.then_inner(&transform(&item, t)?),
+            None => v.ctm,
         };
         if !ctm.is_finite() {
             return Err(malformed(
@@ -152,60 +268,214 @@ pub fn import_document(svg_text: &str, options: &SvgOptions) -> Result<Imported,
                 "the composed transform overflows f64",
             ));
         }
-        let tag = node.tag_name().name();
+        let mut viewport = v.viewport;
         let descend = match tag {
-            "svg" if depth > 0 && ["x", "y", "viewBox"].iter().any(|a| node.has_attribute(*a)) => {
-                b.skip(
-                    item.to_string(),
-                    "a nested viewport with x, y or viewBox: its placement is not applied, so its content is not imported".into(),
-                );
+            "svg" if node == self.doc.root_element() && v.chain.is_none() => {
+                let Placed { map, viewport: vp } =
+                    placement::root(b, &node, &item, self.options.units)?;
+                ctm = ctm.then_inner(&map);
+                viewport = vp;
+                true
+            }
+            "svg" | "symbol" if tag == "svg" || v.instance.is_some() => {
+                let instance = v.instance.unwrap_or((None, None));
+                match placement::nested(b, &node, &item, v.viewport, instance)? {
+                    Some(Placed { map, viewport: vp }) => {
+                        ctm = ctm.then_inner(&map);
+                        if !ctm.is_finite() {
+                            return Err(malformed(
+                                &item,
+                                "viewBox",
+                                node.attribute("viewBox").unwrap_or(""),
+                                "the composed map overflows f64",
+                            ));
+                        }
+                        viewport = vp;
+                        true
+                    }
+                    None => false,
+                }
+            }
+            "g" | "a" | "switch" => true,
+            "use" => {
+                self.reference(b, &node, &item, &v, ctm, hidden)?;
                 false
             }
-            "svg" | "g" | "a" | "switch" => true,
             _ if DEFINITIONS.contains(&tag) => {
-                let shapes = node
-                    .descendants()
-                    .filter(|n| n.is_element() && SHAPES.contains(&n.tag_name().name()))
-                    .count();
-                if shapes > 0 {
+                let unreferenced = if self.definitions_listed.insert(node.id()) {
+                    self.unreferenced_shapes(&node)
+                } else {
+                    0
+                };
+                if unreferenced > 0 {
                     b.skip(
                         item.to_string(),
-                        format!("definitions are not drawn where they stand; the {shapes} shape(s) inside are not imported"),
+                        format!("definitions are not drawn where they stand; the {unreferenced} shape(s) inside that no <use> references are not imported"),
+                    );
+                }
+                false
+            }
+            "style" => {
+                if node.text().is_some_and(|t| !t.trim().is_empty()) {
+                    b.skip(
+                        item.to_string(),
+                        "style sheets are not read: display and visibility set by its rules are not applied".into(),
                     );
                 }
                 false
             }
             _ if NOT_DRAWN.contains(&tag) => false,
             _ => {
-                if det_is_zero(&ctm) && SHAPES.contains(&tag) {
+                if hidden && SHAPES.contains(&tag) {
+                    b.skip(
+                        item.to_string(),
+                        "visibility is hidden, so it is not drawn".into(),
+                    );
+                } else if det_is_zero(&ctm) && SHAPES.contains(&tag) {
                     b.skip(
                         item.to_string(),
                         "its transform is singular, so SVG draws nothing".into(),
                     );
                 } else {
-                    shape(&mut b, &node, &item, &ctm)?;
+                    let place = Place {
+                        item: &item,
+                        ctm: &ctm,
+                        viewport,
+                    };
+                    shapes::shape(b, &node, &place)?;
                 }
                 false
             }
         };
         if descend {
-            let children: Vec<Node<'_, '_>> = node
+            let children: Vec<Node<'a, 'i>> = node
                 .children()
                 .filter(|n| n.is_element() && is_svg(n))
                 .collect();
             for child in children.into_iter().rev() {
-                stack.push((child, ctm, depth + 1));
+                self.stack.push(Visit {
+                    node: child,
+                    ctm,
+                    depth: v.depth + 1,
+                    viewport,
+                    hidden,
+                    chain: v.chain,
+                    instance: None,
+                });
             }
         }
+        Ok(())
     }
-    Ok(b.finish())
+
+    /// A `use` at `node` (its own transform in `ctm`): the element it references, queued to be
+    /// drawn next as its child, translated by its x, y.
+    fn reference(
+        &mut self,
+        b: &mut Builder<'_>,
+        node: &Node<'a, 'i>,
+        item: &Item,
+        v: &Visit<'a, 'i>,
+        ctm: Affine,
+        hidden: bool,
+    ) -> Result<(), Error> {
+        let target = match self.refs.target(node) {
+            Target::Element(t) => t,
+            Target::NotFollowed(why) => {
+                b.skip(item.to_string(), why.into());
+                return Ok(());
+            }
+            Target::Missing => {
+                b.skip(
+                    item.to_string(),
+                    format!(
+                        "no element has the id it references ({})",
+                        href(node)
+                            .unwrap_or("")
+                            .chars()
+                            .take(80)
+                            .collect::<String>()
+                    ),
+                );
+                return Ok(());
+            }
+        };
+        if self.refs.loops(node, &target, v.chain) {
+            return Err(Error::ReferenceLoop {
+                item: item.clone(),
+                href: href(node).unwrap_or("").chars().take(80).collect(),
+            });
+        }
+        let target_tag = target.tag_name().name();
+        if !drawn_through_use(target_tag) {
+            b.skip(
+                item.to_string(),
+                format!("it references a <{target_tag}>, which is not drawn through a use"),
+            );
+            return Ok(());
+        }
+        let mut xy = [0.0; 2];
+        let mut size = [None; 2];
+        for (k, name) in ["x", "y"].into_iter().enumerate() {
+            match length(node, item, name, 0.0, v.viewport)? {
+                Ok(l) => xy[k] = l,
+                Err(reason) => {
+                    b.skip(item.to_string(), format!("{reason}, so it is not drawn"));
+                    return Ok(());
+                }
+            }
+        }
+        for (k, name) in ["width", "height"].into_iter().enumerate() {
+            if node.has_attribute(name) {
+                match length(node, item, name, 0.0, v.viewport)? {
+                    Ok(l) => size[k] = Some(l),
+                    Err(reason) => {
+                        b.skip(item.to_string(), format!("{reason}, so it is not drawn"));
+                        return Ok(());
+                    }
+                }
+            }
+        }
+        let at = ctm.then_inner(&translation(xy[0], xy[1]));
+        if !at.is_finite() {
+            return Err(malformed(
+                item,
+                "x",
+                node.attribute("x").unwrap_or(""),
+                "the offset (x, y) under the transform overflows f64",
+            ));
+        }
+        let placed = matches!(target_tag, "symbol" | "svg");
+        let chain = self.refs.extend(&target, v.chain);
+        self.stack.push(Visit {
+            node: target,
+            ctm: at,
+            depth: v.depth + 1,
+            viewport: v.viewport,
+            hidden,
+            chain: Some(chain),
+            instance: placed.then_some((size[0], size[1])),
+        });
+        Ok(())
+    }
+
+    /// The shapes inside a definitions element that are not, nor are inside, an element some
+    /// `use` references.
+    fn unreferenced_shapes(&self, defs: &Node<'_, '_>) -> usize {
+        defs.descendants()
+            .filter(|n| n.is_element() && SHAPES.contains(&n.tag_name().name()))
+            .filter(|n| {
+                !n.ancestors()
+                    .take_while(|a| a.id() != defs.id())
+                    .any(|a| self.refs.is_referenced(&a))
+            })
+            .count()
+    }
 }
 
-/// The line (from 1) of a byte offset.
-fn line_of(text: &str, offset: usize) -> u32 {
-    let before = text.as_bytes().get(..offset).unwrap_or(text.as_bytes());
-    let lines = before.iter().filter(|c| **c == b'\n').count() + 1;
-    u32::try_from(lines).unwrap_or(u32::MAX)
+/// Whether an element is or holds something that would draw (a shape or a `use`).
+fn draws(node: &Node<'_, '_>) -> bool {
+    node.descendants()
+        .any(|n| n.is_element() && (SHAPES.contains(&n.tag_name().name()) || n.has_tag_name("use")))
 }
 
 fn is_svg(node: &Node<'_, '_>) -> bool {
@@ -214,23 +484,6 @@ fn is_svg(node: &Node<'_, '_>) -> bool {
 
 fn det_is_zero(ctm: &Affine) -> bool {
     ctm.determinant().abs() <= 0.0
-}
-
-fn item_of(doc: &Document<'_>, node: &Node<'_, '_>) -> Item {
-    Item::Element {
-        tag: node.tag_name().name().to_string(),
-        id: node.attribute("id").map(str::to_string),
-        line: doc.text_pos_at(node.range().start).row,
-    }
-}
-
-fn malformed(item: &Item, attribute: &'static str, value: &str, message: &str) -> Error {
-    Error::MalformedAttribute {
-        item: item.clone(),
-        attribute,
-        value: value.chars().take(80).collect(),
-        message: message.to_string(),
-    }
 }
 
 fn transform(item: &Item, text: &str) -> Result<Affine, Error> {
@@ -242,208 +495,4 @@ fn transform(item: &Item, text: &str) -> Result<Affine, Error> {
     } else {
         Err(malformed(item, "transform", text, "a number is not finite"))
     }
-}
-
-/// A length attribute in user units (absent: `default`); `Ok(None)` for a unit other than
-/// none or `px`.
-fn length(
-    node: &Node<'_, '_>,
-    item: &Item,
-    attribute: &'static str,
-    default: f64,
-) -> Result<Option<f64>, Error> {
-    let Some(text) = node.attribute(attribute) else {
-        return Ok(Some(default));
-    };
-    let l = svgtypes::Length::from_str(text)
-        .map_err(|e| malformed(item, attribute, text, &e.to_string()))?;
-    if !l.number.is_finite() {
-        return Err(malformed(item, attribute, text, "the number is not finite"));
-    }
-    Ok(match l.unit {
-        svgtypes::LengthUnit::None | svgtypes::LengthUnit::Px => Some(l.number),
-        _ => None,
-    })
-}
-
-/// Reads the named lengths; `None` (the shape listed as skipped) when one has another unit.
-fn lengths<const N: usize>(
-    b: &mut Builder<'_>,
-    node: &Node<'_, '_>,
-    item: &Item,
-    names: [&'static str; N],
-) -> Result<Option<[f64; N]>, Error> {
-    let mut out = [0.0; N];
-    for (slot, name) in out.iter_mut().zip(names) {
-        match length(node, item, name, 0.0)? {
-            Some(v) => *slot = v,
-            None => {
-                b.skip(
-                    item.to_string(),
-                    format!(
-                        "attribute {name} has a unit other than user units (px): not converted"
-                    ),
-                );
-                return Ok(None);
-            }
-        }
-    }
-    Ok(Some(out))
-}
-
-/// Imports one element that is not a container.
-fn shape(b: &mut Builder<'_>, node: &Node<'_, '_>, item: &Item, ctm: &Affine) -> Result<(), Error> {
-    let abs = true;
-    match node.tag_name().name() {
-        "path" => match node.attribute("d") {
-            Some(d) => b.add_path(item, svgtypes::PathParser::from(d), ctm),
-            None => {
-                b.skip(
-                    item.to_string(),
-                    "it has no d attribute, so it draws nothing".into(),
-                );
-                Ok(())
-            }
-        },
-        "line" => {
-            let Some([x1, y1, x2, y2]) = lengths(b, node, item, ["x1", "y1", "x2", "y2"])? else {
-                return Ok(());
-            };
-            let segs = [
-                PathSegment::MoveTo { abs, x: x1, y: y1 },
-                PathSegment::LineTo { abs, x: x2, y: y2 },
-            ];
-            b.add_path(item, segs.into_iter().map(Ok), ctm)
-        }
-        tag @ ("polyline" | "polygon") => {
-            let text = node.attribute("points").unwrap_or("");
-            let mut segs: Vec<PathSegment> = Vec::new();
-            for (k, (x, y)) in svgtypes::PointsParser::from(text).enumerate() {
-                segs.push(if k == 0 {
-                    PathSegment::MoveTo { abs, x, y }
-                } else {
-                    PathSegment::LineTo { abs, x, y }
-                });
-            }
-            if segs.len() < 2 {
-                b.skip(
-                    item.to_string(),
-                    "fewer than two points draw nothing".into(),
-                );
-                return Ok(());
-            }
-            if tag == "polygon" {
-                segs.push(PathSegment::ClosePath { abs });
-            }
-            b.add_path(item, segs.into_iter().map(Ok), ctm)
-        }
-        "rect" => rect(b, node, item, ctm),
-        "circle" => {
-            let Some([cx, cy, r]) = lengths(b, node, item, ["cx", "cy", "r"])? else {
-                return Ok(());
-            };
-            if r <= 0.0 {
-                b.skip(
-                    item.to_string(),
-                    format!("its radius {r} is not positive, so it draws nothing"),
-                );
-                return Ok(());
-            }
-            b.add_ellipse(item, Point2::new(cx, cy), r, r, ctm)
-        }
-        "ellipse" => {
-            let Some([cx, cy, rx, ry]) = lengths(b, node, item, ["cx", "cy", "rx", "ry"])? else {
-                return Ok(());
-            };
-            if rx <= 0.0 || ry <= 0.0 {
-                b.skip(
-                    item.to_string(),
-                    format!("its radii {rx}, {ry} are not both positive, so it draws nothing"),
-                );
-                return Ok(());
-            }
-            b.add_ellipse(item, Point2::new(cx, cy), rx, ry, ctm)
-        }
-        "text" | "image" | "use" | "foreignObject" => {
-            b.skip(
-                item.to_string(),
-                "not geometry the importer reads (text, images and references are not followed)"
-                    .into(),
-            );
-            Ok(())
-        }
-        other => {
-            b.skip(
-                item.to_string(),
-                format!("<{other}> is not an element the importer reads"),
-            );
-            Ok(())
-        }
-    }
-}
-
-/// A rectangle as SVG 2 defines its path: sides, and quarter arcs of radii (rx, ry) at the
-/// corners (one given radius serves for both; each at most half the side).
-fn rect(b: &mut Builder<'_>, node: &Node<'_, '_>, item: &Item, ctm: &Affine) -> Result<(), Error> {
-    let Some([x, y, w, h]) = lengths(b, node, item, ["x", "y", "width", "height"])? else {
-        return Ok(());
-    };
-    if w <= 0.0 || h <= 0.0 {
-        b.skip(
-            item.to_string(),
-            format!("its size {w} × {h} is not positive, so it draws nothing"),
-        );
-        return Ok(());
-    }
-    let given = |name| {
-        node.has_attribute(name)
-            .then(|| length(node, item, name, 0.0))
-            .transpose()
-    };
-    let (rx, ry) = match (given("rx")?.flatten(), given("ry")?.flatten()) {
-        (Some(rx), Some(ry)) => (rx, ry),
-        (Some(r), None) | (None, Some(r)) => (r, r),
-        (None, None) => (0.0, 0.0),
-    };
-    let (rx, ry) = (rx.max(0.0).min(w / 2.0), ry.max(0.0).min(h / 2.0));
-    let abs = true;
-    let mut segs = Vec::with_capacity(10);
-    let corner = |x, y| PathSegment::EllipticalArc {
-        abs,
-        rx,
-        ry,
-        x_axis_rotation: 0.0,
-        large_arc: false,
-        sweep: true,
-        x,
-        y,
-    };
-    let round = rx > 0.0 && ry > 0.0;
-    segs.push(PathSegment::MoveTo { abs, x: x + rx, y });
-    if w > 2.0 * rx {
-        segs.push(PathSegment::HorizontalLineTo { abs, x: x + w - rx });
-    }
-    if round {
-        segs.push(corner(x + w, y + ry));
-    }
-    if h > 2.0 * ry {
-        segs.push(PathSegment::VerticalLineTo { abs, y: y + h - ry });
-    }
-    if round {
-        segs.push(corner(x + w - rx, y + h));
-    }
-    if w > 2.0 * rx {
-        segs.push(PathSegment::HorizontalLineTo { abs, x: x + rx });
-    }
-    if round {
-        segs.push(corner(x, y + h - ry));
-    }
-    if h > 2.0 * ry {
-        segs.push(PathSegment::VerticalLineTo { abs, y: y + ry });
-    }
-    if round {
-        segs.push(corner(x + rx, y));
-    }
-    segs.push(PathSegment::ClosePath { abs });
-    b.add_path(item, segs.into_iter().map(Ok), ctm)
 }

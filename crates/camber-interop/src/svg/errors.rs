@@ -178,6 +178,43 @@ pub enum Error {
         /// What is wrong.
         message: String,
     },
+    /// A `use` whose reference leads back to itself: it references the element it is in, or
+    /// a chain of `use`s returns to an element it is already drawing.
+    ///
+    /// ```
+    /// use camber_interop::svg::{import_document, Error, SvgOptions};
+    /// let doc = r##"<svg><g id="a"><use href="#a"/></g></svg>"##;
+    /// let e = import_document(doc, &SvgOptions::default()).unwrap_err();
+    /// assert!(matches!(e, Error::ReferenceLoop { ref href, .. } if href == "#a"));
+    /// ```
+    #[error("{item}: href=\"{href}\" leads back to an element it is drawing (a reference loop)")]
+    ReferenceLoop {
+        /// The `use` that closes the loop.
+        item: Item,
+        /// Its reference, as written (up to 80 characters).
+        href: String,
+    },
+    /// More elements drawn through `use` references than
+    /// [`SvgOptions::max_use_elements`](super::SvgOptions): references that multiply.
+    ///
+    /// ```
+    /// use camber_interop::svg::{import_document, Error, SvgOptions};
+    /// // Each level draws the one below twice: 2 + 4 + 8 + … elements.
+    /// let mut doc = String::from(r#"<svg><defs><path id="l0" d="M 0 0 L 1 0"/>"#);
+    /// for k in 1..40 {
+    ///     doc += &format!(r##"<g id="l{k}"><use href="#l{j}"/><use href="#l{j}"/></g>"##, j = k - 1);
+    /// }
+    /// doc += r##"</defs><use href="#l39"/></svg>"##;
+    /// let e = import_document(&doc, &SvgOptions::default()).unwrap_err();
+    /// assert!(matches!(e, Error::TooManyUseElements { max: 100_000, .. }));
+    /// ```
+    #[error("{item}: more than {max} elements drawn through use references, the budget")]
+    TooManyUseElements {
+        /// The element past the budget.
+        item: Item,
+        /// The budget.
+        max: usize,
+    },
     /// The sketch refused an entity or a constraint the importer made (a bug of the importer;
     /// reported rather than hidden).
     #[error("{item}, command {command}: the sketch refused it: {cause}")]

@@ -27,7 +27,14 @@
 //! # Orientation
 //! SVG's y axis points down the page. By default ([`Orientation::Upright`]) the importer maps
 //! (x, y) ↦ (x, −y) after every SVG transform, so the picture is upright in camber's y-up
-//! frame; [`Orientation::Raw`] keeps the user coordinates. Units are SVG user units.
+//! frame; [`Orientation::Raw`] keeps the user coordinates.
+//!
+//! # Units
+//! Path data is in user units. In a document, lengths in absolute units become user units at
+//! 96 px per inch ([`Unit`], [`PX_PER_INCH`]), percentages are of the nearest viewport, nested
+//! `svg` viewports are placed by their viewBox; the sketch is in the root's user units
+//! ([`SketchUnits::User`], the default: the numbers written in the file) or, on request, in the
+//! document's physical size ([`SketchUnits::Physical`]). See [`import_document`].
 //!
 //! # Joins
 //! Consecutive segments of a subpath (and the last and first of a closed one) get a
@@ -49,11 +56,18 @@ mod errors;
 mod joins;
 mod nesting;
 mod options;
+mod placement;
+mod references;
+mod shapes;
+mod style;
+mod units;
+mod viewport;
 
 pub use document::import_document;
 pub use ellipse_map::CIRCLE_TOLERANCE;
 pub use errors::{Error, Item};
-pub use options::{Orientation, SvgOptions};
+pub use options::{Orientation, SketchUnits, SvgOptions};
+pub use units::{Unit, PX_PER_INCH};
 
 use crate::Imported;
 
