@@ -22,7 +22,7 @@ use serde::{Deserialize, Serialize};
 use super::compiler::distinct;
 use super::glyph::{self, Glyph};
 use super::shared::angles::angle_between;
-use super::shared::arc_ends::{curve_end_parameter, verify_curve_end_sense, ArcEnd};
+use super::shared::arc_ends::{verify_curve_end_sense, ArcEnd};
 use super::shared::radii::Round;
 use super::{Compiler, ConstraintKind, Entities};
 use crate::constraints::check::{SolvedCheck, SolvedState};
@@ -126,7 +126,11 @@ impl ConstraintKind for ArcTangentToCurve {
         }
         distinct(self.arc, self.curve)?;
         let (basis, curve_slots) = cx.curve_basis(self.curve)?;
-        let u = curve_end_parameter(cx, self.curve, self.curve_end)?;
+        let (lo, hi) = cx.domain(self.curve)?;
+        let u = match self.curve_end {
+            ArcEnd::Start => lo,
+            ArcEnd::End => hi,
+        };
         let mut slots = vec![Slot::Point(self.arc, 0), Slot::Point(self.arc, self.end.block())];
         slots.extend(curve_slots);
         cx.residual(

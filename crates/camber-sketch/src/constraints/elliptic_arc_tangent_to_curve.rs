@@ -19,7 +19,7 @@ use camber_solve::scalar::cst;
 use camber_solve::{Residual, Scalar};
 use serde::{Deserialize, Serialize};
 
-use super::shared::arc_ends::{curve_end_parameter, verify_curve_end_sense, ArcEnd};
+use super::shared::arc_ends::{verify_curve_end_sense, ArcEnd};
 use super::compiler::distinct;
 use super::shared::ellipses::{end_block, travel};
 use super::glyph::{self, Glyph};
@@ -111,7 +111,11 @@ impl ConstraintKind for EllipticArcTangentToCurve {
         }
         distinct(self.arc, self.curve)?;
         let (basis, curve_slots) = cx.curve_basis(self.curve)?;
-        let u = curve_end_parameter(cx, self.curve, self.curve_end)?;
+        let (lo, hi) = cx.domain(self.curve)?;
+        let u = match self.curve_end {
+            ArcEnd::Start => lo,
+            ArcEnd::End => hi,
+        };
         let mut slots = vec![
             Slot::Point(self.arc, 0),
             Slot::Point(self.arc, 1),

@@ -1,12 +1,11 @@
 //! The ends of circular and elliptic arcs, as the arc kinds name them, and what the kinds
-//! holding an arc end tangent to a curve end share: the curve end's parameter and the check of
-//! the recorded sense on the solved state.
+//! holding an arc end tangent to a curve end share: the check of the recorded sense on the
+//! solved state, at the curve end's parameter.
 
 use nalgebra::Vector2;
 use serde::{Deserialize, Serialize};
 
 use crate::constraints::check::{point_tangent, SolvedState};
-use crate::constraints::Compiler;
 use crate::ground::errors::Result;
 use crate::ground::ids::{EntityId, PointRef};
 use crate::ground::vocabulary::Sense;
@@ -45,14 +44,6 @@ pub(crate) fn domain_end((lo, hi): (f64, f64), end: ArcEnd) -> f64 {
         ArcEnd::Start => lo,
         ArcEnd::End => hi,
     }
-}
-
-/// The parameter of a curve end as a compiling kind reads it (the curve's domain).
-///
-/// # Errors
-/// Unknown id; [`crate::Error::WrongEntityKind`] for a non-curve.
-pub(crate) fn curve_end_parameter(cx: &Compiler<'_>, curve: EntityId, end: ArcEnd) -> Result<f64> {
-    Ok(domain_end(cx.domain(curve)?, end))
 }
 
 /// The check of an arc-end tangency to a curve end after a solve: σ·(t·C′) > 0, with t the

@@ -1,8 +1,8 @@
 //! Helpers that sibling kinds share: what two or more kinds compute the same way lives here,
 //! never in one kind's file for the others to borrow.
 //!
-//! - [`arc_ends`]: the ends of circular and elliptic arcs, and the curve end and sense check of
-//!   an arc end held tangent to a curve end;
+//! - [`arc_ends`]: the ends of circular and elliptic arcs, and the sense check of an arc end held
+//!   tangent to a curve end;
 //! - [`arc_span`]: whether a direction from an arc's centre lies within its sweep;
 //! - [`angles`]: the signed angle between two tangents and the angle of a line;
 //! - [`axes`]: rows and marks along a coordinate axis (horizontal, vertical, their distances,
