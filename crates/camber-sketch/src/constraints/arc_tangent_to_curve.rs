@@ -125,12 +125,8 @@ impl ConstraintKind for ArcTangentToCurve {
             });
         }
         distinct(self.arc, self.curve)?;
-        let (basis, curve_slots) = cx.curve_basis(self.curve)?;
-        let (lo, hi) = cx.domain(self.curve)?;
-        let u = match self.curve_end {
-            ArcEnd::Start => lo,
-            ArcEnd::End => hi,
-        };
+        let (basis, curve_slots, u) =
+            cx.curve_end_contact(self.curve, self.curve_end == ArcEnd::End)?;
         let mut slots = vec![Slot::Point(self.arc, 0), Slot::Point(self.arc, self.end.block())];
         slots.extend(curve_slots);
         cx.residual(
@@ -173,5 +169,54 @@ impl SolvedCheck for ArcTangentToCurve {
     fn verify(&self, state: &SolvedState<'_>) -> Result<()> {
         let (_, t) = travel(state.entity(self.arc)?, self.arc, self.end)?;
         verify_curve_end_sense(state, t, self.curve, self.curve_end, self.sense)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used)]
+
+    use camber_geom::{BSplineCurve2, CircularArc, KnotVector};
+    use nalgebra::Point2;
+
+    use super::*;
+    use crate::constraints::piece::Piece;
+    use crate::Sketch;
+
+    /// At a clamped end C′ = p/(u₁ − u₀)·(P₁ − P₀): the row reads the arc's centre and end and
+    /// the curve's first two control points, never the other six, so its Hessian stays 8 × 8.
+    #[test]
+    fn the_row_reads_only_the_control_points_of_the_curve_end() {
+        let mut s = Sketch::new();
+        let arc = s
+            .add_arc(&CircularArc::try_new(Point2::new(0.0, 0.0), 1.0, 0.0, 1.0).unwrap())
+            .unwrap();
+        let points: Vec<Point2<f64>> = (0..8)
+            .map(|k| Point2::new(1.0 + 0.5 * f64::from(k), 0.2 * f64::from(k % 3)))
+            .collect();
+        let knots = KnotVector::clamped_uniform(3, points.len()).unwrap();
+        let curve = s
+            .add_bspline(BSplineCurve2::try_new(3, knots, points).unwrap())
+            .unwrap();
+        let c = ArcTangentToCurve {
+            arc,
+            end: ArcEnd::Start,
+            curve,
+            curve_end: ArcEnd::Start,
+            sense: Sense::Agree,
+        };
+        let pieces = crate::Constraint::from(c).compile(&s).unwrap();
+        let [Piece::General { slots, .. }] = pieces.as_slice() else {
+            panic!("one general piece expected, found {pieces:?}");
+        };
+        assert_eq!(
+            slots.as_slice(),
+            &[
+                Slot::Point(arc, 0),
+                Slot::Point(arc, 1),
+                Slot::Point(curve, 0),
+                Slot::Point(curve, 1),
+            ]
+        );
     }
 }

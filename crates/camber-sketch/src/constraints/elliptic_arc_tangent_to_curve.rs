@@ -110,12 +110,8 @@ impl ConstraintKind for EllipticArcTangentToCurve {
             });
         }
         distinct(self.arc, self.curve)?;
-        let (basis, curve_slots) = cx.curve_basis(self.curve)?;
-        let (lo, hi) = cx.domain(self.curve)?;
-        let u = match self.curve_end {
-            ArcEnd::Start => lo,
-            ArcEnd::End => hi,
-        };
+        let (basis, curve_slots, u) =
+            cx.curve_end_contact(self.curve, self.curve_end == ArcEnd::End)?;
         let mut slots = vec![
             Slot::Point(self.arc, 0),
             Slot::Point(self.arc, 1),
