@@ -7,6 +7,7 @@ mod svg_support;
 
 use camber_interop::svg::{import_path, SvgOptions};
 use camber_interop::Imported;
+use camber_sketch::{Constraint, Sense};
 use svg_support::entities;
 
 fn tags(out: &Imported) -> Vec<&'static str> {
@@ -115,19 +116,22 @@ fn a_smooth_arc_to_curve_join_gets_the_arc_curve_tangency_both_ways() {
 }
 
 #[test]
-fn a_smooth_arc_to_arc_join_is_listed_as_held_by_its_coincidence_only() {
-    // Two circular quarters continuing one another's tangent (an S bend).
-    let out = import("M 0 0 A 1 1 0 0 1 1 1 A 1 1 0 0 0 2 2");
-    assert_eq!(tags(&out), ["coincident"]);
-    assert_eq!(out.skipped.len(), 1);
-    assert!(
-        out.skipped[0]
-            .reason
-            .contains("no constraint kind makes an arc tangent to an arc"),
-        "{}",
-        out.skipped[0]
-    );
-    holds_as_imported(&out);
+fn a_smooth_arc_to_arc_join_gets_the_arc_arc_tangency_that_holds() {
+    // Two circular quarters continuing one another's tangent: an S bend (the travels of the
+    // two counter-clockwise arcs oppose), and two quarters of one circle (they agree).
+    for (d, sense) in [
+        ("M 0 0 A 1 1 0 0 1 1 1 A 1 1 0 0 0 2 2", Sense::Oppose),
+        ("M 1 0 A 1 1 0 0 1 0 1 A 1 1 0 0 1 -1 0", Sense::Agree),
+    ] {
+        let out = import(d);
+        assert_eq!(tags(&out), ["coincident", "arc_tangent_to_arc"], "{d}");
+        assert!(out.skipped.is_empty(), "{:?}", out.skipped);
+        let Some((_, Constraint::ArcTangentToArc(t))) = out.sketch.constraints().nth(1) else {
+            panic!("{d}: no arc tangency");
+        };
+        assert_eq!(t.sense, sense, "{d}");
+        holds_as_imported(&out);
+    }
 }
 
 #[test]

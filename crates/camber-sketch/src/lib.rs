@@ -100,6 +100,6 @@ pub use lookup::EntityLookup;
 pub use sketch::{Sketch, MAX_TAG_LEN};
 pub use solve::{ComponentReport, SketchReport};
 pub use vocabulary::{
-    CircleSide, Contact, FixTarget, LineSide, Rotation, Sense, TangentForm, Target,
+    CircleSide, Contact, FixTarget, LineSide, Rotation, Sense, Tangency, TangentForm, Target,
 };
 pub use warnings::Warning;

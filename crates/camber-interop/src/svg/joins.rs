@@ -12,16 +12,17 @@
 //! | elliptic arc, line             | `coincident` + `elliptic_arc_tangent_to_line`            |
 //! | circular arc, Bézier           | `coincident` + `arc_tangent_to_curve`                    |
 //! | elliptic arc, Bézier           | `coincident` + `elliptic_arc_tangent_to_curve`           |
-//! | arc, arc (circular or elliptic); a segment closing on itself | `coincident` only, and a note in `skipped`: no kind holds that tangency |
+//! | circular arc, circular arc    | `coincident` + `arc_tangent_to_arc`                      |
+//! | elliptic arc with an arc; a segment closing on itself | `coincident` only, and a note in `skipped`: no kind holds that tangency |
 //!
 //! A join where a Bézier's end derivative vanishes (an end control point doubled) has no
 //! direction to keep and gets its coincidence only. The sense of each tangency is read from
 //! the imported geometry: an arc's counter-clockwise travel at its end against the line's
-//! B − A or the curve's C′.
+//! B − A, the curve's C′ or the other arc's counter-clockwise travel.
 
 use camber_sketch::constraints::arc_tangent_to_line::ArcEnd;
 use camber_sketch::constraints::{
-    ArcTangentToCurve, ArcTangentToLine, Coincident, EllipticArcTangentToCurve,
+    ArcTangentToArc, ArcTangentToCurve, ArcTangentToLine, Coincident, EllipticArcTangentToCurve,
     EllipticArcTangentToLine, G1JoinFree,
 };
 use camber_sketch::{Constraint, Entity, EntityId, PointRef, Sense};
@@ -231,6 +232,16 @@ pub(crate) fn join(first: &Placed, second: &Placed, tangent_tolerance: f64) -> J
                 .into(),
             )
         }
+        (Kind::Arc, Kind::Arc) => Some(
+            ArcTangentToArc {
+                arc: first.id,
+                end: first.end(true),
+                other: second.id,
+                other_end: Some(second.end(false)),
+                sense: sense(first.own_tangent(true).dot(&second.own_tangent(false))),
+            }
+            .into(),
+        ),
         (Kind::Arc | Kind::Elliptic, Kind::Curve) | (Kind::Curve, Kind::Arc | Kind::Elliptic) => {
             let (arc, arc_at_end, curve, curve_at_end) = arc_pair(k2 == Kind::Curve);
             let (end, curve_end) = (arc.end(arc_at_end), curve.end(curve_at_end));

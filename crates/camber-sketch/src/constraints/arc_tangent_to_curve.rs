@@ -22,10 +22,10 @@ use serde::{Deserialize, Serialize};
 use super::compiler::distinct;
 use super::glyph::{self, Glyph};
 use super::shared::angles::angle_between;
-use super::shared::arc_ends::ArcEnd;
+use super::shared::arc_ends::{verify_curve_end_sense, ArcEnd};
 use super::shared::radii::Round;
 use super::{Compiler, ConstraintKind, Entities};
-use crate::constraints::check::{point_tangent, SolvedCheck, SolvedState};
+use crate::constraints::check::{SolvedCheck, SolvedState};
 use crate::constraints::piece::Slot;
 use crate::ground::curve_eval::CurveBasis;
 use crate::ground::entity::Entity;
@@ -168,14 +168,7 @@ fn travel(
 impl SolvedCheck for ArcTangentToCurve {
     fn verify(&self, state: &SolvedState<'_>) -> Result<()> {
         let (_, t) = travel(state.entity(self.arc)?, self.arc, self.end)?;
-        let curve = state.entity(self.curve)?;
-        let (a, b) = curve.domain().unwrap_or((0.0, 1.0));
-        let u = match self.curve_end {
-            ArcEnd::Start => a,
-            ArcEnd::End => b,
-        };
-        let (_, c1) = point_tangent(curve, self.curve, u)?;
-        state.sense(self.sense.sign() * (t.x * c1[0] + t.y * c1[1]))
+        verify_curve_end_sense(state, t, self.curve, self.curve_end, self.sense)
     }
 }
 

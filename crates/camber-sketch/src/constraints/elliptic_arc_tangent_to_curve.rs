@@ -19,13 +19,13 @@ use camber_solve::scalar::cst;
 use camber_solve::{Residual, Scalar};
 use serde::{Deserialize, Serialize};
 
-use super::shared::arc_ends::ArcEnd;
+use super::shared::arc_ends::{verify_curve_end_sense, ArcEnd};
 use super::compiler::distinct;
 use super::shared::ellipses::{end_block, travel};
 use super::glyph::{self, Glyph};
 use super::shared::angles::angle_between;
 use super::{Compiler, ConstraintKind, Entities};
-use crate::constraints::check::{point_tangent, SolvedCheck, SolvedState};
+use crate::constraints::check::{SolvedCheck, SolvedState};
 use crate::constraints::piece::Slot;
 use crate::ground::curve_eval::CurveBasis;
 use crate::ground::entity::Entity;
@@ -159,13 +159,6 @@ impl SolvedCheck for EllipticArcTangentToCurve {
         };
         let p = points[end_block(self.end)];
         let t = travel(&points[0], &points[1], *semi_axis_b, &p);
-        let curve = state.entity(self.curve)?;
-        let (a, b) = curve.domain().unwrap_or((0.0, 1.0));
-        let u = match self.curve_end {
-            ArcEnd::Start => a,
-            ArcEnd::End => b,
-        };
-        let (_, c1) = point_tangent(curve, self.curve, u)?;
-        state.sense(self.sense.sign() * (t.x * c1[0] + t.y * c1[1]))
+        verify_curve_end_sense(state, t, self.curve, self.curve_end, self.sense)
     }
 }

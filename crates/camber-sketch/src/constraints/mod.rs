@@ -379,4 +379,11 @@ kinds! {
     EllipticArcTangentToLine => elliptic_arc_tangent_to_line::EllipticArcTangentToLine,
     /// An elliptic arc's travel at one end along a curve's tangent at one of its ends.
     EllipticArcTangentToCurve => elliptic_arc_tangent_to_curve::EllipticArcTangentToCurve,
+    /// An arc's travel at one end along another arc's end, or along a circle.
+    ArcTangentToArc => arc_tangent_to_arc::ArcTangentToArc,
+    /// An arc touching a line's infinite line in its interior, on a recorded side.
+    ArcTouchesLine => arc_touches_line::ArcTouchesLine,
+    /// An arc touching a circle or another arc's circle in its interior, externally or
+    /// internally.
+    ArcTouchesCircle => arc_touches_circle::ArcTouchesCircle,
 }

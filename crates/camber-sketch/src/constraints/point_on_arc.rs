@@ -11,6 +11,7 @@ use serde::{Deserialize, Serialize};
 
 use super::compiler::distinct;
 use super::glyph::{self, Glyph};
+use super::shared::arc_span::outside_sweep;
 use super::shared::radii::{radius_of, Round};
 use super::{Compiler, ConstraintKind, Entities};
 use crate::constraints::check::{SolvedCheck, SolvedState};
@@ -106,14 +107,9 @@ impl SolvedCheck for PointOnArc {
         let e = state.entity(self.point.entity())?;
         let v = combine(e.points(), &e.resolve(self.point)?);
         let p = nalgebra::Point2::new(v[0], v[1]);
-        let w = p - arc.center();
-        let tolerance = state.penetration / arc.radius() + 1e-12;
-        if arc.contains_angle(w.y.atan2(w.x), tolerance) {
+        let Some(outside) = outside_sweep(&arc, p - arc.center(), state.penetration) else {
             return Ok(());
-        }
-        // How far past the nearer end, in radians.
-        let d = (w.y.atan2(w.x) - arc.start_angle()).rem_euclid(std::f64::consts::TAU);
-        let outside = (d - arc.sweep()).min(std::f64::consts::TAU - d);
+        };
         Err(Error::PointOffArc {
             constraint: state.owner,
             outside,

@@ -222,6 +222,22 @@ pub enum Error {
         /// How far (radians) the point's direction lies outside the sweep.
         outside: f64,
     },
+    /// An arc held tangent to a line or a circle in its interior whose solved contact (the
+    /// foot of the perpendicular from its centre, or the point on the line of centres) lies
+    /// on the arc's circle but outside the arc's sweep: the arc's circle touches, the arc does
+    /// not.
+    #[error(
+        "{constraint}: the contact lies on the arc's circle at {} rad past the nearer end of the arc",
+        Readable(*outside)
+    )]
+    ContactOffArc {
+        /// The tangency constraint.
+        constraint: ConstraintId,
+        /// The arc whose sweep the contact misses.
+        arc: EntityId,
+        /// How far (radians) the contact's direction lies outside the sweep.
+        outside: f64,
+    },
     /// An entity cannot be removed while constraints read it.
     #[error("{entity} is read by {constraint}")]
     EntityInUse {

@@ -2,7 +2,7 @@
 //! an end tangency is imposed ([`TangentForm`]), what a `Fixed` constraint holds
 //! ([`FixTarget`]), where a curve point goes ([`Target`]), where a contact takes place
 //! ([`Contact`]), and which side of a circle or line a curve keeps to ([`CircleSide`],
-//! [`LineSide`], [`Rotation`]).
+//! [`LineSide`], [`Rotation`]), and how two round entities touch ([`Tangency`]).
 //!
 //! Each serializes in its sketch-file form (snake-case words, `{"at": 0.5}`, points as
 //! `[x, y]`), so a constraint kind's file form is its struct's own serde derive.
@@ -118,6 +118,17 @@ pub enum LineSide {
     Left,
     /// cross(B − A, C(s) − A) ≤ 0.
     Right,
+}
+
+/// How two round entities touch: `"external"` (each outside the other, |C₁ − C₂| = r₁ + r₂)
+/// or `"internal"` (one inside the other, |C₁ − C₂| = |r₁ − r₂|).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Tangency {
+    /// Each outside the other: |C₁ − C₂| = r₁ + r₂.
+    External,
+    /// One inside the other: |C₁ − C₂| = |r₁ − r₂|.
+    Internal,
 }
 
 /// How a curve runs around a circle at the contact: the sign of cross(C(u) − c, C′(u)).

@@ -1,7 +1,9 @@
 //! Helpers that sibling kinds share: what two or more kinds compute the same way lives here,
 //! never in one kind's file for the others to borrow.
 //!
-//! - [`arc_ends`]: the ends of circular and elliptic arcs;
+//! - [`arc_ends`]: the ends of circular and elliptic arcs, and the sense check of an arc end held
+//!   tangent to a curve end;
+//! - [`arc_span`]: whether a direction from an arc's centre lies within its sweep;
 //! - [`angles`]: the signed angle between two tangents and the angle of a line;
 //! - [`axes`]: rows and marks along a coordinate axis (horizontal, vertical, their distances,
 //!   equal lengths);
@@ -13,6 +15,7 @@
 
 pub(crate) mod angles;
 pub(crate) mod arc_ends;
+pub(crate) mod arc_span;
 pub(crate) mod axes;
 pub(crate) mod ellipses;
 pub(crate) mod joins;
