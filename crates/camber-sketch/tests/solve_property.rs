@@ -622,3 +622,64 @@ proptest! {
         }
     }
 }
+
+/// A case the property once failed on: Newton stalls, and SLSQP's fallback used to run the
+/// first control point of the second B-spline — whose basis function vanishes past the knot at
+/// 0.5, where the free contact ended — off to 10⁴⁷ and report that feasible point solved (a
+/// second solve then saw a cusp: its speed floor scales with the ruined curve). The fallback
+/// searches within a box of a thousand sketch sizes now: the solve either fails and leaves the
+/// sketch as it was, or stays near it and solves again.
+#[test]
+fn fallback_solve_does_not_run_a_free_control_point_off_to_infinity() {
+    let entities = [
+        EntitySpec::BSpline(vec![
+            [2.8540432232470434, -1.0637679099963981],
+            [-1.073410501196949, 2.4863875157185222],
+            [-1.1617892781747365, -1.139243076607067],
+        ]),
+        EntitySpec::BSpline(vec![
+            [-0.4793960816030002, -2.5281619773435584],
+            [-2.847724253775844, -1.4808567526522667],
+            [-0.610569504784957, 0.8780272053363523],
+            [-0.3928064922319008, 0.038914092123828146],
+        ]),
+    ];
+    let spec = |kind, entities, points, numbers, flags| ConstraintSpec {
+        kind,
+        entities,
+        points,
+        numbers,
+        flags,
+    };
+    let constraints = [
+        spec(26, [1, 0, 0], [0, 0], [0.0; 3], 0),
+        spec(
+            16,
+            [0, 0, 0],
+            [0, 0],
+            [0.0, 0.10911612554883868, 0.026735801621855907],
+            176,
+        ),
+        spec(31, [6, 1, 0], [0, 0], [0.6406686488684479, 0.0, 0.0], 130),
+        spec(32, [6, 1, 0], [1, 0], [-0.3172265480137397, 0.0, 0.0], 29),
+        spec(0, [5, 0, 0], [2, 0], [0.0; 3], 0),
+    ];
+    let mut s = Sketch::new();
+    let ids: Vec<EntityId> = entities
+        .iter()
+        .filter_map(|e| add_entity(&mut s, e))
+        .collect();
+    assert_eq!(ids.len(), 2);
+    for c in &constraints {
+        s.add_constraint(build_constraint(&s, &ids, c)).unwrap();
+    }
+    let saved = snapshot(&s);
+    let size = extent(&s);
+    match s.solve() {
+        Err(_) => assert_eq!(snapshot(&s), saved, "a failed solve changed the sketch"),
+        Ok(_) => {
+            assert!(extent(&s) <= 1e4 * size, "solved extent {:e}", extent(&s));
+            s.solve_all().unwrap();
+        }
+    }
+}

@@ -80,7 +80,7 @@ pub use model::{
     DynResidual, Error, NonlinearOptions, Objective, Options, Priority, Problem, ProblemState,
     Residual, ResidualId, Result, Scalar, Selection, SolveReport, SolverChoice, SolverKind, Stamps,
     Status, TierOutcome, UnknownId, UserObjective, Var, DEFAULT_MAX_EVALUATIONS,
-    SLSQP_MAX_UNKNOWNS,
+    DEFAULT_SEARCH_BOX_RELATIVE, SLSQP_MAX_UNKNOWNS,
 };
 pub use policy::{solve, solve_linear, solve_newton, solve_newton_from, Plan, Start};
 

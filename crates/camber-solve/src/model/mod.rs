@@ -21,7 +21,8 @@ pub mod scalar;
 pub use errors::{Error, Result};
 pub use ids::{AuxId, BlockId, ConstraintId, ResidualId, UnknownId, Var};
 pub use nonlinear::{
-    slsqp_supports, NonlinearOptions, SolverChoice, DEFAULT_MAX_EVALUATIONS, SLSQP_MAX_UNKNOWNS,
+    slsqp_supports, NonlinearOptions, SolverChoice, DEFAULT_MAX_EVALUATIONS,
+    DEFAULT_SEARCH_BOX_RELATIVE, SLSQP_MAX_UNKNOWNS,
 };
 pub use objective::{Objective, UserObjective};
 pub use options::{CancelFlag, Options};

@@ -82,8 +82,16 @@ pub struct NonlinearOptions {
     /// SLSQP stops when an iteration changes every z_k by less than this relative amount.
     pub slsqp_xtol_rel: f64,
     /// Half-width of the box around the start z₀ that SLSQP searches in (intersected with the
-    /// problem's bounds), in the units of the unknowns; infinite means no box.
+    /// problem's bounds), in the units of the unknowns; infinite means no box beyond the
+    /// relative one below.
     pub search_box: f64,
+    /// The box's half-width relative to the start's scale: SLSQP never moves an unknown by
+    /// more than `search_box_relative`·(1 + max_k |z₀_k|) (default 1,000). A minimum-norm
+    /// solution lies within a few sketch sizes of the start; the relative box keeps SLSQP's
+    /// quasi-Newton model from running an unknown that the constraints no longer hold at the
+    /// last iterate (a control point whose basis function vanishes at a free contact) off to
+    /// 10⁴⁷ and calling that feasible point a solution. Infinite means no relative box.
+    pub search_box_relative: f64,
     /// What SLSQP minimises.
     pub objective: Objective,
     /// Run this solver instead of the automatic selection.
@@ -102,6 +110,9 @@ pub struct NonlinearOptions {
     pub max_evaluations: Option<usize>,
 }
 
+/// The default [`NonlinearOptions::search_box_relative`].
+pub const DEFAULT_SEARCH_BOX_RELATIVE: f64 = 1_000.0;
+
 /// The default [`NonlinearOptions::max_evaluations`].
 pub const DEFAULT_MAX_EVALUATIONS: usize = 50_000;
 
@@ -113,6 +124,7 @@ impl Default for NonlinearOptions {
             slsqp_max_evaluations: 2000,
             slsqp_xtol_rel: 1e-14,
             search_box: f64::INFINITY,
+            search_box_relative: DEFAULT_SEARCH_BOX_RELATIVE,
             objective: Objective::Displacement,
             force: None,
             soft: false,
@@ -153,6 +165,28 @@ impl NonlinearOptions {
         self
     }
 
+    /// Sets [`NonlinearOptions::search_box_relative`].
+    pub fn with_search_box_relative(mut self, factor: f64) -> Self {
+        self.search_box_relative = factor;
+        self
+    }
+
+    /// The half-width of SLSQP's box around `start` (see [`NonlinearOptions::search_box`] and
+    /// [`NonlinearOptions::search_box_relative`]).
+    ///
+    /// ```
+    /// use camber_solve::NonlinearOptions;
+    /// let o = NonlinearOptions::default().with_search_box_relative(10.0);
+    /// assert_eq!(o.search_box_half_width(&[0.5, -3.0]), 40.0);
+    /// let o = o.with_search_box(5.0);
+    /// assert_eq!(o.search_box_half_width(&[0.5, -3.0]), 5.0);
+    /// ```
+    pub fn search_box_half_width(&self, start: &[f64]) -> f64 {
+        let scale = start.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+        self.search_box
+            .min(self.search_box_relative * (1.0 + scale))
+    }
+
     /// Sets [`NonlinearOptions::objective`].
     pub fn with_objective(mut self, objective: Objective) -> Self {
         self.objective = objective;
@@ -177,6 +211,7 @@ impl NonlinearOptions {
             ("step tolerance", self.step_tolerance, false),
             ("SLSQP x tolerance", self.slsqp_xtol_rel, false),
             ("search box", self.search_box, true),
+            ("relative search box", self.search_box_relative, true),
             ("soft epsilon", self.soft_epsilon, false),
         ];
         for (index, (what, v, infinite_ok)) in checks.into_iter().enumerate() {

@@ -7,7 +7,9 @@
 //! with f the chosen [`crate::model::objective::Objective`] (by default ½‖z − z₀‖²_W), the residual
 //! rows as one vector-valued equality constraint whose Jacobian ∂g/∂z is the exact one from
 //! the residuals' dual numbers (chain rule through x = A·z + c), and the box l, u the bounds of
-//! the reduced unknowns intersected with z₀ ± [`crate::model::nonlinear::NonlinearOptions::search_box`].
+//! the reduced unknowns intersected with z₀ ± h, h the smaller of
+//! [`crate::model::nonlinear::NonlinearOptions::search_box`] and
+//! [`crate::model::nonlinear::NonlinearOptions::search_box_relative`]·(1 + ‖z₀‖∞).
 //! SLSQP does not need J to have full row rank, which is why it is the fallback for singular
 //! and degenerate starts.
 //!
@@ -159,7 +161,7 @@ pub(crate) fn run(
         None => None,
     };
     let settings = &options.nonlinear;
-    let half = settings.search_box;
+    let half = settings.search_box_half_width(reference);
     let lower: Vec<f64> = (0..n)
         .map(|k| ev.lower[k].max(reference[k] - half))
         .collect();
