@@ -17,6 +17,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         _ => ParameterMethod::Centripetal,
     };
     let verbose = std::env::args().any(|a| a == "-v");
+    let only = std::env::var("FITONLY").ok();
     let options = FitOptions::default().with_method(method);
     for tol in [1e-3, 1e-4, 1e-5] {
         let (mut counts, mut times, mut interpolated, mut worst) =
@@ -24,6 +25,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         for code in BENCH_CODES {
             for n in BENCH_COUNTS {
                 for spacing in [Spacing::Cosine, Spacing::Uniform] {
+                    let name = format!("{code}-{n}-{spacing:?}@{tol:e}");
+                    if only.as_ref().is_some_and(|o| *o != name) {
+                        continue;
+                    }
                     let pts = naca(code, n, spacing).ok_or("bad section")?;
                     let t0 = Instant::now();
                     let fit = fit_to_tolerance_with(&pts, tol, &options, &Budget::default())?;
@@ -33,10 +38,17 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                     worst = worst.max(fit.max_error / tol);
                     counts.push(c);
                     if verbose {
-                        println!("{code}-{n}-{spacing:?}@{tol:e} {c} {:.3e}", fit.max_error);
+                        println!(
+                            "{code}-{n}-{spacing:?}@{tol:e} {c} {:.3e} {:.2} ms",
+                            fit.max_error,
+                            times[times.len() - 1]
+                        );
                     }
                 }
             }
+        }
+        if counts.is_empty() {
+            continue;
         }
         counts.sort_unstable();
         times.sort_by(f64::total_cmp);

@@ -323,6 +323,24 @@ fn airfoils_fit_with_few_control_points_and_never_interpolate() {
 }
 
 #[test]
+fn sparse_sections_at_a_fine_tolerance_keep_their_count_near_the_splprep_one() {
+    // 71 points at equal steps of x: the nose holds a few points, which a fit within 1e-5
+    // nearly interpolates, and the error density of that fit used to predict far too few knots
+    // and spread them away from the nose (51 control points; FITPACK's splprep needs 30 at the
+    // same measured deviation). Every span now counts as erring a few percent of the tolerance
+    // at least.
+    let pts = naca("2415", 71, Spacing::Uniform).unwrap();
+    let fit =
+        fit_to_tolerance_with(&pts, 1e-5, &FitOptions::default(), &Budget::default()).unwrap();
+    let count = fit.curve.control_points().len();
+    assert!(fit.max_error <= 1e-5, "{}", fit.max_error);
+    assert!(count <= 46, "{count} control points");
+    for q in &pts {
+        assert!(closest_point(&fit.curve, q).unwrap().distance <= 1e-5);
+    }
+}
+
+#[test]
 fn adaptive_knots_beat_averaged_knots_at_a_sharp_leading_edge() {
     let pts = naca("0012", 201, Spacing::Cosine).unwrap();
     let opts = FitOptions::default();

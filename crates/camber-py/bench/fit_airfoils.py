@@ -30,7 +30,7 @@ TOLERANCES = [1e-3, 1e-4, 1e-5]
 
 def naca(code, points, spacing):
     """The section in the Selig order (as camber_workloads::airfoils::naca)."""
-    n = (points + 1) // 2
+    n = points // 2 + 1
     s = np.linspace(0.0, 1.0, n)
     x = 0.5 * (1.0 - np.cos(np.pi * s)) if spacing == "cosine" else s
     t = int(code[-2:]) / 100

@@ -31,12 +31,13 @@ const ERROR_FLOOR: f64 = 1e-3;
 
 impl Density {
     /// The error density of a fit with interior knots at `interior` (data-index coordinates)
-    /// and per-point errors `errors` (see [`span_errors`]).
-    pub fn from_errors(interior: &[f64], errors: &[f64], degree: usize) -> Self {
+    /// and per-point errors `errors` (see [`span_errors`]), every span counted as erring at
+    /// least `least` (length units; 0 for no floor beyond [`ERROR_FLOOR`] of the largest).
+    pub fn from_errors(interior: &[f64], errors: &[f64], degree: usize, least: f64) -> Self {
         let breaks = breaks_of(interior, errors.len());
         let worst = span_errors(&breaks, errors);
         let top = worst.iter().copied().fold(0.0, f64::max);
-        let floor = if top > 0.0 { top * ERROR_FLOOR } else { 1.0 };
+        let floor = if top > 0.0 { top * ERROR_FLOOR } else { 1.0 }.max(least);
         let exponent = 1.0 / (degree as f64 + 1.0);
         let values = worst
             .iter()
@@ -223,7 +224,7 @@ mod tests {
     #[test]
     fn equal_errors_keep_the_knots_of_equal_spans() {
         // Uniform density on [0, 4]: N knots at 4i/(N + 1).
-        let d = Density::from_errors(&[2.0], &[1.0; 5], 3);
+        let d = Density::from_errors(&[2.0], &[1.0; 5], 3, 0.0);
         let k = d.equidistribute(3);
         for (i, &t) in k.iter().enumerate() {
             assert!((t - (i + 1) as f64).abs() < 1e-12, "{k:?}");
@@ -234,7 +235,7 @@ mod tests {
     fn a_span_with_larger_error_gets_more_knots() {
         // Error 16 on [0, 2.5], 1 on [2.5, 5], cubic: density 2 against 1 per unit, so two
         // thirds of the mass is left: of 5 knots at equal sixths, the fourth is at the break.
-        let d = Density::from_errors(&[2.5], &[16.0, 16.0, 16.0, 1.0, 1.0, 1.0], 3);
+        let d = Density::from_errors(&[2.5], &[16.0, 16.0, 16.0, 1.0, 1.0, 1.0], 3, 0.0);
         let k = d.equidistribute(5);
         assert_eq!(k.iter().filter(|&&t| t < 2.5 - 1e-12).count(), 3, "{k:?}");
         assert!((k[3] - 2.5).abs() < 1e-12, "{k:?}");
@@ -242,6 +243,33 @@ mod tests {
             (k[0] - 0.625).abs() < 1e-12 && (k[4] - 3.75).abs() < 1e-12,
             "{k:?}"
         );
+    }
+
+    #[test]
+    fn a_floor_keeps_knots_in_a_span_that_fits_far_below_it() {
+        // Span [0, 2] fits to 1e-12, span [2, 4] errs 1. Without a floor beyond a thousandth
+        // of the largest error the first span has density (1e-3)^{1/4}/2 against 1/2, and both
+        // of 2 knots go into the second span. Counted as erring 1/16 (fourth root 1/2), its
+        // mass is 1/2 of 3/2: the knots fall at equal thirds of the mass, s = 2 and s = 3.
+        let errors = [0.0, 0.0, 1e-12, 1.0, 1.0];
+        let bare = Density::from_errors(&[2.0], &errors, 3, 0.0).equidistribute(2);
+        assert!(bare.iter().all(|&t| t > 2.0), "{bare:?}");
+        let floored = Density::from_errors(&[2.0], &errors, 3, 1.0 / 16.0).equidistribute(2);
+        assert!((floored[0] - 2.0).abs() < 1e-12, "{floored:?}");
+        assert!((floored[1] - 3.0).abs() < 1e-12, "{floored:?}");
+    }
+
+    #[test]
+    fn a_floor_bounds_how_far_a_prediction_goes_down() {
+        // Ten spans fitting to 1e-12 at tolerance 1: no floor predicts no knot at all; a floor
+        // of 1/16 of the tolerance counts each span as half a span of the tolerance's error,
+        // 5 spans (4 interior knots) in all.
+        let errors = [1e-12; 11];
+        let interior: Vec<f64> = (1..10).map(f64::from).collect();
+        let bare = Density::from_errors(&interior, &errors, 3, 0.0);
+        assert!(bare.predicted_count(1.0, 3) <= 1);
+        let floored = Density::from_errors(&interior, &errors, 3, 1.0 / 16.0);
+        assert_eq!(floored.predicted_count(1.0, 3), 4);
     }
 
     #[test]

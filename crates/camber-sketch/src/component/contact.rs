@@ -10,7 +10,10 @@ use camber_solve::{BlockId, ConstraintId};
 use super::problem::ComponentProblem;
 use crate::constraints::check::{point_tangent, side_width, ContactSpec, ContactTarget};
 use crate::constraints::piece::{curve_slots, Piece, Slot};
+use crate::constraints::shared::joins::join_speed_floor;
+use crate::ground::entity::Entity;
 use crate::ground::errors::{Error, Result};
+use crate::ground::ids::EntityId;
 use crate::ground::lookup::EntityLookup;
 use crate::ground::vocabulary::{CircleSide, Contact, LineSide, Rotation};
 use crate::residuals::clearance::{Clearance, TangentSpeed, Target, SPEED_FLOOR};
@@ -35,13 +38,25 @@ pub(crate) enum ActiveRow {
         /// The contact constraint.
         owner: ConstraintId,
     },
+    /// The speed floor |C′(u)| = κ·|C′₀(u)| at one end u of a curve of a free-direction join
+    /// (C′₀ measured before the solve; in a drag, before the session).
+    JoinSpeedFloor {
+        /// The join constraint.
+        owner: ConstraintId,
+        /// The curve whose end tangent collapsed.
+        curve: EntityId,
+        /// Whether it is the curve's end (else its start).
+        at_end: bool,
+    },
 }
 
 impl ActiveRow {
     /// The contact constraint the row belongs to.
     pub(crate) fn owner(self) -> ConstraintId {
         match self {
-            ActiveRow::Clearance { owner, .. } | ActiveRow::SpeedFloor { owner } => owner,
+            ActiveRow::Clearance { owner, .. }
+            | ActiveRow::SpeedFloor { owner }
+            | ActiveRow::JoinSpeedFloor { owner, .. } => owner,
         }
     }
 }
@@ -83,10 +98,51 @@ impl ComponentProblem {
         }
     }
 
-    /// The active row that answers a failed check at the solved unknowns `x`: a crossing gets
-    /// the clearance on its side of the contact, a cusp the speed floor. `None` for other
-    /// errors and for contacts that are not with a circle or a line.
-    pub(crate) fn active_row_for(&self, e: &Error, x: &[f64]) -> Result<Option<ActiveRow>> {
+    /// The free-direction join owned by `owner`: (the curve ending at the joint, the curve
+    /// starting there).
+    fn built_join(&self, owner: ConstraintId) -> Option<(EntityId, EntityId)> {
+        self.checks
+            .iter()
+            .find(|e| e.owner == owner)
+            .and_then(|e| e.check.joint())
+    }
+
+    /// The side of a join whose tangent at the joint fell furthest below its floor
+    /// ([`join_speed_floor`], measured on the curves in `before`) in the `solved` entities.
+    fn collapsed_side(
+        (first, second): (EntityId, EntityId),
+        solved: &[(EntityId, Entity)],
+        before: &dyn EntityLookup,
+    ) -> Result<Option<(EntityId, bool)>> {
+        let mut worst: Option<((EntityId, bool), f64)> = None;
+        for (curve, at_end) in [(first, true), (second, false)] {
+            let Some((_, e)) = solved.iter().find(|(id, _)| *id == curve) else {
+                continue;
+            };
+            let (a, b) = e.domain().unwrap_or((0.0, 1.0));
+            let u = if at_end { b } else { a };
+            let (_, t) = point_tangent(e, curve, u)?;
+            let floor = join_speed_floor(before, curve, u)?;
+            let ratio = t[0].hypot(t[1]) / floor.max(f64::MIN_POSITIVE);
+            if ratio <= 1.0 && worst.is_none_or(|(_, r)| ratio < r) {
+                worst = Some(((curve, at_end), ratio));
+            }
+        }
+        Ok(worst.map(|(side, _)| side))
+    }
+
+    /// The active row that answers a failed check at the solved unknowns `x` (the `solved`
+    /// entities; `before`, the entities before the solve): a crossing gets the clearance on its
+    /// side of the contact, a cusp the speed floor of the contact or of the collapsed side of a
+    /// free-direction join. `None` for other errors and for contacts that are not with a circle
+    /// or a line.
+    pub(crate) fn active_row_for(
+        &self,
+        e: &Error,
+        x: &[f64],
+        solved: &[(EntityId, Entity)],
+        before: &dyn EntityLookup,
+    ) -> Result<Option<ActiveRow>> {
         Ok(match *e {
             Error::ContactCrossed {
                 constraint,
@@ -99,9 +155,21 @@ impl ComponentProblem {
                 }),
                 None => None,
             },
-            Error::Cusp { constraint, .. } => self
-                .built_contact(constraint)
-                .map(|_| ActiveRow::SpeedFloor { owner: constraint }),
+            Error::Cusp { constraint, .. } => match self.built_contact(constraint) {
+                Some(_) => Some(ActiveRow::SpeedFloor { owner: constraint }),
+                None => match self.built_join(constraint) {
+                    Some(join) => {
+                        Self::collapsed_side(join, solved, before)?.map(|(curve, at_end)| {
+                            ActiveRow::JoinSpeedFloor {
+                                owner: constraint,
+                                curve,
+                                at_end,
+                            }
+                        })
+                    }
+                    None => None,
+                },
+            },
             _ => None,
         })
     }
@@ -188,7 +256,8 @@ impl ComponentProblem {
     }
 
     /// Adds an active row, built against the problem's starting values (owned by the contact
-    /// constraint). Returns false when it does not apply (no such contact, or a vanishing
+    /// constraint), or for a join's speed floor against the curve in `lookup` (the entities
+    /// before the solve). Returns false when it does not apply (no such contact, or a vanishing
     /// starting tangent for a speed floor).
     pub(crate) fn add_active_row(
         &mut self,
@@ -196,6 +265,9 @@ impl ComponentProblem {
         row: ActiveRow,
     ) -> Result<bool> {
         let owner = row.owner();
+        if let ActiveRow::JoinSpeedFloor { curve, at_end, .. } = row {
+            return self.add_join_speed_floor(lookup, owner, curve, at_end);
+        }
         let Some(contact) = self.built_contact(owner) else {
             return Ok(false);
         };
@@ -251,10 +323,43 @@ impl ComponentProblem {
                 };
                 Arc::new(TangentSpeed::new(basis, param, speed, width))
             }
+            // Answered by `add_join_speed_floor` above.
+            ActiveRow::JoinSpeedFloor { .. } => return Ok(false),
         };
         let piece = Piece::General {
             residual,
             slots,
+            check: None,
+        };
+        self.add_piece(owner, &piece)?;
+        Ok(true)
+    }
+
+    /// Adds |C′(u)| = κ·|C′₀(u)| at the joint end u of `curve` (C′₀ on the curve in `lookup`),
+    /// owned by the join `owner`: the closed set that keeps the minimum-displacement solution
+    /// of a free-direction join off the cusp it would otherwise run into (see
+    /// [`crate::residuals::clearance`]). False for a vanishing starting tangent.
+    fn add_join_speed_floor(
+        &mut self,
+        lookup: &dyn EntityLookup,
+        owner: ConstraintId,
+        curve: EntityId,
+        at_end: bool,
+    ) -> Result<bool> {
+        let e = lookup.lookup(curve)?;
+        let (a, b) = e.domain().unwrap_or((0.0, 1.0));
+        let u = if at_end { b } else { a };
+        let (_, t) = point_tangent(e, curve, u)?;
+        let speed = SPEED_FLOOR * t[0].hypot(t[1]);
+        if !(speed.is_finite() && speed > 0.0) {
+            return Ok(false);
+        }
+        let (basis, _) = curve_slots(lookup, curve)?;
+        let width = side_width(basis.domain());
+        let (fixed, points) = basis.at(u, 1);
+        let piece = Piece::General {
+            residual: Arc::new(TangentSpeed::new(fixed, Param::Fixed(u), speed, width)),
+            slots: points.iter().map(|j| Slot::Point(curve, *j)).collect(),
             check: None,
         };
         self.add_piece(owner, &piece)?;

@@ -234,7 +234,7 @@ fn active_set(
             }
             Err(e) => e,
         };
-        match cp.active_row_for(&failure, &x)? {
+        match cp.active_row_for(&failure, &x, &solved, before)? {
             Some(row)
                 if added < MAX_ACTIVE_ROWS && !rows.contains(&row) && !dropped.contains(&row) =>
             {

@@ -196,6 +196,12 @@ pub trait SolvedCheck: Debug + Send + Sync {
     /// [`Error::ContactCrossed`], …).
     fn verify(&self, state: &SolvedState<'_>) -> Result<()>;
 
+    /// The curves of the free-direction join this check guards, (the one ending at the joint,
+    /// the one starting there): a cusp at the joint gets a speed floor on the collapsed side.
+    fn joint(&self) -> Option<(EntityId, EntityId)> {
+        None
+    }
+
     /// The contact this check guards, when it is one with a circle or a line (the active set
     /// of honest contact adds its clearance rows and speed floors from it).
     fn contact(&self) -> Option<ContactSpec> {

@@ -60,4 +60,8 @@ impl SolvedCheck for G1JoinFree {
     fn verify(&self, state: &SolvedState<'_>) -> Result<()> {
         verify_same_sense(state, self.first, self.second)
     }
+
+    fn joint(&self) -> Option<(EntityId, EntityId)> {
+        Some((self.first, self.second))
+    }
 }

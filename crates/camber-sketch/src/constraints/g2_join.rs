@@ -95,4 +95,8 @@ impl SolvedCheck for G2Join {
     fn verify(&self, state: &SolvedState<'_>) -> Result<()> {
         verify_same_sense(state, self.first, self.second)
     }
+
+    fn joint(&self) -> Option<(EntityId, EntityId)> {
+        Some((self.first, self.second))
+    }
 }

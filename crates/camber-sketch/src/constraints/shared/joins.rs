@@ -3,7 +3,7 @@
 //! the coincidence of its ends, the tangents-parallel residual and its same-sense check, and the
 //! tangency of a curve end.
 
-use crate::constraints::check::{point_tangent, SolvedState};
+use crate::constraints::check::{point_tangent, speed_floor, SolvedState};
 use crate::constraints::compiler::check_direction;
 use crate::constraints::compiler::distinct;
 use crate::constraints::glyph::{self, Glyph};
@@ -16,6 +16,7 @@ use crate::ground::errors::{Error, Result};
 use crate::ground::ids::{EntityId, PointRef};
 use crate::ground::lookup::EntityLookup;
 use crate::ground::vocabulary::{Sense, TangentForm};
+use crate::residuals::clearance::SPEED_FLOOR;
 use crate::residuals::curve::{
     composed_hessian, composed_jacobian, cross, dot, Blocks, ComposedCurve, Param,
 };
@@ -217,7 +218,28 @@ pub(crate) fn joint_bases(
     })
 }
 
-/// The check of a free join: the tangents at the joint point the same way.
+/// How far below its floor κ·|C′₀| a join's tangent speed may end before the check asks for the
+/// floor row (a relative slack for the rounding of a solve that stands on the floor).
+const JOIN_FLOOR_SLACK: f64 = 1e-6;
+
+/// The speed below which the tangent of `curve` at its joint end `u` counts as collapsing:
+/// [`SPEED_FLOOR`]·|C′₀(u)| (less [`JOIN_FLOOR_SLACK`]), C′₀ on the curve before the solve (in
+/// a drag, before the session), and never below the cusp floor of [`SolvedState::floor`].
+pub(crate) fn join_speed_floor(before: &dyn EntityLookup, curve: EntityId, u: f64) -> Result<f64> {
+    let e = before.lookup(curve)?;
+    let (_, t) = point_tangent(e, curve, u)?;
+    let floor = (1.0 - JOIN_FLOOR_SLACK) * SPEED_FLOOR * t[0].hypot(t[1]);
+    Ok(floor.max(speed_floor(e)))
+}
+
+/// The check of a free join: neither tangent at the joint has shrunk below its floor
+/// ([`join_speed_floor`]), and they point the same way.
+///
+/// Moving a joint while keeping the tangents parallel is cheapest by shortening the leg it
+/// moves onto: the minimum-displacement solution runs into a cusp, where the tangent has no
+/// direction left and the angle row reads as met. A tangent below the floor fails with
+/// [`Error::Cusp`], which the solve answers with the floor row on that side (the active set of
+/// `component::solve`): the tangent then turns at the floor's length.
 pub(crate) fn verify_same_sense(
     state: &SolvedState<'_>,
     first: EntityId,
@@ -230,6 +252,14 @@ pub(crate) fn verify_same_sense(
     );
     let (_, t1) = point_tangent(e1, first, b1)?;
     let (_, t2) = point_tangent(e2, second, a2)?;
+    state.not_cusp(
+        t1[0].hypot(t1[1]),
+        join_speed_floor(state.before, first, b1)?,
+    )?;
+    state.not_cusp(
+        t2[0].hypot(t2[1]),
+        join_speed_floor(state.before, second, a2)?,
+    )?;
     state.sense(t1[0] * t2[0] + t1[1] * t2[1])
 }
 
