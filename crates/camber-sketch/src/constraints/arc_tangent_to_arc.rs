@@ -164,13 +164,7 @@ impl ConstraintKind for ArcTangentToArc {
     }
 
     fn compile(&self, cx: &mut Compiler<'_>) -> Result<()> {
-        if !Round::of(cx, self.arc)?.is_arc() {
-            return Err(Error::WrongEntityKind {
-                entity: self.arc,
-                expected: "arc",
-                found: "circle",
-            });
-        }
+        Round::arc(cx, self.arc)?;
         distinct(self.arc, self.other)?;
         let other = Round::of(cx, self.other)?;
         let mut slots = vec![

@@ -117,13 +117,7 @@ impl ConstraintKind for ArcTangentToCurve {
     }
 
     fn compile(&self, cx: &mut Compiler<'_>) -> Result<()> {
-        if !Round::of(cx, self.arc)?.is_arc() {
-            return Err(Error::WrongEntityKind {
-                entity: self.arc,
-                expected: "arc",
-                found: "circle",
-            });
-        }
+        Round::arc(cx, self.arc)?;
         distinct(self.arc, self.curve)?;
         let (basis, curve_slots, u) =
             cx.curve_end_contact(self.curve, self.curve_end == ArcEnd::End)?;

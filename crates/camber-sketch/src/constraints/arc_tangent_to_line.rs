@@ -84,13 +84,7 @@ impl ConstraintKind for ArcTangentToLine {
     }
 
     fn compile(&self, cx: &mut Compiler<'_>) -> Result<()> {
-        if !Round::of(cx, self.arc)?.is_arc() {
-            return Err(Error::WrongEntityKind {
-                entity: self.arc,
-                expected: "arc",
-                found: "circle",
-            });
-        }
+        Round::arc(cx, self.arc)?;
         cx.line(self.line)?;
         let slots = vec![
             Slot::Point(self.arc, 0),

@@ -163,13 +163,7 @@ impl ConstraintKind for ArcTouchesCircle {
     }
 
     fn compile(&self, cx: &mut Compiler<'_>) -> Result<()> {
-        if !Round::of(cx, self.arc)?.is_arc() {
-            return Err(Error::WrongEntityKind {
-                entity: self.arc,
-                expected: "arc",
-                found: "circle",
-            });
-        }
+        Round::arc(cx, self.arc)?;
         distinct(self.arc, self.circle)?;
         let other = Round::of(cx, self.circle)?;
         let mut slots = vec![

@@ -135,13 +135,7 @@ impl ConstraintKind for ArcTouchesLine {
     }
 
     fn compile(&self, cx: &mut Compiler<'_>) -> Result<()> {
-        if !Round::of(cx, self.arc)?.is_arc() {
-            return Err(Error::WrongEntityKind {
-                entity: self.arc,
-                expected: "arc",
-                found: "circle",
-            });
-        }
+        Round::arc(cx, self.arc)?;
         distinct(self.arc, self.line)?;
         cx.line(self.line)?;
         let slots = vec![

@@ -42,6 +42,22 @@ impl Round {
         }
     }
 
+    /// The entity `id` of `cx`, which must be an arc (the kinds that read an arc's ends).
+    ///
+    /// # Errors
+    /// Those of [`Round::of`] for an entity that is not round; [`Error::WrongEntityKind`]
+    /// (expected "arc") for a circle.
+    pub(crate) fn arc(cx: &Compiler<'_>, id: EntityId) -> Result<Round> {
+        match Round::of(cx, id)? {
+            Round::Arc(_) => Ok(Round::Arc(id)),
+            Round::Circle(_) => Err(Error::WrongEntityKind {
+                entity: id,
+                expected: "arc",
+                found: "circle",
+            }),
+        }
+    }
+
     /// Whether it is an arc.
     pub(crate) fn is_arc(self) -> bool {
         matches!(self, Round::Arc(_))
