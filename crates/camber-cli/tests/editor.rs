@@ -1000,7 +1000,7 @@ fn arcs_and_ellipses_are_drawn_along_themselves_and_drag() {
     assert_eq!(post(&mut ed, "/api/solve", json!({})).0, 200);
     let v = state(&mut ed);
     let mut round = 0;
-    for e in v["entities"].as_array().unwrap() {
+    for e in v["scene"]["entities"].as_array().unwrap() {
         let kind = e["kind"].as_str().unwrap();
         let id = EntityId(e["id"].as_u64().unwrap());
         let samples: Vec<Point2<f64>> = e["samples"]
