@@ -170,8 +170,9 @@ pub enum Error {
         /// What the kernel refused, with the value.
         reason: camber_geom::Error,
     },
-    /// Two lines that cannot be filleted with the radius asked for: parallel or collinear
-    /// lines, or a radius whose tangent points fall beyond a line's far end.
+    /// Two entities that cannot be filleted with the radius asked for: parallel or collinear
+    /// lines, a line or curve pair that shares no end or is tangent at it, or a radius whose
+    /// tangent points fall beyond an entity's far end or exceed a curve's radius of curvature.
     ///
     /// ```
     /// use camber_sketch::{Error, Sketch};
@@ -181,18 +182,95 @@ pub enum Error {
     /// let b = s.add_line(Point2::new(0.0, 1.0), Point2::new(1.0, 1.0))?;
     /// assert_eq!(
     ///     s.fillet(a, b, 0.1).unwrap_err().to_string(),
-    ///     "cannot fillet entity 0 and entity 1: the lines are parallel"
+    ///     "cannot fillet entity 0 and entity 1 with radius 0.1: the lines are parallel"
     /// );
     /// # Ok::<(), Error>(())
     /// ```
-    #[error("cannot fillet {first} and {second}: {reason}")]
+    #[error("cannot fillet {first} and {second} with radius {radius}: {reason}")]
     FilletImpossible {
-        /// The first line.
+        /// The first entity.
         first: EntityId,
-        /// The second line.
+        /// The second entity.
         second: EntityId,
+        /// The radius asked for.
+        radius: f64,
         /// Why, in words.
         reason: &'static str,
+    },
+    /// An operation that cuts an entity (a fillet's trim of a free-form curve, a split, a trim)
+    /// met a constraint reading that entity that it cannot carry to the piece it keeps (one
+    /// reading the whole entity, an interior point or a parameter; docs/sketch.md lists what is
+    /// carried). Nothing changed.
+    ///
+    /// ```
+    /// use camber_sketch::constraints::Horizontal;
+    /// use camber_sketch::{Error, Sketch};
+    /// use nalgebra::Point2;
+    /// let mut s = Sketch::new();
+    /// let a = s.add_line(Point2::new(0.0, 0.0), Point2::new(2.0, 0.0))?;
+    /// let b = s.add_line(Point2::new(1.0, -1.0), Point2::new(1.0, 1.0))?;
+    /// let h = s.add_constraint(Horizontal::line(a))?;
+    /// assert_eq!(
+    ///     s.split_at_intersection(a, b, None).unwrap_err(),
+    ///     Error::EntityConstrained { entity: a, constraint: h, operation: "split" }
+    /// );
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("cannot {operation} {entity}: {constraint} reads it and would change meaning")]
+    EntityConstrained {
+        /// The entity to cut.
+        entity: EntityId,
+        /// The constraint that reads it.
+        constraint: ConstraintId,
+        /// "split", "trim" or "fillet".
+        operation: &'static str,
+    },
+    /// A split or trim of an entity where it crosses another found no crossing in the cut
+    /// entity's interior.
+    ///
+    /// ```
+    /// use camber_sketch::{Error, Sketch};
+    /// use nalgebra::Point2;
+    /// let mut s = Sketch::new();
+    /// let a = s.add_line(Point2::new(0.0, 0.0), Point2::new(1.0, 0.0))?;
+    /// let b = s.add_line(Point2::new(0.0, 1.0), Point2::new(1.0, 1.0))?;
+    /// assert_eq!(
+    ///     s.split_at_intersection(a, b, None).unwrap_err().to_string(),
+    ///     "entity 0 does not cross entity 1 in its interior"
+    /// );
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("{entity} does not cross {other} in its interior")]
+    NoIntersection {
+        /// The entity to cut.
+        entity: EntityId,
+        /// The entity it should cross.
+        other: EntityId,
+    },
+    /// A split or trim without a point to choose by, where the entity crosses the other more
+    /// than once: pass the point the crossing should be nearest.
+    ///
+    /// ```
+    /// use camber_sketch::{Error, Sketch};
+    /// use nalgebra::Point2;
+    /// let mut s = Sketch::new();
+    /// let a = s.add_line(Point2::new(-2.0, 0.0), Point2::new(2.0, 0.0))?;
+    /// let c = s.add_circle(Point2::new(0.0, 0.0), 1.0)?;
+    /// assert_eq!(
+    ///     s.split_at_intersection(a, c, None).unwrap_err(),
+    ///     Error::AmbiguousIntersection { entity: a, other: c, count: 2 }
+    /// );
+    /// assert!(s.split_at_intersection(a, c, Some(Point2::new(1.0, 0.0))).is_ok());
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("{entity} crosses {other} {count} times: give the point the crossing is nearest")]
+    AmbiguousIntersection {
+        /// The entity to cut.
+        entity: EntityId,
+        /// The entity it crosses.
+        other: EntityId,
+        /// How many crossings there are.
+        count: usize,
     },
     /// A solve that would turn an arc inside out: its end carried past its start (or the
     /// reverse), so that its sweep, read from its blocks, jumps by more than π (from near 0 to

@@ -35,7 +35,8 @@ pub struct Fillet {
     pub geometry: camber_geom::CircularArc<f64>,
     /// The constraints added: two coincident, two tangency, the radius.
     pub added: Vec<ConstraintId>,
-    /// The corner coincidences removed.
+    /// The constraints removed: the corner coincidence, and with a trimmed free-form curve
+    /// every constraint reading its removed end.
     pub removed: Vec<ConstraintId>,
 }
 
@@ -62,9 +63,12 @@ fn side(line: EntityId, ends: [Point2<f64>; 2], x: Point2<f64>) -> Side {
 
 /// # Operations
 impl Sketch {
-    /// Rounds the corner between two lines with an arc of radius `radius` tangent to both
-    /// (module `fillet`: the closed form and what is added and removed). On any error the sketch
-    /// is unchanged.
+    /// Rounds the corner between two lines, a line and a free-form curve (Bézier, B-spline,
+    /// NURBS) or two free-form curves with an arc of radius `radius` tangent to both, trimming
+    /// them to its ends. Two lines need not meet (module `fillet`: the closed form and what is
+    /// added and removed); a pair with a curve must share an end, the corner (module
+    /// `fillet_curve`: the offset-curve search, the trim of a curve, what is added and removed).
+    /// On any error the sketch is unchanged.
     ///
     /// ```
     /// use camber_sketch::constraints::Coincident;
@@ -82,19 +86,23 @@ impl Sketch {
     /// ```
     ///
     /// # Errors
-    /// [`Error::WrongEntityKind`] for a non-line; [`Error::SameEntity`];
-    /// [`Error::NotPositive`] for the radius; [`Error::FilletImpossible`] for parallel lines or
-    /// a radius whose tangent points fall beyond a line's far end.
+    /// [`Error::WrongEntityKind`] for an entity that is neither a line nor a Bézier, B-spline
+    /// or NURBS curve; [`Error::SameEntity`]; [`Error::NotPositive`] for the radius;
+    /// [`Error::FilletImpossible`] for parallel lines, a curve pair sharing no end or tangent
+    /// there, or a radius that does not fit (tangent points beyond a far end, larger than a
+    /// curve's radius of curvature); [`Error::EntityConstrained`] for a constraint on a curve
+    /// that its trim cannot carry.
     pub fn fillet(&mut self, first: EntityId, second: EntityId, radius: f64) -> Result<Fillet> {
-        let line = |s: &Sketch, id: EntityId| match s.entity(id)? {
-            Entity::Line(ends) => Ok(*ends),
+        let kind = |s: &Sketch, id: EntityId| match s.entity(id)? {
+            Entity::Line(_) => Ok(true),
+            Entity::Bezier(_) | Entity::BSpline(_) | Entity::Nurbs(_) => Ok(false),
             other => Err(Error::WrongEntityKind {
                 entity: id,
-                expected: "line",
+                expected: "line, Bézier, B-spline or NURBS curve",
                 found: other.kind_name(),
             }),
         };
-        let (la, lb) = (line(self, first)?, line(self, second)?);
+        let lines = kind(self, first)? & kind(self, second)?;
         if first == second {
             return Err(Error::SameEntity { entity: first });
         }
@@ -104,9 +112,28 @@ impl Sketch {
                 value: radius,
             });
         }
+        if lines {
+            self.fillet_lines(first, second, radius)
+        } else {
+            self.fillet_curves(first, second, radius)
+        }
+    }
+
+    /// The fillet of two lines (module documentation).
+    fn fillet_lines(&mut self, first: EntityId, second: EntityId, radius: f64) -> Result<Fillet> {
+        let line = |s: &Sketch, id: EntityId| match s.entity(id)? {
+            Entity::Line(ends) => Ok(*ends),
+            other => Err(Error::WrongEntityKind {
+                entity: id,
+                expected: "line",
+                found: other.kind_name(),
+            }),
+        };
+        let (la, lb) = (line(self, first)?, line(self, second)?);
         let impossible = |reason| Error::FilletImpossible {
             first,
             second,
+            radius,
             reason,
         };
         // X = A₀ + s·dₐ on both lines: cross(dₐ, d_b)·s = cross(B₀ − A₀, d_b).
@@ -240,7 +267,7 @@ impl Sketch {
     /// Puts back what a failed fillet changed, newest first: the added constraints and arc
     /// removed, the lines restored with their weights, the corner coincidences added again
     /// under their ids and priorities, and the next automatic id as it was.
-    fn undo_fillet(&mut self, journal: Journal) {
+    pub(super) fn undo_fillet(&mut self, journal: Journal) {
         for id in journal.added.iter().rev() {
             let removed = self.remove_constraint(*id);
             debug_assert!(
@@ -271,7 +298,7 @@ impl Sketch {
     }
 
     /// The point weights of entity `id` that differ from 1, by point index.
-    fn weights_of(&self, id: EntityId) -> PointWeights {
+    pub(super) fn weights_of(&self, id: EntityId) -> PointWeights {
         self.weights
             .range((id, 0)..=(id, usize::MAX))
             .map(|((_, index), w)| (*index, *w))
@@ -280,20 +307,20 @@ impl Sketch {
 }
 
 /// Point weights of one entity: (point index, weight).
-type PointWeights = Vec<(usize, f64)>;
+pub(super) type PointWeights = Vec<(usize, f64)>;
 
 /// What a fillet changed so far, to put back if a later step fails.
-struct Journal {
+pub(super) struct Journal {
     /// The sketch's next automatic id before the fillet.
-    next_id: u64,
-    /// Each trimmed line as it was, with its point weights.
-    lines: Vec<(EntityId, Entity, PointWeights)>,
-    /// Each removed corner coincidence with its priority.
-    removed: Vec<(ConstraintId, Constraint, Option<camber_solve::Priority>)>,
+    pub(super) next_id: u64,
+    /// Each trimmed entity as it was, with its point weights.
+    pub(super) lines: Vec<(EntityId, Entity, PointWeights)>,
+    /// Each removed constraint with its priority.
+    pub(super) removed: Vec<(ConstraintId, Constraint, Option<camber_solve::Priority>)>,
     /// The arc, once added.
-    arc: Option<EntityId>,
+    pub(super) arc: Option<EntityId>,
     /// The constraints added.
-    added: Vec<ConstraintId>,
+    pub(super) added: Vec<ConstraintId>,
 }
 
 #[cfg(test)]

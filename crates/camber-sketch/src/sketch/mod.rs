@@ -7,11 +7,14 @@
 //! entities they touch as dirty, and [`Sketch::solve`] solves only the components that contain a
 //! dirty entity.
 
+mod cut;
 mod describe;
 mod extent;
 pub mod fillet;
+mod fillet_curve;
 pub mod parameters;
 pub(crate) mod prepared;
+pub mod split;
 pub mod warnings;
 
 use std::collections::{BTreeMap, BTreeSet};

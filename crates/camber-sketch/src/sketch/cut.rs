@@ -1,0 +1,237 @@
+//! Cutting an entity at a parameter: the piece kept, and which constraints reading the entity
+//! can follow it.
+//!
+//! A cut keeps the exact shape. A line keeps its two end blocks (one moved to the cut point);
+//! a circular arc keeps its centre and moves one end block to the cut point, projected onto
+//! its circle; a Bézier curve is subdivided by de Casteljau's algorithm (same degree, so the
+//! same number of control points); a B-spline or NURBS curve is split by knot insertion and
+//! the piece kept is then refined (a knot in the middle of its widest span, repeatedly) until
+//! it has as many control points as the curve had, so a cut frees no unknowns and takes none.
+//!
+//! A constraint reading the entity can follow the cut only when it reads the entity at an end
+//! or through what every piece shares: a `coincident` or `fixed` on an end point, an end point
+//! held on another entity (`point_on_line`, `point_on_circle`, `point_on_arc`,
+//! `point_on_ellipse`, `point_on_curve`), the arc tangencies at a curve's end
+//! (`arc_tangent_to_curve`, `elliptic_arc_tangent_to_curve`) or at a cut arc's end, a point on
+//! a cut line and the arc and elliptic-arc tangencies to a cut line (its infinite line), and
+//! the radius of a cut arc. Any other one (an interior control point, a contact at a parameter,
+//! the whole entity fixed, a length) would change meaning and stops the operation.
+
+use nalgebra::{Point2, Vector2};
+use smallvec::SmallVec;
+
+use crate::constraints::arc_tangent_to_line::ArcEnd;
+use crate::constraints::Constraint;
+use crate::ground::entity::Entity;
+use crate::ground::errors::{Error, Result};
+use crate::ground::ids::{EntityId, PointRef};
+use crate::ground::vocabulary::FixTarget;
+
+/// The ends of an entity a carried constraint reads (none for one that reads only what every
+/// piece shares, such as a line's direction).
+pub(crate) type EndsRead = SmallVec<[ArcEnd; 2]>;
+
+/// Whether `e` is a kind that can be cut: a line, a circular arc, or a Bézier, B-spline or
+/// NURBS curve.
+pub(crate) fn cuttable(e: &Entity) -> bool {
+    matches!(
+        e,
+        Entity::Line(_)
+            | Entity::Arc(_)
+            | Entity::Bezier(_)
+            | Entity::BSpline(_)
+            | Entity::Nurbs(_)
+    )
+}
+
+/// Which end of entity `id` (the entity `e`) the point reference `r` reads: `Start`/`End`, or
+/// the control point an end resolves to (a line's 0 and 1, an arc's 1 and 2, a curve's first
+/// and last); `None` for any other point (a centre, an interior control point).
+pub(crate) fn end_of(e: &Entity, id: EntityId, r: PointRef) -> Option<ArcEnd> {
+    if r.entity() != id {
+        return None;
+    }
+    match r {
+        PointRef::Start(_) => Some(ArcEnd::Start),
+        PointRef::End(_) => Some(ArcEnd::End),
+        PointRef::Control(_, i) => {
+            let n = e.points().len();
+            let (first, last) = match e {
+                Entity::Arc(_) => (1, 2),
+                _ => (0, n.saturating_sub(1)),
+            };
+            let is_arc = matches!(e, Entity::Arc(_));
+            if i == first && (is_arc || e.is_clamped(false)) {
+                Some(ArcEnd::Start)
+            } else if i == last && (is_arc || e.is_clamped(true)) {
+                Some(ArcEnd::End)
+            } else {
+                None
+            }
+        }
+        PointRef::Point(_) => None,
+    }
+}
+
+/// The ends of entity `id` that constraint `c` reads, when it can follow a cut of that entity
+/// (module documentation); `None` when it cannot.
+pub(crate) fn carried_ends(c: &Constraint, id: EntityId, e: &Entity) -> Option<EndsRead> {
+    let mut ends = EndsRead::new();
+    let mut point = |r: PointRef| -> Option<()> {
+        if r.entity() == id {
+            ends.push(end_of(e, id, r)?);
+        }
+        Some(())
+    };
+    match c {
+        Constraint::Coincident(k) => {
+            point(k.a)?;
+            point(k.b)?;
+        }
+        Constraint::Fixed(k) => match k.target {
+            FixTarget::Point(r) => point(r)?,
+            FixTarget::Entity(_) => return None,
+        },
+        Constraint::ArcTangentToCurve(k) => {
+            if k.arc == id {
+                ends.push(k.end);
+            }
+            if k.curve == id {
+                ends.push(k.curve_end);
+            }
+        }
+        Constraint::EllipticArcTangentToCurve(k) => {
+            if k.arc == id {
+                return None;
+            }
+            ends.push(k.curve_end);
+        }
+        Constraint::ArcTangentToLine(k) => {
+            if k.arc == id {
+                ends.push(k.end);
+            }
+        }
+        Constraint::EllipticArcTangentToLine(k) => {
+            if k.arc == id {
+                return None;
+            }
+        }
+        Constraint::Radius(k) if k.circle == id => {}
+        Constraint::PointOnLine(k) => point(k.point)?,
+        Constraint::PointOnCircle(k) => point(k.point)?,
+        Constraint::PointOnEllipse(k) => point(k.point)?,
+        Constraint::PointOnArc(k) if k.arc != id => point(k.point)?,
+        Constraint::PointOnCurve(k) if k.curve != id => point(k.point)?,
+        _ => return None,
+    }
+    Some(ends)
+}
+
+/// The piece of entity `e` from the cut at parameter `t` to its end (`keep_end`) or from its
+/// start to the cut, as the same kind of entity (module documentation). For an arc, `t` is
+/// read as the cut point's angle about the centre.
+///
+/// # Errors
+/// The kernel's errors for a cut too near an end ([`camber_geom::Error::DegenerateSpan`], …);
+/// [`Error::WrongEntityKind`] for a kind that cannot be cut.
+pub(crate) fn piece(id: EntityId, e: &Entity, t: f64, keep_end: bool) -> Result<Entity> {
+    Ok(match e {
+        Entity::Line([a, b]) => {
+            let x = a + (b - a) * t;
+            if keep_end {
+                Entity::Line([x, *b])
+            } else {
+                Entity::Line([*a, x])
+            }
+        }
+        Entity::Arc([c, s, f]) => {
+            let r = (s - c).norm();
+            let x = c + Vector2::new(t.cos(), t.sin()) * r;
+            if keep_end {
+                Entity::Arc([*c, x, *f])
+            } else {
+                Entity::Arc([*c, *s, x])
+            }
+        }
+        Entity::Bezier(curve) => {
+            let (left, right) = curve.subdivide(t)?;
+            Entity::Bezier(if keep_end { right } else { left })
+        }
+        Entity::BSpline(curve) => {
+            let (left, right) = curve.split(t)?;
+            let mut kept = if keep_end { right } else { left };
+            while kept.control_points().len() < curve.control_points().len() {
+                kept = kept.insert_knot(widest_span(kept.knots().as_slice()), 1)?;
+            }
+            Entity::BSpline(kept)
+        }
+        Entity::Nurbs(curve) => {
+            let (left, right) = curve.split(t)?;
+            let mut kept = if keep_end { right } else { left };
+            while kept.control_points().len() < curve.control_points().len() {
+                kept = kept.insert_knot(widest_span(kept.knots().as_slice()), 1)?;
+            }
+            Entity::Nurbs(kept)
+        }
+        other => {
+            return Err(Error::WrongEntityKind {
+                entity: id,
+                expected: "line, arc, Bézier, B-spline or NURBS curve",
+                found: other.kind_name(),
+            })
+        }
+    })
+}
+
+/// The middle of the widest span of a knot vector.
+fn widest_span(knots: &[f64]) -> f64 {
+    let (mut lo, mut hi) = (knots[0], knots[0]);
+    for w in knots.windows(2) {
+        if w[1] - w[0] > hi - lo {
+            (lo, hi) = (w[0], w[1]);
+        }
+    }
+    0.5 * (lo + hi)
+}
+
+/// The cut parameter of point `x` on entity `e`: the line parameter of its foot, the angle of
+/// x about an arc's centre; `None` for free-form curves (their parameter comes from the query
+/// that found the point).
+pub(crate) fn line_or_arc_parameter(e: &Entity, x: Point2<f64>) -> Option<f64> {
+    match e {
+        Entity::Line([a, b]) => {
+            let d = b - a;
+            Some((x - a).dot(&d) / d.norm_squared())
+        }
+        Entity::Arc([c, _, _]) => Some((x - c).y.atan2((x - c).x)),
+        _ => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used)] // a failed unwrap is a failed test
+
+    use super::*;
+    use camber_geom::{BSplineCurve2, KnotVector, ParametricCurve};
+
+    /// The kept piece of a B-spline has the curve's number of control points and its shape.
+    #[test]
+    fn a_bspline_piece_keeps_the_count_and_the_shape() {
+        let pts = (0..7)
+            .map(|i| Point2::new(f64::from(i), f64::from(i * i % 5)))
+            .collect();
+        let c = BSplineCurve2::try_new(3, KnotVector::clamped_uniform(3, 7).unwrap(), pts).unwrap();
+        let e = Entity::BSpline(c.clone());
+        for keep_end in [false, true] {
+            let p = piece(EntityId(0), &e, 0.6, keep_end).unwrap();
+            assert_eq!(p.points().len(), 7);
+            let curve = p.as_curve().unwrap();
+            let (a, b) = curve.domain();
+            for k in 0..=20 {
+                let u = a + (b - a) * f64::from(k) / 20.0;
+                assert!((curve.point(u).unwrap() - c.point(u).unwrap()).norm() < 1e-12);
+            }
+        }
+    }
+}
