@@ -414,6 +414,19 @@ impl<T: Scalar, const D: usize> BSplineCurve<T, D> {
         }
     }
 
+    /// C(u) on knot span `span` (as [`KnotVector::find_span`] gives it for u, which the caller
+    /// has found; u in the domain): the evaluation of [`point`](ParametricCurve::point)
+    /// without its domain check and span search, for callers that walk the spans in order.
+    pub(crate) fn point_in_span(&self, span: usize, u: T) -> SVector<T, D> {
+        let mut out = [SVector::<T, D>::zeros(); 1];
+        if self.degree > INLINE_DEGREE {
+            self.derivatives_general(span, u, &mut out);
+        } else {
+            self.point_and_tangent(span, u, &mut out);
+        }
+        out[0]
+    }
+
     /// C(u) and its first `out.len() − 1` derivatives from the basis-function derivatives
     /// (A2.3) combined with the active control points (A3.2); for degrees above
     /// [`INLINE_DEGREE`], where the scratch may live on the heap.

@@ -271,6 +271,29 @@ impl<T: Scalar> KnotVector<T> {
         span
     }
 
+    /// [`find_span`](Self::find_span) by a walk from the span `hint` instead of a binary
+    /// search: the same span, in a few steps when u lies near the hint (parameters visited in
+    /// increasing order).
+    pub(crate) fn find_span_from(&self, degree: usize, u: T, hint: usize) -> usize {
+        let Some(n) = self.knots.len().checked_sub(degree.saturating_add(2)) else {
+            return degree;
+        };
+        if n < degree {
+            return degree;
+        }
+        let mut span = hint.clamp(degree, n);
+        while span < n && self.knots[span + 1] <= u {
+            span += 1;
+        }
+        while span > degree && self.knots[span] > u {
+            span -= 1;
+        }
+        while span > degree && self.knots[span] >= self.knots[span + 1] {
+            span -= 1;
+        }
+        span
+    }
+
     /// How many knots equal `u` exactly.
     pub fn multiplicity(&self, u: T) -> usize {
         let lo = self.knots.partition_point(|&k| k < u);
@@ -440,6 +463,23 @@ fn check_enough_points(degree: usize, control_points: usize) -> Result<()> {
 mod tests {
     use super::*;
     use approx::assert_relative_eq;
+
+    #[test]
+    fn a_span_walk_from_any_hint_finds_the_searched_span() {
+        // Repeated interior knots (4, 4) and clamped ends: every hint, parameters on and
+        // between knots, both domain ends.
+        let k = KnotVector::try_new(vec![0., 0., 0., 1., 2., 3., 4., 4., 5., 5., 5.]).unwrap();
+        for step in 0..=50 {
+            let u = f64::from(step) / 10.0;
+            for hint in 0..12 {
+                assert_eq!(
+                    k.find_span_from(2, u, hint),
+                    k.find_span(2, u),
+                    "u {u}, hint {hint}"
+                );
+            }
+        }
+    }
 
     #[test]
     fn span_search_matches_a_linear_scan() {

@@ -166,6 +166,36 @@ impl Sketch {
         Ok(self.inner.add_arc(&arc).map_err(errors::sketch)?.0)
     }
 
+    /// Adds an ellipse of `center`, semi-axes `a` along the direction `rotation` (radians from
+    /// +x) and `b` across it (both > 0); returns its id. Its points are 0 the centre and 1 the
+    /// a-axis vertex; b is a scalar of its own (`semi_axis` with `axis="b"` holds it).
+    fn add_ellipse(&mut self, center: Vec<f64>, a: f64, b: f64, rotation: f64) -> PyResult<u64> {
+        let c = xy(&center, "center")?;
+        let ellipse = camber_geom::Ellipse::try_new(c, a, b, rotation).map_err(errors::geometry)?;
+        Ok(self.inner.add_ellipse(&ellipse).map_err(errors::sketch)?.0)
+    }
+
+    /// Adds an arc of the ellipse of [`add_ellipse`](Self::add_ellipse), counter-clockwise
+    /// from the parametric angle `start_angle` to `end_angle` (radians; the point at θ is
+    /// C + a·cos θ·u + b·sin θ·v in the ellipse's frame); returns its id. Its points are 0 the
+    /// centre, 1 the a-axis vertex, 2 the start and 3 the end (`{"start": arc}`,
+    /// `{"end": arc}` name its ends).
+    #[allow(clippy::too_many_arguments)] // The six numbers of an elliptic arc, named as in the file.
+    fn add_elliptic_arc(
+        &mut self,
+        center: Vec<f64>,
+        a: f64,
+        b: f64,
+        rotation: f64,
+        start_angle: f64,
+        end_angle: f64,
+    ) -> PyResult<u64> {
+        let c = xy(&center, "center")?;
+        let arc = camber_geom::EllipticArc::try_new(c, a, b, rotation, start_angle, end_angle)
+            .map_err(errors::geometry)?;
+        Ok(self.inner.add_elliptic_arc(&arc).map_err(errors::sketch)?.0)
+    }
+
     /// Rounds the corner between two lines, a line and a curve, or two curves (Bézier,
     /// B-spline, NURBS; a pair with a curve must share an end) with an arc of `radius` tangent
     /// to both, trimming them to its tangent points and holding it by constraints (a

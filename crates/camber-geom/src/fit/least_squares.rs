@@ -142,8 +142,9 @@ pub(crate) fn fit_on_knots<T: Scalar, const D: usize>(
     let singular = Error::SingularSystem {
         what: "least-squares",
     };
+    let mut span = p;
     for (q, &u) in points.iter().zip(parameters) {
-        let span = knots.find_span(p, u);
+        span = knots.find_span_from(p, u, span);
         knots.basis_functions(span, u, p, &mut basis);
         let first = span - p;
         let mut residual = q.coords;
@@ -228,8 +229,9 @@ fn fit_separable<T: Scalar, const D: usize>(
     let singular = Error::SingularSystem {
         what: "least-squares",
     };
+    let mut span = p;
     for (q, &u) in points.iter().zip(parameters) {
-        let span = knots.find_span(p, u);
+        span = knots.find_span_from(p, u, span);
         knots.basis_functions(span, u, p, &mut basis);
         let first = span - p;
         let mut residual = q.coords;

@@ -40,6 +40,7 @@ mod interpolation;
 mod knot_placement;
 mod least_squares;
 mod parametric;
+mod power_form;
 mod projection;
 pub mod split;
 mod tolerance;

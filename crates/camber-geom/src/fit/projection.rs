@@ -16,6 +16,7 @@
 
 use nalgebra::{Point, SVector};
 
+use super::power_form::PowerForm;
 use crate::bspline::BSplineCurve;
 use crate::curve::{check_parameter, ParametricCurve};
 use crate::errors::Result;
@@ -26,6 +27,10 @@ use crate::scalar::{cst, re, Scalar};
 /// data point on `curve`, `steps` Newton steps at most, each kept between the
 /// neighbouring parameters and taken only when it brings the curve closer. Writes
 /// |C(ū_k) − Q_k| into `distances` (all points, the ends included) and returns their largest.
+///
+/// The Newton steps evaluate the curve's [`PowerForm`]; the distance written is that of the
+/// curve's own evaluation at the final parameter, so it is the distance to a point of the
+/// curve as [`point`](crate::ParametricCurve::point) gives it.
 pub(crate) fn correct_parameters<T: Scalar, const D: usize>(
     curve: &BSplineCurve<T, D>,
     points: &[Point<T, D>],
@@ -34,17 +39,20 @@ pub(crate) fn correct_parameters<T: Scalar, const D: usize>(
     steps: usize,
 ) -> Result<f64> {
     distances.clear();
+    let form = PowerForm::new(curve)?;
     let m = points.len() - 1;
     let mut worst = 0.0_f64;
+    let mut span = 0;
     for k in 0..=m {
-        let q = points[k];
+        let q = points[k].coords;
         let mut u = parameters[k];
-        let mut d = curve.second_order(u)?;
-        let mut dist = re((d[0] - q.coords).norm());
+        span = form.locate(u, span);
         if k > 0 && k < m {
             let (lo, hi) = (parameters[k - 1], parameters[k + 1]);
+            let mut d = form.second_order(span, u);
+            let mut dist = re((d[0] - q).norm_squared());
             for _ in 0..steps {
-                let w = d[0] - q.coords;
+                let w = d[0] - q;
                 let f = w.dot(&d[1]);
                 let speed2 = d[1].norm_squared();
                 let curvature_term = speed2 + w.dot(&d[2]);
@@ -56,15 +64,19 @@ pub(crate) fn correct_parameters<T: Scalar, const D: usize>(
                 if re(slope) <= 0.0 || re(f) == 0.0 {
                     break;
                 }
-                let mut next = u - f / slope;
-                next = next.max(lo).min(hi);
-                let e = curve.second_order(next)?;
-                let next_dist = re((e[0] - q.coords).norm());
+                let next = (u - f / slope).max(lo).min(hi);
+                if !re(next).is_finite() {
+                    break;
+                }
+                let next_span = form.locate(next, span);
+                let e = form.second_order(next_span, next);
+                let next_dist = re((e[0] - q).norm_squared());
                 if next_dist >= dist {
                     break;
                 }
                 let converged = re(next - u).abs() <= 1e-15;
                 u = next;
+                span = next_span;
                 d = e;
                 dist = next_dist;
                 if converged {
@@ -73,6 +85,7 @@ pub(crate) fn correct_parameters<T: Scalar, const D: usize>(
             }
             parameters[k] = u;
         }
+        let dist = re((form.exact_point(span, u) - q).norm());
         distances.push(dist);
         worst = worst.max(dist);
     }
