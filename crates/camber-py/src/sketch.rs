@@ -196,12 +196,14 @@ impl Sketch {
         Ok(self.inner.add_elliptic_arc(&arc).map_err(errors::sketch)?.0)
     }
 
-    /// Rounds the corner between two lines with an arc of `radius` tangent to both, trimming
-    /// them to its tangent points and holding it by constraints (a coincident and an
-    /// `arc_tangent_to_line` at each end, the `radius`); a coincidence that joined the corner
-    /// is removed. Returns `{"arc": id, "added": [ids], "removed": [ids]}`. A fillet that
-    /// cannot be made (parallel lines, a radius too large for a line) raises and changes
-    /// nothing.
+    /// Rounds the corner between two lines, a line and a curve, or two curves (Bézier,
+    /// B-spline, NURBS; a pair with a curve must share an end) with an arc of `radius` tangent
+    /// to both, trimming them to its tangent points and holding it by constraints (a
+    /// coincident and an `arc_tangent_to_line` or `arc_tangent_to_curve` at each end, the
+    /// `radius`); a coincidence that joined the corner is removed (with a curve, every
+    /// constraint at its removed end). Returns `{"arc": id, "added": [ids], "removed": [ids]}`.
+    /// A fillet that cannot be made (parallel lines, a radius too large, legs tangent at the
+    /// corner) raises and changes nothing.
     fn fillet(
         &mut self,
         py: Python<'_>,
@@ -217,6 +219,80 @@ impl Sketch {
         d.set_item("arc", f.arc.0)?;
         d.set_item("added", f.added.iter().map(|c| c.0).collect::<Vec<_>>())?;
         d.set_item("removed", f.removed.iter().map(|c| c.0).collect::<Vec<_>>())?;
+        Ok(d.into_any().unbind())
+    }
+
+    /// Splits entity `entity` (a line, an arc or a Bézier, B-spline or NURBS curve) where it
+    /// crosses `other`; with several crossings, `near` ([x, y]) picks the nearest, and without
+    /// it the split raises. The entity keeps the piece from its start to the crossing, a new
+    /// entity holds the rest; a coincident and the joint on `other` are added. Returns
+    /// `{"first": id, "second": id, "point": [x, y], "added": [ids], "moved": [[old, new]]}`.
+    /// Raises and changes nothing when they do not cross or a constraint cannot follow.
+    #[pyo3(signature = (entity, other, near = None))]
+    fn split_at_intersection(
+        &mut self,
+        py: Python<'_>,
+        entity: u64,
+        other: u64,
+        near: Option<Vec<f64>>,
+    ) -> PyResult<Py<PyAny>> {
+        let near = near.map(|p| xy(&p, "near")).transpose()?;
+        let split = self
+            .inner
+            .split_at_intersection(EntityId(entity), EntityId(other), near)
+            .map_err(errors::sketch)?;
+        let d = PyDict::new(py);
+        d.set_item("first", split.first.0)?;
+        d.set_item("second", split.second.0)?;
+        d.set_item("point", [split.point.x, split.point.y])?;
+        d.set_item("added", split.added.iter().map(|c| c.0).collect::<Vec<_>>())?;
+        d.set_item(
+            "moved",
+            split
+                .moved
+                .iter()
+                .map(|(a, b)| [a.0, b.0])
+                .collect::<Vec<_>>(),
+        )?;
+        Ok(d.into_any().unbind())
+    }
+
+    /// Trims entity `entity` where it crosses `at`, keeping `keep` ("start": the piece from
+    /// its start to the crossing, or "end") and holding the cut end on `at`; `near` picks among
+    /// several crossings. The constraints at the dropped end are removed. Returns
+    /// `{"entity": id, "point": [x, y], "added": id, "removed": [ids]}`; raises and changes
+    /// nothing on bad input.
+    #[pyo3(signature = (entity, at, keep, near = None))]
+    fn trim(
+        &mut self,
+        py: Python<'_>,
+        entity: u64,
+        at: u64,
+        keep: &str,
+        near: Option<Vec<f64>>,
+    ) -> PyResult<Py<PyAny>> {
+        let keep = match keep {
+            "start" => camber_sketch::sketch::split::Keep::Start,
+            "end" => camber_sketch::sketch::split::Keep::End,
+            other => {
+                return Err(errors::SketchError::new_err(format!(
+                    "keep: expected \"start\" or \"end\", found {other:?}"
+                )))
+            }
+        };
+        let near = near.map(|p| xy(&p, "near")).transpose()?;
+        let trim = self
+            .inner
+            .trim(EntityId(entity), EntityId(at), keep, near)
+            .map_err(errors::sketch)?;
+        let d = PyDict::new(py);
+        d.set_item("entity", trim.entity.0)?;
+        d.set_item("point", [trim.point.x, trim.point.y])?;
+        d.set_item("added", trim.added.0)?;
+        d.set_item(
+            "removed",
+            trim.removed.iter().map(|c| c.0).collect::<Vec<_>>(),
+        )?;
         Ok(d.into_any().unbind())
     }
 

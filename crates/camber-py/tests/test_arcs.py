@@ -137,3 +137,39 @@ def test_arc_angle_and_arc_length_dimension_arcs_from_python():
     np.testing.assert_allclose(s.point({"end": a}), [2 * math.cos(1.5), 2 * math.sin(1.5)], atol=1e-10)
     with pytest.raises(camber.SketchError, match="arc angle"):
         s.add_constraint("arc_angle", arc=a, angle=7.0)
+
+
+def test_a_line_and_a_bezier_fillet_keeps_the_dof_and_touches_both():
+    s = camber.Sketch()
+    line = s.add_line([-3.0, 0.0], [0.0, 0.0])
+    curve = s.add_bezier([[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]])
+    joint = s.add_constraint("coincident", a={"end": line}, b={"start": curve})
+    dof = [c["analysis"]["dof"] for c in s.analyze()]
+    f = s.fillet(curve, line, 0.25)
+    assert f["removed"] == [joint]
+    centre = s.point({"control": [f["arc"], 0]})
+    # The centre is 0.25 above the line y = 0 and 0.25 from the curve's new start.
+    assert centre[1] == pytest.approx(0.25, abs=1e-12)
+    assert np.linalg.norm(s.point({"start": curve}) - centre) == pytest.approx(0.25, abs=1e-12)
+    assert [c["analysis"]["dof"] for c in s.analyze()] == dof
+    s.solve()
+
+
+def test_a_line_split_and_trimmed_at_a_circle_ends_on_it():
+    s = camber.Sketch()
+    a = s.add_line([0.0, 0.0], [4.0, 0.0])
+    c = s.add_circle([2.0, 0.0], 1.0)
+    before = s.to_json()
+    with pytest.raises(camber.SketchError, match="crosses entity 1 2 times"):
+        s.split_at_intersection(a, c)
+    with pytest.raises(camber.SketchError, match="keep"):
+        s.trim(a, c, "middle", [3.0, 0.0])
+    assert s.to_json() == before
+    split = s.split_at_intersection(a, c, near=[3.2, 0.1])
+    np.testing.assert_allclose(split["point"], [3.0, 0.0], atol=1e-12)
+    np.testing.assert_allclose(s.point({"start": split["second"]}), [3.0, 0.0], atol=1e-12)
+    t = s.trim(a, c, "end", [1.0, 0.0])
+    np.testing.assert_allclose(s.point({"start": a}), [1.0, 0.0], atol=1e-12)
+    assert t["removed"] == []
+    s.solve()
+    np.testing.assert_allclose(s.point({"end": a}), [3.0, 0.0], atol=1e-10)
