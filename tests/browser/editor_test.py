@@ -11,7 +11,9 @@ solved as shipped). Then it undoes with the Undo button, drags again, saves
 with Ctrl+S, reloads the page, restarts the editor on the saved file, and checks that a
 request from a foreign Origin is refused and changes nothing. Last, on the parametric
 diffuser, it checks that expression constraints are drawn with their name and residual, and
-that the residual follows a solve. Screenshots go to target/browser/.
+that the residual follows a solve; on the rounded plate, that an arc end drags with its
+tangencies kept; on the blade with arcs, that the elliptic leading edge is drawn and its vertex
+drags with both joints closed and tangent. Screenshots go to target/browser/.
 
 Usage: editor_test.py [CAMBER_BINARY]   (default: target/release/camber)
 Any failed step raises, prints `browser test FAILED: …` and exits with 1.
@@ -35,6 +37,7 @@ ROOT = Path(__file__).resolve().parents[2]
 BLADE = ROOT / "examples" / "sketches" / "blade_section.json"
 PARAMETRIC = ROOT / "examples" / "sketches" / "diffuser_parametric.json"
 PLATE = ROOT / "examples" / "sketches" / "rounded_plate.json"
+BLADE_ARCS = ROOT / "examples" / "sketches" / "blade_arcs.json"
 CHROMIUM = os.environ.get("CHROMIUM", "/usr/bin/chromium")
 SHOTS = ROOT / "target" / "browser"
 
@@ -295,6 +298,82 @@ def check_arc_drag(binary, work):
     check(not errors, f"the page reported errors: {errors}")
 
 
+def ellipse_travel(centre, vertex, b, p):
+    """The counter-clockwise tangent of the ellipse of centre, a-axis vertex and semi-axis b
+    at its point p: −(a/b)·y′·u + (b/a)·x′·v in its frame u, v."""
+    ux, uy = vertex[0] - centre[0], vertex[1] - centre[1]
+    a = math.hypot(ux, uy)
+    ux, uy = ux / a, uy / a
+    dx, dy = p[0] - centre[0], p[1] - centre[1]
+    x, y = dx * ux + dy * uy, -dx * uy + dy * ux
+    tx, ty = -(a / b) * y, (b / a) * x
+    return (tx * ux - ty * uy, tx * uy + ty * ux)
+
+
+def check_elliptic_joints(state):
+    """The blade with arcs after a drag: the elliptic leading edge (entity 1; points centre,
+    vertex, start, end) still ends on both sides (Béziers 0 and 2) with its travel along their
+    end tangents, against them (the file's `oppose`), both ends on one ellipse."""
+    for c in state["components"]:
+        check(c["residual"] <= RESIDUAL_TOLERANCE, f"component {c['entities']}: residual {c['residual']}")
+    pts = points(state)
+    centre, vertex, start, end = pts[1]
+    a = math.dist(centre, vertex)
+    ux, uy = (vertex[0] - centre[0]) / a, (vertex[1] - centre[1]) / a
+
+    def frame(p):
+        dx, dy = p[0] - centre[0], p[1] - centre[1]
+        return dx * ux + dy * uy, -dx * uy + dy * ux
+
+    xs, ys = frame(start)
+    b = abs(ys) / math.sqrt(1.0 - (xs / a) ** 2)
+    xe, ye = frame(end)
+    on = (xe / a) ** 2 + (ye / b) ** 2 - 1.0
+    check(abs(on) <= 1e-8, f"the elliptic arc's ends are on different ellipses ({on})")
+    side0, side2 = pts[0], pts[2]
+    for name, p, q, t_side in (
+        ("end", end, side0[-1], (side0[-1][0] - side0[-2][0], side0[-1][1] - side0[-2][1])),
+        ("start", start, side2[0], (side2[1][0] - side2[0][0], side2[1][1] - side2[0][1])),
+    ):
+        check(math.dist(p, q) <= RESIDUAL_TOLERANCE, f"the leading edge's {name} left its side: {math.dist(p, q)}")
+        t = ellipse_travel(centre, vertex, b, p)
+        n = math.hypot(*t) * math.hypot(*t_side)
+        sin = (t[0] * t_side[1] - t[1] * t_side[0]) / n
+        check(abs(sin) <= 1e-8, f"the leading edge's {name} is not tangent to its side (sin {sin})")
+        check(t[0] * t_side[0] + t[1] * t_side[1] < 0, f"the leading edge's {name} turned against its sense")
+
+
+def check_ellipse_drag(binary, work):
+    """The editor draws the blade's elliptic leading edge and circular trailing edge along
+    themselves, and dragging the leading edge's a-axis vertex with the mouse keeps it joined
+    and tangent to both sides."""
+    blade = work / "blade_arcs.json"
+    shutil.copy(BLADE_ARCS, blade)
+    editor = Editor(binary, blade)
+    errors = []
+    try:
+        status, answer = editor.request("POST", "/api/solve")
+        check(status == 200, f"solving the blade with arcs answered {status}: {answer}")
+        before = points(editor.state())
+        with sync_playwright() as p:
+            browser = p.chromium.launch(executable_path=CHROMIUM, headless=True, args=["--no-sandbox"])
+            page = browser.new_page(viewport={"width": 1200, "height": 800})
+            page.on("pageerror", lambda e: errors.append(f"page error: {e}"))
+            page.goto(editor.url)
+            page.wait_for_selector("#layer-points circle[data-entity]")
+            # Two sides, the elliptic and the circular edge: four outlines.
+            drawn = page.locator("#layer-curves polyline").count()
+            check(drawn == 4, f"the page draws {drawn} outlines for 2 sides and 2 arcs")
+            after = drag(page, editor, 1, 1, -8, 5)
+            check(points(after)[1][1] != before[1][1], "the leading edge's vertex did not move")
+            check_elliptic_joints(after)
+            page.screenshot(path=str(SHOTS / "editor_ellipse.png"))
+            browser.close()
+    finally:
+        editor.stop()
+    check(not errors, f"the page reported errors: {errors}")
+
+
 def main():
     binary = Path(sys.argv[1] if len(sys.argv) > 1 else ROOT / "target" / "release" / "camber")
     check(binary.exists(), f"{binary} does not exist (build it first)")
@@ -445,6 +524,10 @@ def main():
         # tangency kept.
         editor.stop()
         check_arc_drag(binary, work)
+
+        # 11. Ellipses: the blade's elliptic leading edge is drawn along itself and its vertex
+        # drags with both joints kept.
+        check_ellipse_drag(binary, work)
     finally:
         editor.stop()
         shutil.rmtree(work, ignore_errors=True)

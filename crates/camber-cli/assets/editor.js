@@ -133,7 +133,8 @@ function drawEntity(e) {
     // Hermite and composite curves send their polygon (nodes and tangent handles) apart.
     els.push(element("polyline", { class: "polygon", points: pointsAttr(e.polygon ?? e.points) }, layers.polygons));
     els.push(element("polyline", { class: curveClass, points: pointsAttr(e.samples ?? []) }, layers.curves));
-  } else if (e.kind === "arc") {
+  } else if (["arc", "ellipse", "elliptic_arc"].includes(e.kind)) {
+    // Round entities come as samples along them (an ellipse closed, its last sample its first).
     els.push(element("polyline", { class: curveClass, points: pointsAttr(e.samples ?? []) }, layers.curves));
   } else if (e.kind === "line") {
     els.push(element("polyline", { class: curveClass, points: pointsAttr(e.points) }, layers.curves));

@@ -988,3 +988,85 @@ fn expression_constraints_are_drawn_with_their_name_and_live_residual() {
         span[0]["residual"]
     );
 }
+
+/// The blade with an elliptic leading edge and a circular trailing edge: the page gets each
+/// arc as samples along it (on the ellipse's implicit equation, from the start to the end
+/// point), and a drag of the leading edge's a-axis vertex keeps both joints of the elliptic
+/// arc closed and tangent.
+#[test]
+fn arcs_and_ellipses_are_drawn_along_themselves_and_drag() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut ed = editor("blade_arcs.json", &dir.path().join("out.json"));
+    assert_eq!(post(&mut ed, "/api/solve", json!({})).0, 200);
+    let v = state(&mut ed);
+    let mut round = 0;
+    for e in v["scene"]["entities"].as_array().unwrap() {
+        let kind = e["kind"].as_str().unwrap();
+        let id = EntityId(e["id"].as_u64().unwrap());
+        let samples: Vec<Point2<f64>> = e["samples"]
+            .as_array()
+            .map(|a| a.iter().map(point).collect())
+            .unwrap_or_default();
+        match kind {
+            "elliptic_arc" => {
+                let arc = ed.sketch().entity(id).unwrap().as_elliptic_arc().unwrap();
+                assert_eq!(samples.len(), 65);
+                for p in &samples {
+                    assert!(arc.ellipse().implicit_value(p).abs() < 1e-12, "{p:?}");
+                }
+                assert!((samples[0] - arc.start_point()).norm() < 1e-12);
+                assert!((samples[64] - arc.end_point()).norm() < 1e-12);
+                round += 1;
+            }
+            "arc" => {
+                let arc = ed.sketch().entity(id).unwrap().as_arc().unwrap();
+                assert_eq!(samples.len(), 65);
+                for p in &samples {
+                    assert!(((p - arc.center()).norm() - arc.radius()).abs() < 1e-12);
+                }
+                round += 1;
+            }
+            _ => {}
+        }
+    }
+    assert_eq!(round, 2, "the blade has one elliptic and one circular arc");
+    // Drag the elliptic arc's vertex (its point 1) a little outwards.
+    let le = EntityId(1);
+    let vertex = ed.sketch().point(PointRef::Control(le, 1)).unwrap();
+    assert_eq!(
+        post(&mut ed, "/api/drag/start", json!({"entity": 1, "index": 1})).0,
+        200
+    );
+    for k in 1..=5 {
+        let t = vertex + Vector2::new(0.0008, 0.0004) * f64::from(k);
+        let (status, answer) = post(&mut ed, "/api/drag/move", json!({"to": [t.x, t.y]}));
+        assert_eq!(status, 200, "{answer}");
+    }
+    assert_eq!(post(&mut ed, "/api/drag/end", json!({})).0, 200);
+    let s = ed.sketch();
+    let arc = s.entity(le).unwrap().as_elliptic_arc().unwrap();
+    assert!((s.point(PointRef::Control(le, 1)).unwrap() - vertex).norm() > 1e-3);
+    // Both ends still on the sides, tangent to them (the sides are entities 0 and 2).
+    for (end, side, at_end, t_arc) in [
+        (
+            arc.end_point(),
+            EntityId(0),
+            true,
+            arc.derivative_at(1.0, 1),
+        ),
+        (
+            arc.start_point(),
+            EntityId(2),
+            false,
+            arc.derivative_at(0.0, 1),
+        ),
+    ] {
+        let c = curve(s, side);
+        let (lo, hi) = c.domain();
+        let u = if at_end { hi } else { lo };
+        let (p_side, t_side) = c.point_and_derivative(u).unwrap();
+        assert!((p_side - end).norm() < 1e-9);
+        let sin = cross(t_arc, t_side) / (t_arc.norm() * t_side.norm());
+        assert!(sin.abs() < 1e-9, "the joint at {end:?} turned by {sin}");
+    }
+}

@@ -166,12 +166,44 @@ impl Sketch {
         Ok(self.inner.add_arc(&arc).map_err(errors::sketch)?.0)
     }
 
-    /// Rounds the corner between two lines with an arc of `radius` tangent to both, trimming
-    /// them to its tangent points and holding it by constraints (a coincident and an
-    /// `arc_tangent_to_line` at each end, the `radius`); a coincidence that joined the corner
-    /// is removed. Returns `{"arc": id, "added": [ids], "removed": [ids]}`. A fillet that
-    /// cannot be made (parallel lines, a radius too large for a line) raises and changes
-    /// nothing.
+    /// Adds an ellipse of `center`, semi-axes `a` along the direction `rotation` (radians from
+    /// +x) and `b` across it (both > 0); returns its id. Its points are 0 the centre and 1 the
+    /// a-axis vertex; b is a scalar of its own (`semi_axis` with `axis="b"` holds it).
+    fn add_ellipse(&mut self, center: Vec<f64>, a: f64, b: f64, rotation: f64) -> PyResult<u64> {
+        let c = xy(&center, "center")?;
+        let ellipse = camber_geom::Ellipse::try_new(c, a, b, rotation).map_err(errors::geometry)?;
+        Ok(self.inner.add_ellipse(&ellipse).map_err(errors::sketch)?.0)
+    }
+
+    /// Adds an arc of the ellipse of [`add_ellipse`](Self::add_ellipse), counter-clockwise
+    /// from the parametric angle `start_angle` to `end_angle` (radians; the point at θ is
+    /// C + a·cos θ·u + b·sin θ·v in the ellipse's frame); returns its id. Its points are 0 the
+    /// centre, 1 the a-axis vertex, 2 the start and 3 the end (`{"start": arc}`,
+    /// `{"end": arc}` name its ends).
+    #[allow(clippy::too_many_arguments)] // The six numbers of an elliptic arc, named as in the file.
+    fn add_elliptic_arc(
+        &mut self,
+        center: Vec<f64>,
+        a: f64,
+        b: f64,
+        rotation: f64,
+        start_angle: f64,
+        end_angle: f64,
+    ) -> PyResult<u64> {
+        let c = xy(&center, "center")?;
+        let arc = camber_geom::EllipticArc::try_new(c, a, b, rotation, start_angle, end_angle)
+            .map_err(errors::geometry)?;
+        Ok(self.inner.add_elliptic_arc(&arc).map_err(errors::sketch)?.0)
+    }
+
+    /// Rounds the corner between two lines, a line and a curve, or two curves (Bézier,
+    /// B-spline, NURBS; a pair with a curve must share an end) with an arc of `radius` tangent
+    /// to both, trimming them to its tangent points and holding it by constraints (a
+    /// coincident and an `arc_tangent_to_line` or `arc_tangent_to_curve` at each end, the
+    /// `radius`); a coincidence that joined the corner is removed (with a curve, every
+    /// constraint at its removed end). Returns `{"arc": id, "added": [ids], "removed": [ids]}`.
+    /// A fillet that cannot be made (parallel lines, a radius too large, legs tangent at the
+    /// corner) raises and changes nothing.
     fn fillet(
         &mut self,
         py: Python<'_>,
@@ -187,6 +219,80 @@ impl Sketch {
         d.set_item("arc", f.arc.0)?;
         d.set_item("added", f.added.iter().map(|c| c.0).collect::<Vec<_>>())?;
         d.set_item("removed", f.removed.iter().map(|c| c.0).collect::<Vec<_>>())?;
+        Ok(d.into_any().unbind())
+    }
+
+    /// Splits entity `entity` (a line, an arc or a Bézier, B-spline or NURBS curve) where it
+    /// crosses `other`; with several crossings, `near` ([x, y]) picks the nearest, and without
+    /// it the split raises. The entity keeps the piece from its start to the crossing, a new
+    /// entity holds the rest; a coincident and the joint on `other` are added. Returns
+    /// `{"first": id, "second": id, "point": [x, y], "added": [ids], "moved": [[old, new]]}`.
+    /// Raises and changes nothing when they do not cross or a constraint cannot follow.
+    #[pyo3(signature = (entity, other, near = None))]
+    fn split_at_intersection(
+        &mut self,
+        py: Python<'_>,
+        entity: u64,
+        other: u64,
+        near: Option<Vec<f64>>,
+    ) -> PyResult<Py<PyAny>> {
+        let near = near.map(|p| xy(&p, "near")).transpose()?;
+        let split = self
+            .inner
+            .split_at_intersection(EntityId(entity), EntityId(other), near)
+            .map_err(errors::sketch)?;
+        let d = PyDict::new(py);
+        d.set_item("first", split.first.0)?;
+        d.set_item("second", split.second.0)?;
+        d.set_item("point", [split.point.x, split.point.y])?;
+        d.set_item("added", split.added.iter().map(|c| c.0).collect::<Vec<_>>())?;
+        d.set_item(
+            "moved",
+            split
+                .moved
+                .iter()
+                .map(|(a, b)| [a.0, b.0])
+                .collect::<Vec<_>>(),
+        )?;
+        Ok(d.into_any().unbind())
+    }
+
+    /// Trims entity `entity` where it crosses `at`, keeping `keep` ("start": the piece from
+    /// its start to the crossing, or "end") and holding the cut end on `at`; `near` picks among
+    /// several crossings. The constraints at the dropped end are removed. Returns
+    /// `{"entity": id, "point": [x, y], "added": id, "removed": [ids]}`; raises and changes
+    /// nothing on bad input.
+    #[pyo3(signature = (entity, at, keep, near = None))]
+    fn trim(
+        &mut self,
+        py: Python<'_>,
+        entity: u64,
+        at: u64,
+        keep: &str,
+        near: Option<Vec<f64>>,
+    ) -> PyResult<Py<PyAny>> {
+        let keep = match keep {
+            "start" => camber_sketch::sketch::split::Keep::Start,
+            "end" => camber_sketch::sketch::split::Keep::End,
+            other => {
+                return Err(errors::SketchError::new_err(format!(
+                    "keep: expected \"start\" or \"end\", found {other:?}"
+                )))
+            }
+        };
+        let near = near.map(|p| xy(&p, "near")).transpose()?;
+        let trim = self
+            .inner
+            .trim(EntityId(entity), EntityId(at), keep, near)
+            .map_err(errors::sketch)?;
+        let d = PyDict::new(py);
+        d.set_item("entity", trim.entity.0)?;
+        d.set_item("point", [trim.point.x, trim.point.y])?;
+        d.set_item("added", trim.added.0)?;
+        d.set_item(
+            "removed",
+            trim.removed.iter().map(|c| c.0).collect::<Vec<_>>(),
+        )?;
         Ok(d.into_any().unbind())
     }
 

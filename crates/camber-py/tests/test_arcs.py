@@ -93,3 +93,83 @@ def test_a_sketch_with_arcs_pickles_bit_for_bit():
     assert back.to_json() == s.to_json()
     for e in s.entity_ids():
         assert back.entity(e) == s.entity(e)
+
+
+def test_an_elliptic_arc_has_its_file_form_and_lies_on_its_ellipse():
+    s = camber.Sketch()
+    e = s.add_elliptic_arc([1.0, 2.0], 3.0, 1.5, 0.4, 0.5, 2.0)
+    form = s.entity(e)
+    assert form["kind"] == "elliptic_arc"
+    assert form["semi_axis_b"] == pytest.approx(1.5, abs=1e-15)
+    u = np.array([math.cos(0.4), math.sin(0.4)])
+    v = np.array([-math.sin(0.4), math.cos(0.4)])
+    start = np.array([1.0, 2.0]) + 3.0 * math.cos(0.5) * u + 1.5 * math.sin(0.5) * v
+    np.testing.assert_allclose(s.point({"start": e}), start, atol=1e-14)
+    curve = s.curve(e)
+    lo, hi = curve.domain
+    d = curve.evaluate(np.linspace(lo, hi, 17)) - np.array([1.0, 2.0])
+    x, y = d @ u, d @ v
+    np.testing.assert_allclose((x / 3.0) ** 2 + (y / 1.5) ** 2, 1.0, atol=1e-12)
+    whole = s.add_ellipse([0.0, 0.0], 2.0, 1.0, 0.0)
+    assert s.entity(whole)["kind"] == "ellipse"
+
+
+def test_bad_ellipses_are_refused_with_the_value():
+    s = camber.Sketch()
+    with pytest.raises(camber.GeometryError, match="-1"):
+        s.add_ellipse([0.0, 0.0], 2.0, -1.0, 0.0)
+    with pytest.raises(camber.GeometryError, match="sweeps no angle"):
+        s.add_elliptic_arc([0.0, 0.0], 2.0, 1.0, 0.0, 1.0, 1.0)
+    assert s.entity_ids() == []
+
+
+def test_arc_angle_and_arc_length_dimension_arcs_from_python():
+    s = camber.Sketch()
+    a = s.add_arc([0.0, 0.0], 2.0, 0.0, 1.0)
+    s.add_constraint("fixed", target={"point": {"control": [a, 0]}})
+    s.add_constraint("fixed", target={"point": {"start": a}})
+    sweep = s.add_constraint("arc_angle", arc=a, angle=2.0)
+    s.solve()
+    np.testing.assert_allclose(s.point({"end": a}), [2 * math.cos(2.0), 2 * math.sin(2.0)], atol=1e-10)
+    s.remove_constraint(sweep)
+    s.add_constraint("arc_length", curve=a, length=3.0)
+    s.solve()
+    np.testing.assert_allclose(s.point({"end": a}), [2 * math.cos(1.5), 2 * math.sin(1.5)], atol=1e-10)
+    with pytest.raises(camber.SketchError, match="arc angle"):
+        s.add_constraint("arc_angle", arc=a, angle=7.0)
+
+
+def test_a_line_and_a_bezier_fillet_keeps_the_dof_and_touches_both():
+    s = camber.Sketch()
+    line = s.add_line([-3.0, 0.0], [0.0, 0.0])
+    curve = s.add_bezier([[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]])
+    joint = s.add_constraint("coincident", a={"end": line}, b={"start": curve})
+    dof = [c["analysis"]["dof"] for c in s.analyze()]
+    f = s.fillet(curve, line, 0.25)
+    assert f["removed"] == [joint]
+    centre = s.point({"control": [f["arc"], 0]})
+    # The centre is 0.25 above the line y = 0 and 0.25 from the curve's new start.
+    assert centre[1] == pytest.approx(0.25, abs=1e-12)
+    assert np.linalg.norm(s.point({"start": curve}) - centre) == pytest.approx(0.25, abs=1e-12)
+    assert [c["analysis"]["dof"] for c in s.analyze()] == dof
+    s.solve()
+
+
+def test_a_line_split_and_trimmed_at_a_circle_ends_on_it():
+    s = camber.Sketch()
+    a = s.add_line([0.0, 0.0], [4.0, 0.0])
+    c = s.add_circle([2.0, 0.0], 1.0)
+    before = s.to_json()
+    with pytest.raises(camber.SketchError, match="crosses entity 1 2 times"):
+        s.split_at_intersection(a, c)
+    with pytest.raises(camber.SketchError, match="keep"):
+        s.trim(a, c, "middle", [3.0, 0.0])
+    assert s.to_json() == before
+    split = s.split_at_intersection(a, c, near=[3.2, 0.1])
+    np.testing.assert_allclose(split["point"], [3.0, 0.0], atol=1e-12)
+    np.testing.assert_allclose(s.point({"start": split["second"]}), [3.0, 0.0], atol=1e-12)
+    t = s.trim(a, c, "end", [1.0, 0.0])
+    np.testing.assert_allclose(s.point({"start": a}), [1.0, 0.0], atol=1e-12)
+    assert t["removed"] == []
+    s.solve()
+    np.testing.assert_allclose(s.point({"end": a}), [3.0, 0.0], atol=1e-10)

@@ -377,3 +377,38 @@ def test_hostile_geomdl_like_curves_are_refused_or_come_in_finite(degree, knots,
         return
     a, b = curve.domain
     call(curve.evaluate, np.linspace(a, b, 5))
+
+
+@hostile
+@given(
+    op=st.sampled_from(["fillet", "split", "trim"]),
+    a=st.sampled_from(["p", "line", "circle", "curve", "cross", "unknown"]),
+    b=st.sampled_from(["p", "line", "circle", "curve", "cross", "unknown"]),
+    radius=numbers,
+    near=st.one_of(st.none(), pairs),
+    keep=st.one_of(st.sampled_from(["start", "end"]), st.text(max_size=4)),
+)
+def test_fillets_splits_and_trims_of_hostile_inputs_are_refused_or_finite(
+    op, a, b, radius, near, keep
+):
+    s, ids = base_sketch()
+    # A line crossing the line and the cubic, and joined to the line's end for fillets.
+    ids["cross"] = s.add_line([2.0, 1.5], [1.0, 5.0])
+    s.add_constraint("coincident", a={"end": ids["line"]}, b={"start": ids["cross"]})
+    ids["unknown"] = 2**40
+    before = state(s)
+    if op == "fillet":
+        out = call(s.fillet, ids[a], ids[b], radius)
+    elif op == "split":
+        out = call(s.split_at_intersection, ids[a], ids[b], near)
+    else:
+        out = call(s.trim, ids[a], ids[b], keep, near)
+    if isinstance(out, Exception):
+        assert state(s) == before, f"a refused {op} changed the sketch"
+        return
+    finite(state(s), f"sketch after {op}")
+    snapshot = state(s)
+    solved = call(s.solve)
+    if isinstance(solved, Exception):
+        assert state(s) == snapshot, "a failed solve changed the sketch"
+    finite(state(s), "sketch after solve")

@@ -38,7 +38,8 @@ pub struct DragMove {
 pub struct EntityJson {
     /// The entity id.
     pub id: u64,
-    /// `point`, `line`, `circle`, `bezier`, `bspline`, `nurbs`, `hermite` or `composite`.
+    /// `point`, `line`, `circle`, `arc`, `ellipse`, `elliptic_arc`, `bezier`, `bspline`,
+    /// `nurbs`, `hermite` or `composite`.
     pub kind: &'static str,
     /// The entity's points in file order, in full precision, where they are grabbed: a
     /// Hermite or composite curve's tangent blocks at their handles N ± t/3.
@@ -50,7 +51,8 @@ pub struct EntityJson {
     /// A circle's radius.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub radius: Option<f64>,
-    /// Points along a curve (Bézier, B-spline, NURBS) for drawing.
+    /// Points along a curve (Bézier, B-spline, NURBS, Hermite, composite), an arc, an ellipse
+    /// or an elliptic arc, for drawing (see [`outline`]).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub samples: Vec<[f64; 2]>,
 }
@@ -61,18 +63,7 @@ impl EntityJson {
     /// # Errors
     /// A curve that cannot be evaluated (not for an entity the sketch accepted).
     pub fn of(id: EntityId, e: &Entity) -> Result<Self> {
-        let samples = match (e.as_curve(), e.as_arc()) {
-            (Some(c), _) => sample_curve(c, SAMPLES_PER_PIECE)?
-                .iter()
-                .map(|p| [p.x, p.y])
-                .collect(),
-            // An arc: 64 points evenly in angle.
-            (None, Some(arc)) => (0..=64)
-                .map(|k| arc.point(f64::from(k) / 64.0))
-                .map(|p| [p.x, p.y])
-                .collect(),
-            (None, None) => Vec::new(),
-        };
+        let samples = outline(e)?;
         Ok(Self {
             id: id.0,
             kind: kind_word(e),
@@ -93,6 +84,37 @@ impl EntityJson {
             samples,
         })
     }
+}
+
+/// Points along an entity for drawing: a free-form curve sampled per piece
+/// ([`SAMPLES_PER_PIECE`]); a circular or elliptic arc at 65 points evenly in its (parametric)
+/// angle, both ends included; a whole ellipse at 129, closed; nothing for points, lines and
+/// circles, which the page draws from their own fields (or for an arc whose blocks make none).
+///
+/// # Errors
+/// A curve that cannot be evaluated (not for an entity the sketch accepted).
+pub fn outline(e: &Entity) -> Result<Vec<[f64; 2]>> {
+    if let Some(c) = e.as_curve() {
+        return Ok(sample_curve(c, SAMPLES_PER_PIECE)?
+            .iter()
+            .map(|p| [p.x, p.y])
+            .collect());
+    }
+    let even = |n: u32, at: &dyn Fn(f64) -> nalgebra::Point2<f64>| -> Vec<[f64; 2]> {
+        (0..=n)
+            .map(|k| at(f64::from(k) / f64::from(n)))
+            .map(|p| [p.x, p.y])
+            .collect()
+    };
+    Ok(match e {
+        Entity::Arc(_) => e.as_arc().map(|a| even(64, &|t| a.point(t))),
+        Entity::EllipticArc { .. } => e.as_elliptic_arc().map(|a| even(64, &|t| a.point_at(t))),
+        Entity::Ellipse { .. } => e
+            .as_ellipse()
+            .map(|el| even(128, &|t| el.point_at_angle(t * std::f64::consts::TAU))),
+        _ => None,
+    }
+    .unwrap_or_default())
 }
 
 /// One glyph of one constraint.

@@ -7,8 +7,12 @@
 //! (analytic wherever C′ ≠ 0), so the rule converges fast; S is chosen when the component is
 //! built, doubling from 2 until two successive rules agree to [`RULE_TOLERANCE`] relative on
 //! the curve as it is (at most [`MAX_SUBINTERVALS`]). The rule then stays fixed for the solve,
-//! so the residual is smooth in the control points and its Jacobian exact. File form:
-//! `{"kind": "arc_length", "curve": 0, "length": 3.2}`.
+//! so the residual is smooth in the control points and its Jacobian exact.
+//!
+//! On a circular arc the length is r·φ in closed form (radius times sweep, read from the
+//! arc's blocks); on an elliptic arc it is the same kind of rule over the parametric angle
+//! ([`ArcLengthOfArc`], formulas in its documentation). File form:
+//! `{"kind": "arc_length", "curve": 0, "length": 3.2}` (`curve` may name an arc).
 
 use camber_solve::scalar::cst;
 use camber_solve::{Residual, Scalar};
@@ -22,6 +26,9 @@ use crate::ground::errors::Result;
 use crate::ground::ids::EntityId;
 use crate::ground::lookup::EntityLookup;
 use crate::residuals::curve::dot;
+
+pub use super::shared::sweeps::ArcLengthOfArc;
+use super::shared::sweeps::SweptArc;
 
 /// Two successive rules agreeing to this relative difference end the choice of S.
 pub const RULE_TOLERANCE: f64 = 1e-14;
@@ -45,7 +52,8 @@ const GAUSS_8: [(f64, f64); 8] = [
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct ArcLength {
-    /// The curve (a line, Bézier, B-spline or NURBS).
+    /// The curve (a line, Bézier, B-spline, NURBS, Hermite or composite curve, a circular or
+    /// an elliptic arc).
     pub curve: EntityId,
     /// The length L > 0.
     pub length: f64,
@@ -75,11 +83,11 @@ impl LengthOf {
     /// domain, increasing, ends included), for the length L, with the rule chosen on the
     /// control points `points` (see the module documentation).
     pub fn new(basis: CurveBasis, breakpoints: &[f64], points: &[&[f64]], length: f64) -> Self {
-        let mut r = Self::with_rule(&basis, Self::rule(breakpoints, 2), length);
+        let mut r = Self::with_rule(&basis, composite_rule(breakpoints, 2), length);
         let mut previous = r.integral(points);
         let mut pieces = 4;
         while pieces <= MAX_SUBINTERVALS {
-            let next = Self::with_rule(&basis, Self::rule(breakpoints, pieces), length);
+            let next = Self::with_rule(&basis, composite_rule(breakpoints, pieces), length);
             let value = next.integral(points);
             r = next;
             let settled = (value - previous).abs() <= RULE_TOLERANCE * value.abs();
@@ -113,21 +121,6 @@ impl LengthOf {
             blocks: basis.count(),
             length,
         }
-    }
-
-    /// The nodes (parameter, weight) of the composite rule with `pieces` sub-intervals per span.
-    fn rule(breakpoints: &[f64], pieces: usize) -> Vec<(f64, f64)> {
-        let mut nodes = Vec::with_capacity(breakpoints.len() * pieces * GAUSS_8.len());
-        for w in breakpoints.windows(2) {
-            let h = (w[1] - w[0]) / pieces as f64;
-            for s in 0..pieces {
-                let (a, b) = (w[0] + h * s as f64, w[0] + h * (s + 1) as f64);
-                for (x, wt) in GAUSS_8 {
-                    nodes.push((0.5 * (a + b) + 0.5 * (b - a) * x, 0.5 * (b - a) * wt));
-                }
-            }
-        }
-        nodes
     }
 
     /// The number of quadrature nodes chosen.
@@ -179,6 +172,22 @@ impl Residual for LengthOf {
     }
 }
 
+/// The nodes (parameter, weight) of the composite 8-point Gauss–Legendre rule with `pieces`
+/// sub-intervals per span between successive `breakpoints`.
+pub(crate) fn composite_rule(breakpoints: &[f64], pieces: usize) -> Vec<(f64, f64)> {
+    let mut nodes = Vec::with_capacity(breakpoints.len() * pieces * GAUSS_8.len());
+    for w in breakpoints.windows(2) {
+        let h = (w[1] - w[0]) / pieces as f64;
+        for s in 0..pieces {
+            let (a, b) = (w[0] + h * s as f64, w[0] + h * (s + 1) as f64);
+            for (x, wt) in GAUSS_8 {
+                nodes.push((0.5 * (a + b) + 0.5 * (b - a) * x, 0.5 * (b - a) * wt));
+            }
+        }
+    }
+    nodes
+}
+
 /// The distinct knots of a curve over its domain (its breakpoints), increasing.
 pub(crate) fn breakpoints(e: &crate::ground::entity::Entity) -> Vec<f64> {
     let (a, b) = e.domain().unwrap_or((0.0, 1.0));
@@ -221,6 +230,26 @@ impl ConstraintKind for ArcLength {
 
     fn compile(&self, cx: &mut Compiler<'_>) -> Result<()> {
         let length = positive("length", self.length)?;
+        if let Some(arc) = SweptArc::from_entity(cx.entity(self.curve)?) {
+            let slots = arc.slots(self.curve);
+            let row = match arc {
+                SweptArc::Circular => ArcLengthOfArc::circular(length),
+                SweptArc::Elliptic => {
+                    let e = cx.entity_values(self.curve)?;
+                    let (p, b) = (e.points(), e.scalars());
+                    let blocks: [&[f64]; 5] = [
+                        p[0].coords.as_slice(),
+                        p[1].coords.as_slice(),
+                        &b[..1],
+                        p[2].coords.as_slice(),
+                        p[3].coords.as_slice(),
+                    ];
+                    ArcLengthOfArc::elliptic(&blocks, length)
+                }
+            };
+            cx.residual(row, slots, None);
+            return Ok(());
+        }
         let (basis, slots) = cx.curve_basis(self.curve)?;
         let e = cx.entity_values(self.curve)?;
         let points: Vec<[f64; 2]> = e.points().iter().map(|p| [p.x, p.y]).collect();
@@ -231,6 +260,9 @@ impl ConstraintKind for ArcLength {
     }
 
     fn glyphs(&self, at: &dyn EntityLookup) -> Result<Vec<Glyph>> {
+        if let Some(mid) = glyph::arc_midpoint(at.lookup(self.curve)?) {
+            return Ok(vec![Glyph::Mark(mid, "L")]);
+        }
         let (a, b) = (
             glyph::domain_end(at, self.curve, false)?,
             glyph::domain_end(at, self.curve, true)?,

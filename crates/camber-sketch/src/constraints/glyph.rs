@@ -128,3 +128,13 @@ pub fn circle(at: &dyn EntityLookup, id: EntityId) -> Result<(Point2<f64>, f64)>
         }),
     }
 }
+
+/// The point halfway along a circular or an elliptic arc's sweep; `None` for any other entity
+/// (or an arc whose blocks make no arc).
+pub fn arc_midpoint(e: &Entity) -> Option<Point2<f64>> {
+    match e {
+        Entity::Arc(_) => e.as_arc().map(|a| a.point(0.5)),
+        Entity::EllipticArc { .. } => e.as_elliptic_arc().map(|a| a.point_at(0.5)),
+        _ => None,
+    }
+}

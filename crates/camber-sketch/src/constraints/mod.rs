@@ -386,4 +386,11 @@ kinds! {
     /// An arc touching a circle or another arc's circle in its interior, externally or
     /// internally.
     ArcTouchesCircle => arc_touches_circle::ArcTouchesCircle,
+    /// The sweep of a circular or an elliptic arc.
+    ArcAngle => arc_angle::ArcAngle,
+    /// A curve's curvature at one of its ends matching an arc's at one of its ends.
+    ArcCurvatureToCurve => arc_curvature_to_curve::ArcCurvatureToCurve,
+    /// An ellipse or elliptic arc touching a line's infinite line in its interior, on a
+    /// recorded side.
+    EllipseTouchesLine => ellipse_touches_line::EllipseTouchesLine,
 }

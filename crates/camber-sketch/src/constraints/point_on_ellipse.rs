@@ -15,6 +15,7 @@ use serde::{Deserialize, Serialize};
 use super::compiler::distinct;
 use super::shared::ellipses::ellipse_kind;
 use super::glyph::{self, Glyph};
+use super::shared::arc_span::outside_elliptic_sweep;
 use super::{Compiler, ConstraintKind, Entities};
 use crate::constraints::check::{SolvedCheck, SolvedState};
 use crate::constraints::piece::Slot;
@@ -80,17 +81,12 @@ impl SolvedCheck for PointOnEllipse {
         let e = state.entity(self.point.entity())?;
         let v = combine(e.points(), &e.resolve(self.point)?);
         let angle = arc.ellipse().angle_of(&nalgebra::Point2::new(v[0], v[1]));
-        let small = arc.ellipse().semi_axis_a().min(arc.ellipse().semi_axis_b());
-        let tolerance = state.penetration / small + 1e-12;
-        if arc.contains_angle(angle, tolerance) {
-            return Ok(());
+        match outside_elliptic_sweep(&arc, angle, state.penetration) {
+            None => Ok(()),
+            Some(outside) => Err(Error::PointOffArc {
+                constraint: state.owner,
+                outside,
+            }),
         }
-        // How far past the nearer end, in radians of the parametric angle.
-        let d = (angle - arc.start_angle()).rem_euclid(std::f64::consts::TAU);
-        let outside = (d - arc.sweep()).min(std::f64::consts::TAU - d);
-        Err(Error::PointOffArc {
-            constraint: state.owner,
-            outside,
-        })
     }
 }

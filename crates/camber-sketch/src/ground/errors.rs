@@ -429,6 +429,23 @@ pub enum Error {
         /// The offending value.
         value: f64,
     },
+    /// A number outside the open range its meaning allows (an arc's sweep in (0, 2π)).
+    #[error(
+        "{what} {} must lie strictly between {} and {}",
+        Readable(*value),
+        Readable(*min),
+        Readable(*max)
+    )]
+    OutOfRange {
+        /// What the number is.
+        what: &'static str,
+        /// The offending value.
+        value: f64,
+        /// The open range's lower end.
+        min: f64,
+        /// Its upper end.
+        max: f64,
+    },
     /// A constraint relating two entities (or points) was given the same one twice.
     #[error("the constraint relates {entity} to itself")]
     SameEntity {

@@ -11,7 +11,8 @@
 //!   tangents-parallel check, the tangency of an end);
 //! - [`lines`]: the signed offset of a point from a line;
 //! - [`ellipses`]: the kind check, end blocks and travel of ellipses and elliptic arcs;
-//! - [`radii`]: the radius and centre of a circle or an arc.
+//! - [`radii`]: the radius and centre of a circle or an arc;
+//! - [`sweeps`]: the sweep of a circular or elliptic arc and the arc lengths over it.
 
 pub(crate) mod angles;
 pub(crate) mod arc_ends;
@@ -21,3 +22,4 @@ pub(crate) mod ellipses;
 pub(crate) mod joins;
 pub(crate) mod lines;
 pub(crate) mod radii;
+pub(crate) mod sweeps;
