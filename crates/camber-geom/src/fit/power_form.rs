@@ -28,6 +28,8 @@ pub(crate) struct PowerForm<'a, T: Scalar, const D: usize> {
     degree: usize,
     /// The start s_j of every non-empty span.
     starts: Vec<T>,
+    /// The end of the domain.
+    end: T,
     /// The knot-span index (as `KnotVector::find_span` numbers it) of every span.
     knot_spans: Vec<usize>,
     /// a_{j,k} at `j * (degree + 1) + k`.
@@ -58,13 +60,26 @@ impl<'a, T: Scalar, const D: usize> PowerForm<'a, T, D> {
             starts.push(s);
             knot_spans.push(curve.knots().find_span(p, s));
         }
+        let end = breaks.last().copied().unwrap_or_else(T::one);
         Ok(Self {
             curve,
             degree: p,
             starts,
+            end,
             knot_spans,
             coefficients,
         })
+    }
+
+    /// The number of spans.
+    pub fn spans(&self) -> usize {
+        self.starts.len()
+    }
+
+    /// The parameter interval [s_j, s_{j+1}] of span `span`.
+    pub fn span_bounds(&self, span: usize) -> (T, T) {
+        let end = self.starts.get(span + 1).copied().unwrap_or(self.end);
+        (self.starts[span], end)
     }
 
     /// The span holding `u` (the last one from its start on, the first one before its end),

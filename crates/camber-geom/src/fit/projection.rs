@@ -9,19 +9,22 @@
 //!   curve: an upper bound of the distance from Q to the curve.
 //! - **Distance to the curve.** The reported error is the distance from every data point to
 //!   the whole curve. The foot-point distance e bounds it from above, so only the Bézier pieces
-//!   of the curve whose control boxes come within e of Q can hold a closer point; on each run of
-//!   such neighbouring pieces the toolkit's closest-point search
-//!   ([`closest_point_with`](crate::queries::closest_point_with)) finds the nearest point, and
-//!   the smallest distance wins.
+//!   of the curve whose control boxes come within e of Q can hold a closer point. Each such
+//!   piece is searched as the toolkit's closest-point search
+//!   ([`closest_point_with`](crate::queries::closest_point_with)) searches a curve, on the
+//!   piece's [`PowerForm`]: [`SAMPLES_PER_PIECE`] equal steps, every sign change from − to + of
+//!   g′(u) = (C(u) − Q)·C′(u) between neighbouring samples (a minimum of the squared distance
+//!   g) refined by safeguarded Newton steps on g′, and the nearest sample or minimum wins. Its
+//!   distance is measured by the curve's own evaluation and replaces e when smaller.
 
 use nalgebra::{Point, SVector};
 
 use super::power_form::PowerForm;
 use crate::bspline::BSplineCurve;
-use crate::curve::{check_parameter, ParametricCurve};
+use crate::curve::ParametricCurve;
 use crate::errors::Result;
-use crate::queries::{closest_point_with, QueryOptions, RationalPiece};
-use crate::scalar::{cst, re, Scalar};
+use crate::queries::RationalPiece;
+use crate::scalar::{cst, from_usize, re, Scalar};
 
 /// Moves every interior parameter (the first and last stay) towards the foot point of its
 /// data point on `curve`, `steps` Newton steps at most, each kept between the
@@ -109,36 +112,13 @@ pub(crate) fn parametric_distances<T: Scalar, const D: usize>(
     Ok(worst)
 }
 
-/// A curve seen only on a run of its consecutive polynomial pieces: the toolkit's queries then
-/// search that part. `breaks` are the run's breakpoints, both ends included (strictly
-/// increasing), so that asking for them costs the run's length, not the whole curve's.
-struct Window<'a, C> {
-    curve: &'a C,
-    breaks: &'a [f64],
-}
+/// Samples per piece of the search for a closer point than the foot point: the window is a
+/// piece the point lies within the fitting tolerance of, so eight steps bracket its minima.
+const SAMPLES_PER_PIECE: usize = 8;
 
-impl<T: Scalar, const D: usize, C: ParametricCurve<T, D>> ParametricCurve<T, D> for Window<'_, C> {
-    fn domain(&self) -> (T, T) {
-        let (a, b) = (self.breaks[0], self.breaks[self.breaks.len() - 1]);
-        (cst::<T>(a), cst::<T>(b))
-    }
-
-    fn derivatives_into(&self, u: T, out: &mut [SVector<T, D>]) -> Result<()> {
-        check_parameter(u, self.domain())?;
-        self.curve.derivatives_into(u, out)
-    }
-
-    fn breakpoints(&self) -> Vec<T> {
-        self.breaks.iter().map(|&u| cst::<T>(u)).collect()
-    }
-}
-
-/// The closest-point search settings on a window of a fitted curve: the window is a few
-/// polynomial pieces and the point lies within the fitting tolerance of one of them, so eight
-/// samples per piece bracket its foot point.
-fn window_options() -> QueryOptions {
-    QueryOptions::default().with_samples_per_piece(8)
-}
+/// Newton or bisection steps per bracketed minimum at most (bisection alone halves the bracket
+/// of an eighth of a piece to below 1e-16 of it in 50).
+const MAX_STEPS: usize = 60;
 
 /// The distance from `q` to the box [lo, hi] (zero inside).
 fn box_distance<const D: usize>(
@@ -158,15 +138,12 @@ fn box_distance<const D: usize>(
 /// only the runs whose box comes near the point, so it costs about the logarithm of the piece
 /// count for a point near one place of the curve.
 struct PieceTree<const D: usize> {
-    /// The parameter interval of every piece.
-    spans: Vec<(f64, f64)>,
     /// Boxes by level.
     levels: Vec<Vec<(SVector<f64, D>, SVector<f64, D>)>>,
 }
 
 impl<const D: usize> PieceTree<D> {
     fn new(pieces: &[RationalPiece<D>]) -> Self {
-        let spans = pieces.iter().map(|p| (p.start, p.end)).collect();
         let mut levels = vec![pieces
             .iter()
             .map(RationalPiece::bounding_box)
@@ -186,7 +163,7 @@ impl<const D: usize> PieceTree<D> {
                 .collect();
             levels.push(above);
         }
-        Self { spans, levels }
+        Self { levels }
     }
 
     /// The indices of the pieces whose box is within `reach` of `q`, in order.
@@ -218,10 +195,10 @@ impl<const D: usize> PieceTree<D> {
 }
 
 /// The distance from every data point to the whole curve, given upper bounds `distances[k]`
-/// (the distance to some curve point, the one at `parameters[k]`): the closest-point search runs
-/// on every run of neighbouring Bézier pieces whose control box comes within the bound, and
-/// where it finds a closer point, the distance and the parameter are replaced by its. Returns
-/// the largest distance.
+/// (the distance to some curve point, the one at `parameters[k]`): every Bézier piece whose
+/// control box comes within the bound is searched (see the module header), and where a closer
+/// point is found, the distance and the parameter are replaced by its. Returns the largest
+/// distance.
 pub(crate) fn distances_to_curve<T: Scalar, const D: usize>(
     curve: &BSplineCurve<T, D>,
     points: &[Point<T, D>],
@@ -229,40 +206,188 @@ pub(crate) fn distances_to_curve<T: Scalar, const D: usize>(
     distances: &mut [f64],
 ) -> Result<f64> {
     let pieces = curve.bezier_enclosure()?.unwrap_or_default();
-    let tree = PieceTree::new(&pieces);
-    let opts = window_options();
+    let form = PowerForm::new(curve)?;
+    // One Bézier piece per non-empty span, as the power form has; were it otherwise, every
+    // span is searched.
+    let tree = (pieces.len() == form.spans()).then(|| PieceTree::new(&pieces));
     let mut worst = 0.0_f64;
     let mut near = Vec::new();
-    let mut breaks: Vec<f64> = Vec::new();
     for ((q, u), bound) in points
         .iter()
         .zip(parameters.iter_mut())
         .zip(distances.iter_mut())
     {
         let qf: SVector<f64, D> = SVector::from_fn(|c, _| re(q.coords[c]));
-        tree.near(&qf, *bound, &mut near);
-        let mut i = 0;
-        while i < near.len() {
-            // A run of consecutive pieces.
-            let mut j = i;
-            while j + 1 < near.len() && near[j + 1] == near[j] + 1 {
-                j += 1;
+        match &tree {
+            Some(tree) => tree.near(&qf, *bound, &mut near),
+            None => {
+                near.clear();
+                near.extend(0..form.spans());
             }
-            breaks.clear();
-            breaks.push(tree.spans[near[i]].0);
-            breaks.extend(tree.spans[near[i]..=near[j]].iter().map(|s| s.1));
-            let window = Window {
-                curve,
-                breaks: &breaks,
-            };
-            let found = closest_point_with(&window, q, &opts)?;
-            if re(found.distance) < *bound {
-                *bound = re(found.distance);
-                *u = found.parameter;
+        }
+        for &j in &near {
+            let (v, _) = nearest_on_span(&form, j, &q.coords);
+            let d = re((form.exact_point(j, v) - q.coords).norm());
+            if d < *bound {
+                *bound = d;
+                *u = v;
             }
-            i = j + 1;
         }
         worst = worst.max(*bound);
     }
     Ok(worst)
+}
+
+/// The parameter of the point of span `span` of `form` nearest to `q` the sampled search
+/// finds (see the module header), with its squared distance by the power form.
+fn nearest_on_span<T: Scalar, const D: usize>(
+    form: &PowerForm<'_, T, D>,
+    span: usize,
+    q: &SVector<T, D>,
+) -> (T, f64) {
+    let (a, b) = form.span_bounds(span);
+    let n = SAMPLES_PER_PIECE;
+    let at = |u: T| {
+        let d = form.second_order(span, u);
+        let w = d[0] - q;
+        (
+            re(w.norm_squared()),
+            w.dot(&d[1]),
+            d[1].norm_squared() + w.dot(&d[2]),
+        )
+    };
+    let mut best = (a, f64::INFINITY);
+    let mut previous: Option<(T, T)> = None;
+    for i in 0..=n {
+        let u = if i == n {
+            b
+        } else {
+            a + (b - a) * from_usize::<T>(i) / from_usize::<T>(n)
+        };
+        let (g, slope, _) = at(u);
+        if g < best.1 {
+            best = (u, g);
+        }
+        if let Some((pu, ps)) = previous {
+            if re(ps) < 0.0 && re(slope) > 0.0 {
+                let (v, gv) = minimum_between(&at, pu, u);
+                if gv < best.1 {
+                    best = (v, gv);
+                }
+            }
+        }
+        previous = Some((u, slope));
+    }
+    best
+}
+
+/// The minimum of g between `lo` and `hi`, where g′ goes from negative to positive:
+/// Newton steps on g′ (slope g″) while they stay inside the bracket and at least halve the
+/// previous step, bisection otherwise. `at(u)` gives (g, g′, g″).
+fn minimum_between<T: Scalar>(at: &impl Fn(T) -> (f64, T, T), lo: T, hi: T) -> (T, f64) {
+    let half = cst::<T>(0.5);
+    let (mut lo, mut hi) = (lo, hi);
+    let mut x = (lo + hi) * half;
+    let mut previous_step = re(hi - lo);
+    let mut value = at(x);
+    for _ in 0..MAX_STEPS {
+        let (_, f, slope) = value;
+        if re(f) == 0.0 {
+            break;
+        }
+        if re(f) < 0.0 {
+            lo = x;
+        } else {
+            hi = x;
+        }
+        let newton = (re(slope) > 0.0).then(|| x - f / slope);
+        let next = match newton {
+            Some(nx) if nx > lo && nx < hi && re(nx - x).abs() <= 0.5 * previous_step => nx,
+            _ => (lo + hi) * half,
+        };
+        let step = re(next - x).abs();
+        if step == 0.0 {
+            break;
+        }
+        x = next;
+        previous_step = step;
+        value = at(x);
+        if step <= 1e-15 * re(hi - lo).max(re(x).abs()) {
+            break;
+        }
+    }
+    (x, value.0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::knots::KnotVector;
+    use crate::queries::closest_point;
+    use nalgebra::Point2;
+    use proptest::prelude::*;
+
+    /// A clamped cubic with the given interior knots (sorted, distinct, in (0, 1)) whose
+    /// control points zigzag: x = i, y from `ys`.
+    fn wiggle(interior: &[f64], ys: &[f64]) -> BSplineCurve<f64, 2> {
+        let mut knots = vec![0.0; 4];
+        knots.extend_from_slice(interior);
+        knots.extend([1.0; 4]);
+        let count = knots.len() - 4;
+        let points = (0..count)
+            .map(|i| Point2::new(i as f64, ys[i % ys.len()]))
+            .collect();
+        BSplineCurve::try_new(3, KnotVector::try_new(knots).unwrap(), points).unwrap()
+    }
+
+    proptest! {
+        /// From the bound of an arbitrary curve point, the distance found is the toolkit's
+        /// closest-point distance (to rounding), never above the bound, and the distance from
+        /// the point to the curve at the returned parameter, as the curve evaluates it.
+        #[test]
+        fn the_distance_to_the_curve_is_the_closest_point_distance(
+            mut interior in proptest::collection::vec(0.01f64..0.99, 0..10),
+            ys in proptest::collection::vec(-2.0f64..2.0, 2..12),
+            queries in proptest::collection::vec((0.0f64..=1.0, -0.3f64..0.3, 0.0f64..=1.0), 1..12),
+        ) {
+            interior.sort_by(f64::total_cmp);
+            interior.dedup_by(|a, b| (*a - *b).abs() < 1e-3);
+            let curve = wiggle(&interior, &ys);
+            let mut points = Vec::new();
+            let mut parameters = Vec::new();
+            let mut bounds = Vec::new();
+            for &(u, offset, start) in &queries {
+                let (c, d) = curve.point_and_derivative(u).unwrap();
+                let normal = nalgebra::Vector2::new(-d.y, d.x) / d.norm().max(1e-12);
+                let q = c + normal * offset;
+                points.push(q);
+                parameters.push(start);
+                bounds.push((curve.point(start).unwrap() - q).norm());
+            }
+            let before = bounds.clone();
+            let worst = distances_to_curve(&curve, &points, &mut parameters, &mut bounds).unwrap();
+            for k in 0..points.len() {
+                let truth = closest_point(&curve, &points[k]).unwrap().distance;
+                prop_assert!(bounds[k] <= before[k]);
+                prop_assert!((bounds[k] - truth).abs() <= 1e-9 * (1.0 + truth), "{} vs {truth}", bounds[k]);
+                let at = (curve.point(parameters[k]).unwrap() - points[k]).norm();
+                prop_assert!((at - bounds[k]).abs() <= 1e-15 * (1.0 + at));
+            }
+            prop_assert!((worst - bounds.iter().copied().fold(0.0, f64::max)).abs() <= 0.0);
+        }
+    }
+
+    /// A point beside a hairpin: the foot point on the near leg bounds the distance, and the
+    /// search finds the far leg's point only when it is closer.
+    #[test]
+    fn a_closer_point_on_another_piece_replaces_the_foot_point() {
+        let curve = wiggle(&[0.25, 0.5, 0.75], &[0.0, 1.0]);
+        // On the curve itself at u = 0.6: distance 0 however bad the start.
+        let q = curve.point(0.6).unwrap();
+        let mut parameters = vec![0.05];
+        let mut bounds = vec![(curve.point(0.05).unwrap() - q).norm()];
+        let worst = distances_to_curve(&curve, &[q], &mut parameters, &mut bounds).unwrap();
+        assert!(worst < 1e-12, "{worst}");
+        assert!((parameters[0] - 0.6).abs() < 1e-9, "{}", parameters[0]);
+    }
 }
