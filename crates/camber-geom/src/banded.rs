@@ -118,6 +118,28 @@ impl<T: Scalar> BandedMatrix<T> {
         Some(())
     }
 
+    /// Adds the outer product v·vᵀ to the square block of rows and columns
+    /// `start` … `start + v.len() − 1` (one data point's contribution to the normal equations
+    /// of a least-squares fit, v its non-zero basis values); `None` (and nothing changed) when
+    /// the block leaves the matrix or the band.
+    pub(crate) fn add_outer(&mut self, start: usize, v: &[T]) -> Option<()> {
+        let len = v.len();
+        let width = len.saturating_sub(1);
+        if start + len > self.n || width > self.kl || width > self.ku {
+            return None;
+        }
+        let stride = self.stride();
+        for (i, &vi) in v.iter().enumerate() {
+            let r = start + i;
+            // (r, c) is stored at r·stride + c + kl − r; c runs from start.
+            let row = &mut self.data[r * stride + start + self.kl - r..][..len];
+            for (entry, &vj) in row.iter_mut().zip(v) {
+                *entry += vi * vj;
+            }
+        }
+        Some(())
+    }
+
     /// The dense copy (for small matrices and fallbacks).
     pub fn to_dense(&self) -> DMatrix<T> {
         DMatrix::from_fn(self.n, self.n, |r, c| self.get(r, c))
@@ -211,6 +233,27 @@ pub fn solve_banded<T: Scalar>(a: DMatrix<T>, b: DMatrix<T>) -> Option<DMatrix<T
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn an_outer_product_block_adds_like_its_entries() {
+        let v = [0.5_f64, 0.25, 0.125];
+        let mut block = BandedMatrix::zeros(5, 2, 2);
+        block.add_outer(1, &v).unwrap();
+        block.add_outer(2, &v).unwrap();
+        let mut entries = BandedMatrix::zeros(5, 2, 2);
+        for start in [1, 2] {
+            for (i, &a) in v.iter().enumerate() {
+                for (j, &b) in v.iter().enumerate() {
+                    entries.add(start + i, start + j, a * b).unwrap();
+                }
+            }
+        }
+        assert_eq!(block, entries);
+        // Past the last row, or wider than the band: refused, nothing changed.
+        assert!(block.add_outer(3, &v).is_none());
+        assert!(block.add_outer(0, &[1.0, 1.0, 1.0, 1.0]).is_none());
+        assert_eq!(block, entries);
+    }
 
     #[test]
     fn agrees_with_dense_lu_on_a_pivoting_case() {

@@ -234,6 +234,18 @@ fn fit_separable<T: Scalar, const D: usize>(
         span = knots.find_span_from(p, u, span);
         knots.basis_functions(span, u, p, &mut basis);
         let first = span - p;
+        let base = index[first];
+        if base != usize::MAX && index[first + p] == base + p {
+            // Every active control point free (so numbered base … base + p): the point adds
+            // N·Nᵀ to one block.
+            normal.add_outer(base, &basis).ok_or(singular.clone())?;
+            for (j, &nj) in basis.iter().enumerate() {
+                for d in 0..D {
+                    rhs[(base + j, d)] += nj * q.coords[d];
+                }
+            }
+            continue;
+        }
         let mut residual = q.coords;
         for (j, &n) in basis.iter().enumerate() {
             if let Some(a) = fixed[first + j] {
