@@ -395,4 +395,7 @@ kinds! {
     EllipseTouchesLine => ellipse_touches_line::EllipseTouchesLine,
     /// Two circles or arcs, in either order, touching externally or internally.
     CircleTouchesCircle => circle_touches_circle::CircleTouchesCircle,
+    /// An ellipse or elliptic arc touching a circle or arc at a free parametric angle,
+    /// externally or internally.
+    EllipseTouchesCircle => ellipse_touches_circle::EllipseTouchesCircle,
 }
