@@ -21,13 +21,13 @@
 
 use std::sync::Arc;
 
-use camber_solve::{Residual, Scalar};
 use nalgebra::Vector2;
 use serde::{Deserialize, Serialize};
 
 use super::compiler::distinct;
 use super::glyph::Glyph;
-use super::shared::radii::{radius_of, Round};
+use super::shared::radii::Round;
+pub use super::shared::round_contacts::RoundContact;
 use super::shared::round_contacts::{contact_point, verify_on_arcs};
 use super::{Compiler, ConstraintKind, Entities};
 use crate::constraints::check::{SolvedCheck, SolvedState};
@@ -36,7 +36,6 @@ use crate::ground::errors::Result;
 use crate::ground::ids::EntityId;
 use crate::ground::lookup::EntityLookup;
 use crate::ground::vocabulary::Tangency;
-use crate::residuals::curve::{dot, sub};
 
 /// The arc touches a circle (or another arc's circle) in its interior, externally or
 /// internally (one row, and the contact checked within the sweeps after the solve).
@@ -49,89 +48,6 @@ pub struct ArcTouchesCircle {
     pub circle: EntityId,
     /// Each outside the other, or one inside the other.
     pub tangency: Tangency,
-}
-
-/// g of the module documentation over the blocks [C₁, S₁, C₂, r₂] (a circle) or
-/// [C₁, S₁, C₂, S₂] (an arc).
-///
-/// ```
-/// use camber_sketch::constraints::arc_touches_circle::RoundContact;
-/// use camber_sketch::Tangency;
-/// use camber_solve::Residual;
-/// let mut g = [f64::NAN];
-/// // An arc of radius 1 about (0, 0) and a circle of radius 2 about (3, 0): external contact.
-/// let x: [&[f64]; 4] = [&[0.0, 0.0], &[1.0, 0.0], &[3.0, 0.0], &[2.0]];
-/// RoundContact::new(Tangency::External, false).eval(&x, &mut g);
-/// assert!(g[0].abs() < 1e-15);
-/// // Internally it would need |C₁ − C₂| = 1: (9 − 1)/(2·3).
-/// RoundContact::new(Tangency::Internal, false).eval(&x, &mut g);
-/// assert!((g[0] - 4.0 / 3.0).abs() < 1e-15);
-/// ```
-///
-/// [`RoundContact::between`] gives the same row for a circle or an arc first, over the blocks
-/// [C₁, r₁] or [C₁, S₁] followed by those of the second.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct RoundContact {
-    tangency: Tangency,
-    first_arc: bool,
-    other_arc: bool,
-}
-
-impl RoundContact {
-    /// The row for the `tangency` of an arc with a circle (`other_arc` false) or another arc.
-    pub fn new(tangency: Tangency, other_arc: bool) -> Self {
-        Self::between(tangency, true, other_arc)
-    }
-
-    /// The row for the `tangency` of two round entities, each a circle or an arc.
-    ///
-    /// ```
-    /// use camber_sketch::constraints::arc_touches_circle::RoundContact;
-    /// use camber_sketch::Tangency;
-    /// use camber_solve::Residual;
-    /// let mut g = [f64::NAN];
-    /// // Circles of radii 3 and 1 about (0, 0) and (2, 0): the small one inside, touching.
-    /// let x: [&[f64]; 4] = [&[0.0, 0.0], &[3.0], &[2.0, 0.0], &[1.0]];
-    /// RoundContact::between(Tangency::Internal, false, false).eval(&x, &mut g);
-    /// assert!(g[0].abs() < 1e-15);
-    /// ```
-    pub fn between(tangency: Tangency, first_arc: bool, other_arc: bool) -> Self {
-        Self {
-            tangency,
-            first_arc,
-            other_arc,
-        }
-    }
-}
-
-impl Residual for RoundContact {
-    fn name(&self) -> &str {
-        ArcTouchesCircle::LABEL
-    }
-    fn dim(&self) -> usize {
-        1
-    }
-    fn block_sizes(&self) -> Option<Vec<usize>> {
-        // [C₁, S₁] or [C₁, r₁], then [C₂, S₂] or [C₂, r₂].
-        let radius = |arc: bool| if arc { 2 } else { 1 };
-        Some(vec![2, radius(self.first_arc), 2, radius(self.other_arc)])
-    }
-    fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
-        // Both layouts of the first take two blocks: [C₁, S₁] or [C₁, r₁].
-        let r1 = if self.first_arc {
-            radius_of(true, x).0
-        } else {
-            x[1][0]
-        };
-        let (r2, _) = radius_of(self.other_arc, if self.other_arc { &x[2..] } else { &x[3..] });
-        let delta = sub(x[2], x[0]);
-        let sum = r1 + r2;
-        let target = match self.tangency {
-            Tangency::External => sum,
-            Tangency::Internal => r1 - r2,
-        };
-        out[0] = (dot(delta, delta) - target * target) / (sum + sum);
-    }
 }
 
 impl ConstraintKind for ArcTouchesCircle {

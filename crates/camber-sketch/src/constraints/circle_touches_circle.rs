@@ -22,11 +22,10 @@ use std::sync::Arc;
 use nalgebra::Vector2;
 use serde::{Deserialize, Serialize};
 
-use super::arc_touches_circle::RoundContact;
 use super::compiler::distinct;
 use super::glyph::Glyph;
 use super::shared::radii::Round;
-use super::shared::round_contacts::{contact_point, verify_on_arcs};
+use super::shared::round_contacts::{contact_point, verify_on_arcs, RoundContact};
 use super::{Compiler, ConstraintKind, Entities};
 use crate::constraints::check::{SolvedCheck, SolvedState};
 use crate::constraints::piece::Slot;
