@@ -191,6 +191,27 @@ fn constraints_at_the_end_move_to_the_second_piece() {
     );
 }
 
+/// A constraint at the cut entity's end moves to the second piece with its priority; the one
+/// at the start keeps its own.
+#[test]
+fn a_moved_constraint_keeps_its_priority() {
+    let mut s = Sketch::new();
+    let a = s
+        .add_line(Point2::new(0.0, 0.0), Point2::new(4.0, 0.0))
+        .unwrap();
+    let cut = s
+        .add_line(Point2::new(1.0, -1.0), Point2::new(1.0, 1.0))
+        .unwrap();
+    let start = s.add_constraint(Fixed::point(PointRef::Start(a))).unwrap();
+    let end = s.add_constraint(Fixed::point(PointRef::End(a))).unwrap();
+    s.set_priority(start, 2).unwrap();
+    s.set_priority(end, 7).unwrap();
+    let split = s.split_at_intersection(a, cut, None).unwrap();
+    let moved = split.moved.iter().find(|(was, _)| *was == end).unwrap().1;
+    assert_eq!(s.priority(moved), 7);
+    assert_eq!(s.priority(start), 2);
+}
+
 /// Bad inputs: typed errors naming the entities, the sketch unchanged.
 #[test]
 fn bad_splits_are_refused_and_change_nothing() {

@@ -191,35 +191,25 @@ impl Sketch {
                 _ => false,
             })
             .collect();
-        let mut journal = Journal {
-            next_id: self.next_id,
-            lines: Vec::with_capacity(2),
-            removed: Vec::with_capacity(corner.len()),
-            arc: None,
-            added: Vec::with_capacity(5),
-        };
-        // The steps, each recorded in the journal so that a failure puts everything back.
-        let apply = |sk: &mut Sketch, j: &mut Journal| -> Result<EntityId> {
+        // The steps, each through the journal so that a failure puts everything back.
+        let (arc, journal) = self.transaction(|sk, j| {
             for id in &corner {
-                let priority = sk.priorities.get(id).copied();
-                // A coincidence has no value, so no parameter binding to keep.
-                let c = sk.remove_constraint(*id)?;
-                j.removed.push((*id, c, priority));
+                j.remove_constraint(sk, *id)?;
             }
             for (side, p) in [(&a, ta), (&b, tb)] {
                 let mut ends = if side.line == first { la } else { lb };
-                j.lines
-                    .push((side.line, Entity::Line(ends), sk.weights_of(side.line)));
                 ends[side.near] = p;
-                sk.set_entity(side.line, Entity::Line(ends))?;
+                j.replace_entity(sk, side.line, Entity::Line(ends))?;
             }
-            let arc = sk.add_arc(&geometry)?;
-            j.arc = Some(arc);
+            let arc = j.add_entity(sk, Entity::arc(&geometry))?;
             for (side, arc_end) in [(start.0, ArcEnd::Start), (end.0, ArcEnd::End)] {
-                j.added.push(sk.add_constraint(Coincident {
-                    a: near(side),
-                    b: arc_end.point(arc),
-                })?);
+                j.add_constraint(
+                    sk,
+                    Coincident {
+                        a: near(side),
+                        b: arc_end.point(arc),
+                    },
+                )?;
                 // The sense the drawn arc has: its counter-clockwise travel along B − A or not.
                 let p = if arc_end == ArcEnd::Start {
                     geometry.start_point()
@@ -233,27 +223,26 @@ impl Sketch {
                 } else {
                     Sense::Oppose
                 };
-                j.added.push(sk.add_constraint(ArcTangentToLine {
-                    arc,
-                    end: arc_end,
-                    line: side.line,
-                    sense,
-                })?);
+                j.add_constraint(
+                    sk,
+                    ArcTangentToLine {
+                        arc,
+                        end: arc_end,
+                        line: side.line,
+                        sense,
+                    },
+                )?;
             }
-            j.added.push(sk.add_constraint(Radius {
-                circle: arc,
-                radius,
-            })?);
+            j.add_constraint(
+                sk,
+                Radius {
+                    circle: arc,
+                    radius,
+                },
+            )?;
             Ok(arc)
-        };
-        let arc = match apply(self, &mut journal) {
-            Ok(arc) => arc,
-            Err(e) => {
-                self.undo_fillet(journal);
-                return Err(e);
-            }
-        };
-        let added = journal.added;
+        })?;
+        let added = journal.added_constraints();
         Ok(Fillet {
             arc,
             geometry,
@@ -261,66 +250,6 @@ impl Sketch {
             removed: corner,
         })
     }
-}
-
-impl Sketch {
-    /// Puts back what a failed fillet changed, newest first: the added constraints and arc
-    /// removed, the lines restored with their weights, the corner coincidences added again
-    /// under their ids and priorities, and the next automatic id as it was.
-    pub(super) fn undo_fillet(&mut self, journal: Journal) {
-        for id in journal.added.iter().rev() {
-            let removed = self.remove_constraint(*id);
-            debug_assert!(
-                removed.is_ok(),
-                "a constraint the fillet added: {removed:?}"
-            );
-        }
-        if let Some(arc) = journal.arc {
-            let removed = self.remove_entity(arc);
-            debug_assert!(removed.is_ok(), "the fillet's arc: {removed:?}");
-        }
-        for (line, entity, weights) in journal.lines.into_iter().rev() {
-            // It was valid with the constraints reading it, which are the same again.
-            let restored = self.set_entity(line, entity);
-            debug_assert!(restored.is_ok(), "a line as it was: {restored:?}");
-            for (index, w) in weights {
-                self.weights.insert((line, index), w);
-            }
-        }
-        for (id, c, priority) in journal.removed.into_iter().rev() {
-            let restored = self.add_constraint_with_id(id, c);
-            debug_assert!(restored.is_ok(), "a corner as it was: {restored:?}");
-            if let Some(p) = priority {
-                self.priorities.insert(id, p);
-            }
-        }
-        self.next_id = journal.next_id;
-    }
-
-    /// The point weights of entity `id` that differ from 1, by point index.
-    pub(super) fn weights_of(&self, id: EntityId) -> PointWeights {
-        self.weights
-            .range((id, 0)..=(id, usize::MAX))
-            .map(|((_, index), w)| (*index, *w))
-            .collect()
-    }
-}
-
-/// Point weights of one entity: (point index, weight).
-pub(super) type PointWeights = Vec<(usize, f64)>;
-
-/// What a fillet changed so far, to put back if a later step fails.
-pub(super) struct Journal {
-    /// The sketch's next automatic id before the fillet.
-    pub(super) next_id: u64,
-    /// Each trimmed entity as it was, with its point weights.
-    pub(super) lines: Vec<(EntityId, Entity, PointWeights)>,
-    /// Each removed constraint with its priority.
-    pub(super) removed: Vec<(ConstraintId, Constraint, Option<camber_solve::Priority>)>,
-    /// The arc, once added.
-    pub(super) arc: Option<EntityId>,
-    /// The constraints added.
-    pub(super) added: Vec<ConstraintId>,
 }
 
 #[cfg(test)]

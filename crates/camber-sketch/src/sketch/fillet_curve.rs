@@ -29,7 +29,7 @@
 use nalgebra::{Point2, Vector2};
 
 use super::cut::{carried_ends, piece};
-use super::fillet::{Fillet, Journal};
+use super::fillet::Fillet;
 use crate::constraints::arc_tangent_to_curve::ArcTangentToCurve;
 use crate::constraints::arc_tangent_to_line::{ArcEnd, ArcTangentToLine};
 use crate::constraints::{Coincident, Constraint, Radius};
@@ -376,31 +376,22 @@ impl Sketch {
             })
             .collect::<Result<_>>()?;
 
-        let mut journal = Journal {
-            next_id: self.next_id,
-            lines: Vec::with_capacity(2),
-            removed: Vec::with_capacity(removed.len()),
-            arc: None,
-            added: Vec::with_capacity(5),
-        };
-        let apply = |sk: &mut Sketch, j: &mut Journal| -> Result<EntityId> {
+        let (arc, journal) = self.transaction(|sk, j| {
             for id in &removed {
-                let priority = sk.priorities.get(id).copied();
-                let c = sk.remove_constraint(*id)?;
-                j.removed.push((*id, c, priority));
+                j.remove_constraint(sk, *id)?;
             }
             for (id, kept) in &trimmed {
-                let before = sk.entity(*id)?.clone();
-                j.lines.push((*id, before, sk.weights_of(*id)));
-                sk.set_entity(*id, kept.clone())?;
+                j.replace_entity(sk, *id, kept.clone())?;
             }
-            let arc = sk.add_arc(&geometry)?;
-            j.arc = Some(arc);
+            let arc = j.add_entity(sk, Entity::arc(&geometry))?;
             for ((leg, w, p), arc_end) in [(start, ArcEnd::Start), (end, ArcEnd::End)] {
-                j.added.push(sk.add_constraint(Coincident {
-                    a: leg.near(),
-                    b: arc_end.point(arc),
-                })?);
+                j.add_constraint(
+                    sk,
+                    Coincident {
+                        a: leg.near(),
+                        b: arc_end.point(arc),
+                    },
+                )?;
                 let travel = rot90(p - center);
                 let tangency: Constraint = match &leg.entity {
                     Entity::Line([l0, l1]) => ArcTangentToLine {
@@ -423,25 +414,21 @@ impl Sketch {
                     }
                     .into(),
                 };
-                j.added.push(sk.add_constraint(tangency)?);
+                j.add_constraint(sk, tangency)?;
             }
-            j.added.push(sk.add_constraint(Radius {
-                circle: arc,
-                radius,
-            })?);
+            j.add_constraint(
+                sk,
+                Radius {
+                    circle: arc,
+                    radius,
+                },
+            )?;
             Ok(arc)
-        };
-        let arc = match apply(self, &mut journal) {
-            Ok(arc) => arc,
-            Err(e) => {
-                self.undo_fillet(journal);
-                return Err(e);
-            }
-        };
+        })?;
         Ok(Fillet {
             arc,
             geometry,
-            added: journal.added,
+            added: journal.added_constraints(),
             removed,
         })
     }

@@ -12,6 +12,7 @@ mod describe;
 mod extent;
 pub mod fillet;
 mod fillet_curve;
+mod journal;
 pub mod parameters;
 pub(crate) mod prepared;
 pub mod split;

@@ -32,7 +32,6 @@ use camber_geom::{NurbsCurve2, ParametricCurve, Segment};
 use nalgebra::Point2;
 
 use super::cut::{carried_ends, cuttable, end_of, line_or_arc_parameter, piece};
-use super::fillet::Journal;
 use crate::constraints::arc_tangent_to_line::ArcEnd;
 use crate::constraints::{
     Coincident, Constraint, PointOnArc, PointOnCircle, PointOnCurve, PointOnEllipse, PointOnLine,
@@ -290,56 +289,36 @@ impl Sketch {
             .filter(|(_, ends)| ends.contains(&ArcEnd::End))
             .map(|(id, _)| *id)
             .collect();
-        let mut journal = Journal {
-            next_id: self.next_id,
-            lines: Vec::with_capacity(1),
-            removed: Vec::with_capacity(moving.len()),
-            arc: None,
-            added: Vec::with_capacity(moving.len() + 2),
-        };
-        let apply = |sk: &mut Sketch, j: &mut Journal| -> Result<(EntityId, Vec<ConstraintId>)> {
-            for id in &moving {
-                let priority = sk.priorities.get(id).copied();
-                let c = sk.remove_constraint(*id)?;
-                j.removed.push((*id, c, priority));
-            }
-            j.lines.push((entity, e.clone(), sk.weights_of(entity)));
-            sk.set_entity(entity, first.clone())?;
-            let new = sk.add_entity(second.clone())?;
-            j.arc = Some(new);
-            let mut moved = Vec::with_capacity(moving.len());
-            for (_, c, priority) in &j.removed {
-                let id = sk.add_constraint(to_second(c, entity, &e, new))?;
-                j.added.push(id);
-                if let Some(p) = priority {
-                    sk.set_priority(id, *p)?;
-                }
-                moved.push(id);
-            }
-            j.added.push(sk.add_constraint(Coincident {
-                a: PointRef::End(entity),
-                b: PointRef::Start(new),
-            })?);
+        let ((second, moved_ids), journal) = self.transaction(|sk, j| {
+            let was = moving
+                .iter()
+                .map(|id| j.remove_constraint(sk, *id))
+                .collect::<Result<Vec<_>>>()?;
+            j.replace_entity(sk, entity, first.clone())?;
+            let new = j.add_entity(sk, second.clone())?;
+            let moved = was
+                .iter()
+                .map(|w| j.add_carried(sk, to_second(&w.constraint, entity, &e, new), w))
+                .collect::<Result<Vec<_>>>()?;
+            j.add_constraint(
+                sk,
+                Coincident {
+                    a: PointRef::End(entity),
+                    b: PointRef::Start(new),
+                },
+            )?;
             let on = sk.on_other(PointRef::End(entity), other, x.other_parameter)?;
-            j.added.push(sk.add_constraint(on)?);
+            j.add_constraint(sk, on)?;
             Ok((new, moved))
-        };
-        match apply(self, &mut journal) {
-            Ok((second, moved_ids)) => {
-                let added = journal.added[moved_ids.len()..].to_vec();
-                Ok(Split {
-                    first: entity,
-                    second,
-                    point: x.point,
-                    added,
-                    moved: moving.into_iter().zip(moved_ids).collect(),
-                })
-            }
-            Err(err) => {
-                self.undo_fillet(journal);
-                Err(err)
-            }
-        }
+        })?;
+        let added = journal.added_constraints()[moved_ids.len()..].to_vec();
+        Ok(Split {
+            first: entity,
+            second,
+            point: x.point,
+            added,
+            moved: moving.into_iter().zip(moved_ids).collect(),
+        })
     }
 
     /// Trims `entity` (a line, a circular arc or a Bézier, B-spline or NURBS curve) where it
@@ -382,38 +361,20 @@ impl Sketch {
             .filter(|(_, ends)| ends.contains(&dropped))
             .map(|(id, _)| *id)
             .collect();
-        let mut journal = Journal {
-            next_id: self.next_id,
-            lines: Vec::with_capacity(1),
-            removed: Vec::with_capacity(removed.len()),
-            arc: None,
-            added: Vec::with_capacity(1),
-        };
-        let apply = |sk: &mut Sketch, j: &mut Journal| -> Result<ConstraintId> {
+        let (added, _) = self.transaction(|sk, j| {
             for id in &removed {
-                let priority = sk.priorities.get(id).copied();
-                let c = sk.remove_constraint(*id)?;
-                j.removed.push((*id, c, priority));
+                j.remove_constraint(sk, *id)?;
             }
-            j.lines.push((entity, e.clone(), sk.weights_of(entity)));
-            sk.set_entity(entity, kept.clone())?;
+            j.replace_entity(sk, entity, kept.clone())?;
             let on = sk.on_other(cut_end, at, x.other_parameter)?;
-            let id = sk.add_constraint(on)?;
-            j.added.push(id);
-            Ok(id)
-        };
-        match apply(self, &mut journal) {
-            Ok(added) => Ok(Trim {
-                entity,
-                point: x.point,
-                added,
-                removed,
-            }),
-            Err(err) => {
-                self.undo_fillet(journal);
-                Err(err)
-            }
-        }
+            j.add_constraint(sk, on)
+        })?;
+        Ok(Trim {
+            entity,
+            point: x.point,
+            added,
+            removed,
+        })
     }
 }
 
