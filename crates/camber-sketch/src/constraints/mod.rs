@@ -393,4 +393,9 @@ kinds! {
     /// An ellipse or elliptic arc touching a line's infinite line in its interior, on a
     /// recorded side.
     EllipseTouchesLine => ellipse_touches_line::EllipseTouchesLine,
+    /// Two circles or arcs, in either order, touching externally or internally.
+    CircleTouchesCircle => circle_touches_circle::CircleTouchesCircle,
+    /// An ellipse or elliptic arc touching a circle or arc at a free parametric angle,
+    /// externally or internally.
+    EllipseTouchesCircle => ellipse_touches_circle::EllipseTouchesCircle,
 }

@@ -12,6 +12,7 @@
 //! - [`lines`]: the signed offset of a point from a line;
 //! - [`ellipses`]: the kind check, end blocks and travel of ellipses and elliptic arcs;
 //! - [`radii`]: the radius and centre of a circle or an arc;
+//! - [`round_contacts`]: where two circles or arcs touch, and the check that it is on the arcs;
 //! - [`sweeps`]: the sweep of a circular or elliptic arc and the arc lengths over it.
 
 pub(crate) mod angles;
@@ -22,4 +23,5 @@ pub(crate) mod ellipses;
 pub(crate) mod joins;
 pub(crate) mod lines;
 pub(crate) mod radii;
+pub(crate) mod round_contacts;
 pub(crate) mod sweeps;
