@@ -35,6 +35,7 @@
 //! # Ok::<(), camber_geom::Error>(())
 //! ```
 
+mod distance_minima;
 mod ends;
 mod interpolation;
 mod knot_placement;
