@@ -105,8 +105,13 @@ fn unique_minimum(
     let gap = |s: f64| -> (f64, f64) {
         let (p, t) = basis().eval::<f64>(points, s);
         match target {
-            Target::Circle => {
-                let (c, r) = (&blocks[0], blocks[1][0]);
+            Target::Circle | Target::Arc => {
+                let c = &blocks[0];
+                let r = if target == Target::Arc {
+                    (blocks[1][0] - c[0]).hypot(blocks[1][1] - c[1])
+                } else {
+                    blocks[1][0]
+                };
                 let v = [p[0] - c[0], p[1] - c[1]];
                 let g = (v[0] * v[0] + v[1] * v[1] - r * r) / (2.0 * r);
                 (sign * g, sign * (v[0] * t[0] + v[1] * t[1]) / r)
@@ -185,7 +190,14 @@ proptest! {
         let c = vec![p[0] - r * n[0] + off[0], p[1] - r * n[1] + off[1]];
         let a = vec![p[0] + off[0], p[1] + off[1]];
         let b = vec![a[0] + t[0] + off[2], a[1] + t[1]];
-        for (target, blocks) in [(Target::Circle, [c.clone(), vec![r]]), (Target::Line, [a, b])] {
+        // An arc's circle: its start S at radius r from the centre.
+        let start = vec![c[0] + r * 0.3_f64.cos(), c[1] + r * 0.3_f64.sin()];
+        let targets = [
+            (Target::Circle, [c.clone(), vec![r]]),
+            (Target::Arc, [c.clone(), start]),
+            (Target::Line, [a, b]),
+        ];
+        for (target, blocks) in targets {
             // h is a minimum over s: where two local minima of Q tie it has a kink, and
             // differences across it say nothing about the gradient. Such draws are skipped.
             prop_assume!(unique_minimum(&refs, u, target, &blocks, positive, after));

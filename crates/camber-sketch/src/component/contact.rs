@@ -11,6 +11,7 @@ use super::problem::ComponentProblem;
 use crate::constraints::check::{point_tangent, side_width, ContactSpec, ContactTarget};
 use crate::constraints::piece::{curve_slots, Piece, Slot};
 use crate::constraints::shared::joins::join_speed_floor;
+use crate::constraints::shared::round_contacts::round;
 use crate::ground::entity::Entity;
 use crate::ground::errors::{Error, Result};
 use crate::ground::ids::EntityId;
@@ -208,8 +209,7 @@ impl ComponentProblem {
                 ContactTarget::Circle {
                     circle, rotation, ..
                 } => {
-                    let Some(crate::ground::entity::Entity::Circle { center, .. }) = find(circle)
-                    else {
+                    let Some((center, _, _)) = find(circle).and_then(round) else {
                         continue;
                     };
                     let turn = (p[0] - center.x) * t[1] - (p[1] - center.y) * t[0];
@@ -273,11 +273,21 @@ impl ComponentProblem {
         };
         let curve = contact.spec.curve;
         let (target_slots, target, positive) = match contact.spec.target {
-            ContactTarget::Circle { circle, side, .. } => (
-                [Slot::Point(circle, 0), Slot::Radius(circle)],
-                Target::Circle,
-                side == CircleSide::Outside,
-            ),
+            ContactTarget::Circle { circle, side, .. } => {
+                let arc = matches!(lookup.lookup(circle)?, Entity::Arc(_));
+                (
+                    [
+                        Slot::Point(circle, 0),
+                        if arc {
+                            Slot::Point(circle, 1)
+                        } else {
+                            Slot::Radius(circle)
+                        },
+                    ],
+                    if arc { Target::Arc } else { Target::Circle },
+                    side == CircleSide::Outside,
+                )
+            }
             ContactTarget::Line { line, side, .. } => (
                 [Slot::Point(line, 0), Slot::Point(line, 1)],
                 Target::Line,

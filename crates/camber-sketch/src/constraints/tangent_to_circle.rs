@@ -1,5 +1,6 @@
-//! `tangent_to_circle`: a curve touches a circle entity (c, r), whose centre and radius may be
-//! unknowns, at a fixed or free contact parameter u, running around it in a given direction:
+//! `tangent_to_circle`: a curve touches a circle entity (c, r) or a circular arc (centre c,
+//! start S, r = |S − c|), whose centre and radius may be unknowns, at a fixed or free contact
+//! parameter u, running around it in a given direction:
 //!
 //! C(u) − c − σ·r·n(u) = 0 (two rows),  n = (−t_y, t_x), t = C′(u)/|C′(u)|,
 //!
@@ -7,7 +8,10 @@
 //! counter-clockwise. It holds exactly when |C(u) − c| = r, (C(u) − c)·C′(u) = 0 and the travel
 //! direction is the recorded one, so Newton cannot converge to the reversed branch. After every
 //! solve the contact must be honest: no cusp, the rotation kept, and the curve on its recorded
-//! side of the circle near the contact (a crossing calls for a clearance row). File form:
+//! side of the circle near the contact (a crossing calls for a clearance row); for an arc the
+//! contact's direction from the centre must also lie within the arc's sweep (to the solve's
+//! tolerance over the radius), else the solve fails with [`Error::ContactOffArc`] and the
+//! sketch is left as it was: the arc's circle would touch the curve, the arc would not. File form:
 //! `{"kind": "tangent_to_circle", "curve": 0, "circle": 4, "u": {"free": 0.5}, "side":
 //! "outside", "rotation": "clockwise"}`.
 
@@ -16,14 +20,17 @@ use std::sync::Arc;
 use camber_solve::derive::composed::{InnerMap, Outer};
 use camber_solve::scalar::cst;
 use camber_solve::{Residual, Scalar};
+use nalgebra::Vector2;
 use serde::{Deserialize, Serialize};
 
 use super::glyph::{self, Glyph};
+use super::shared::arc_span::outside_sweep;
+use super::shared::radii::Round;
+use super::shared::round_contacts::round;
 use super::{Compiler, ConstraintKind, Entities};
 use crate::constraints::check::{point_tangent, ContactSpec, ContactTarget, SolvedCheck, SolvedState};
 use crate::constraints::piece::Slot;
 use crate::ground::curve_eval::CurveBasis;
-use crate::ground::entity::Entity;
 use crate::ground::errors::{Error, Result};
 use crate::ground::ids::EntityId;
 use crate::ground::lookup::EntityLookup;
@@ -33,14 +40,15 @@ use crate::residuals::curve::{
 };
 use crate::ground::vocabulary::{CircleSide, Contact, Rotation};
 
-/// The curve touches the circle entity at u: |C(u) − c|² = r² and (C(u) − c)·C′(u) = 0,
-/// lying on `side` near the contact and running around it in `rotation` (two rows).
+/// The curve touches the circle entity or circular arc at u: |C(u) − c|² = r² and
+/// (C(u) − c)·C′(u) = 0, lying on `side` near the contact and running around it in
+/// `rotation` (two rows; on an arc, the contact checked within its sweep after the solve).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct TangentToCircle {
     /// The curve.
     pub curve: EntityId,
-    /// The circle entity (centre and radius may be unknowns).
+    /// The circle entity or circular arc (centre and radius may be unknowns).
     pub circle: EntityId,
     /// The contact parameter.
     pub u: Contact,
@@ -50,7 +58,8 @@ pub struct TangentToCircle {
     pub rotation: Rotation,
 }
 
-/// C(u) − c − σ·r·n(u) = 0 (see the module documentation). Blocks: curve, u, centre, radius.
+/// C(u) − c − σ·r·n(u) = 0 (see the module documentation). Blocks: curve, u, centre, then the
+/// radius (a circle) or the start S with r = |S − c| (an arc; see [`CircleContact::on_arc`]).
 ///
 /// ```
 /// use camber_sketch::constraints::tangent_to_circle::CircleContact;
@@ -71,6 +80,7 @@ pub struct CircleContact {
     basis: CurveBasis,
     u: Param,
     sigma: f64,
+    arc: bool,
 }
 
 impl CircleContact {
@@ -81,7 +91,30 @@ impl CircleContact {
             basis,
             u,
             sigma: if clockwise { 1.0 } else { -1.0 },
+            arc: false,
         }
+    }
+
+    /// The same rows against a circular arc's circle: the blocks after the curve (and u) are
+    /// the arc's centre c and start S, and r = |S − c|.
+    ///
+    /// ```
+    /// use camber_sketch::constraints::tangent_to_circle::CircleContact;
+    /// use camber_sketch::residuals::Param;
+    /// use camber_sketch::{curve_eval::CurveBasis, Entity};
+    /// use camber_solve::Residual;
+    /// use nalgebra::Point2;
+    /// // The segment y = 1 touches the arc about (0, 0) starting at (1, 0) at u = ½.
+    /// let line = Entity::Line([Point2::new(-1.0, 1.0), Point2::new(1.0, 1.0)]);
+    /// let r = CircleContact::new(CurveBasis::of(&line).ok_or("curve")?, Param::Fixed(0.5), true)
+    ///     .on_arc();
+    /// let mut g = [1.0; 2];
+    /// r.eval::<f64>(&[&[-1.0, 1.0][..], &[1.0, 1.0][..], &[0.0, 0.0][..], &[1.0, 0.0][..]], &mut g);
+    /// assert!(g[0].abs() < 1e-15 && g[1].abs() < 1e-15);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn on_arc(self) -> Self {
+        Self { arc: true, ..self }
     }
 }
 
@@ -94,7 +127,7 @@ impl Residual for CircleContact {
     }
     fn block_sizes(&self) -> Option<Vec<usize>> {
         let mut sizes = curve_block_sizes(&self.basis, self.u);
-        sizes.extend([2, 1]);
+        sizes.extend([2, if self.arc { 2 } else { 1 }]);
         Some(sizes)
     }
     fn depends_on(&self, x: &[&[f64]], blocks: &mut [bool]) {
@@ -102,8 +135,11 @@ impl Residual for CircleContact {
     }
     fn eval<T: Scalar>(&self, x: &[&[T]], out: &mut [T]) {
         let (c, c1, k) = curve_at(&self.basis, self.u, x);
-        let (centre, r) = (x[k], x[k + 1][0]);
-        self.outer(&[c[0], c[1], c1[0], c1[1], centre[0], centre[1], r], out);
+        let (centre, last) = (x[k], x[k + 1]);
+        // The radius r, or the arc's start S.
+        let far = if self.arc { last[1] } else { T::zero() };
+        let y = [c[0], c[1], c1[0], c1[1], centre[0], centre[1], last[0], far];
+        self.outer(&y[..if self.arc { 8 } else { 7 }], out);
     }
     fn structured_jacobian(
         &self,
@@ -125,10 +161,17 @@ impl Residual for CircleContact {
     }
 }
 
-/// f(C, C′, c, r) = C − c − σ·r·n (inputs Cₓ, C_y, C′ₓ, C′_y, cₓ, c_y, r).
+/// f(C, C′, c, r) = C − c − σ·r·n (inputs Cₓ, C_y, C′ₓ, C′_y, cₓ, c_y, then r, or Sₓ, S_y
+/// of an arc with r = |S − c|).
 impl Outer for CircleContact {
     fn outer<T: Scalar>(&self, y: &[T], out: &mut [T]) {
-        let (c, c1, centre, r) = ([y[0], y[1]], [y[2], y[3]], [y[4], y[5]], y[6]);
+        let (c, c1, centre) = ([y[0], y[1]], [y[2], y[3]], [y[4], y[5]]);
+        let r = if self.arc {
+            let v = [y[6] - y[4], y[7] - y[5]];
+            dot(v, v).sqrt()
+        } else {
+            y[6]
+        };
         let speed = dot(c1, c1).sqrt();
         let s = cst::<T>(self.sigma) * r / speed;
         out[0] = c[0] - centre[0] + s * c1[1];
@@ -137,7 +180,8 @@ impl Outer for CircleContact {
 }
 
 impl ComposedCurve for CircleContact {
-    /// C(u), C′(u), the centre and the radius as the inputs of [`Outer::outer`], with their
+    /// C(u), C′(u), the centre and the radius (or an arc's start) as the inputs of
+    /// [`Outer::outer`], with their
     /// derivatives (in u too when it is free).
     fn inner(&self, blocks: &Blocks<'_>, map: &mut InnerMap) -> Option<()> {
         let k = blocks.curve(&self.basis, self.u, 0, 0..=1, map)?;
@@ -157,15 +201,19 @@ impl ConstraintKind for TangentToCircle {
     }
 
     fn compile(&self, cx: &mut Compiler<'_>) -> Result<()> {
-        cx.circle(self.circle)?;
+        let round = Round::of(cx, self.circle)?;
         let (basis, mut slots, param) = cx.curve_contact(self.curve, self.u)?;
-        slots.extend([Slot::Point(self.circle, 0), Slot::Radius(self.circle)]);
+        // [c, r] for a circle, [c, S] for an arc.
+        slots.push(Slot::Point(self.circle, 0));
+        slots.push(if round.is_arc() {
+            Slot::Point(self.circle, 1)
+        } else {
+            Slot::Radius(self.circle)
+        });
         let clockwise = self.rotation == Rotation::Clockwise;
-        cx.residual(
-            CircleContact::new(basis, param, clockwise),
-            slots,
-            Some(Arc::new(*self)),
-        );
+        let rows = CircleContact::new(basis, param, clockwise);
+        let rows = if round.is_arc() { rows.on_arc() } else { rows };
+        cx.residual(rows, slots, Some(Arc::new(*self)));
         Ok(())
     }
 
@@ -196,12 +244,22 @@ impl SolvedCheck for TangentToCircle {
     fn verify(&self, state: &SolvedState<'_>) -> Result<()> {
         let u = state.parameter(self.u, &mut 0);
         let curve = state.entity(self.curve)?;
-        let Entity::Circle { center, radius } = *state.entity(self.circle)? else {
+        let Some((center, radius, arc)) = round(state.entity(self.circle)?) else {
             return Err(Error::UnknownEntity {
                 entity: self.circle,
             });
         };
         let (p, t) = point_tangent(curve, self.curve, u)?;
+        if let Some(arc) = arc {
+            let direction = Vector2::new(p[0] - center.x, p[1] - center.y);
+            if let Some(outside) = outside_sweep(&arc, direction, state.penetration) {
+                return Err(Error::ContactOffArc {
+                    constraint: state.owner,
+                    arc: self.circle,
+                    outside,
+                });
+            }
+        }
         state.not_cusp(t[0].hypot(t[1]), state.floor(self.curve)?)?;
         let turn = (p[0] - center.x) * t[1] - (p[1] - center.y) * t[0];
         state.sense(match self.rotation {

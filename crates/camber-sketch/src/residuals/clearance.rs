@@ -4,12 +4,13 @@
 //!
 //! # Clearance
 //!
-//! A curve C touching a target (a circle or a line) at the contact parameter u must stay on its
+//! A curve C touching a target (a circle, an arc's circle or a line) at the contact parameter u must stay on its
 //! side of the target near u. Write G(s) for the signed gap of the curve point C(s), positive
 //! on the intended side and in length units near the target:
 //!
 //! - circle (c, r): G = ς·(|C − c|² − r²)/(2r), ς = +1 outside, −1 inside, so that
-//!   G′ = ς·(C − c)·C′/r and G″ = ς·(|C′|² + (C − c)·C″)/r;
+//!   G′ = ς·(C − c)·C′/r and G″ = ς·(|C′|² + (C − c)·C″)/r; an arc's circle the same with
+//!   r = |S − c| from its start S;
 //! - line through A and B, d = B − A: G = ς·cross(d, C − A)/|d|, ς = +1 on the left, so that
 //!   G′ = ς·cross(d, C′)/|d| and G″ = ς·cross(d, C″)/|d|.
 //!
@@ -103,6 +104,9 @@ const NEAR_CONTACT: f64 = 1e-4;
 pub enum Target {
     /// A circle: the blocks after the curve (and u) are its centre and its radius.
     Circle,
+    /// A circular arc's circle: the blocks after the curve (and u) are its centre C and its
+    /// start S; the radius is |S − C|.
+    Arc,
     /// A line: the blocks after the curve (and u) are two of its points A and B.
     Line,
 }
@@ -211,13 +215,24 @@ impl Clearance {
         }
     }
 
+    /// The centre and radius of a circle or arc target.
+    fn circle<'a, T: Scalar>(&self, target: &[&'a [T]]) -> (&'a [T], T) {
+        let r = if self.target == Target::Arc {
+            let v = [target[1][0] - target[0][0], target[1][1] - target[0][1]];
+            dot(v, v).sqrt()
+        } else {
+            target[1][0]
+        };
+        (target[0], r)
+    }
+
     /// G, G′ and G″ at a point with C, C′ and C″ = `d` (see the module documentation).
     fn gap<T: Scalar>(&self, target: &[&[T]], d: &[[T; 2]; 3]) -> [T; 3] {
         let side = cst::<T>(self.side);
         let [c, c1, c2] = d;
         match self.target {
-            Target::Circle => {
-                let (centre, r) = (target[0], target[1][0]);
+            Target::Circle | Target::Arc => {
+                let (centre, r) = self.circle(target);
                 let v = [c[0] - centre[0], c[1] - centre[1]];
                 let g = (v[0] * v[0] + v[1] * v[1] - r * r) / (cst::<T>(2.0) * r);
                 let g1 = (v[0] * c1[0] + v[1] * c1[1]) / r;
@@ -266,8 +281,8 @@ impl Clearance {
         ];
         let k1 = [c3[0] * sixth, c3[1] * sixth];
         match self.target {
-            Target::Circle => {
-                let (centre, r) = (target[0], target[1][0]);
+            Target::Circle | Target::Arc => {
+                let (centre, r) = self.circle(target);
                 let v = [c[0] - centre[0], c[1] - centre[1]];
                 let d2 = delta * delta;
                 let m = [
@@ -450,7 +465,7 @@ impl Residual for Clearance {
         let mut sizes = curve_block_sizes(&self.basis, self.u);
         sizes.extend(match self.target {
             Target::Circle => [2, 1],
-            Target::Line => [2, 2],
+            Target::Arc | Target::Line => [2, 2],
         });
         Some(sizes)
     }

@@ -13,6 +13,7 @@ use nalgebra::{Point2, Vector2};
 
 use crate::component::problem::ComponentProblem;
 use crate::constraints::check::{ContactSpec, ContactTarget};
+use crate::constraints::shared::round_contacts::round;
 use crate::ground::entity::Entity;
 use crate::ground::errors::{Error, Result};
 use crate::ground::lookup::EntityLookup;
@@ -155,12 +156,12 @@ impl Shape {
                 side,
                 rotation,
             } => {
-                let Entity::Circle { center, radius } = lookup.lookup(circle)? else {
+                let Some((center, radius, _)) = round(lookup.lookup(circle)?) else {
                     return Err(Error::UnknownEntity { entity: circle });
                 };
                 Shape::Circle {
-                    center: *center,
-                    radius: *radius,
+                    center,
+                    radius,
                     outside: matches!(side, CircleSide::Outside),
                     counter_clockwise: matches!(rotation, Rotation::CounterClockwise),
                 }
