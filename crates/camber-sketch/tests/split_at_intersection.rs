@@ -278,3 +278,68 @@ fn bad_splits_are_refused_and_change_nothing() {
     );
     assert_eq!(json(&s), file);
 }
+
+/// The upper half of the ellipse x²/4 + y² = 1 split by the line x = 1: two elliptic arcs of
+/// the same ellipse meeting at (1, √3/2), the parametric angle π/3; the first runs from 0 to
+/// π/3, the second from π/3 to π; the sketch solves after. Trimmed instead, the kept start
+/// piece ends at the crossing.
+#[test]
+fn an_elliptic_arc_split_at_a_line_gives_two_arcs_of_its_ellipse() {
+    use camber_geom::EllipticArc;
+    use camber_sketch::sketch::split::Keep;
+    use std::f64::consts::{FRAC_PI_3, PI};
+    let build = || {
+        let mut s = Sketch::new();
+        let arc = s
+            .add_elliptic_arc(
+                &EllipticArc::try_new(Point2::origin(), 2.0, 1.0, 0.0, 0.0, PI).unwrap(),
+            )
+            .unwrap();
+        let line = s
+            .add_line(Point2::new(1.0, -3.0), Point2::new(1.0, 3.0))
+            .unwrap();
+        (s, arc, line)
+    };
+    let x = Point2::new(1.0, 3f64.sqrt() / 2.0);
+    let (mut s, arc, line) = build();
+    // The end's control point 3 is the end: its constraint follows it to the second piece.
+    s.add_constraint(Fixed::point(PointRef::Control(arc, 3)))
+        .unwrap();
+    let split = s.split_at_intersection(arc, line, None).unwrap();
+    assert_eq!(split.moved.len(), 1);
+    let (_, moved) = split.moved[0];
+    let Constraint::Fixed(Fixed {
+        target: FixTarget::Point(p),
+    }) = s.constraint(moved).unwrap()
+    else {
+        panic!("{:?}", s.constraint(moved));
+    };
+    assert_eq!(p.entity(), split.second, "{p:?}");
+    assert_relative_eq!(
+        s.point(*p).unwrap(),
+        Point2::new(-2.0, 0.0),
+        epsilon = 1e-12
+    );
+    let (a, b) = (
+        s.entity(arc).unwrap().as_elliptic_arc().unwrap(),
+        s.entity(split.second).unwrap().as_elliptic_arc().unwrap(),
+    );
+    assert_relative_eq!(a.end_point(), x, epsilon = 1e-12);
+    assert_relative_eq!(b.start_point(), x, epsilon = 1e-12);
+    assert_relative_eq!(a.sweep(), FRAC_PI_3, epsilon = 1e-12);
+    assert_relative_eq!(b.sweep(), PI - FRAC_PI_3, epsilon = 1e-12);
+    assert_relative_eq!(b.ellipse().semi_axis_a(), 2.0, epsilon = 1e-15);
+    assert_relative_eq!(b.ellipse().semi_axis_b(), 1.0, epsilon = 1e-15);
+    s.solve().unwrap();
+    assert_relative_eq!(
+        s.point(PointRef::End(arc)).unwrap(),
+        s.point(PointRef::Start(split.second)).unwrap(),
+        epsilon = 1e-9
+    );
+
+    let (mut s, arc, line) = build();
+    s.trim(arc, line, Keep::Start, None).unwrap();
+    let kept = s.entity(arc).unwrap().as_elliptic_arc().unwrap();
+    assert_relative_eq!(kept.end_point(), x, epsilon = 1e-12);
+    assert_relative_eq!(kept.start_point(), Point2::new(2.0, 0.0), epsilon = 1e-12);
+}

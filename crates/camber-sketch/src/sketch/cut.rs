@@ -31,13 +31,14 @@ use crate::ground::vocabulary::FixTarget;
 /// piece shares, such as a line's direction).
 pub(crate) type EndsRead = SmallVec<[ArcEnd; 2]>;
 
-/// Whether `e` is a kind that can be cut: a line, a circular arc, or a Bézier, B-spline or
-/// NURBS curve.
+/// Whether `e` is a kind that can be cut: a line, a circular or elliptic arc, or a Bézier,
+/// B-spline or NURBS curve. (A whole circle or ellipse has no ends to keep.)
 pub(crate) fn cuttable(e: &Entity) -> bool {
     matches!(
         e,
         Entity::Line(_)
             | Entity::Arc(_)
+            | Entity::EllipticArc { .. }
             | Entity::Bezier(_)
             | Entity::BSpline(_)
             | Entity::Nurbs(_)
@@ -45,8 +46,8 @@ pub(crate) fn cuttable(e: &Entity) -> bool {
 }
 
 /// Which end of entity `id` (the entity `e`) the point reference `r` reads: `Start`/`End`, or
-/// the control point an end resolves to (a line's 0 and 1, an arc's 1 and 2, a curve's first
-/// and last); `None` for any other point (a centre, an interior control point).
+/// the control point an end resolves to (a line's 0 and 1, an arc's 1 and 2, an elliptic
+/// arc's 2 and 3, a curve's first and last); `None` for any other point (a centre, an interior control point).
 pub(crate) fn end_of(e: &Entity, id: EntityId, r: PointRef) -> Option<ArcEnd> {
     if r.entity() != id {
         return None;
@@ -58,9 +59,10 @@ pub(crate) fn end_of(e: &Entity, id: EntityId, r: PointRef) -> Option<ArcEnd> {
             let n = e.points().len();
             let (first, last) = match e {
                 Entity::Arc(_) => (1, 2),
+                Entity::EllipticArc { .. } => (2, 3),
                 _ => (0, n.saturating_sub(1)),
             };
-            let is_arc = matches!(e, Entity::Arc(_));
+            let is_arc = matches!(e, Entity::Arc(_) | Entity::EllipticArc { .. });
             if i == first && (is_arc || e.is_clamped(false)) {
                 Some(ArcEnd::Start)
             } else if i == last && (is_arc || e.is_clamped(true)) {
@@ -129,7 +131,8 @@ pub(crate) fn carried_ends(c: &Constraint, id: EntityId, e: &Entity) -> Option<E
 
 /// The piece of entity `e` from the cut at parameter `t` to its end (`keep_end`) or from its
 /// start to the cut, as the same kind of entity (module documentation). For an arc, `t` is
-/// read as the cut point's angle about the centre.
+/// read as the cut point's angle about the centre; for an elliptic arc, as its parametric
+/// angle (the cut point is C + a·cos t·u + b·sin t·v on the ellipse).
 ///
 /// # Errors
 /// The kernel's errors for a cut too near an end ([`camber_geom::Error::DegenerateSpan`], …);
@@ -151,6 +154,21 @@ pub(crate) fn piece(id: EntityId, e: &Entity, t: f64, keep_end: bool) -> Result<
                 Entity::Arc([*c, x, *f])
             } else {
                 Entity::Arc([*c, *s, x])
+            }
+        }
+        Entity::EllipticArc {
+            points: [c, v, s, f],
+            semi_axis_b,
+        } => {
+            let x = ellipse_of(id, e)?.point_at_angle(t);
+            let points = if keep_end {
+                [*c, *v, x, *f]
+            } else {
+                [*c, *v, *s, x]
+            };
+            Entity::EllipticArc {
+                points,
+                semi_axis_b: *semi_axis_b,
             }
         }
         Entity::Bezier(curve) => {
@@ -176,7 +194,7 @@ pub(crate) fn piece(id: EntityId, e: &Entity, t: f64, keep_end: bool) -> Result<
         other => {
             return Err(Error::WrongEntityKind {
                 entity: id,
-                expected: "line, arc, Bézier, B-spline or NURBS curve",
+                expected: "line, arc, elliptic arc, Bézier, B-spline or NURBS curve",
                 found: other.kind_name(),
             })
         }
@@ -195,8 +213,8 @@ fn widest_span(knots: &[f64]) -> f64 {
 }
 
 /// The cut parameter of point `x` on entity `e`: the line parameter of its foot, the angle of
-/// x about an arc's centre; `None` for free-form curves (their parameter comes from the query
-/// that found the point).
+/// x about an arc's centre, the parametric angle of x on an elliptic arc's ellipse; `None` for
+/// free-form curves (their parameter comes from the query that found the point).
 pub(crate) fn line_or_arc_parameter(e: &Entity, x: Point2<f64>) -> Option<f64> {
     match e {
         Entity::Line([a, b]) => {
@@ -204,8 +222,18 @@ pub(crate) fn line_or_arc_parameter(e: &Entity, x: Point2<f64>) -> Option<f64> {
             Some((x - a).dot(&d) / d.norm_squared())
         }
         Entity::Arc([c, _, _]) => Some((x - c).y.atan2((x - c).x)),
+        Entity::EllipticArc { .. } => e.as_ellipse().map(|el| el.angle_of(&x)),
         _ => None,
     }
+}
+
+/// The ellipse of elliptic arc `e` (entity `id`).
+fn ellipse_of(id: EntityId, e: &Entity) -> Result<camber_geom::Ellipse<f64>> {
+    e.as_ellipse().ok_or(Error::WrongEntityKind {
+        entity: id,
+        expected: "elliptic arc with positive semi-axes",
+        found: e.kind_name(),
+    })
 }
 
 #[cfg(test)]

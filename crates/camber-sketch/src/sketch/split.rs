@@ -3,8 +3,9 @@
 //! The crossing is found by the kernel's curve–curve intersection
 //! ([`camber_geom::queries::intersect_curves`]: Bézier pieces in box trees, each candidate
 //! refined by Newton's method to the rounding of the coordinates) between the cut entity — a
-//! line, a circular arc (through its exact rational form) or a Bézier, B-spline or NURBS
-//! curve — and the other entity, which may also be a circle, an ellipse, an elliptic arc or a
+//! line, a circular arc (through its exact rational form), an elliptic arc (cut at the
+//! parametric angle of the crossing) or a Bézier, B-spline or NURBS curve — and the other
+//! entity, which may also be a circle, an ellipse, an elliptic arc or a
 //! Hermite or composite curve. Crossings within 10⁻⁹ of the sketch's size of an end of the
 //! cut entity are not cuts (a piece would be empty). With one crossing left it is the cut;
 //! with several, the caller names a point and the crossing nearest it is taken; without a
@@ -142,7 +143,7 @@ impl Sketch {
         if !cuttable(e) {
             return Err(Error::WrongEntityKind {
                 entity,
-                expected: "line, arc, Bézier, B-spline or NURBS curve",
+                expected: "line, arc, elliptic arc, Bézier, B-spline or NURBS curve",
                 found: e.kind_name(),
             });
         }
@@ -157,13 +158,14 @@ impl Sketch {
         let ends = [
             e.points()[match e {
                 Entity::Arc(_) => 1,
+                Entity::EllipticArc { .. } => 2,
                 _ => 0,
             }],
             *e.points().last().unwrap_or(&Point2::origin()),
         ];
         let (lo, hi) = e.domain().unwrap_or((0.0, 1.0));
         let ends = match e {
-            Entity::Line(_) | Entity::Arc(_) => ends,
+            Entity::Line(_) | Entity::Arc(_) | Entity::EllipticArc { .. } => ends,
             _ => {
                 let at = |u| e.point_tangent(u).map_or(Point2::origin(), |(p, _)| p);
                 [at(lo), at(hi)]
