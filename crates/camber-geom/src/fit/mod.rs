@@ -35,7 +35,6 @@
 //! # Ok::<(), camber_geom::Error>(())
 //! ```
 
-mod distance_minima;
 mod ends;
 mod interpolation;
 mod knot_placement;

@@ -11,7 +11,7 @@
 //!   the whole curve. The foot-point distance e bounds it from above, so only the Bézier pieces
 //!   of the curve whose control boxes come within e of Q can hold a closer point. On each such
 //!   piece every local minimum of the distance is isolated exactly from the Bernstein form of
-//!   g′(u) = (C(u) − Q)·C′(u) ([`distance_minima`](super::distance_minima)), refined by
+//!   g′(u) = (C(u) − Q)·C′(u) ([`distance_minima`](crate::queries::distance_minima)), refined by
 //!   safeguarded Newton steps on g′, and the nearest of those minima and the piece's ends wins:
 //!   no minimum is missed however wiggly the piece. Its distance is measured by the curve's own
 //!   evaluation and replaces e when smaller. (Were the pieces not available, each span would be
@@ -19,11 +19,12 @@
 
 use nalgebra::{Point, SVector};
 
-use super::distance_minima::{Candidate, DistanceMinima};
 use super::power_form::PowerForm;
 use crate::bspline::BSplineCurve;
 use crate::curve::ParametricCurve;
 use crate::errors::Result;
+use crate::queries::distance_minima::{Candidate, DistanceMinima};
+use crate::queries::pieces::box_distance;
 use crate::queries::RationalPiece;
 use crate::scalar::{cst, from_usize, re, Scalar};
 
@@ -120,19 +121,6 @@ const SAMPLES_PER_PIECE: usize = 8;
 /// Newton or bisection steps per bracketed minimum at most (bisection alone halves the bracket
 /// of an eighth of a piece to below 1e-16 of it in 50).
 const MAX_STEPS: usize = 60;
-
-/// The distance from `q` to the box [lo, hi] (zero inside).
-fn box_distance<const D: usize>(
-    (lo, hi): &(SVector<f64, D>, SVector<f64, D>),
-    q: &SVector<f64, D>,
-) -> f64 {
-    let mut sum = 0.0;
-    for c in 0..D {
-        let e = (lo[c] - q[c]).max(q[c] - hi[c]).max(0.0);
-        sum += e * e;
-    }
-    sum.sqrt()
-}
 
 /// The control boxes of a curve's Bézier pieces and of every aligned run of 2, 4, 8, …
 /// pieces: level 0 holds the pieces, level l + 1 the union of pairs of level l. A query visits

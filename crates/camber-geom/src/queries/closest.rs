@@ -2,7 +2,11 @@
 
 use nalgebra::{Point, SVector};
 
-use super::{polish, scan, ClosestPoint, Field, QueryOptions};
+use super::distance_minima::{Candidate, DistanceMinima};
+use super::{
+    domain_length, evaluate, opposite, polish, refine, scan, ClosestPoint, Field, QueryOptions,
+    Sample,
+};
 use crate::curve::ParametricCurve;
 use crate::errors::{Error, Result};
 use crate::scalar::{cst, re, Scalar};
@@ -64,6 +68,11 @@ where
 /// Every piece is sampled, every sign change of f(u) = (C(u) − p)·C′(u) from − to + between
 /// samples (a local minimum of the distance) is refined by safeguarded Newton on f, and the
 /// best of those minima and of all samples wins. On ties the smallest parameter is returned.
+/// Where the curve's Bézier pieces are exact polynomials (Bézier, B-spline, Hermite, segment
+/// and composites of those), every piece whose control box comes closer than that answer is
+/// also searched exactly: the roots of f on it are isolated from its Bernstein form (module
+/// `distance_minima`), so a minimum between two samples is not missed however wiggly the
+/// piece; NURBS and circles rely on the samples.
 /// Fails with [`Error::NonFinite`] for a point with a NaN or infinite coordinate, where the
 /// curve cannot be evaluated, and for bad options.
 ///
@@ -122,6 +131,7 @@ where
     }
     // `scan` always returns at least the two domain ends.
     let best = best.ok_or(Error::ZeroCount { what: "samples" })?;
+    let best = isolated_minimum(curve, &field, opts, best)?;
     // At an interior minimum h″ > 0; a converged Newton step there only adds dual parts.
     let best = if re(best.h[2]) > 0.0 {
         let polished = polish(curve, &field, best, 1)?;
@@ -148,4 +158,59 @@ where
         point: best.point,
         distance: best.measure,
     })
+}
+
+/// `best` improved by the exact search of the curve's polynomial Bézier pieces (see
+/// [`closest_point_with`]): each piece within `best`'s distance, its minima isolated by
+/// [`DistanceMinima`] and refined as the samples' are.
+fn isolated_minimum<T, const D: usize, C>(
+    curve: &C,
+    field: &SquaredDistance<T, D>,
+    opts: &QueryOptions,
+    best: Sample<T, D>,
+) -> Result<Sample<T, D>>
+where
+    T: Scalar,
+    C: ParametricCurve<T, D> + ?Sized,
+{
+    let Some(pieces) = curve.bezier_enclosure()? else {
+        return Ok(best);
+    };
+    let q: SVector<f64, D> = SVector::from_fn(|c, _| re(field.target.coords[c]));
+    let tol_u = opts.parameter_tolerance.max(0.0) * domain_length(curve);
+    let (lo, hi) = curve.domain();
+    let (lo, hi) = (re(lo), re(hi));
+    let mut best = best;
+    let mut minima = DistanceMinima::default();
+    let mut found = Vec::new();
+    for piece in &pieces {
+        // A sampled enclosure is not the curve itself: nothing exact to read from it.
+        if piece.slack > 0.0 || piece.box_distance(&q) > re(best.measure) {
+            continue;
+        }
+        if !minima.find(piece, &q, &mut found) {
+            continue;
+        }
+        let at = |t: f64| cst::<T>((piece.start + (piece.end - piece.start) * t).clamp(lo, hi));
+        for candidate in &found {
+            let s = match *candidate {
+                Candidate::Bracket(t0, t1) => {
+                    let a = evaluate(curve, field, at(t0), 0)?;
+                    let b = evaluate(curve, field, at(t1), 0)?;
+                    if opposite(a.h[1], b.h[1]) {
+                        refine(curve, field, &a, &b, 1, tol_u, opts.max_iterations)?
+                    } else if re(a.h[0]) <= re(b.h[0]) {
+                        a
+                    } else {
+                        b
+                    }
+                }
+                Candidate::At(t) => evaluate(curve, field, at(t), 0)?,
+            };
+            if re(s.h[0]) < re(best.h[0]) {
+                best = s;
+            }
+        }
+    }
+    Ok(best)
 }

@@ -20,7 +20,9 @@
 //!   is a tangential touch.
 //!
 //! Features smaller than the sample spacing (two extrema between neighbouring samples) can be
-//! missed; raise `samples_per_piece` for wiggly pieces.
+//! missed; raise `samples_per_piece` for wiggly pieces. The closest point does not rely on the
+//! samples alone where the curve's pieces are polynomials: their minima are isolated exactly
+//! (`distance_minima`).
 //!
 //! ```
 //! use camber_geom::queries::{closest_point, intersect_line};
@@ -55,6 +57,7 @@ mod closest;
 mod curvature;
 mod curve_curve;
 mod distance;
+pub(crate) mod distance_minima;
 mod intersect;
 mod overlap;
 pub(crate) mod pieces;

@@ -92,6 +92,12 @@ impl<const D: usize> RationalPiece<D> {
         (lo - grow, hi + grow)
     }
 
+    /// The distance from `q` to [`bounding_box`](Self::bounding_box) (zero inside).
+    pub(crate) fn box_distance(&self, q: &SVector<f64, D>) -> f64 {
+        let (lo, hi) = self.bounding_box();
+        box_distance(&(lo, hi), q)
+    }
+
     /// The chord from the first to the last control point and how far the curve may lie from
     /// it over [start, end]: the largest distance of a control point from the chord segment,
     /// plus the [`slack`](Self::slack). The piece lies in the convex hull of its control points,
@@ -506,6 +512,19 @@ impl<T: Scalar> ParametricCurve<T, 2> for Circle<T> {
                 .collect(),
         ))
     }
+}
+
+/// The distance from `q` to the box [lo, hi] (zero inside).
+pub(crate) fn box_distance<const D: usize>(
+    (lo, hi): &(SVector<f64, D>, SVector<f64, D>),
+    q: &SVector<f64, D>,
+) -> f64 {
+    let mut sum = 0.0;
+    for c in 0..D {
+        let e = (lo[c] - q[c]).max(q[c] - hi[c]).max(0.0);
+        sum += e * e;
+    }
+    sum.sqrt()
 }
 
 #[cfg(test)]

@@ -53,7 +53,8 @@ pub(crate) struct DistanceMinima {
 impl DistanceMinima {
     /// Every local minimum of |C(t) − q| over the open interval (0, 1) of `piece`, as brackets
     /// or single parameters in increasing t, into `out`. Returns `false` (and leaves `out`
-    /// empty) for a rational piece (a weight other than 1), whose g′ is not a polynomial.
+    /// empty) for a rational piece (a weight other than 1), whose g′ is not a polynomial, and
+    /// where the coefficients overflow (coordinates near the largest f64).
     pub(crate) fn find<const D: usize>(
         &mut self,
         piece: &RationalPiece<D>,
@@ -92,6 +93,10 @@ impl DistanceMinima {
                 let weight = weight_i * binomial::<f64>(n - 1, j) / binomial::<f64>(width - 1, k);
                 self.stack[k] += weight * a.dot(&b);
             }
+        }
+        if self.stack.iter().any(|c| !c.is_finite()) {
+            // Coordinates so large that the products overflow: no signs to read.
+            return false;
         }
         self.intervals.clear();
         self.intervals.push((0.0, 1.0, 0));
