@@ -451,3 +451,44 @@ proptest! {
         }
     }
 }
+
+/// Touching from inside at one foot while crossing elsewhere is refused: a circle of radius 1.5
+/// touching the top (0, 1) of x²/4 + y² = 1 from inside (below its radius of curvature 4 there)
+/// pokes out through the bottom, 1 deep at θ = 3π/2; a circle of radius 1.5 around the vertex
+/// (2, 0) (above its radius of curvature ½) leaves the far vertex (−2, 0) outside, 1 deep at
+/// θ = π. Every row holds at the start; the check after the solve refuses both and the sketch
+/// is left as it was. A circle of radius ½ under the top touches without crossing.
+#[test]
+fn an_internal_contact_that_crosses_elsewhere_is_refused() {
+    for (centre, r, theta, crossing) in [
+        ((0.0, -0.5), 1.5, FRAC_PI_2, 1.5 * PI),
+        ((0.5, 0.0), 1.5, 0.0, PI),
+        ((0.0, 0.5), 0.5, FRAC_PI_2, f64::NAN),
+    ] {
+        let mut s = Sketch::new();
+        let e = s
+            .add_ellipse(&Ellipse::try_new(Point2::origin(), 2.0, 1.0, 0.0).unwrap())
+            .unwrap();
+        s.add_constraint(Fixed::entity(e)).unwrap();
+        let c = circle(&mut s, centre, r);
+        s.add_constraint(Fixed::entity(c)).unwrap();
+        let k = s
+            .add_constraint(touch(e, c, Tangency::Internal, theta))
+            .unwrap();
+        let before = to_json(&s).unwrap();
+        let result = s.solve();
+        if crossing.is_nan() {
+            result.unwrap();
+            continue;
+        }
+        let err = result.unwrap_err();
+        assert!(
+            matches!(err, Error::ContactCrossed { constraint, parameter, depth }
+                if constraint == k
+                    && (parameter - crossing).abs() < 0.02
+                    && (depth - 1.0).abs() < 1e-3),
+            "{err}"
+        );
+        assert_eq!(to_json(&s).unwrap(), before);
+    }
+}

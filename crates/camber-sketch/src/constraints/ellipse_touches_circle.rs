@@ -15,18 +15,23 @@
 //! the circle's centre lies at distance r from P(θ) along the ellipse's normal, on the recorded
 //! side. They hold exactly when |P(θ) − c| = r and (P(θ) − c) × P′(θ) = 0 with the centre on
 //! that side, so Newton cannot settle on the other side's contact; smooth wherever a > 0 and
-//! b > 0 (|N| ≥ min(a, b)). From inside, the circle lies inside the ellipse when r is below
-//! the ellipse's radius of curvature at the contact and around it when r is above; that is not
-//! recorded. The rows hold at every foot of a normal from c at distance r (up to four for a
-//! centre inside the evolute): the solve follows the one θ starts nearest, and a crossing of
-//! the two curves away from the contact is not seen (that calls for a clearance row). After
-//! every solve the contact must lie on the arcs: on an elliptic arc θ within
+//! b > 0 (|N| ≥ min(a, b)). The rows hold at every foot of a normal from c at distance r (up
+//! to four for a centre inside the evolute): the solve follows the one θ starts nearest. From
+//! outside the two cannot cross elsewhere (both are convex and the common tangent separates
+//! them). From inside, the circle lies inside the ellipse when r is below the ellipse's radius
+//! of curvature ρ(θ) at the contact and around it when r is above; after every solve the
+//! ellipse (its sweep, for an arc) must then stay on that side of the circle (of its drawn
+//! sweep, for an arc) at 512 samples, else [`Error::ContactCrossed`] names the constraint, the
+//! parametric angle of the deepest crossing and its depth (a circle touching the top of an
+//! ellipse from inside while poking out through the bottom is not an internal tangency). After
+//! every solve the contact must also lie on the arcs: on an elliptic arc θ within
 //! its sweep (to the solve's tolerance over the smaller semi-axis), on a circular arc the
 //! direction (P(θ) − c)/r within its sweep (to the tolerance over the radius), else the solve
 //! fails with [`Error::ContactOffArc`] naming the constraint and the arc, and the sketch is
 //! left as it was. File form: `{"kind": "ellipse_touches_circle", "ellipse": 1, "circle": 2,
 //! "tangency": "external", "theta": 4.71}` (θ in radians, the start of the free unknown).
 
+use std::f64::consts::TAU;
 use std::sync::Arc;
 
 use camber_geom::Ellipse;
@@ -222,7 +227,8 @@ impl ConstraintKind for EllipseTouchesCircle {
                 Slot::Radius(self.circle)
             },
         ];
-        let check: Option<Arc<dyn SolvedCheck>> = if elliptic_arc || other.is_arc() {
+        let internal = self.tangency == Tangency::Internal;
+        let check: Option<Arc<dyn SolvedCheck>> = if elliptic_arc || other.is_arc() || internal {
             Some(Arc::new(*self))
         } else {
             None
@@ -264,12 +270,77 @@ impl SolvedCheck for EllipseTouchesCircle {
                 return Err(off(self.ellipse, outside));
             }
         }
-        if let Some((_, _, Some(arc))) = round(state.entity(self.circle)?) {
+        let Some((centre, r, circle_arc)) = round(state.entity(self.circle)?) else {
+            return Err(Error::UnknownEntity {
+                entity: self.circle,
+            });
+        };
+        if let Some(arc) = &circle_arc {
             let (_, _, w) = contact(&ellipse, theta, self.tangency);
-            if let Some(outside) = outside_sweep(&arc, w, state.penetration) {
+            if let Some(outside) = outside_sweep(arc, w, state.penetration) {
                 return Err(off(self.circle, outside));
+            }
+        }
+        if self.tangency == Tangency::Internal {
+            let sweep = e
+                .as_elliptic_arc()
+                .map_or((0.0, TAU), |a| (a.start_angle(), a.sweep()));
+            let drawn = |q: Point2<f64>| {
+                circle_arc
+                    .as_ref()
+                    .is_none_or(|a| outside_sweep(a, q - centre, state.penetration).is_none())
+            };
+            if let Some((angle, depth)) =
+                internal_crossing(&ellipse, theta, centre, r, sweep, drawn, state.penetration)
+            {
+                return Err(Error::ContactCrossed {
+                    constraint: state.owner,
+                    parameter: angle,
+                    depth,
+                });
             }
         }
         Ok(())
     }
+}
+
+/// Samples of the ellipse checked for a crossing of an internal contact.
+const CROSSING_SAMPLES: usize = 512;
+
+/// For an internal contact at θ: which of the two lies inside follows from the circle's radius
+/// against the ellipse's radius of curvature there, ρ(θ) = (a²sin²θ + b²cos²θ)^{3/2}/(ab)
+/// (r < ρ: the circle inside; r > ρ: the ellipse inside the circle; equal: osculating, not
+/// decided, nothing checked). The deepest of [`CROSSING_SAMPLES`] points of the ellipse's
+/// `(start, sweep)` on the wrong side of the circle by more than `penetration` (only where
+/// `drawn` says the circle's arc is there), as (parametric angle, depth).
+fn internal_crossing(
+    ellipse: &Ellipse<f64>,
+    theta: f64,
+    centre: Point2<f64>,
+    r: f64,
+    (start, sweep): (f64, f64),
+    drawn: impl Fn(Point2<f64>) -> bool,
+    penetration: f64,
+) -> Option<(f64, f64)> {
+    let (a, b) = (ellipse.semi_axis_a(), ellipse.semi_axis_b());
+    let (sin, cos) = theta.sin_cos();
+    let rho = (a * a * sin * sin + b * b * cos * cos).powf(1.5) / (a * b);
+    // +1: every ellipse point outside the circle; −1: inside it.
+    let side = if r < rho * (1.0 - 1e-9) {
+        1.0
+    } else if r > rho * (1.0 + 1e-9) {
+        -1.0
+    } else {
+        return None;
+    };
+    let mut worst: Option<(f64, f64)> = None;
+    for k in 0..=CROSSING_SAMPLES {
+        let angle = start + sweep * k as f64 / CROSSING_SAMPLES as f64;
+        let q = ellipse.point_at_angle(angle);
+        let gap = side * ((q - centre).norm() - r);
+        if gap < -penetration && drawn(q) && worst.is_none_or(|(_, w)| -gap > w) {
+            worst = Some((angle, -gap));
+        }
+    }
+    worst
 }
