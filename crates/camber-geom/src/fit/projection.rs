@@ -23,8 +23,8 @@ use super::power_form::PowerForm;
 use crate::bspline::BSplineCurve;
 use crate::curve::ParametricCurve;
 use crate::errors::Result;
+use crate::queries::box_tree::point_box_distance;
 use crate::queries::distance_minima::{Candidate, DistanceMinima};
-use crate::queries::pieces::box_distance;
 use crate::queries::RationalPiece;
 use crate::scalar::{cst, from_usize, re, Scalar};
 
@@ -166,7 +166,8 @@ impl<const D: usize> PieceTree<D> {
             .map(|i| (top, i))
             .collect();
         while let Some((level, i)) = stack.pop() {
-            if box_distance(&self.levels[level][i], q) > reach {
+            let (lo, hi) = &self.levels[level][i];
+            if point_box_distance(q, (lo, hi)) > reach {
                 continue;
             }
             if level == 0 {

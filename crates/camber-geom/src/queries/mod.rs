@@ -52,7 +52,7 @@
 //! # Ok::<(), camber_geom::Error>(())
 //! ```
 
-mod box_tree;
+pub(crate) mod box_tree;
 mod closest;
 mod curvature;
 mod curve_curve;

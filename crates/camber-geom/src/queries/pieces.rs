@@ -15,6 +15,7 @@
 
 use nalgebra::{Point, Point2, SVector, Vector2};
 
+use super::box_tree::point_box_distance;
 use crate::bezier::BezierCurve;
 use crate::bspline::BSplineCurve;
 use crate::curve::{check_parameter, ParametricCurve};
@@ -95,7 +96,7 @@ impl<const D: usize> RationalPiece<D> {
     /// The distance from `q` to [`bounding_box`](Self::bounding_box) (zero inside).
     pub(crate) fn box_distance(&self, q: &SVector<f64, D>) -> f64 {
         let (lo, hi) = self.bounding_box();
-        box_distance(&(lo, hi), q)
+        point_box_distance(q, (&lo, &hi))
     }
 
     /// The chord from the first to the last control point and how far the curve may lie from
@@ -512,19 +513,6 @@ impl<T: Scalar> ParametricCurve<T, 2> for Circle<T> {
                 .collect(),
         ))
     }
-}
-
-/// The distance from `q` to the box [lo, hi] (zero inside).
-pub(crate) fn box_distance<const D: usize>(
-    (lo, hi): &(SVector<f64, D>, SVector<f64, D>),
-    q: &SVector<f64, D>,
-) -> f64 {
-    let mut sum = 0.0;
-    for c in 0..D {
-        let e = (lo[c] - q[c]).max(q[c] - hi[c]).max(0.0);
-        sum += e * e;
-    }
-    sum.sqrt()
 }
 
 #[cfg(test)]
