@@ -398,4 +398,7 @@ kinds! {
     /// An ellipse or elliptic arc touching a circle or arc at a free parametric angle,
     /// externally or internally.
     EllipseTouchesCircle => ellipse_touches_circle::EllipseTouchesCircle,
+    /// A curve touching an ellipse or elliptic arc in its interior, at a free parametric
+    /// angle.
+    TangentToEllipse => tangent_to_ellipse::TangentToEllipse,
 }
