@@ -11,6 +11,7 @@ use approx::assert_relative_eq;
 use camber_geom::queries::closest_point;
 use camber_geom::{BSplineCurve2, BezierCurve2, KnotVector, NurbsCurve2, ParametricCurve};
 use camber_sketch::constraints::{Coincident, Fixed, PointAtParameter};
+use camber_sketch::hermite_chain::HermiteChain;
 use camber_sketch::{Entity, EntityId, Error, PointRef, Sketch, Target};
 use nalgebra::{Point2, Vector2};
 
@@ -364,4 +365,63 @@ fn impossible_curve_fillets_are_refused_and_change_nothing() {
         }
     );
     assert_eq!(camber_sketch::file::to_json(&s).unwrap(), file);
+}
+
+/// A line from (4, 0) to (0, 0) and a cubic Hermite curve leaving (0, 0) straight up to
+/// (0, 4) with unequal end tangents (2 and 6 per unit u, so unevenly parametrized): the corner
+/// is a right angle, so the fillet of radius 1 is centred at (1, 1) and touches at (1, 0) and
+/// (0, 1). The Hermite curve keeps its four blocks and its shape (a piece of x = 0 from
+/// (0, 1) to (0, 4)), the DOF is unchanged and a solve moves nothing.
+#[test]
+fn a_line_and_a_hermite_curve_fillet_at_the_closed_form_centre() {
+    let mut s = Sketch::new();
+    let line = s
+        .add_line(Point2::new(4.0, 0.0), Point2::new(0.0, 0.0))
+        .unwrap();
+    let chain = HermiteChain::single(
+        Point2::new(0.0, 0.0),
+        Point2::new(0.0, 4.0),
+        Vector2::new(0.0, 2.0),
+        Vector2::new(0.0, 6.0),
+    )
+    .unwrap();
+    let curve = s.add_entity(Entity::Hermite(chain)).unwrap();
+    join(&mut s, PointRef::End(line), PointRef::Start(curve));
+    s.add_constraint(Fixed::point(PointRef::Start(line)))
+        .unwrap();
+    s.add_constraint(Fixed::point(PointRef::End(curve)))
+        .unwrap();
+    let before = dof(&s);
+    let f = s.fillet(line, curve, 1.0).unwrap();
+    assert_relative_eq!(*f.geometry.center(), Point2::new(1.0, 1.0), epsilon = 1e-12);
+    assert_relative_eq!(
+        s.point(PointRef::End(line)).unwrap(),
+        Point2::new(1.0, 0.0),
+        epsilon = 1e-12
+    );
+    assert_relative_eq!(
+        s.point(PointRef::Start(curve)).unwrap(),
+        Point2::new(0.0, 1.0),
+        epsilon = 1e-12
+    );
+    let e = s.entity(curve).unwrap();
+    assert!(matches!(e, Entity::Hermite(_)));
+    assert_eq!(e.points().len(), 4);
+    let kept = e.as_curve().unwrap();
+    for k in 0..=50 {
+        let p = kept.point(f64::from(k) / 50.0).unwrap();
+        assert!(
+            p.x.abs() < 1e-12 && p.y > 1.0 - 1e-12 && p.y < 4.0 + 1e-12,
+            "{p}"
+        );
+    }
+    assert_relative_eq!(
+        kept.point(1.0).unwrap(),
+        Point2::new(0.0, 4.0),
+        epsilon = 1e-12
+    );
+    check_joints(&s, f.arc, line, curve);
+    assert_eq!(dof(&s), before);
+    assert_solve_keeps(&mut s, &[line, curve, f.arc], 1e-10);
+    check_joints(&s, f.arc, line, curve);
 }

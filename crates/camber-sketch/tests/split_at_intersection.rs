@@ -343,3 +343,61 @@ fn an_elliptic_arc_split_at_a_line_gives_two_arcs_of_its_ellipse() {
     assert_relative_eq!(kept.end_point(), x, epsilon = 1e-12);
     assert_relative_eq!(kept.start_point(), Point2::new(2.0, 0.0), epsilon = 1e-12);
 }
+
+/// A cubic Hermite curve with uneven end tangents crossing the line x = 1: both pieces are
+/// Hermite curves of four blocks lying on the original, meeting on x = 1 before and after a
+/// solve; a composite curve cannot be cut (its smooth joins share tangent blocks) and is
+/// refused with the sketch unchanged.
+#[test]
+fn a_hermite_curve_split_at_a_line_keeps_its_shape_and_a_composite_is_refused() {
+    use camber_sketch::{HermiteChain, Join};
+    use nalgebra::Vector2;
+    let mut s = Sketch::new();
+    let chain = HermiteChain::single(
+        Point2::new(0.0, 0.0),
+        Point2::new(3.0, 1.0),
+        Vector2::new(4.0, 5.0),
+        Vector2::new(-1.0, 2.0),
+    )
+    .unwrap();
+    let original = chain.segment(0).unwrap();
+    let curve = s.add_entity(Entity::Hermite(chain)).unwrap();
+    let line = s
+        .add_line(Point2::new(1.0, -3.0), Point2::new(1.0, 5.0))
+        .unwrap();
+    let split = s.split_at_intersection(curve, line, None).unwrap();
+    for id in [curve, split.second] {
+        let e = s.entity(id).unwrap();
+        assert!(matches!(e, Entity::Hermite(_)) && e.points().len() == 4);
+        lies_on(e, &original);
+    }
+    let end = s.point(PointRef::End(curve)).unwrap();
+    assert!((s.point(PointRef::Start(split.second)).unwrap() - end).norm() < 1e-12);
+    assert_relative_eq!(end.x, 1.0, epsilon = 1e-12);
+    s.solve().unwrap();
+    let end = s.point(PointRef::End(curve)).unwrap();
+    assert!((end.x - 1.0).abs() < 1e-10);
+
+    let composite = HermiteChain::try_new(
+        vec![
+            Point2::new(0.0, 0.0),
+            Point2::new(1.5, 1.0),
+            Point2::new(3.0, 0.0),
+        ],
+        vec![
+            Vector2::new(1.0, 1.0),
+            Vector2::new(1.5, 0.0),
+            Vector2::new(1.0, -1.0),
+        ],
+        vec![Join::Smooth],
+    )
+    .unwrap();
+    let c = s.add_entity(Entity::Composite(composite)).unwrap();
+    let before = json(&s);
+    let err = s.split_at_intersection(c, line, None).unwrap_err();
+    assert!(
+        matches!(err, Error::WrongEntityKind { entity, .. } if entity == c),
+        "{err}"
+    );
+    assert_eq!(json(&s), before);
+}

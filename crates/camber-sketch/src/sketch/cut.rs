@@ -6,7 +6,15 @@
 //! its circle; a Bézier curve is subdivided by de Casteljau's algorithm (same degree, so the
 //! same number of control points); a B-spline or NURBS curve is split by knot insertion and
 //! the piece kept is then refined (a knot in the middle of its widest span, repeatedly) until
-//! it has as many control points as the curve had, so a cut frees no unknowns and takes none.
+//! it has as many control points as the curve had, so a cut frees no unknowns and takes none;
+//! a cubic Hermite curve keeps its four blocks: the piece of p on [t, 1] (or [0, t]) read on
+//! [0, 1] has end points p(t) and p(1) (or p(0) and p(t)) and end tangents scaled by the
+//! piece's length in u, (1 − t)·p′(t) and (1 − t)·p′(1) (or t·p′(0) and t·p′(t)).
+//!
+//! A whole circle or ellipse has no ends to keep, and a composite curve cannot be cut: each of
+//! its segments runs over one unit of u, so the cut segment's piece would carry tangents
+//! scaled by its length while a smooth join shares one tangent block with the next segment
+//! (the join would have to become a corner with a tangent block of its own, an unknown more).
 //!
 //! A constraint reading the entity can follow the cut only when it reads the entity at an end
 //! or through what every piece shares: a `coincident` or `fixed` on an end point, an end point
@@ -17,6 +25,7 @@
 //! the radius of a cut arc. Any other one (an interior control point, a contact at a parameter,
 //! the whole entity fixed, a length) would change meaning and stops the operation.
 
+use camber_geom::ParametricCurve;
 use nalgebra::{Point2, Vector2};
 use smallvec::SmallVec;
 
@@ -24,6 +33,7 @@ use crate::constraints::arc_tangent_to_line::ArcEnd;
 use crate::constraints::Constraint;
 use crate::ground::entity::Entity;
 use crate::ground::errors::{Error, Result};
+use crate::ground::hermite_chain::HermiteChain;
 use crate::ground::ids::{EntityId, PointRef};
 use crate::ground::vocabulary::FixTarget;
 
@@ -32,7 +42,8 @@ use crate::ground::vocabulary::FixTarget;
 pub(crate) type EndsRead = SmallVec<[ArcEnd; 2]>;
 
 /// Whether `e` is a kind that can be cut: a line, a circular or elliptic arc, or a Bézier,
-/// B-spline or NURBS curve. (A whole circle or ellipse has no ends to keep.)
+/// B-spline, NURBS or cubic Hermite curve (module documentation: not a whole circle or
+/// ellipse, not a composite curve).
 pub(crate) fn cuttable(e: &Entity) -> bool {
     matches!(
         e,
@@ -42,6 +53,7 @@ pub(crate) fn cuttable(e: &Entity) -> bool {
             | Entity::Bezier(_)
             | Entity::BSpline(_)
             | Entity::Nurbs(_)
+            | Entity::Hermite(_)
     )
 }
 
@@ -60,9 +72,14 @@ pub(crate) fn end_of(e: &Entity, id: EntityId, r: PointRef) -> Option<ArcEnd> {
             let (first, last) = match e {
                 Entity::Arc(_) => (1, 2),
                 Entity::EllipticArc { .. } => (2, 3),
+                // Blocks [p0, p1, t0, t1]: the end points come first.
+                Entity::Hermite(_) => (0, 1),
                 _ => (0, n.saturating_sub(1)),
             };
-            let is_arc = matches!(e, Entity::Arc(_) | Entity::EllipticArc { .. });
+            let is_arc = matches!(
+                e,
+                Entity::Arc(_) | Entity::EllipticArc { .. } | Entity::Hermite(_)
+            );
             if i == first && (is_arc || e.is_clamped(false)) {
                 Some(ArcEnd::Start)
             } else if i == last && (is_arc || e.is_clamped(true)) {
@@ -191,10 +208,21 @@ pub(crate) fn piece(id: EntityId, e: &Entity, t: f64, keep_end: bool) -> Result<
             }
             Entity::Nurbs(kept)
         }
+        Entity::Hermite(chain) => {
+            let curve = chain.segment(0)?;
+            let (at, along) = (curve.point(t)?, curve.derivative(t)?);
+            let single = if keep_end {
+                let s = 1.0 - t;
+                HermiteChain::single(at, curve.p1(), along * s, curve.t1() * s)?
+            } else {
+                HermiteChain::single(curve.p0(), at, curve.t0() * t, along * t)?
+            };
+            Entity::Hermite(single)
+        }
         other => {
             return Err(Error::WrongEntityKind {
                 entity: id,
-                expected: "line, arc, elliptic arc, Bézier, B-spline or NURBS curve",
+                expected: "line, arc, elliptic arc, Bézier, B-spline, NURBS or Hermite curve",
                 found: other.kind_name(),
             })
         }
@@ -242,6 +270,40 @@ mod tests {
 
     use super::*;
     use camber_geom::{BSplineCurve2, KnotVector, ParametricCurve};
+
+    /// Both pieces of a cubic Hermite curve keep its four blocks and trace its shape: the piece
+    /// kept from t on at s is the curve at t + (1 − t)·s, the piece up to t at s is the curve
+    /// at t·s (points and first derivatives scaled by the piece's length in u).
+    #[test]
+    fn a_hermite_piece_keeps_the_blocks_and_the_shape() {
+        let chain = HermiteChain::single(
+            Point2::new(0.0, 0.0),
+            Point2::new(3.0, 1.0),
+            Vector2::new(4.0, 5.0),
+            Vector2::new(-1.0, 2.0),
+        )
+        .unwrap();
+        let whole = chain.segment(0).unwrap();
+        let e = Entity::Hermite(chain);
+        let t = 0.37;
+        for keep_end in [false, true] {
+            let p = piece(EntityId(0), &e, t, keep_end).unwrap();
+            assert_eq!(p.points().len(), 4);
+            let curve = p.as_curve().unwrap();
+            let (start, scale) = if keep_end { (t, 1.0 - t) } else { (0.0, t) };
+            for k in 0..=20 {
+                let s = f64::from(k) / 20.0;
+                let u = start + scale * s;
+                let (a, b) = (curve.point(s).unwrap(), whole.point(u).unwrap());
+                assert!((a - b).norm() < 1e-14, "{keep_end} {s}: {a} against {b}");
+                let (da, db) = (curve.derivative(s).unwrap(), whole.derivative(u).unwrap());
+                assert!(
+                    (da - db * scale).norm() < 1e-13,
+                    "{keep_end} {s}: {da} against {db}"
+                );
+            }
+        }
+    }
 
     /// The kept piece of a B-spline has the curve's number of control points and its shape.
     #[test]

@@ -64,7 +64,7 @@ fn side(line: EntityId, ends: [Point2<f64>; 2], x: Point2<f64>) -> Side {
 /// # Operations
 impl Sketch {
     /// Rounds the corner between two lines, a line and a free-form curve (Bézier, B-spline,
-    /// NURBS) or two free-form curves with an arc of radius `radius` tangent to both, trimming
+    /// NURBS, cubic Hermite) or two free-form curves with an arc of radius `radius` tangent to both, trimming
     /// them to its ends. Two lines need not meet (module `fillet`: the closed form and what is
     /// added and removed); a pair with a curve must share an end, the corner (module
     /// `fillet_curve`: the offset-curve search, the trim of a curve, what is added and removed).
@@ -86,8 +86,9 @@ impl Sketch {
     /// ```
     ///
     /// # Errors
-    /// [`Error::WrongEntityKind`] for an entity that is neither a line nor a Bézier, B-spline
-    /// or NURBS curve; [`Error::SameEntity`]; [`Error::NotPositive`] for the radius;
+    /// [`Error::WrongEntityKind`] for an entity that is neither a line nor a Bézier, B-spline,
+    /// NURBS or cubic Hermite curve (a composite curve cannot be trimmed, see
+    /// [`Sketch::trim`]); [`Error::SameEntity`]; [`Error::NotPositive`] for the radius;
     /// [`Error::FilletImpossible`] for parallel lines, a curve pair sharing no end or tangent
     /// there, or a radius that does not fit (tangent points beyond a far end, larger than a
     /// curve's radius of curvature); [`Error::EntityConstrained`] for a constraint on a curve
@@ -95,10 +96,12 @@ impl Sketch {
     pub fn fillet(&mut self, first: EntityId, second: EntityId, radius: f64) -> Result<Fillet> {
         let kind = |s: &Sketch, id: EntityId| match s.entity(id)? {
             Entity::Line(_) => Ok(true),
-            Entity::Bezier(_) | Entity::BSpline(_) | Entity::Nurbs(_) => Ok(false),
+            Entity::Bezier(_) | Entity::BSpline(_) | Entity::Nurbs(_) | Entity::Hermite(_) => {
+                Ok(false)
+            }
             other => Err(Error::WrongEntityKind {
                 entity: id,
-                expected: "line, Bézier, B-spline or NURBS curve",
+                expected: "line, Bézier, B-spline, NURBS or Hermite curve",
                 found: other.kind_name(),
             }),
         };

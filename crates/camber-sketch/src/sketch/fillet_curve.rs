@@ -94,7 +94,7 @@ impl Leg {
             e => {
                 let curve = e.as_curve().ok_or(Error::WrongEntityKind {
                     entity: self.id,
-                    expected: "line, Bézier, B-spline or NURBS curve",
+                    expected: "line, Bézier, B-spline, NURBS or Hermite curve",
                     found: e.kind_name(),
                 })?;
                 let mut out = [Vector2::zeros(); 3];
@@ -236,7 +236,7 @@ impl Sketch {
                     .map(|(p, _)| p)
                     .ok_or(Error::WrongEntityKind {
                         entity: first,
-                        expected: "line, Bézier, B-spline or NURBS curve",
+                        expected: "line, Bézier, B-spline, NURBS or Hermite curve",
                         found: e.kind_name(),
                     })
             };

@@ -4,9 +4,9 @@
 //! ([`camber_geom::queries::intersect_curves`]: Bézier pieces in box trees, each candidate
 //! refined by Newton's method to the rounding of the coordinates) between the cut entity — a
 //! line, a circular arc (through its exact rational form), an elliptic arc (cut at the
-//! parametric angle of the crossing) or a Bézier, B-spline or NURBS curve — and the other
-//! entity, which may also be a circle, an ellipse, an elliptic arc or a
-//! Hermite or composite curve. Crossings within 10⁻⁹ of the sketch's size of an end of the
+//! parametric angle of the crossing) or a Bézier, B-spline, NURBS or cubic Hermite curve — and
+//! the other entity, which may also be a circle, an ellipse, an elliptic arc or a composite
+//! curve. Crossings within 10⁻⁹ of the sketch's size of an end of the
 //! cut entity are not cuts (a piece would be empty). With one crossing left it is the cut;
 //! with several, the caller names a point and the crossing nearest it is taken; without a
 //! point that is [`Error::AmbiguousIntersection`].
@@ -143,7 +143,7 @@ impl Sketch {
         if !cuttable(e) {
             return Err(Error::WrongEntityKind {
                 entity,
-                expected: "line, arc, elliptic arc, Bézier, B-spline or NURBS curve",
+                expected: "line, arc, elliptic arc, Bézier, B-spline, NURBS or Hermite curve",
                 found: e.kind_name(),
             });
         }
