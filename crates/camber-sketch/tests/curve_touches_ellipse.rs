@@ -8,7 +8,7 @@
 
 use std::f64::consts::{FRAC_PI_2, PI};
 
-use camber_geom::{BezierCurve2, Ellipse, EllipticArc, ParametricCurve};
+use camber_geom::{BezierCurve2, Ellipse, EllipticArc, KnotVector, NurbsCurve2, ParametricCurve};
 use camber_sketch::constraints::tangent_to_ellipse::EllipseContact;
 use camber_sketch::constraints::{Fixed, TangentToEllipse};
 use camber_sketch::curve_eval::CurveBasis;
@@ -193,9 +193,10 @@ fn a_curve_inside_an_ellipse_touches_it_from_within() {
 }
 
 /// The parabola y = 1 − x²/2 (a quadratic Bézier, its ends held) touches the top of the
-/// ellipse but bends more sharply (curvature 1 against ¼), so it lies inside near the contact:
-/// recorded as outside, the solve fails with the crossing named and changes nothing; recorded
-/// as inside, it solves.
+/// ellipse but bends more sharply (curvature 1 against ¼), so it lies inside near the contact.
+/// Recorded as outside, no curve through its held ends (both inside the ellipse) can touch it
+/// from outside: the clearance rows the solve adds conflict with the contact, the solve fails
+/// naming the tangency and changes nothing. Recorded as inside, it solves.
 #[test]
 fn a_contact_on_the_wrong_side_is_refused_and_nothing_changes() {
     let build = |side| {
@@ -229,12 +230,77 @@ fn a_contact_on_the_wrong_side_is_refused_and_nothing_changes() {
     let before = to_json(&s).unwrap();
     let err = s.solve().unwrap_err();
     assert!(
-        matches!(err, Error::ContactCrossed { constraint, depth, .. } if constraint == k && depth > 0.0),
+        matches!(&err, Error::Conflicting { constraints } if constraints.contains(&k)),
         "{err}"
     );
     assert_eq!(to_json(&s).unwrap(), before);
     let (mut s, _) = build(CircleSide::Inside);
     s.solve().unwrap();
+}
+
+/// The NURBS of the circle clearance test stretched twice along x, against x²/4 + y² = 1 (the
+/// unit circle stretched the same way): its nearest touching curve would dip into the ellipse
+/// beside the contact, so the solve adds a clearance row against the ellipse and the curve
+/// touches it again at a free second point instead of crossing.
+#[test]
+fn a_nurbs_dipping_into_an_ellipse_touches_it_again_at_a_free_point() {
+    let mut s = Sketch::new();
+    let knots = KnotVector::try_new(vec![0.0, 0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0, 1.0]).unwrap();
+    let pts = vec![
+        Point2::new(-3.0, 1.2),
+        Point2::new(-1.0, 1.1),
+        Point2::new(0.6, 1.05),
+        Point2::new(1.2, 0.45),
+        Point2::new(3.0, 0.9),
+    ];
+    let c = s
+        .add_nurbs(NurbsCurve2::try_new(3, knots, pts, vec![1.0, 0.8, 1.2, 1.0, 1.0]).unwrap())
+        .unwrap();
+    for j in [0, 4] {
+        s.add_constraint(Fixed::point(PointRef::Control(c, j)))
+            .unwrap();
+    }
+    let e = fixed_ellipse(&mut s);
+    let k = s
+        .add_constraint(TangentToEllipse {
+            curve: c,
+            ellipse: e,
+            u: Contact::Free(0.35),
+            theta: 1.7,
+            side: CircleSide::Outside,
+            rotation: Rotation::Clockwise,
+        })
+        .unwrap();
+    let report = s.solve().unwrap();
+    assert!(
+        report.components[0].report.reason.contains("active row"),
+        "{}",
+        report.components[0].report.reason
+    );
+    let (u, theta) = contact(&s, k);
+    let Entity::Nurbs(n) = s.entity(c).unwrap() else {
+        panic!("NURBS");
+    };
+    let el = ellipse();
+    let (p, t) = n.point_and_derivative(u).unwrap();
+    assert!((p - el.point_at_angle(theta)).norm() < 1e-8, "{p}");
+    let travel = el.derivative_at_angle(theta, 1);
+    assert!(t.perp(&travel).abs() < 1e-8 * t.norm() * travel.norm());
+    let samples: Vec<(f64, f64)> = (0..=4000)
+        .map(|i| f64::from(i) / 4000.0)
+        .map(|s| (s, signed_distance(&el, n.point(s).unwrap())))
+        .collect();
+    let everywhere = samples
+        .iter()
+        .map(|(_, d)| *d)
+        .fold(f64::INFINITY, f64::min);
+    assert!(everywhere > -1e-8, "crosses by {everywhere}");
+    let away = samples
+        .iter()
+        .filter(|(s, _)| (s - u).abs() > 0.05)
+        .map(|(_, d)| *d)
+        .fold(f64::INFINITY, f64::min);
+    assert!(away < 1e-6, "no second touch: least gap {away}");
 }
 
 /// The lower half of the ellipse as an arc: its ellipse would touch the curve at the top, the

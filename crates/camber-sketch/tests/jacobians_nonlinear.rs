@@ -97,7 +97,7 @@ fn unique_minimum(
     points: &[&[f64]],
     u: f64,
     target: Target,
-    blocks: &[Vec<f64>; 2],
+    blocks: &[Vec<f64>],
     positive: bool,
     after: bool,
 ) -> bool {
@@ -115,6 +115,20 @@ fn unique_minimum(
                 let v = [p[0] - c[0], p[1] - c[1]];
                 let g = (v[0] * v[0] + v[1] * v[1] - r * r) / (2.0 * r);
                 (sign * g, sign * (v[0] * t[0] + v[1] * t[1]) / r)
+            }
+            Target::Ellipse => {
+                // In the ellipse's frame: G = k·((x/a)² + (y/b)² − 1), k = ab/(a + b).
+                let (c, v, b) = (&blocks[0], &blocks[1], blocks[2][0]);
+                let w = [v[0] - c[0], v[1] - c[1]];
+                let a = w[0].hypot(w[1]);
+                let (ux, uy) = (w[0] / a, w[1] / a);
+                let d = [p[0] - c[0], p[1] - c[1]];
+                let (x, y) = (d[0] * ux + d[1] * uy, d[1] * ux - d[0] * uy);
+                let (x1, y1) = (t[0] * ux + t[1] * uy, t[1] * ux - t[0] * uy);
+                let k = a * b / (a + b);
+                let g = k * ((x / a).powi(2) + (y / b).powi(2) - 1.0);
+                let g1 = 2.0 * k * (x * x1 / (a * a) + y * y1 / (b * b));
+                (sign * g, sign * g1)
             }
             Target::Line => {
                 let (a, b) = (&blocks[0], &blocks[1]);
@@ -172,7 +186,8 @@ proptest! {
     }
 
     /// The clearance h = w²·min Q is differentiable where its minimiser is unique (Danskin):
-    /// against circles and lines, on both sides, at a free and at a fixed contact parameter.
+    /// against circles, arcs, ellipses and lines, on both sides, at a free and at a fixed
+    /// contact parameter.
     /// The target passes near C(u) with the curve's tangent (up to `off`), the regime the row
     /// is used in. The value carries a rounding noise of about 1e-11 (the remainder quotient
     /// loses ε·|G(u)|/(s − u)² to cancellation, and the minimiser is searched afresh at every
@@ -192,10 +207,16 @@ proptest! {
         let b = vec![a[0] + t[0] + off[2], a[1] + t[1]];
         // An arc's circle: its start S at radius r from the centre.
         let start = vec![c[0] + r * 0.3_f64.cos(), c[1] + r * 0.3_f64.sin()];
+        // An ellipse with semi-axes 1.5r along the tangent and r across it, its co-vertex at
+        // C(u) (up to `off`).
+        let t_unit = [t[0] / len, t[1] / len];
+        let e = vec![p[0] - r * n[0] + off[0], p[1] - r * n[1] + off[1]];
+        let vertex = vec![e[0] + 1.5 * r * t_unit[0], e[1] + 1.5 * r * t_unit[1]];
         let targets = [
-            (Target::Circle, [c.clone(), vec![r]]),
-            (Target::Arc, [c.clone(), start]),
-            (Target::Line, [a, b]),
+            (Target::Circle, vec![c.clone(), vec![r]]),
+            (Target::Arc, vec![c.clone(), start]),
+            (Target::Ellipse, vec![e, vertex, vec![r]]),
+            (Target::Line, vec![a, b]),
         ];
         for (target, blocks) in targets {
             // h is a minimum over s: where two local minima of Q tie it has a kink, and

@@ -6,6 +6,7 @@
 use std::sync::Arc;
 
 use camber_solve::{BlockId, ConstraintId};
+use smallvec::{smallvec, SmallVec};
 
 use super::problem::ComponentProblem;
 use crate::constraints::check::{point_tangent, side_width, ContactSpec, ContactTarget};
@@ -218,6 +219,25 @@ impl ComponentProblem {
                         Rotation::Clockwise => turn > 0.0,
                     }
                 }
+                ContactTarget::Ellipse {
+                    ellipse, rotation, ..
+                } => {
+                    let Some(el) = find(ellipse).and_then(|e| e.as_ellipse()) else {
+                        continue;
+                    };
+                    // The ellipse's counter-clockwise tangent at the point nearest C(u) is
+                    // rot₉₀ of the outward normal ∇F: the curve turns against the recorded
+                    // rotation when its tangent points the other way.
+                    let q = el.to_frame(&nalgebra::Point2::new(p[0], p[1]));
+                    let (axis, across) = el.axes();
+                    let (a, b) = (el.semi_axis_a(), el.semi_axis_b());
+                    let normal = axis * (q.x / (a * a)) + across * (q.y / (b * b));
+                    let turn = normal.x * t[1] - normal.y * t[0];
+                    match rotation {
+                        Rotation::CounterClockwise => turn < 0.0,
+                        Rotation::Clockwise => turn > 0.0,
+                    }
+                }
                 ContactTarget::Line { line, sense, .. } => {
                     let Some(crate::ground::entity::Entity::Line([a, b])) = find(line) else {
                         continue;
@@ -272,28 +292,38 @@ impl ComponentProblem {
             return Ok(false);
         };
         let curve = contact.spec.curve;
-        let (target_slots, target, positive) = match contact.spec.target {
-            ContactTarget::Circle { circle, side, .. } => {
-                let arc = matches!(lookup.lookup(circle)?, Entity::Arc(_));
-                (
-                    [
-                        Slot::Point(circle, 0),
-                        if arc {
-                            Slot::Point(circle, 1)
-                        } else {
-                            Slot::Radius(circle)
-                        },
+        let (target_slots, target, positive): (SmallVec<[Slot; 3]>, _, _) =
+            match contact.spec.target {
+                ContactTarget::Circle { circle, side, .. } => {
+                    let arc = matches!(lookup.lookup(circle)?, Entity::Arc(_));
+                    (
+                        smallvec![
+                            Slot::Point(circle, 0),
+                            if arc {
+                                Slot::Point(circle, 1)
+                            } else {
+                                Slot::Radius(circle)
+                            },
+                        ],
+                        if arc { Target::Arc } else { Target::Circle },
+                        side == CircleSide::Outside,
+                    )
+                }
+                ContactTarget::Ellipse { ellipse, side, .. } => (
+                    smallvec![
+                        Slot::Point(ellipse, 0),
+                        Slot::Point(ellipse, 1),
+                        Slot::Radius(ellipse),
                     ],
-                    if arc { Target::Arc } else { Target::Circle },
+                    Target::Ellipse,
                     side == CircleSide::Outside,
-                )
-            }
-            ContactTarget::Line { line, side, .. } => (
-                [Slot::Point(line, 0), Slot::Point(line, 1)],
-                Target::Line,
-                side == LineSide::Left,
-            ),
-        };
+                ),
+                ContactTarget::Line { line, side, .. } => (
+                    smallvec![Slot::Point(line, 0), Slot::Point(line, 1)],
+                    Target::Line,
+                    side == LineSide::Left,
+                ),
+            };
         let (basis, mut slots) = curve_slots(lookup, curve)?;
         let width = side_width(basis.domain());
         let residual: Arc<dyn camber_solve::DynResidual> = match row {

@@ -46,6 +46,15 @@ pub enum ContactTarget {
         /// The direction of travel around it.
         rotation: Rotation,
     },
+    /// An ellipse or elliptic arc entity.
+    Ellipse {
+        /// The ellipse.
+        ellipse: EntityId,
+        /// Outside or inside near the contact.
+        side: CircleSide,
+        /// The direction of travel around it.
+        rotation: Rotation,
+    },
     /// A line entity (A, B).
     Line {
         /// The line.
@@ -202,7 +211,7 @@ pub trait SolvedCheck: Debug + Send + Sync {
         None
     }
 
-    /// The contact this check guards, when it is one with a circle or a line (the active set
+    /// The contact this check guards, when it is one with a circle, an ellipse or a line (the active set
     /// of honest contact adds its clearance rows and speed floors from it).
     fn contact(&self) -> Option<ContactSpec> {
         None

@@ -20,14 +20,16 @@
 //! curve on its recorded side of the ellipse near the contact (within the solve's penetration,
 //! else [`Error::ContactCrossed`]), and on an elliptic arc θ within the arc's sweep (to the
 //! tolerance over the smaller semi-axis, else [`Error::ContactOffArc`]); a failed check leaves
-//! the sketch as it was. File form: `{"kind": "tangent_to_ellipse", "curve": 0, "ellipse": 1,
+//! the sketch as it was. As a contact with a circle or line, it takes part in the solve's
+//! active set of honest contact: a crossing beside the contact adds a clearance row against
+//! the ellipse ([`crate::residuals::clearance`]), a collapsed tangent its speed floor. File form: `{"kind": "tangent_to_ellipse", "curve": 0, "ellipse": 1,
 //! "u": {"free": 0.5}, "theta": 1.57, "side": "outside", "rotation": "clockwise"}` (θ in
 //! radians, the start of the free unknown).
 
 use std::sync::Arc;
 
 use camber_geom::{Ellipse, EllipticArc};
-use nalgebra::{Point2, Vector2};
+use nalgebra::Point2;
 use camber_solve::derive::composed::{InnerMap, Outer};
 use camber_solve::{Residual, Scalar};
 use serde::{Deserialize, Serialize};
@@ -36,9 +38,11 @@ use super::compiler::{distinct, finite};
 use super::glyph::{self, Glyph};
 use super::shared::angles::angle_between;
 use super::shared::arc_span::outside_elliptic_sweep;
-use super::shared::ellipses::ellipse_kind;
+use super::shared::ellipses::{ellipse_gap, ellipse_kind};
 use super::{Compiler, ConstraintKind, Entities};
-use crate::constraints::check::{point_tangent, SolvedCheck, SolvedState};
+use crate::constraints::check::{
+    point_tangent, ContactSpec, ContactTarget, SolvedCheck, SolvedState,
+};
 use crate::constraints::piece::Slot;
 use crate::ground::curve_eval::CurveBasis;
 use crate::ground::entity::Entity;
@@ -278,6 +282,18 @@ impl ConstraintKind for TangentToEllipse {
         ])
     }
 
+    fn contact(&self) -> Option<ContactSpec> {
+        Some(ContactSpec {
+            curve: self.curve,
+            u: self.u,
+            target: ContactTarget::Ellipse {
+                ellipse: self.ellipse,
+                side: self.side,
+                rotation: self.rotation,
+            },
+        })
+    }
+
     fn set_free_parameter(&mut self, k: usize, value: f64) {
         // The free parameters in slot order: u when it is free, then θ.
         let theta_at = usize::from(matches!(self.u, Contact::Free(_)));
@@ -323,13 +339,15 @@ impl SolvedCheck for TangentToEllipse {
             signed_gap(&ellipse, arc.as_ref(), q, state.penetration).map_or(f64::INFINITY, |g| sign * g)
         })
     }
+
+    fn contact(&self) -> Option<ContactSpec> {
+        ConstraintKind::contact(self)
+    }
 }
 
-/// The first-order signed distance from `q` to the ellipse, F/|∇F| with F = (x′/a)² +
-/// (y′/b)² − 1 in the ellipse's frame (positive outside; exact in sign, and to second order in
-/// the distance near the ellipse, which is where a crossing is measured; no iteration, so the
-/// check stays cheap during a drag), or `None` where it does not count: on an elliptic arc,
-/// where the point's parametric direction lies off the arc's sweep.
+/// The signed distance from `q` to the ellipse to first order ([`ellipse_gap`]), or `None`
+/// where it does not count: on an elliptic arc, where the point's parametric direction lies
+/// off the arc's sweep.
 fn signed_gap(
     ellipse: &Ellipse<f64>,
     arc: Option<&EllipticArc<f64>>,
@@ -340,10 +358,5 @@ fn signed_gap(
     if arc.is_some_and(|a| outside_elliptic_sweep(a, ellipse.angle_of(&q), penetration).is_some()) {
         return None;
     }
-    let (a, b) = (ellipse.semi_axis_a(), ellipse.semi_axis_b());
-    let local = ellipse.to_frame(&q);
-    let gradient = Vector2::new(2.0 * local.x / (a * a), 2.0 * local.y / (b * b)).norm();
-    let f = ellipse.implicit_value(&q);
-    // At the centre ∇F vanishes; the distance to the ellipse there is the smaller semi-axis.
-    Some(if gradient > f64::EPSILON { f / gradient } else { -a.min(b) })
+    Some(ellipse_gap(ellipse, &q))
 }

@@ -4,13 +4,19 @@
 //!
 //! # Clearance
 //!
-//! A curve C touching a target (a circle, an arc's circle or a line) at the contact parameter u must stay on its
+//! A curve C touching a target (a circle, an arc's circle, an ellipse or a line) at the contact
+//! parameter u must stay on its
 //! side of the target near u. Write G(s) for the signed gap of the curve point C(s), positive
 //! on the intended side and in length units near the target:
 //!
 //! - circle (c, r): G = ς·(|C − c|² − r²)/(2r), ς = +1 outside, −1 inside, so that
 //!   G′ = ς·(C − c)·C′/r and G″ = ς·(|C′|² + (C − c)·C″)/r; an arc's circle the same with
 //!   r = |S − c| from its start S;
+//! - ellipse (centre c, vertex V, semi-axis b; a = |V − c|, unit axes û = (V − c)/a and
+//!   v̂ = rot₉₀(û)): with the symmetric form B(p, q) = k·((p·û)(q·û)/a² + (p·v̂)(q·v̂)/b²),
+//!   k = ab/(a + b), G = ς·(B(C − c, C − c) − k) (the implicit equation scaled to length units
+//!   near the ellipse, as the point-on-ellipse row), so G′ = 2ς·B(C − c, C′) and
+//!   G″ = 2ς·(B(C′, C′) + B(C − c, C″)); a circle is the case a = b = r, B(p, q) = p·q/(2r);
 //! - line through A and B, d = B − A: G = ς·cross(d, C − A)/|d|, ς = +1 on the left, so that
 //!   G′ = ς·cross(d, C′)/|d| and G″ = ς·cross(d, C″)/|d|.
 //!
@@ -107,8 +113,39 @@ pub enum Target {
     /// A circular arc's circle: the blocks after the curve (and u) are its centre C and its
     /// start S; the radius is |S − C|.
     Arc,
+    /// An ellipse (or an elliptic arc's ellipse): the blocks after the curve (and u) are its
+    /// centre C, its a-axis vertex V and its semi-axis b.
+    Ellipse,
     /// A line: the blocks after the curve (and u) are two of its points A and B.
     Line,
+}
+
+/// The gap of a round target (circle, arc's circle or ellipse) as a quadratic form about its
+/// centre: G(q) = B(q − c, q − c) − k with B(p, q) = k·((p·û)(q·û)/a² + (p·v̂)(q·v̂)/b²)
+/// (module documentation; a circle has a = b = r, k = r/2).
+struct Quadric<'a, T> {
+    centre: &'a [T],
+    /// û (unit; v̂ = rot₉₀(û)).
+    axis: [T; 2],
+    /// k/a² and k/b².
+    weights: [T; 2],
+    /// k.
+    offset: T,
+}
+
+impl<T: Scalar> Quadric<'_, T> {
+    /// B(p, q).
+    fn form(&self, p: [T; 2], q: [T; 2]) -> T {
+        let [ux, uy] = self.axis;
+        let along = (p[0] * ux + p[1] * uy) * (q[0] * ux + q[1] * uy);
+        let across = (p[1] * ux - p[0] * uy) * (q[1] * ux - q[0] * uy);
+        self.weights[0] * along + self.weights[1] * across
+    }
+
+    /// q − c.
+    fn relative(&self, q: &[T; 2]) -> [T; 2] {
+        [q[0] - self.centre[0], q[1] - self.centre[1]]
+    }
 }
 
 /// h = w²·min Q over one side of a contact (see the module documentation): zero when the curve
@@ -215,39 +252,62 @@ impl Clearance {
         }
     }
 
-    /// The centre and radius of a circle or arc target.
-    fn circle<'a, T: Scalar>(&self, target: &[&'a [T]]) -> (&'a [T], T) {
-        let r = if self.target == Target::Arc {
-            let v = [target[1][0] - target[0][0], target[1][1] - target[0][1]];
-            dot(v, v).sqrt()
-        } else {
-            target[1][0]
-        };
-        (target[0], r)
+    /// The quadratic form of a circle, arc or ellipse target (`None` for a line).
+    fn quadric<'a, T: Scalar>(&self, target: &[&'a [T]]) -> Option<Quadric<'a, T>> {
+        let centre = target[0];
+        let span = |p: &[T]| [p[0] - centre[0], p[1] - centre[1]];
+        let (one, half) = (T::one(), cst::<T>(0.5));
+        match self.target {
+            Target::Circle | Target::Arc => {
+                let r = if self.target == Target::Arc {
+                    let v = span(target[1]);
+                    dot(v, v).sqrt()
+                } else {
+                    target[1][0]
+                };
+                let w = one / (r + r);
+                Some(Quadric {
+                    centre,
+                    axis: [one, T::zero()],
+                    weights: [w, w],
+                    offset: r * half,
+                })
+            }
+            Target::Ellipse => {
+                let w = span(target[1]);
+                let a = dot(w, w).sqrt();
+                let b = target[2][0];
+                let k = a * b / (a + b);
+                Some(Quadric {
+                    centre,
+                    axis: [w[0] / a, w[1] / a],
+                    weights: [k / (a * a), k / (b * b)],
+                    offset: k,
+                })
+            }
+            Target::Line => None,
+        }
     }
 
     /// G, G′ and G″ at a point with C, C′ and C″ = `d` (see the module documentation).
     fn gap<T: Scalar>(&self, target: &[&[T]], d: &[[T; 2]; 3]) -> [T; 3] {
         let side = cst::<T>(self.side);
         let [c, c1, c2] = d;
-        match self.target {
-            Target::Circle | Target::Arc => {
-                let (centre, r) = self.circle(target);
-                let v = [c[0] - centre[0], c[1] - centre[1]];
-                let g = (v[0] * v[0] + v[1] * v[1] - r * r) / (cst::<T>(2.0) * r);
-                let g1 = (v[0] * c1[0] + v[1] * c1[1]) / r;
-                let g2 = (c1[0] * c1[0] + c1[1] * c1[1] + v[0] * c2[0] + v[1] * c2[1]) / r;
-                [side * g, side * g1, side * g2]
-            }
-            Target::Line => {
-                let (a, b) = (target[0], target[1]);
-                let dir = [b[0] - a[0], b[1] - a[1]];
-                let len = (dir[0] * dir[0] + dir[1] * dir[1]).sqrt();
-                let cross = |v: [T; 2]| (dir[0] * v[1] - dir[1] * v[0]) / len;
-                let g = cross([c[0] - a[0], c[1] - a[1]]);
-                [side * g, side * cross(*c1), side * cross(*c2)]
-            }
+        if let Some(form) = self.quadric(target) {
+            let v = form.relative(c);
+            let two = cst::<T>(2.0);
+            let g = form.form(v, v) - form.offset;
+            let g1 = two * form.form(v, *c1);
+            let g2 = two * (form.form(*c1, *c1) + form.form(v, *c2));
+            return [side * g, side * g1, side * g2];
         }
+        // A line through A and B.
+        let (a, b) = (target[0], target[1]);
+        let dir = [b[0] - a[0], b[1] - a[1]];
+        let len = (dir[0] * dir[0] + dir[1] * dir[1]).sqrt();
+        let cross = |v: [T; 2]| (dir[0] * v[1] - dir[1] * v[0]) / len;
+        let g = cross([c[0] - a[0], c[1] - a[1]]);
+        [side * g, side * cross(*c1), side * cross(*c2)]
     }
 
     /// Q, Q′ and Q″ at s = u + Δ from the gap derivatives there and (G, G′) at u (Δ ≠ 0).
@@ -267,7 +327,7 @@ impl Clearance {
     /// C‴Δ³/6, the remainder K = (C(s) − C − C′Δ)/Δ² = C″/2 + C‴Δ/6 and the secant slope
     /// M = (C(s) − C)/Δ = C′ + C″Δ/2 + C‴Δ²/6 give
     ///
-    /// - circle: Q = ς·(2(C − c)·K + |M|²)/(2r),
+    /// - circle or ellipse: Q = ς·(2B(C − c, K) + B(M, M)) (for a circle (2(C − c)·K + |M|²)/(2r)),
     /// - line: Q = ς·cross(d, K)/|d|,
     ///
     /// exact for cubic pieces and accurate to O(Δ²) otherwise; Q(u) = G″(u)/2.
@@ -280,35 +340,30 @@ impl Clearance {
             c2[1] * half + c3[1] * delta * sixth,
         ];
         let k1 = [c3[0] * sixth, c3[1] * sixth];
-        match self.target {
-            Target::Circle | Target::Arc => {
-                let (centre, r) = self.circle(target);
-                let v = [c[0] - centre[0], c[1] - centre[1]];
-                let d2 = delta * delta;
-                let m = [
-                    c1[0] + c2[0] * delta * half + c3[0] * d2 * sixth,
-                    c1[1] + c2[1] * delta * half + c3[1] * d2 * sixth,
-                ];
-                let m1 = [
-                    c2[0] * half + c3[0] * delta * third,
-                    c2[1] * half + c3[1] * delta * third,
-                ];
-                let m2 = [c3[0] * third, c3[1] * third];
-                let two = cst::<T>(2.0);
-                let q = two * (v[0] * k[0] + v[1] * k[1]) + m[0] * m[0] + m[1] * m[1];
-                let q1 = two * (v[0] * k1[0] + v[1] * k1[1] + m[0] * m1[0] + m[1] * m1[1]);
-                let q2 = two * (m1[0] * m1[0] + m1[1] * m1[1] + m[0] * m2[0] + m[1] * m2[1]);
-                let s = side / (two * r);
-                [s * q, s * q1, s * q2]
-            }
-            Target::Line => {
-                let (a, b) = (target[0], target[1]);
-                let dir = [b[0] - a[0], b[1] - a[1]];
-                let len = (dir[0] * dir[0] + dir[1] * dir[1]).sqrt();
-                let cross = |v: [T; 2]| side * (dir[0] * v[1] - dir[1] * v[0]) / len;
-                [cross(k), cross(k1), T::zero()]
-            }
+        if let Some(form) = self.quadric(target) {
+            let v = form.relative(c);
+            let d2 = delta * delta;
+            let m = [
+                c1[0] + c2[0] * delta * half + c3[0] * d2 * sixth,
+                c1[1] + c2[1] * delta * half + c3[1] * d2 * sixth,
+            ];
+            let m1 = [
+                c2[0] * half + c3[0] * delta * third,
+                c2[1] * half + c3[1] * delta * third,
+            ];
+            let m2 = [c3[0] * third, c3[1] * third];
+            let two = cst::<T>(2.0);
+            let q = two * form.form(v, k) + form.form(m, m);
+            let q1 = two * (form.form(v, k1) + form.form(m, m1));
+            let q2 = two * (form.form(m1, m1) + form.form(m, m2));
+            return [side * q, side * q1, side * q2];
         }
+        // A line through A and B.
+        let (a, b) = (target[0], target[1]);
+        let dir = [b[0] - a[0], b[1] - a[1]];
+        let len = (dir[0] * dir[0] + dir[1] * dir[1]).sqrt();
+        let cross = |v: [T; 2]| side * (dir[0] * v[1] - dir[1] * v[0]) / len;
+        [cross(k), cross(k1), T::zero()]
     }
 
     /// Q, Q′ and Q″ at s, given C and its derivatives at the contact u (`at_u`): the quotient,
@@ -463,9 +518,10 @@ impl Residual for Clearance {
     }
     fn block_sizes(&self) -> Option<Vec<usize>> {
         let mut sizes = curve_block_sizes(&self.basis, self.u);
-        sizes.extend(match self.target {
-            Target::Circle => [2, 1],
-            Target::Arc | Target::Line => [2, 2],
+        sizes.extend_from_slice(match self.target {
+            Target::Circle => &[2, 1][..],
+            Target::Arc | Target::Line => &[2, 2],
+            Target::Ellipse => &[2, 2, 1],
         });
         Some(sizes)
     }
@@ -478,13 +534,14 @@ impl Residual for Clearance {
         let (points, target) = (&x[..n], &x[k..]);
         // Real parts for the search.
         let pr: SmallVec<[[f64; 2]; 16]> = points.iter().map(|p| [re(p[0]), re(p[1])]).collect();
-        let tr: SmallVec<[[f64; 2]; 2]> = target
+        let tr: SmallVec<[[f64; 2]; 3]> = target
             .iter()
-            .take(2)
+            .take(3)
             .map(|b| [re(b[0]), b.get(1).map_or(0.0, |v| re(*v))])
             .collect();
         let prefs: SmallVec<[&[f64]; 16]> = pr.iter().map(|p| &p[..]).collect();
-        let trefs: SmallVec<[&[f64]; 2]> = tr.iter().map(|p| &p[..]).collect();
+        // A one-number block (a radius, a semi-axis) keeps its length: the forms read b[0].
+        let trefs: SmallVec<[&[f64]; 3]> = tr.iter().map(|p| &p[..]).collect();
         let at_u = self.basis.eval3(points, u);
         let q = |s: T| self.q_at(points, target, u, &at_u, s);
         let key: SmallVec<[f64; 32]> = pr

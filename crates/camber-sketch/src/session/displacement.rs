@@ -244,6 +244,7 @@ impl Sketch {
             };
             let target_entity = match spec.target {
                 ContactTarget::Circle { circle, .. } => circle,
+                ContactTarget::Ellipse { ellipse, .. } => ellipse,
                 ContactTarget::Line { line, .. } => line,
             };
             if !fixed(target_entity) {

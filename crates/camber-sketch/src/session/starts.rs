@@ -9,10 +9,12 @@
 //! deepest crossing), then, one contact at a time, spread parameters with the others at their
 //! least gap. The first start that solves wins; the user's guesses are always tried first.
 
+use camber_geom::Ellipse;
 use nalgebra::{Point2, Vector2};
 
 use crate::component::problem::ComponentProblem;
 use crate::constraints::check::{ContactSpec, ContactTarget};
+use crate::constraints::shared::ellipses::ellipse_gap;
 use crate::constraints::shared::round_contacts::round;
 use crate::ground::entity::Entity;
 use crate::ground::errors::{Error, Result};
@@ -37,6 +39,11 @@ pub(crate) enum Shape {
         outside: bool,
         counter_clockwise: bool,
     },
+    Ellipse {
+        ellipse: Ellipse<f64>,
+        outside: bool,
+        counter_clockwise: bool,
+    },
     Line {
         a: Point2<f64>,
         direction: Vector2<f64>,
@@ -56,6 +63,18 @@ impl Shape {
                 ..
             } => {
                 let d = (q - center).norm() - radius;
+                if outside {
+                    d
+                } else {
+                    -d
+                }
+            }
+            Shape::Ellipse {
+                ref ellipse,
+                outside,
+                ..
+            } => {
+                let d = ellipse_gap(ellipse, &q);
                 if outside {
                     d
                 } else {
@@ -96,6 +115,24 @@ impl Shape {
                     Vector2::new(n.y, -n.x)
                 };
                 (center + radius * n, t)
+            }
+            Shape::Ellipse {
+                ref ellipse,
+                counter_clockwise,
+                ..
+            } => {
+                // The kernel's closest point (a non-finite q has none: the centre's vertex).
+                let angle = ellipse.closest_point(&q).map_or(0.0, |c| c.parameter);
+                let t = ellipse.derivative_at_angle(angle, 1);
+                let t = if t.norm() > 0.0 {
+                    t / t.norm()
+                } else {
+                    Vector2::x()
+                };
+                (
+                    ellipse.point_at_angle(angle),
+                    if counter_clockwise { t } else { -t },
+                )
             }
             Shape::Line {
                 a,
@@ -166,6 +203,20 @@ impl Shape {
                     counter_clockwise: matches!(rotation, Rotation::CounterClockwise),
                 }
             }
+            ContactTarget::Ellipse {
+                ellipse,
+                side,
+                rotation,
+            } => {
+                let Some(el) = lookup.lookup(ellipse)?.as_ellipse() else {
+                    return Err(Error::UnknownEntity { entity: ellipse });
+                };
+                Shape::Ellipse {
+                    ellipse: el,
+                    outside: matches!(side, CircleSide::Outside),
+                    counter_clockwise: matches!(rotation, Rotation::CounterClockwise),
+                }
+            }
             ContactTarget::Line { line, side, sense } => {
                 let Entity::Line([a, b]) = lookup.lookup(line)? else {
                     return Err(Error::UnknownEntity { entity: line });
@@ -214,6 +265,9 @@ pub(crate) fn contact_starts(
     lookup: &dyn EntityLookup,
 ) -> Result<Vec<Vec<(camber_solve::BlockId, f64)>>> {
     let mut contacts = Vec::new();
+    // A contact with an ellipse also owns the ellipse's parametric angle θ (its free block
+    // after u): each start sets it to the angle of the ellipse point nearest C(u).
+    let mut angles = Vec::new();
     for entry in &cp.checks {
         let Some(spec) = entry.check.contact() else {
             continue;
@@ -221,12 +275,31 @@ pub(crate) fn contact_starts(
         let (Contact::Free(_), Some(&block)) = (spec.u, entry.free.first()) else {
             continue;
         };
-        let (lo, hi) = lookup.lookup(spec.curve)?.domain().unwrap_or((0.0, 1.0));
+        let curve = lookup.lookup(spec.curve)?;
+        let (lo, hi) = curve.domain().unwrap_or((0.0, 1.0));
         contacts.push((block, least_gap(&spec, lookup)?, lo, hi));
+        if let (Shape::Ellipse { ellipse, .. }, Some(&theta)) =
+            (Shape::of(&spec, lookup)?, entry.free.get(1))
+        {
+            angles.push((block, theta, ellipse, curve));
+        }
     }
     if contacts.is_empty() {
         return Ok(Vec::new());
     }
+    let with_angles = |start: Vec<(camber_solve::BlockId, f64)>| {
+        let mut out = start.clone();
+        for (block, theta, ellipse, curve) in &angles {
+            let u = start.iter().find(|(b, _)| b == block).map(|(_, u)| *u);
+            let foot = u
+                .and_then(|u| curve.point_tangent(u))
+                .and_then(|(q, _)| ellipse.closest_point(&q).ok());
+            if let Some(foot) = foot {
+                out.push((*theta, foot.parameter));
+            }
+        }
+        out
+    };
     let closest: Vec<_> = contacts.iter().map(|(b, u, _, _)| (*b, *u)).collect();
     let mut starts = vec![closest.clone()];
     'spread: for (i, (_, _, lo, hi)) in contacts.iter().enumerate() {
@@ -241,5 +314,5 @@ pub(crate) fn contact_starts(
             }
         }
     }
-    Ok(starts)
+    Ok(starts.into_iter().map(with_angles).collect())
 }

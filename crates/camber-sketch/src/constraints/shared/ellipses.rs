@@ -1,7 +1,9 @@
 //! What the ellipse kinds share: the check that an entity is an ellipse or an elliptic arc,
-//! the block of an elliptic arc's end, and its direction of travel there.
+//! the block of an elliptic arc's end, its direction of travel there, and the first-order
+//! signed distance to an ellipse.
 
-use nalgebra::Vector2;
+use camber_geom::Ellipse;
+use nalgebra::{Point2, Vector2};
 
 use super::arc_ends::ArcEnd;
 use crate::ground::entity::Entity;
@@ -41,4 +43,19 @@ pub(crate) fn travel(
     let d = p - c;
     let (x, y) = (d.dot(&u), d.dot(&n));
     u * (-(a / b) * y) + n * ((b / a) * x)
+}
+
+/// The first-order signed distance from `q` to the ellipse, F/|∇F| with F = (x′/a)² + (y′/b)²
+/// − 1 in the ellipse's frame (positive outside): exact in sign and to second order in the
+/// distance near the ellipse, where contacts and crossings are measured, with no iteration. At
+/// the centre, where ∇F vanishes, the distance to the ellipse is the smaller semi-axis.
+pub(crate) fn ellipse_gap(ellipse: &Ellipse<f64>, q: &Point2<f64>) -> f64 {
+    let (a, b) = (ellipse.semi_axis_a(), ellipse.semi_axis_b());
+    let local = ellipse.to_frame(q);
+    let gradient = Vector2::new(2.0 * local.x / (a * a), 2.0 * local.y / (b * b)).norm();
+    if gradient > f64::EPSILON {
+        ellipse.implicit_value(q) / gradient
+    } else {
+        -a.min(b)
+    }
 }
