@@ -290,4 +290,25 @@ proptest! {
             .fold(f64::INFINITY, f64::min);
         prop_assert!(near.distance <= scan + 1e-12, "{} > {}", near.distance, scan);
     }
+
+    /// The same for a wiggly rational Bézier curve (one NURBS span, weights in [0.2, 3]): its
+    /// piece is searched through the numerator of (C − q)·C′, not by its two samples.
+    #[test]
+    fn sparse_samples_still_give_the_closest_point_of_a_rational_curve(
+        ys in proptest::collection::vec((-2.0f64..2.0, 0.2f64..3.0), 3..9),
+        qx in -1.0f64..1.0,
+        qy in -2.5f64..2.5,
+    ) {
+        let n = ys.len() - 1;
+        let points = ys.iter().enumerate().map(|(i, &(y, _))| Point2::new(i as f64 / n as f64, y)).collect();
+        let weights = ys.iter().map(|&(_, w)| w).collect();
+        let knots = KnotVector::try_new([vec![0.0; n + 1], vec![1.0; n + 1]].concat()).unwrap();
+        let c = NurbsCurve2::try_new(n, knots, points, weights).unwrap();
+        let q = Point2::new(qx, qy);
+        let near = closest_point_with(&c, &q, &QueryOptions::default().with_samples_per_piece(2)).unwrap();
+        let scan = (0..=4000)
+            .map(|k| (c.point(k as f64 / 4000.0).unwrap() - q).norm())
+            .fold(f64::INFINITY, f64::min);
+        prop_assert!(near.distance <= scan + 1e-12, "{} > {}", near.distance, scan);
+    }
 }

@@ -173,3 +173,22 @@ def test_a_line_split_and_trimmed_at_a_circle_ends_on_it():
     assert t["removed"] == []
     s.solve()
     np.testing.assert_allclose(s.point({"end": a}), [3.0, 0.0], atol=1e-10)
+
+
+def test_a_curve_touches_an_ellipse_from_python_at_the_closed_form_point():
+    # A segment from the held point (0, 2) touches x²/4 + y² = 1: the tangent line at
+    # (x0, y0), x·x0/4 + y·y0 = 1, passes through (0, 2) when y0 = 1/2, so x0 = √3, θ = π/6.
+    s = camber.Sketch()
+    e = s.add_ellipse([0.0, 0.0], 2.0, 1.0, 0.0)
+    s.add_constraint("fixed", target={"entity": e})
+    line = s.add_line([0.0, 2.0], [3.0, -0.2])
+    s.add_constraint("fixed", target={"point": {"start": line}})
+    k = s.add_constraint(
+        "tangent_to_ellipse", curve=line, ellipse=e, u={"free": 0.6}, theta=0.4,
+        side="outside", rotation="clockwise",
+    )
+    s.solve()
+    c = s.constraint(k)
+    assert c["theta"] == pytest.approx(math.pi / 6, abs=1e-9)
+    a, b = np.array(s.point({"start": line})), np.array(s.point({"end": line}))
+    np.testing.assert_allclose(a + (b - a) * c["u"]["free"], [math.sqrt(3.0), 0.5], atol=1e-9)

@@ -68,11 +68,11 @@ where
 /// Every piece is sampled, every sign change of f(u) = (C(u) − p)·C′(u) from − to + between
 /// samples (a local minimum of the distance) is refined by safeguarded Newton on f, and the
 /// best of those minima and of all samples wins. On ties the smallest parameter is returned.
-/// Where the curve's Bézier pieces are exact polynomials (Bézier, B-spline, Hermite, segment
-/// and composites of those), every piece whose control box comes closer than that answer is
-/// also searched exactly: the roots of f on it are isolated from its Bernstein form (module
-/// `distance_minima`), so a minimum between two samples is not missed however wiggly the
-/// piece; NURBS and circles rely on the samples.
+/// Where the curve's Bézier pieces are exact (Bézier, B-spline, Hermite, segment, NURBS with
+/// positive weights, circle and arc, and composites of those), every piece whose control box
+/// comes closer than that answer is also searched exactly: the roots of f on it are isolated
+/// from a Bernstein form of its sign (module `distance_minima`; for a rational piece the
+/// numerator of f), so a minimum between two samples is not missed however wiggly the piece.
 /// Fails with [`Error::NonFinite`] for a point with a NaN or infinite coordinate, where the
 /// curve cannot be evaluated, and for bad options.
 ///
@@ -160,7 +160,7 @@ where
     })
 }
 
-/// `best` improved by the exact search of the curve's polynomial Bézier pieces (see
+/// `best` improved by the exact search of the curve's exact Bézier pieces (see
 /// [`closest_point_with`]): each piece within `best`'s distance, its minima isolated by
 /// [`DistanceMinima`] and refined as the samples' are.
 fn isolated_minimum<T, const D: usize, C>(
