@@ -329,6 +329,36 @@ mod tests {
         assert!(found.is_empty());
     }
 
+    /// Against g′ (`slope`) evaluated at 2,000 points: g′ goes from − to + across every
+    /// reported bracket, and every clear − to + sign change (not rounding near a double root)
+    /// lies in a reported bracket or next to a reported parameter.
+    fn every_minimum_found(
+        slope: impl Fn(f64) -> f64,
+        found: &[Candidate],
+    ) -> Result<(), proptest::test_runner::TestCaseError> {
+        for c in found {
+            if let Candidate::Bracket(lo, hi) = *c {
+                prop_assert!(lo < hi);
+                prop_assert!(slope(lo) <= 1e-12 && slope(hi) >= -1e-12, "{lo} {hi}");
+            }
+        }
+        let n = 2000;
+        let mut previous = slope(0.0);
+        for i in 1..=n {
+            let (a, b) = ((i - 1) as f64 / n as f64, i as f64 / n as f64);
+            let s = slope(b);
+            if previous < -1e-9 && s > 1e-9 {
+                let covered = found.iter().any(|c| match *c {
+                    Candidate::Bracket(lo, hi) => lo <= b && a <= hi,
+                    Candidate::At(t) => (a - 1e-9..=b + 1e-9).contains(&t),
+                });
+                prop_assert!(covered, "sign change in [{a}, {b}] not found: {found:?}");
+            }
+            previous = s;
+        }
+        Ok(())
+    }
+
     proptest! {
         /// Against the curve's own evaluation of g′ at 2,000 points: every − to + sign change
         /// seen there lies in one reported bracket (or next to a reported parameter), and g′
@@ -343,27 +373,7 @@ mod tests {
             let q = Vector2::new(qx, qy);
             let mut found = Vec::new();
             prop_assert!(DistanceMinima::default().find(&p, &q, &mut found));
-            for c in &found {
-                if let Candidate::Bracket(lo, hi) = *c {
-                    prop_assert!(lo < hi);
-                    prop_assert!(slope(&curve, &q, lo) <= 1e-12 && slope(&curve, &q, hi) >= -1e-12, "{lo} {hi}");
-                }
-            }
-            let n = 2000;
-            let mut previous = slope(&curve, &q, 0.0);
-            for i in 1..=n {
-                let (a, b) = ((i - 1) as f64 / n as f64, i as f64 / n as f64);
-                let s = slope(&curve, &q, b);
-                // A clear sign change (not rounding near a double root).
-                if previous < -1e-9 && s > 1e-9 {
-                    let covered = found.iter().any(|c| match *c {
-                        Candidate::Bracket(lo, hi) => lo <= b && a <= hi,
-                        Candidate::At(t) => (a - 1e-9..=b + 1e-9).contains(&t),
-                    });
-                    prop_assert!(covered, "sign change in [{a}, {b}] not found: {found:?}");
-                }
-                previous = s;
-            }
+            every_minimum_found(|t| slope(&curve, &q, t), &found)?;
         }
 
         /// The same for rational pieces with weights in [0.2, 3]: the sign of g′ from a direct
@@ -397,26 +407,7 @@ mod tests {
             };
             let mut found = Vec::new();
             prop_assert!(DistanceMinima::default().find(&p, &q, &mut found));
-            for c in &found {
-                if let Candidate::Bracket(lo, hi) = *c {
-                    prop_assert!(lo < hi);
-                    prop_assert!(slope(lo) <= 1e-12 && slope(hi) >= -1e-12, "{lo} {hi}");
-                }
-            }
-            let count = 2000;
-            let mut previous = slope(0.0);
-            for i in 1..=count {
-                let (a, b) = ((i - 1) as f64 / count as f64, i as f64 / count as f64);
-                let s = slope(b);
-                if previous < -1e-9 && s > 1e-9 {
-                    let covered = found.iter().any(|c| match *c {
-                        Candidate::Bracket(lo, hi) => lo <= b && a <= hi,
-                        Candidate::At(t) => (a - 1e-9..=b + 1e-9).contains(&t),
-                    });
-                    prop_assert!(covered, "sign change in [{a}, {b}] not found: {found:?}");
-                }
-                previous = s;
-            }
+            every_minimum_found(slope, &found)?;
         }
     }
 }
