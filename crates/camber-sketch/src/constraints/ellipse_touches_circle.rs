@@ -40,16 +40,15 @@ use camber_solve::{Residual, Scalar};
 use nalgebra::{Point2, Vector2};
 use serde::{Deserialize, Serialize};
 
-use super::compiler::{distinct, finite};
+use super::compiler::distinct;
 use super::glyph::Glyph;
 use super::shared::arc_span::{outside_elliptic_sweep, outside_sweep};
-use super::shared::ellipses::ellipse_kind;
+use super::shared::ellipses::{contact_slots, ellipse_kind, ellipse_of};
 use super::shared::radii::{radius_of, Round};
 use super::shared::round_contacts::round;
 use super::{Compiler, ConstraintKind, Entities};
 use crate::constraints::check::{SolvedCheck, SolvedState};
 use crate::constraints::piece::Slot;
-use crate::ground::entity::Entity;
 use crate::ground::errors::{Error, Result};
 use crate::ground::ids::EntityId;
 use crate::ground::lookup::EntityLookup;
@@ -178,16 +177,6 @@ impl Residual for EllipseCircleContact {
     }
 }
 
-/// The ellipse of an ellipse or elliptic arc entity.
-fn ellipse_of(e: &Entity, id: EntityId) -> Result<Ellipse<f64>> {
-    ellipse_kind(e, id)?;
-    e.as_ellipse().ok_or(Error::WrongEntityKind {
-        entity: id,
-        expected: "ellipse with positive semi-axes",
-        found: e.kind_name(),
-    })
-}
-
 /// The contact point P(θ), the tangent P′(θ) and the unit direction from the circle's centre
 /// to P(θ), −s·N/|N|.
 fn contact(ellipse: &Ellipse<f64>, theta: f64, tangency: Tangency) -> (Point2<f64>, Vector2<f64>, Vector2<f64>) {
@@ -210,23 +199,15 @@ impl ConstraintKind for EllipseTouchesCircle {
         let elliptic_arc = ellipse_kind(cx.entity(self.ellipse)?, self.ellipse)?;
         distinct(self.ellipse, self.circle)?;
         let other = Round::of(cx, self.circle)?;
-        let start = finite("contact angle", self.theta)?;
-        let slots = vec![
-            Slot::Point(self.ellipse, 0),
-            Slot::Point(self.ellipse, 1),
-            Slot::Radius(self.ellipse),
-            Slot::Free {
-                start,
-                lo: f64::NEG_INFINITY,
-                hi: f64::INFINITY,
-            },
+        let mut slots = contact_slots(self.ellipse, self.theta)?.to_vec();
+        slots.extend([
             Slot::Point(self.circle, 0),
             if other.is_arc() {
                 Slot::Point(self.circle, 1)
             } else {
                 Slot::Radius(self.circle)
             },
-        ];
+        ]);
         let internal = self.tangency == Tangency::Internal;
         let check: Option<Arc<dyn SolvedCheck>> = if elliptic_arc || other.is_arc() || internal {
             Some(Arc::new(*self))

@@ -34,18 +34,16 @@ use camber_solve::derive::composed::{InnerMap, Outer};
 use camber_solve::{Residual, Scalar};
 use serde::{Deserialize, Serialize};
 
-use super::compiler::{distinct, finite};
+use super::compiler::distinct;
 use super::glyph::{self, Glyph};
 use super::shared::angles::angle_between;
 use super::shared::arc_span::outside_elliptic_sweep;
-use super::shared::ellipses::{ellipse_gap, ellipse_kind};
+use super::shared::ellipses::{contact_slots, ellipse_gap, ellipse_kind, ellipse_of};
 use super::{Compiler, ConstraintKind, Entities};
 use crate::constraints::check::{
     point_tangent, ContactSpec, ContactTarget, SolvedCheck, SolvedState,
 };
-use crate::constraints::piece::Slot;
 use crate::ground::curve_eval::CurveBasis;
-use crate::ground::entity::Entity;
 use crate::ground::errors::{Error, Result};
 use crate::ground::ids::EntityId;
 use crate::ground::lookup::EntityLookup;
@@ -231,16 +229,6 @@ impl ComposedCurve for EllipseContact {
     }
 }
 
-/// The ellipse of an ellipse or elliptic arc entity.
-fn ellipse_of(e: &Entity, id: EntityId) -> Result<Ellipse<f64>> {
-    ellipse_kind(e, id)?;
-    e.as_ellipse().ok_or(Error::WrongEntityKind {
-        entity: id,
-        expected: "ellipse with positive semi-axes",
-        found: e.kind_name(),
-    })
-}
-
 impl ConstraintKind for TangentToEllipse {
     const TAG: &'static str = "tangent_to_ellipse";
     const LABEL: &'static str = "tangent to ellipse";
@@ -253,18 +241,8 @@ impl ConstraintKind for TangentToEllipse {
     fn compile(&self, cx: &mut Compiler<'_>) -> Result<()> {
         ellipse_kind(cx.entity(self.ellipse)?, self.ellipse)?;
         distinct(self.curve, self.ellipse)?;
-        let start = finite("contact angle", self.theta)?;
         let (basis, mut slots, param) = cx.curve_contact(self.curve, self.u)?;
-        slots.extend([
-            Slot::Point(self.ellipse, 0),
-            Slot::Point(self.ellipse, 1),
-            Slot::Radius(self.ellipse),
-            Slot::Free {
-                start,
-                lo: f64::NEG_INFINITY,
-                hi: f64::INFINITY,
-            },
-        ]);
+        slots.extend(contact_slots(self.ellipse, self.theta)?);
         let clockwise = self.rotation == Rotation::Clockwise;
         cx.residual(
             EllipseContact::new(basis, param, clockwise),

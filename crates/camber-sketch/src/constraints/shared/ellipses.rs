@@ -1,11 +1,14 @@
 //! What the ellipse kinds share: the check that an entity is an ellipse or an elliptic arc,
 //! the block of an elliptic arc's end, its direction of travel there, and the first-order
-//! signed distance to an ellipse.
+//! signed distance to an ellipse, the ellipse of an entity, and the blocks of a contact at a
+//! free parametric angle.
 
 use camber_geom::Ellipse;
 use nalgebra::{Point2, Vector2};
 
 use super::arc_ends::ArcEnd;
+use crate::constraints::compiler::finite;
+use crate::constraints::piece::Slot;
 use crate::ground::entity::Entity;
 use crate::ground::errors::{Error, Result};
 use crate::ground::ids::EntityId;
@@ -58,4 +61,36 @@ pub(crate) fn ellipse_gap(ellipse: &Ellipse<f64>, q: &Point2<f64>) -> f64 {
     } else {
         -a.min(b)
     }
+}
+
+/// The ellipse of an ellipse or elliptic arc entity `e` (entity `id`).
+///
+/// # Errors
+/// [`Error::WrongEntityKind`] for another kind or an ellipse without positive semi-axes.
+pub(crate) fn ellipse_of(e: &Entity, id: EntityId) -> Result<Ellipse<f64>> {
+    ellipse_kind(e, id)?;
+    e.as_ellipse().ok_or(Error::WrongEntityKind {
+        entity: id,
+        expected: "ellipse with positive semi-axes",
+        found: e.kind_name(),
+    })
+}
+
+/// The blocks of a contact on an ellipse at a free parametric angle: its centre, vertex and
+/// semi-axis b, then the angle θ (radians, unbounded) starting at `theta`.
+///
+/// # Errors
+/// [`Error::NonFinite`](crate::Error) for a non-finite `theta`.
+pub(crate) fn contact_slots(ellipse: EntityId, theta: f64) -> Result<[Slot; 4]> {
+    let start = finite("contact angle", theta)?;
+    Ok([
+        Slot::Point(ellipse, 0),
+        Slot::Point(ellipse, 1),
+        Slot::Radius(ellipse),
+        Slot::Free {
+            start,
+            lo: f64::NEG_INFINITY,
+            hi: f64::INFINITY,
+        },
+    ])
 }
