@@ -156,6 +156,31 @@ fn lower_bound<const D: usize>(x: &RationalPiece<D>, y: &RationalPiece<D>) -> f6
     by_box.max(by_chord)
 }
 
+/// Whether a leaf pair of planar pieces (both boxes within `leaf`) holds at most one
+/// crossing, so that one seed finds everything in it: when the lines of their tangents lie in
+/// disjoint angle intervals (between two meeting points each curve has a tangent parallel to
+/// the chord joining them, so two crossings need a common tangent direction), or when both
+/// pieces are below 1/8 of a leaf (crossings closer than that are left to the one seed).
+/// Otherwise the pair is halved again.
+fn at_most_one_crossing<const D: usize>(
+    x: &RationalPiece<D>,
+    y: &RationalPiece<D>,
+    leaf: f64,
+) -> bool {
+    let fine = leaf / 8.0;
+    if diagonal(&x.bounding_box()) <= fine && diagonal(&y.bounding_box()) <= fine {
+        return true;
+    }
+    let (Some((cx, wx)), Some((cy, wy))) = (x.tangent_lines(), y.tangent_lines()) else {
+        return false;
+    };
+    let mut apart = (cy - cx).rem_euclid(std::f64::consts::PI);
+    if apart > std::f64::consts::FRAC_PI_2 {
+        apart = std::f64::consts::PI - apart;
+    }
+    apart > wx + wy + 1e-9
+}
+
 fn diagonal<const D: usize>((lo, hi): &(SVector<f64, D>, SVector<f64, D>)) -> f64 {
     (hi - lo).norm()
 }
@@ -190,7 +215,26 @@ where
     })
 }
 
-/// Newton on ½|A(s) − B(t)|² from (s, t), inside both domains.
+/// How much one Newton step of [`refine`] may grow the squared gap |A − B|² before it is
+/// refused.
+///
+/// Not 1: near a touch the Hessian is indefinite off the valley floor and Newton's path to the
+/// contact is not monotone; refusing every growth would leave only the slower fallback. A
+/// blow-up (a gap of 10⁻⁵ thrown to 1) is what is refused.
+const GROWTH: f64 = 4.0;
+
+/// Minimises f = ½|A(s) − B(t)|² from (s, t), inside both domains.
+///
+/// Each iteration first tries Newton's step with the exact Hessian where that is positive
+/// definite: quadratic at crossings and at the closest pair of curves apart. Where it is not,
+/// or the step grows the squared gap more than [`GROWTH`]-fold, a Levenberg–Marquardt step on
+/// the Gauss–Newton matrix JᵀJ + μI (J = [A′, −B′]) is taken instead, with μ grown tenfold
+/// until the gap decreases. The exact Hessian misleads in two places: between two crossings
+/// close together it is indefinite, and shifted it aims at the far one; where the curves run
+/// along each other it is singular along "both parameters move together" (determinant
+/// −(F·A″)² when B = A), so a step can throw both parameters far along the curves.
+/// Jᵀ F is the gradient, so a large enough μ always decreases f unless (s, t) is stationary.
+/// Stops when the gap is rounding, the parameters no longer move, or no step decreases f.
 pub(super) fn refine<const D: usize, A, B>(
     a: &A,
     b: &B,
@@ -208,37 +252,46 @@ where
         let [pb, db, ddb] = b.second_order(t)?;
         let f = pa - pb;
         let value = f.norm_squared();
-        let gs = f.dot(&da);
-        let gt = -f.dot(&db);
-        let mut hss = da.norm_squared() + f.dot(&dda);
-        let mut htt = db.norm_squared() - f.dot(&ddb);
-        let hst = -da.dot(&db);
-        // Levenberg–Marquardt shift until positive definite.
-        let scale = (da.norm_squared() + db.norm_squared()).max(1e-300);
-        let mut shift = 0.0;
-        while hss <= 0.0 || htt <= 0.0 || hss * htt - hst * hst <= 1e-14 * scale * scale {
-            shift = if shift == 0.0 {
-                1e-10 * scale
-            } else {
-                shift * 10.0
-            };
-            hss += shift;
-            htt += shift;
-            if shift > 1e10 * scale {
-                break;
-            }
-        }
-        let det = hss * htt - hst * hst;
-        if det <= 0.0 || !det.is_finite() {
+        // Gaps below this are rounding of the points' coordinates: no step can be judged.
+        let floor = (4.0 * f64::EPSILON * pa.amax().max(pb.amax())).powi(2);
+        if value <= floor {
             break;
         }
-        let ds = -(htt * gs - hst * gt) / det;
-        let dt = -(hss * gt - hst * gs) / det;
-        let (ns, nt) = ((s + ds).clamp(a0, a1), (t + dt).clamp(b0, b1));
+        let (gs, gt) = (f.dot(&da), -f.dot(&db));
+        let (gss, gtt, hst) = (da.norm_squared(), db.norm_squared(), -da.dot(&db));
+        let scale = (gss + gtt).max(1e-300);
+        // The step for the 2×2 system [[hss, hst], [hst, htt]]·δ = −g, clamped into both
+        // domains, with the squared gap it leads to (None when not positive definite).
+        let try_step = |hss: f64, htt: f64, meter: &mut Meter<'_>| -> Result<_> {
+            let det = hss * htt - hst * hst;
+            if !(hss > 0.0 && htt > 0.0 && det > 1e-14 * scale * scale && det.is_finite()) {
+                return Ok(None);
+            }
+            let ds = -(htt * gs - hst * gt) / det;
+            let dt = -(hss * gt - hst * gs) / det;
+            let (ns, nt) = ((s + ds).clamp(a0, a1), (t + dt).clamp(b0, b1));
+            meter.charge(1)?;
+            let gap = (a.point(ns)? - b.point(nt)?).norm_squared();
+            Ok(Some((ns, nt, gap)))
+        };
+        let (hss, htt) = (gss + f.dot(&dda), gtt - f.dot(&ddb));
+        // Newton only where the exact Hessian is positive definite as it stands.
+        let mut step = try_step(hss, htt, meter)?
+            .filter(|found| found.2 <= GROWTH * value || found.2 <= floor);
+        let mut mu = 1e-12 * scale;
+        while step.is_none() && mu <= 1e10 * scale {
+            if let Some(found) = try_step(gss + mu, gtt + mu, meter)? {
+                if found.2 < value || found.2 <= floor {
+                    step = Some(found);
+                }
+            }
+            mu *= 10.0;
+        }
+        let Some((ns, nt, _)) = step else { break };
         let moved = (ns - s).abs() / (a1 - a0) + (nt - t).abs() / (b1 - b0);
         s = ns;
         t = nt;
-        if moved < 1e-16 || value == 0.0 {
+        if moved < 1e-16 {
             break;
         }
     }
@@ -441,12 +494,16 @@ where
     let leaf = 1e-3 * size;
     let grow = opts.tolerance;
     let mut seeds = Vec::new();
+    let mut tangent_seen = false;
     near_pairs(
         &prepared.tree_a,
         &prepared.tree_b,
         grow,
         meter,
         |i, j, meter| {
+            if tangent_seen {
+                return Ok(());
+            }
             let mut stack = vec![(prepared.a[i].clone(), prepared.b[j].clone())];
             while let Some((x, y)) = stack.pop() {
                 meter.charge(1)?;
@@ -455,8 +512,23 @@ where
                 }
                 let (bx, by) = (x.bounding_box(), y.bounding_box());
                 let (dx, dy) = (diagonal(&bx), diagonal(&by));
-                if dx <= leaf && dy <= leaf {
-                    seeds.push((0.5 * (x.start + x.end), 0.5 * (y.start + y.end)));
+                let seed = (0.5 * (x.start + x.end), 0.5 * (y.start + y.end));
+                let is_leaf = dx <= leaf && dy <= leaf;
+                let single = is_leaf && (D != 2 || at_most_one_crossing(&x, &y, leaf));
+                if is_leaf && !single && on_tangent == OnTangent::Stop {
+                    // A leaf pair about to be halved again because its tangents may be
+                    // parallel: if it holds a tangential contact the search ends here anyway,
+                    // so look now (along a coincident stretch, halving every leaf pair again
+                    // would multiply the work before the first one is refined).
+                    let (s, t) = refine(a, b, seed, meter)?;
+                    let hit = pair_point(a, b, s, t)?;
+                    if hit.distance <= opts.tolerance && hit.tangential {
+                        tangent_seen = true;
+                        return Ok(());
+                    }
+                }
+                if single {
+                    seeds.push(seed);
                     if seeds.len() > opts.max_candidates {
                         return Err(Error::TooManyCandidates {
                             what: "leaf pairs",
@@ -478,6 +550,9 @@ where
             Ok(())
         },
     )?;
+    if tangent_seen {
+        return Ok(None);
+    }
     let mut found = Hits::new(1e-6 * size);
     let rounding = 64.0 * f64::EPSILON * size;
     for seed in seeds {
@@ -527,7 +602,8 @@ where
 }
 
 /// Contacts kept distinct: a new one within `merge` of a kept one (on the first curve) is the
-/// same contact, and replaces it when better. A grid of cells `merge` wide finds the kept ones
+/// same contact, and replaces it when better — unless both are transversal crossings more than
+/// `merge`/1000 apart (each located to rounding, so they are two crossings). A grid of cells `merge` wide finds the kept ones
 /// nearby, so merging k contacts costs O(k).
 struct Hits<const D: usize> {
     merge: f64,
@@ -567,7 +643,12 @@ impl<const D: usize> Hits<D> {
             }
             if let Some(list) = self.grid.get(&key) {
                 for &i in list {
-                    if (self.points[i].point_a - hit.point_a).norm() <= self.merge {
+                    let kept = &self.points[i];
+                    let apart = (kept.point_a - hit.point_a).norm();
+                    // Transversal crossings are located to rounding: two of them further
+                    // apart than that are two crossings, however close.
+                    let distinct = !kept.tangential && !hit.tangential && apart > 1e-3 * self.merge;
+                    if apart <= self.merge && !distinct {
                         near = Some(i);
                         break 'cells;
                     }

@@ -99,6 +99,47 @@ impl<const D: usize> RationalPiece<D> {
         point_box_distance(q, (&lo, &hi))
     }
 
+    /// In the plane, the directions the piece's tangent takes: the centre angle and the
+    /// half-width of an interval holding them all, or `None` when they span a right angle or
+    /// more, the piece is not exact (slack > 0), or D ≠ 2. (Read as lines, mod π, by callers
+    /// that need only the tangent's line.)
+    ///
+    /// With positive weights C′(t) is a positive combination of the differences P_j − P_i
+    /// (j > i) of the projected control points, hence of consecutive differences, so the
+    /// interval of the consecutive differences' directions holds every tangent.
+    pub(crate) fn tangent_lines(&self) -> Option<(f64, f64)> {
+        if D != 2 || self.slack > 0.0 {
+            return None;
+        }
+        let points: Vec<SVector<f64, D>> = self.points().collect();
+        let mut reference: Option<f64> = None;
+        let (mut lo, mut hi) = (0.0_f64, 0.0_f64);
+        for w in points.windows(2) {
+            let d = w[1] - w[0];
+            if d[0] == 0.0 && d[1] == 0.0 {
+                continue;
+            }
+            let angle = d[1].atan2(d[0]);
+            let Some(r) = reference else {
+                reference = Some(angle);
+                continue;
+            };
+            // Relative to the first direction, as a vector: into (−π, π]. (Folding to
+            // lines here would be wrong: a piece whose tangent turns back through a cusp-like
+            // bend has differences pointing nearly opposite ways, on one line, while its
+            // tangent sweeps every direction between.)
+            let mut rel = (angle - r).rem_euclid(std::f64::consts::TAU);
+            if rel > std::f64::consts::PI {
+                rel -= std::f64::consts::TAU;
+            }
+            lo = lo.min(rel);
+            hi = hi.max(rel);
+        }
+        let r = reference?;
+        let half = 0.5 * (hi - lo);
+        (half < std::f64::consts::FRAC_PI_4).then_some((r + 0.5 * (lo + hi), half))
+    }
+
     /// The chord from the first to the last control point and how far the curve may lie from
     /// it over [start, end]: the largest distance of a control point from the chord segment,
     /// plus the [`slack`](Self::slack). The piece lies in the convex hull of its control points,
@@ -518,6 +559,32 @@ impl<T: Scalar> ParametricCurve<T, 2> for Circle<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// By hand: the polygon (0, 0), (1, 1), (2, 1) turns from 45° to 0°, so the tangent's
+    /// directions are [0, π/4] (centre π/8, half-width π/8); a quadratic that turns back
+    /// (its differences nearly opposite, on almost one line) sweeps too wide for an interval;
+    /// so does a piece with slack.
+    #[test]
+    fn tangent_directions_of_pieces_by_hand() {
+        let pts = [
+            Point2::new(0.0, 0.0),
+            Point2::new(1.0, 1.0),
+            Point2::new(2.0, 1.0),
+        ];
+        let piece = RationalPiece::<2>::new(0.0, 1.0, &pts, &[1.0, 3.0, 1.0]);
+        let (centre, half) = piece.tangent_lines().unwrap();
+        let eighth = std::f64::consts::FRAC_PI_8;
+        assert!((centre - eighth).abs() < 1e-15 && (half - eighth).abs() < 1e-15);
+        let back = [
+            Point2::new(0.0, 0.0),
+            Point2::new(1.0, 3.0),
+            Point2::new(2.1, -3.0),
+        ];
+        assert!(RationalPiece::<2>::new(0.0, 1.0, &back, &[1.0; 3])
+            .tangent_lines()
+            .is_none());
+        assert!(piece.with_slack(1e-9).tangent_lines().is_none());
+    }
 
     #[test]
     fn halves_of_a_quadratic_by_hand() {
