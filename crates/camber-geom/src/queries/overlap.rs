@@ -336,6 +336,22 @@ mod tests {
         }
     }
 
+    /// `c` and its own piece over [u, v] (split twice, so the piece keeps c's parameters):
+    /// exactly one overlap, [u, v] on both, and no points.
+    fn overlaps_its_own_piece(c: &BSplineCurve2<f64>, u: f64, v: f64) {
+        let (_, right) = c.split(u).unwrap();
+        let (middle, _) = right.split(v).unwrap();
+        let hits =
+            intersect_curves_with_overlaps(c, &middle, &CurveCurveOptions::default()).unwrap();
+        assert_eq!(hits.overlaps.len(), 1, "{hits:?}");
+        let o = hits.overlaps[0];
+        assert_relative_eq!(o.a.0, u, epsilon = 1e-7);
+        assert_relative_eq!(o.a.1, v, epsilon = 1e-7);
+        assert_relative_eq!(o.b.0, u, epsilon = 1e-7);
+        assert_relative_eq!(o.b.1, v, epsilon = 1e-7);
+        assert!(hits.points.is_empty(), "{:?}", hits.points);
+    }
+
     /// A quadratic B-spline whose second span turns back in a narrow U (its arms a few
     /// hundredths apart), and its own piece over
     /// [0.2443…, 0.7676…]: one overlap, exactly that interval. Starting the foot point from
@@ -356,17 +372,7 @@ mod tests {
         )
         .unwrap();
         let (u, v) = (0.24431780265216982, 0.7676228814249136);
-        let (_, right) = c.split(u).unwrap();
-        let (middle, _) = right.split(v).unwrap();
-        let hits =
-            intersect_curves_with_overlaps(&c, &middle, &CurveCurveOptions::default()).unwrap();
-        assert_eq!(hits.overlaps.len(), 1, "{hits:?}");
-        let o = hits.overlaps[0];
-        assert_relative_eq!(o.a.0, u, epsilon = 1e-7);
-        assert_relative_eq!(o.a.1, v, epsilon = 1e-7);
-        assert_relative_eq!(o.b.0, u, epsilon = 1e-7);
-        assert_relative_eq!(o.b.1, v, epsilon = 1e-7);
-        assert!(hits.points.is_empty(), "{:?}", hits.points);
+        overlaps_its_own_piece(&c, u, v);
     }
 
     /// A parabola arc and its own piece over [0.4258…, 0.5624…] (found by the property test):
@@ -387,17 +393,7 @@ mod tests {
         )
         .unwrap();
         let (u, v) = (0.4258355702169542, 0.5624853926851763);
-        let (_, right) = c.split(u).unwrap();
-        let (middle, _) = right.split(v).unwrap();
-        let hits =
-            intersect_curves_with_overlaps(&c, &middle, &CurveCurveOptions::default()).unwrap();
-        assert_eq!(hits.overlaps.len(), 1, "{hits:?}");
-        let o = hits.overlaps[0];
-        assert_relative_eq!(o.a.0, u, epsilon = 1e-7);
-        assert_relative_eq!(o.a.1, v, epsilon = 1e-7);
-        assert_relative_eq!(o.b.0, u, epsilon = 1e-7);
-        assert_relative_eq!(o.b.1, v, epsilon = 1e-7);
-        assert!(hits.points.is_empty(), "{:?}", hits.points);
+        overlaps_its_own_piece(&c, u, v);
     }
 
     /// A parabola arc that turns sharply near u = 0.2 (its speed small there), and its own
@@ -418,15 +414,7 @@ mod tests {
         )
         .unwrap();
         let (u, v) = (0.16438917594516006, 0.55);
-        let (_, right) = c.split(u).unwrap();
-        let (middle, _) = right.split(v).unwrap();
-        let hits =
-            intersect_curves_with_overlaps(&c, &middle, &CurveCurveOptions::default()).unwrap();
-        assert_eq!(hits.overlaps.len(), 1, "{hits:?}");
-        let o = hits.overlaps[0];
-        assert_relative_eq!(o.a.0, u, epsilon = 1e-7);
-        assert_relative_eq!(o.a.1, v, epsilon = 1e-7);
-        assert!(hits.points.is_empty(), "{:?}", hits.points);
+        overlaps_its_own_piece(&c, u, v);
     }
 
     /// A polyline that runs along the segment for x ∈ [1, 2], leaves it, and crosses it again at
