@@ -111,11 +111,14 @@ impl<const D: usize> RationalPiece<D> {
         if D != 2 || self.slack > 0.0 {
             return None;
         }
-        let points: Vec<SVector<f64, D>> = self.points().collect();
         let mut reference: Option<f64> = None;
         let (mut lo, mut hi) = (0.0_f64, 0.0_f64);
-        for w in points.windows(2) {
-            let d = w[1] - w[0];
+        let mut previous: Option<SVector<f64, D>> = None;
+        for point in self.points() {
+            let Some(before) = previous.replace(point) else {
+                continue;
+            };
+            let d = point - before;
             if d[0] == 0.0 && d[1] == 0.0 {
                 continue;
             }
