@@ -141,6 +141,34 @@ proptest! {
     }
 }
 
+/// A CI draw of the property above: a long, narrow elliptic arc whose NURBS form was measured
+/// 4e-11 short at a tolerance of 1e-11 (one leaf next to the minor-axis end, where the rational
+/// speed is near-singular, passed its whole-versus-halves check by accident).
+#[test]
+fn a_narrow_elliptic_arc_and_its_nurbs_form_have_one_length() {
+    let (a, ratio, a0, sweep) = (
+        0.816_715_001_401_415_8,
+        17.496_062_924_784_15,
+        -5.607_676_202_621_344,
+        5.304_080_332_326_179,
+    );
+    let e = Ellipse::try_new(Point2::new(1.0, 2.0), a, a * ratio, 0.0).unwrap();
+    let whole = e.arc(a0, a0 + sweep).unwrap();
+    let reference: f64 = arc_length(&whole, 1e-14).unwrap().length;
+    for tol in [1e-9, 1e-11, 1e-13] {
+        let lw = arc_length(&whole, tol).unwrap().length;
+        let ln = arc_length(&whole.to_nurbs().unwrap(), tol).unwrap().length;
+        assert!(
+            (lw - reference).abs() <= tol,
+            "{tol:e}: {lw} vs {reference}"
+        );
+        assert!(
+            (ln - reference).abs() <= tol,
+            "{tol:e}: NURBS {ln} vs {reference}"
+        );
+    }
+}
+
 /// The circumference by the arithmetic–geometric mean (Gauss, Legendre):
 /// P = 2π/M(a, b) · (a² − Σₙ 2ⁿ⁻¹ cₙ²), c₀² = a² − b², cₙ₊₁ = (aₙ − bₙ)/2, quadratically
 /// convergent.

@@ -2,7 +2,9 @@
 //! under a work budget.
 //!
 //! Every *leaf* interval [a, b] carries the 8-point rule on the whole (I₁) and on its two halves
-//! (I₂ = L + R); |I₂ − I₁| is its error estimate. The leaf with the largest estimate is split
+//! (I₂ = L + R); its error estimate is the larger of |I₂ − I₁| and what the decay of the speed's
+//! Legendre coefficients on each half says ([`tail_error`]: the difference alone vanishes by
+//! accident when both rules are wrong alike). The leaf with the largest estimate is split
 //! (its halves become leaves; their own halves cost two rules each) until the sum of the
 //! estimates is within the tolerance. Splitting where the error is, rather than giving every
 //! interval a share of the tolerance by its parameter length, is what keeps a curve whose speed
@@ -110,14 +112,33 @@ where
     T: Scalar,
     C: ParametricCurve<T, D> + ?Sized,
 {
+    let mut speeds = [0.0; GAUSS_POINTS];
+    rule_sampled(curve, nodes, a, b, meter, &mut speeds)
+}
+
+/// [`rule`], also writing the speed at each node to `speeds` (in f64).
+fn rule_sampled<T, const D: usize, C>(
+    curve: &C,
+    nodes: &[(f64, f64); GAUSS_POINTS],
+    a: T,
+    b: T,
+    meter: &mut Meter<'_>,
+    speeds: &mut [f64; GAUSS_POINTS],
+) -> Result<T>
+where
+    T: Scalar,
+    C: ParametricCurve<T, D> + ?Sized,
+{
     meter.charge(GAUSS_POINTS as u64)?;
     let half = (b - a) * cst::<T>(0.5);
     let mid = (a + b) * cst::<T>(0.5);
     let mut sum = T::zero();
-    for &(x, w) in nodes {
+    for (&(x, w), sample) in nodes.iter().zip(speeds.iter_mut()) {
         // Nodes stay inside [a, b] even when rounding would put one a hair outside.
         let u = (mid + half * cst::<T>(x)).max(a).min(b);
-        sum += speed(curve, u)? * cst::<T>(w);
+        let v = speed(curve, u)?;
+        *sample = re(v);
+        sum += v * cst::<T>(w);
     }
     let value = sum * half;
     if !re(value).is_finite() {
@@ -128,6 +149,62 @@ where
         });
     }
     Ok(value)
+}
+
+/// The highest Legendre coefficients the rule's nodes can resolve, as weights on the node
+/// values: c_j = (2j + 1)/2 · Σᵢ wᵢ·P_j(xᵢ)·f(xᵢ) for j = [`TAIL`] (exact for f of degree
+/// ≤ 15 − j), and c₀ (the mean) last.
+pub(super) type TailWeights = [[f64; TAIL.len() + 1]; GAUSS_POINTS];
+
+/// The orders of the Legendre coefficients read by [`tail_error`].
+const TAIL: [usize; 3] = [5, 6, 7];
+
+/// The weights of [`TailWeights`] for the rule's nodes.
+pub(super) fn tail_weights(nodes: &[(f64, f64); GAUSS_POINTS]) -> TailWeights {
+    let mut table = [[0.0; TAIL.len() + 1]; GAUSS_POINTS];
+    for (&(x, w), row) in nodes.iter().zip(table.iter_mut()) {
+        // P_0 … P_7 at x by the three-term recurrence.
+        let mut p = [0.0; GAUSS_POINTS];
+        p[0] = 1.0;
+        p[1] = x;
+        for j in 2..GAUSS_POINTS {
+            #[allow(clippy::cast_precision_loss)] // j < 8
+            let jf = j as f64;
+            p[j] = ((2.0 * jf - 1.0) * x * p[j - 1] - (jf - 1.0) * p[j - 2]) / jf;
+        }
+        for (slot, &j) in row.iter_mut().zip(TAIL.iter()) {
+            #[allow(clippy::cast_precision_loss)] // j < 8
+            let jf = j as f64;
+            *slot = (2.0 * jf + 1.0) / 2.0 * w * p[j];
+        }
+        row[TAIL.len()] = w / 2.0;
+    }
+    table
+}
+
+/// A second error estimate of the rule on an interval of `width`, from the speed at its nodes
+/// alone: the decay of the speed's Legendre coefficients. With |c_j| ≈ K·ρ⁻ʲ the rule's error
+/// is about width·|c₁₆| = width·K·ρ⁻¹⁶; the tail t = max |c₅|, |c₆|, |c₇| is at least K·ρ⁻⁷
+/// and t/|c₀| is at least ρ⁻⁷ (c₀ ≈ K), so width·t·(t/|c₀|) over-estimates the error by ρ² or
+/// more. It is tiny once the speed is resolved (t at rounding level) and large where a nearby
+/// singularity of the speed — a near-zero of C′ just off the interval, a pole of a rational
+/// curve — keeps ρ small: exactly where the whole-versus-halves difference can vanish by
+/// accident (both rules wrong by the same amount).
+fn tail_error(table: &TailWeights, speeds: &[f64; GAUSS_POINTS], width: f64) -> f64 {
+    let mut c = [0.0; TAIL.len() + 1];
+    for (row, &f) in table.iter().zip(speeds) {
+        for (cj, &weight) in c.iter_mut().zip(row) {
+            *cj += weight * f;
+        }
+    }
+    let mean = c[TAIL.len()].abs();
+    let tail = c[..TAIL.len()]
+        .iter()
+        .fold(0.0_f64, |m, cj| m.max(cj.abs()));
+    if tail == 0.0 {
+        return 0.0;
+    }
+    width.abs() * tail * (tail / mean).min(1.0)
 }
 
 /// g(u) = C′(u)·C″(u) in f64, half the derivative of the squared speed.
@@ -264,9 +341,11 @@ struct Leaf<T> {
 
 impl<T: Scalar> Leaf<T> {
     /// The leaf [a, b] whose whole-interval rule gave `whole`: its halves are integrated.
+    /// Its error estimate is the larger of |I₂ − I₁| (halves against whole) and the halves'
+    /// [`tail_error`]s.
     fn new<const D: usize, C>(
         curve: &C,
-        nodes: &[(f64, f64); GAUSS_POINTS],
+        (nodes, tails): (&[(f64, f64); GAUSS_POINTS], &TailWeights),
         (a, b, whole): (T, T, T),
         meter: &mut Meter<'_>,
     ) -> Result<Self>
@@ -274,9 +353,12 @@ impl<T: Scalar> Leaf<T> {
         C: ParametricCurve<T, D> + ?Sized,
     {
         let m = (a + b) * cst::<T>(0.5);
-        let left = rule(curve, nodes, a, m, meter)?;
-        let right = rule(curve, nodes, m, b, meter)?;
-        let error = re(left + right - whole).abs();
+        let mut speeds = [0.0; GAUSS_POINTS];
+        let left = rule_sampled(curve, nodes, a, m, meter, &mut speeds)?;
+        let tail_left = tail_error(tails, &speeds, re(m - a));
+        let right = rule_sampled(curve, nodes, m, b, meter, &mut speeds)?;
+        let tail_right = tail_error(tails, &speeds, re(b - m));
+        let error = re(left + right - whole).abs().max(tail_left + tail_right);
         Ok(Self {
             a,
             m,
@@ -358,6 +440,7 @@ where
         return Ok(out);
     }
     let nodes = gauss_legendre();
+    let tails = tail_weights(&nodes);
     let mut pieces = vec![u0];
     for b in curve.breakpoints() {
         if b > u0 && b < u1 && pieces.last().is_some_and(|&l| b > l) {
@@ -379,7 +462,7 @@ where
     for pair in cuts.windows(2) {
         let (a, b) = (pair[0], pair[1]);
         let whole = rule(curve, &nodes, a, b, meter)?;
-        leaves.push(Leaf::new(curve, &nodes, (a, b, whole), meter)?);
+        leaves.push(Leaf::new(curve, (&nodes, &tails), (a, b, whole), meter)?);
     }
     let estimate: f64 = leaves
         .iter()
@@ -398,8 +481,8 @@ where
             break;
         };
         let leaf = leaves[i];
-        let left = Leaf::new(curve, &nodes, (leaf.a, leaf.m, leaf.left), meter)?;
-        let right = Leaf::new(curve, &nodes, (leaf.m, leaf.b, leaf.right), meter)?;
+        let left = Leaf::new(curve, (&nodes, &tails), (leaf.a, leaf.m, leaf.left), meter)?;
+        let right = Leaf::new(curve, (&nodes, &tails), (leaf.m, leaf.b, leaf.right), meter)?;
         leaves[i] = left;
         leaves.push(right);
         let j = leaves.len() - 1;
@@ -448,6 +531,30 @@ mod tests {
         let odd: f64 = rule.iter().map(|(x, w)| w * x.powi(15)).sum();
         assert!((even - 2.0 / 15.0).abs() < 1e-14);
         assert!(odd.abs() < 1e-14);
+    }
+
+    #[test]
+    fn the_tail_reads_legendre_coefficients_by_hand() {
+        let nodes = gauss_legendre();
+        let table = tail_weights(&nodes);
+        let at = |f: &dyn Fn(f64) -> f64| {
+            let mut speeds = [0.0; GAUSS_POINTS];
+            for (s, (x, _)) in speeds.iter_mut().zip(nodes) {
+                *s = f(x);
+            }
+            speeds
+        };
+        // A quartic has no Legendre coefficient above c₄: no tail.
+        let quartic = at(&|x: f64| 3.0 + x - 2.0 * x.powi(4));
+        assert!(tail_error(&table, &quartic, 2.0) < 1e-14);
+        // 2 + P₇(x): c₇ = 1, c₀ = 2, so width·1·(1/2).
+        let p7 =
+            |x: f64| (429.0 * x.powi(7) - 693.0 * x.powi(5) + 315.0 * x.powi(3) - 35.0 * x) / 16.0;
+        let seventh = at(&|x| 2.0 + p7(x));
+        assert!((tail_error(&table, &seventh, 2.0) - 1.0).abs() < 1e-12);
+        assert!((tail_error(&table, &seventh, 0.5) - 0.25).abs() < 1e-12);
+        // A zero speed has no error.
+        assert!(tail_error(&table, &[0.0; GAUSS_POINTS], 1.0).abs() < f64::MIN_POSITIVE);
     }
 
     #[test]
