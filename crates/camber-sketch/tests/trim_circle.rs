@@ -15,7 +15,8 @@ use camber_sketch::constraints::{
     Coincident, EqualRadius, Fixed, PointOnCircle, PointOnCurve, PointOnLine, Radius,
 };
 use camber_sketch::{Constraint, Entity, Error, PointRef, Sketch};
-use nalgebra::Point2;
+use nalgebra::{Point2, Vector2};
+use proptest::prelude::*;
 
 fn at_angle(degrees: f64) -> Point2<f64> {
     let t = degrees * PI / 180.0;
@@ -355,4 +356,88 @@ fn a_parameter_bound_radius_drives_the_arc() {
     };
     assert!(((a - centre).norm() - 0.8).abs() < 1e-9 && ((b - centre).norm() - 0.8).abs() < 1e-9);
     assert!((a.x - 0.5).abs() < 1e-9 && (b.x - 0.5).abs() < 1e-9);
+}
+
+/// The crossings of the circle (c, r) with the segment a + t·(b − a), t ∈ [0, 1], as angles
+/// about c, from the quadratic |a + t·d − c|² = r²; `None` when the line is within 1e-6 of
+/// tangent (the count is then a matter of rounding).
+fn segment_crossings(c: Point2<f64>, r: f64, a: Point2<f64>, b: Point2<f64>) -> Option<Vec<f64>> {
+    let d = b - a;
+    let f = a - c;
+    let (qa, qb, qc) = (d.dot(&d), 2.0 * f.dot(&d), f.dot(&f) - r * r);
+    let disc = qb * qb - 4.0 * qa * qc;
+    if disc.abs() < 1e-6 * qb * qb.max(1.0) {
+        return None;
+    }
+    if disc < 0.0 {
+        return Some(Vec::new());
+    }
+    let mut out = Vec::new();
+    for t in [
+        (-qb - disc.sqrt()) / (2.0 * qa),
+        (-qb + disc.sqrt()) / (2.0 * qa),
+    ] {
+        if (0.0..=1.0).contains(&t) {
+            let p = a + d * t - c;
+            out.push(p.y.atan2(p.x));
+        }
+    }
+    Some(out)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// Random circles cut by up to three long lines: the kept arc starts and ends on crossings
+    /// found by the quadratic formula, every crossing lies on it, the point's direction does
+    /// not; with fewer than two crossings the trim is refused and the sketch unchanged.
+    #[test]
+    fn a_trimmed_circle_keeps_every_crossing_and_drops_the_point(
+        cx in -2.0..2.0f64, cy in -2.0..2.0f64, r in 0.2..3.0f64,
+        lines in prop::collection::vec((-3.0..3.0f64, -3.0..3.0f64, 0.0..PI), 1..4),
+        pick in 0.0..(2.0 * PI),
+    ) {
+        let centre = Point2::new(cx, cy);
+        let mut s = Sketch::new();
+        let c = s.add_circle(centre, r).unwrap();
+        let mut at = Vec::new();
+        let mut angles = Vec::new();
+        for (px, py, th) in lines {
+            let dir = Vector2::new(th.cos(), th.sin()) * 10.0;
+            let (a, b) = (Point2::new(px, py) - dir, Point2::new(px, py) + dir);
+            let Some(x) = segment_crossings(centre, r, a, b) else {
+                return Ok(());
+            };
+            angles.extend(x);
+            at.push(s.add_line(a, b).unwrap());
+        }
+        let near = centre + 2.0 * r * Vector2::new(pick.cos(), pick.sin());
+        let file = camber_sketch::file::to_json(&s).unwrap();
+        match s.trim_circle(c, &at, near) {
+            Err(e) => {
+                prop_assert!(angles.len() < 2, "{e} with {} crossings", angles.len());
+                prop_assert_eq!(e, Error::TooFewCrossings { entity: c, count: angles.len() });
+                prop_assert_eq!(camber_sketch::file::to_json(&s).unwrap(), file);
+            }
+            Ok(trim) => {
+                prop_assert!(angles.len() >= 2);
+                let Entity::Arc([k, a, b]) = s.entity(c).unwrap().clone() else {
+                    panic!("not an arc")
+                };
+                prop_assert!((k - centre).norm() < 1e-12);
+                prop_assert!(((a - k).norm() - r).abs() < 1e-9 && ((b - k).norm() - r).abs() < 1e-9);
+                prop_assert_eq!((a, b), (trim.start, trim.end));
+                let start = (a - k).y.atan2((a - k).x);
+                let sweep = ((b - k).y.atan2((b - k).x) - start).rem_euclid(2.0 * PI);
+                let along = |t: f64| (t - start).rem_euclid(2.0 * PI);
+                let eps = 1e-9;
+                for t in &angles {
+                    let u = along(*t);
+                    prop_assert!(u <= sweep + eps || u >= 2.0 * PI - eps, "crossing {t} off the arc");
+                }
+                prop_assert!(along(pick) >= sweep - eps, "the point's direction is kept");
+                prop_assert!(angles.iter().any(|t| (along(*t)).min(2.0 * PI - along(*t)) < eps));
+            }
+        }
+    }
 }
