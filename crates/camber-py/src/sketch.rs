@@ -296,6 +296,33 @@ impl Sketch {
         Ok(d.into_any().unbind())
     }
 
+    /// Trims circle `circle` where it crosses the entities `at`, removing the piece around
+    /// `remove_near` ([x, y]) between the two crossings nearest it on either side; the circle
+    /// becomes an arc (same id, centre and radius) with each end held on the entity it lies
+    /// on. Returns `{"entity": id, "start": [x, y], "end": [x, y], "added": [id, id]}`; raises
+    /// and changes nothing on bad input (fewer than two crossings, a constraint an arc cannot
+    /// carry).
+    fn trim_circle(
+        &mut self,
+        py: Python<'_>,
+        circle: u64,
+        at: Vec<u64>,
+        remove_near: Vec<f64>,
+    ) -> PyResult<Py<PyAny>> {
+        let near = xy(&remove_near, "remove_near")?;
+        let at: Vec<EntityId> = at.into_iter().map(EntityId).collect();
+        let trim = self
+            .inner
+            .trim_circle(EntityId(circle), &at, near)
+            .map_err(errors::sketch)?;
+        let d = PyDict::new(py);
+        d.set_item("entity", trim.entity.0)?;
+        d.set_item("start", [trim.start.x, trim.start.y])?;
+        d.set_item("end", [trim.end.x, trim.end.y])?;
+        d.set_item("added", trim.added.map(|c| c.0))?;
+        Ok(d.into_any().unbind())
+    }
+
     /// Adds a planar Bézier, B-spline or NURBS curve (a `camber` curve object); returns its id.
     fn add_curve(&mut self, curve: PyRef<'_, Curve>) -> PyResult<u64> {
         let id = match &curve.inner {

@@ -175,6 +175,29 @@ def test_a_line_split_and_trimmed_at_a_circle_ends_on_it():
     np.testing.assert_allclose(s.point({"end": a}), [3.0, 0.0], atol=1e-10)
 
 
+def test_a_circle_trimmed_by_a_line_keeps_the_far_arc():
+    # The unit circle cut by x = 1/2 (crossings at ±60°): removing the cap near (1, 0) keeps
+    # the 240° arc from 60° to −60°, its ends held on the line.
+    s = camber.Sketch()
+    c = s.add_circle([0.0, 0.0], 1.0)
+    line = s.add_line([0.5, -2.0], [0.5, 2.0])
+    away = s.add_line([5.0, 0.0], [6.0, 0.0])
+    before = s.to_json()
+    with pytest.raises(camber.SketchError, match="needs two crossings"):
+        s.trim_circle(c, [away], [1.0, 0.0])
+    with pytest.raises(camber.SketchError, match="expected circle"):
+        s.trim_circle(line, [c], [1.0, 0.0])
+    assert s.to_json() == before
+    t = s.trim_circle(c, [line], [1.0, 0.0])
+    h = np.sqrt(0.75)
+    np.testing.assert_allclose(t["start"], [0.5, h], atol=1e-12)
+    np.testing.assert_allclose(t["end"], [0.5, -h], atol=1e-12)
+    assert len(t["added"]) == 2
+    np.testing.assert_allclose(s.point({"end": c}), [0.5, -h], atol=1e-12)
+    s.solve()
+    assert s.point({"start": c})[0] == pytest.approx(0.5, abs=1e-10)
+
+
 def test_a_curve_touches_an_ellipse_from_python_at_the_closed_form_point():
     # A segment from the held point (0, 2) touches x²/4 + y² = 1: the tangent line at
     # (x0, y0), x·x0/4 + y·y0 = 1, passes through (0, 2) when y0 = 1/2, so x0 = √3, θ = π/6.

@@ -272,6 +272,17 @@ pub enum Error {
         /// How many crossings there are.
         count: usize,
     },
+    /// A trim of a circle ([`crate::Sketch::trim_circle`]) whose circle crosses the entities
+    /// given fewer than two times: the arc it keeps needs a crossing at each end.
+    #[error(
+        "{entity} crosses the entities given {count} time(s): trimming a circle needs two crossings"
+    )]
+    TooFewCrossings {
+        /// The circle.
+        entity: EntityId,
+        /// The distinct crossings found.
+        count: usize,
+    },
     /// A solve that would turn an arc inside out: its end carried past its start (or the
     /// reverse), so that its sweep, read from its blocks, jumps by more than π (from near 0 to
     /// near 2π, say) and the arc becomes its complement on the circle.

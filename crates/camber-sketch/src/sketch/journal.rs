@@ -29,6 +29,9 @@ enum Step {
     Replaced(EntityId, Entity, PointWeights),
     /// An entity added.
     AddedEntity(EntityId),
+    /// An entity removed (its constraints were removed first): its value, point weights and
+    /// tag.
+    RemovedEntity(EntityId, Entity, PointWeights, Option<String>),
     /// A constraint added.
     AddedConstraint(ConstraintId),
 }
@@ -83,6 +86,45 @@ impl Journal {
         let weights = sketch.weights_of(id);
         sketch.set_entity(id, entity)?;
         self.steps.push(Step::Replaced(id, before, weights));
+        Ok(())
+    }
+
+    /// Removes entity `id`, which no constraint reads any more, returning it.
+    pub(super) fn remove_entity(&mut self, sketch: &mut Sketch, id: EntityId) -> Result<Entity> {
+        let weights = sketch.weights_of(id);
+        let tag = sketch.tag(id).map(str::to_owned);
+        let entity = sketch.remove_entity(id)?;
+        self.steps
+            .push(Step::RemovedEntity(id, entity.clone(), weights, tag));
+        Ok(entity)
+    }
+
+    /// Adds `entity` under `id` (free: an entity this edit removed).
+    pub(super) fn add_entity_with_id(
+        &mut self,
+        sketch: &mut Sketch,
+        id: EntityId,
+        entity: Entity,
+    ) -> Result<()> {
+        sketch.add_entity_with_id(id, entity)?;
+        self.steps.push(Step::AddedEntity(id));
+        Ok(())
+    }
+
+    /// Adds the removed constraint `was` again under its own id `id` (the entities it reads
+    /// having changed), with its priority and its parameter bindings.
+    pub(super) fn restore_constraint(
+        &mut self,
+        sketch: &mut Sketch,
+        id: ConstraintId,
+        was: &Removed,
+    ) -> Result<()> {
+        sketch.add_constraint_with_id(id, was.constraint.clone())?;
+        self.steps.push(Step::AddedConstraint(id));
+        if let Some(p) = was.priority {
+            sketch.set_priority(id, p)?;
+        }
+        sketch.set_bindings(id, was.bindings.clone());
         Ok(())
     }
 
@@ -168,6 +210,17 @@ impl Sketch {
                     let removed = self.remove_entity(id);
                     debug_assert!(removed.is_ok(), "an entity the edit added: {removed:?}");
                 }
+                Step::RemovedEntity(id, entity, weights, tag) => {
+                    let restored = self.add_entity_with_id(id, entity);
+                    debug_assert!(restored.is_ok(), "an entity the edit removed: {restored:?}");
+                    for (index, w) in weights {
+                        self.weights.insert((id, index), w);
+                    }
+                    if let Some(tag) = tag {
+                        let tagged = self.set_tag(id, Some(&tag));
+                        debug_assert!(tagged.is_ok(), "its tag: {tagged:?}");
+                    }
+                }
                 Step::Replaced(id, entity, weights) => {
                     // It was valid with the constraints that read it then, the same again.
                     let restored = self.set_entity(id, entity);
@@ -190,7 +243,7 @@ impl Sketch {
     }
 
     /// The point weights of entity `id` that differ from 1, by point index.
-    fn weights_of(&self, id: EntityId) -> PointWeights {
+    pub(super) fn weights_of(&self, id: EntityId) -> PointWeights {
         self.weights
             .range((id, 0)..=(id, usize::MAX))
             .map(|((_, index), w)| (*index, *w))

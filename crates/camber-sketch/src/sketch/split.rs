@@ -81,7 +81,7 @@ pub struct Trim {
 }
 
 /// A curve the intersection search reads, owned where it had to be made.
-enum Shape<'a> {
+pub(super) enum Shape<'a> {
     Borrowed(&'a dyn ParametricCurve<f64, 2>),
     Segment(Segment<f64>),
     Nurbs(NurbsCurve2<f64>),
@@ -91,7 +91,7 @@ enum Shape<'a> {
 }
 
 impl Shape<'_> {
-    fn curve(&self) -> &dyn ParametricCurve<f64, 2> {
+    pub(super) fn curve(&self) -> &dyn ParametricCurve<f64, 2> {
         match self {
             Shape::Borrowed(c) => *c,
             Shape::Segment(c) => c,
@@ -103,7 +103,9 @@ impl Shape<'_> {
     }
 }
 
-fn shape(id: EntityId, e: &Entity) -> Result<Shape<'_>> {
+/// The curve the intersection search reads for entity `id` (a line, circle, arc, ellipse,
+/// elliptic arc or curve; a point is [`Error::WrongEntityKind`]).
+pub(super) fn shape(id: EntityId, e: &Entity) -> Result<Shape<'_>> {
     let wrong = || Error::WrongEntityKind {
         entity: id,
         expected: "line, circle, arc, ellipse or curve",
@@ -205,7 +207,7 @@ impl Sketch {
     }
 
     /// The constraint holding `point` on entity `other` (module `split`).
-    fn on_other(&self, point: PointRef, other: EntityId, u: f64) -> Result<Constraint> {
+    pub(super) fn on_other(&self, point: PointRef, other: EntityId, u: f64) -> Result<Constraint> {
         Ok(match self.entity(other)? {
             Entity::Line(_) => PointOnLine { point, line: other }.into(),
             Entity::Circle { .. } => PointOnCircle {
