@@ -120,32 +120,29 @@ impl Sketch {
                 });
             }
         }
-        let crossings = self.circle_crossings(circle, at)?;
-        let pick = (remove_near.y - center.y).atan2(remove_near.x - center.x);
-        let ahead = |x: &Crossing| (x.angle - pick).rem_euclid(std::f64::consts::TAU);
-        let (Some(first), Some(last)) = (
-            crossings
-                .iter()
-                .min_by(|a, b| ahead(a).total_cmp(&ahead(b))),
-            crossings
-                .iter()
-                .max_by(|a, b| ahead(a).total_cmp(&ahead(b))),
-        ) else {
-            return Err(Error::TooFewCrossings {
-                entity: circle,
-                count: 0,
-            });
-        };
+        let crossings = self.circle_crossings(circle, center, at)?;
         if crossings.len() < 2 {
             return Err(Error::TooFewCrossings {
                 entity: circle,
                 count: crossings.len(),
             });
         }
+        // A point at the centre reads as the direction +x.
+        let pick = (remove_near.y - center.y).atan2(remove_near.x - center.x);
+        let ahead = |x: &&Crossing| (x.angle - pick).rem_euclid(std::f64::consts::TAU);
+        let by_ahead = |a: &&Crossing, b: &&Crossing| ahead(a).total_cmp(&ahead(b));
+        let (Some(&first), Some(&last)) = (
+            crossings.iter().min_by(by_ahead),
+            crossings.iter().max_by(by_ahead),
+        ) else {
+            return Err(Error::TooFewCrossings {
+                entity: circle,
+                count: 0,
+            });
+        };
         let on_circle = |angle: f64| center + radius * Vector2::new(angle.cos(), angle.sin());
         let (start, end) = (on_circle(first.angle), on_circle(last.angle));
         let arc = Entity::Arc([center, start, end]);
-        let (first, last) = (*first, *last);
         let (added, _) = self.transaction(|sk, j| {
             let removed = readers
                 .iter()
@@ -184,15 +181,15 @@ impl Sketch {
         })
     }
 
-    /// The distinct crossings of circle `circle` with the entities `at` (module
-    /// `trim_circle`).
-    fn circle_crossings(&self, circle: EntityId, at: &[EntityId]) -> Result<Vec<Crossing>> {
-        let e = self.entity(circle)?;
-        let center = match e {
-            Entity::Circle { center, .. } => *center,
-            _ => Point2::origin(),
-        };
-        let se = shape(circle, e)?;
+    /// The distinct crossings of circle `circle` (centred at `center`) with the entities `at`
+    /// (module `trim_circle`).
+    fn circle_crossings(
+        &self,
+        circle: EntityId,
+        center: Point2<f64>,
+        at: &[EntityId],
+    ) -> Result<Vec<Crossing>> {
+        let se = shape(circle, self.entity(circle)?)?;
         let merge = 1e-9 * self.extent.magnitude().max(1.0);
         let mut found: Vec<(Point2<f64>, Crossing)> = Vec::new();
         for &other in at {
