@@ -296,16 +296,16 @@ impl Sketch {
         Ok(d.into_any().unbind())
     }
 
-    /// Trims circle `circle` where it crosses the entities `at`, removing the piece around
-    /// `remove_near` ([x, y]) between the two crossings nearest it on either side; the circle
-    /// becomes an arc (same id, centre and radius) with each end held on the entity it lies
-    /// on. Returns `{"entity": id, "start": [x, y], "end": [x, y], "added": [id, id]}`; raises
+    /// Trims the circle or ellipse `entity` where it crosses the entities `at`, removing the
+    /// piece around `remove_near` ([x, y]) between the two crossings nearest it on either
+    /// side; it becomes a circular or elliptic arc (same id and shape) with each end held on
+    /// the entity it lies on. Returns `{"entity": id, "start": [x, y], "end": [x, y], "added": [id, id]}`; raises
     /// and changes nothing on bad input (fewer than two crossings, a constraint an arc cannot
     /// carry).
-    fn trim_circle(
+    fn trim_closed(
         &mut self,
         py: Python<'_>,
-        circle: u64,
+        entity: u64,
         at: Vec<u64>,
         remove_near: Vec<f64>,
     ) -> PyResult<Py<PyAny>> {
@@ -313,7 +313,7 @@ impl Sketch {
         let at: Vec<EntityId> = at.into_iter().map(EntityId).collect();
         let trim = self
             .inner
-            .trim_circle(EntityId(circle), &at, near)
+            .trim_closed(EntityId(entity), &at, near)
             .map_err(errors::sketch)?;
         let d = PyDict::new(py);
         d.set_item("entity", trim.entity.0)?;

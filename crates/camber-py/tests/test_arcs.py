@@ -184,11 +184,11 @@ def test_a_circle_trimmed_by_a_line_keeps_the_far_arc():
     away = s.add_line([5.0, 0.0], [6.0, 0.0])
     before = s.to_json()
     with pytest.raises(camber.SketchError, match="needs two crossings"):
-        s.trim_circle(c, [away], [1.0, 0.0])
-    with pytest.raises(camber.SketchError, match="expected circle"):
-        s.trim_circle(line, [c], [1.0, 0.0])
+        s.trim_closed(c, [away], [1.0, 0.0])
+    with pytest.raises(camber.SketchError, match="expected circle or ellipse"):
+        s.trim_closed(line, [c], [1.0, 0.0])
     assert s.to_json() == before
-    t = s.trim_circle(c, [line], [1.0, 0.0])
+    t = s.trim_closed(c, [line], [1.0, 0.0])
     h = np.sqrt(0.75)
     np.testing.assert_allclose(t["start"], [0.5, h], atol=1e-12)
     np.testing.assert_allclose(t["end"], [0.5, -h], atol=1e-12)

@@ -272,13 +272,13 @@ pub enum Error {
         /// How many crossings there are.
         count: usize,
     },
-    /// A trim of a circle ([`crate::Sketch::trim_circle`]) whose circle crosses the entities
-    /// given fewer than two times: the arc it keeps needs a crossing at each end.
+    /// A trim of a circle or an ellipse ([`crate::Sketch::trim_closed`]) that crosses the
+    /// entities given fewer than two times: the arc it keeps needs a crossing at each end.
     #[error(
-        "{entity} crosses the entities given {count} time(s): trimming a circle needs two crossings"
+        "{entity} crosses the entities given {count} time(s): trimming a closed entity needs two crossings"
     )]
     TooFewCrossings {
-        /// The circle.
+        /// The circle or ellipse.
         entity: EntityId,
         /// The distinct crossings found.
         count: usize,

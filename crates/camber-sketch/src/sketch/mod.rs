@@ -16,7 +16,7 @@ mod journal;
 pub mod parameters;
 pub(crate) mod prepared;
 pub mod split;
-pub mod trim_circle;
+pub mod trim_closed;
 pub mod warnings;
 
 use std::collections::{BTreeMap, BTreeSet};

@@ -1,5 +1,5 @@
-//! `Sketch::trim_circle`: a circle cut where it crosses other entities, the piece around a
-//! point removed and the rest kept as an arc. Checked against hand-derived crossings (a unit
+//! `Sketch::trim_closed`: a circle or an ellipse cut where it crosses other entities, the
+//! piece around a point removed and the rest kept as an arc. Checked against hand-derived crossings (a unit
 //! circle and the lines x = ½, y = ±½ meet at 60° and 30° steps), against the kernel's
 //! closest point for a curve, for the constraints an arc carries on, and for refusals that
 //! leave the sketch unchanged.
@@ -11,8 +11,10 @@ use std::f64::consts::PI;
 
 use camber_geom::queries::closest_point;
 use camber_geom::BezierCurve2;
+use camber_sketch::constraints::semi_axis::Axis;
 use camber_sketch::constraints::{
-    Coincident, EqualRadius, Fixed, PointOnCircle, PointOnCurve, PointOnLine, Radius,
+    Coincident, EqualRadius, Fixed, PointOnCircle, PointOnCurve, PointOnEllipse, PointOnLine,
+    Radius, SemiAxis,
 };
 use camber_sketch::{Constraint, Entity, Error, PointRef, Sketch};
 use nalgebra::{Point2, Vector2};
@@ -47,7 +49,7 @@ fn a_circle_cut_by_one_line_keeps_the_side_away_from_the_point() {
         let line = s
             .add_line(Point2::new(0.5, -2.0), Point2::new(0.5, 2.0))
             .unwrap();
-        let trim = s.trim_circle(c, &[line], near).unwrap();
+        let trim = s.trim_closed(c, &[line], near).unwrap();
         assert_eq!(trim.entity, c);
         assert!((trim.start - at_angle(start)).norm() < 1e-12, "{trim:?}");
         assert!((trim.end - at_angle(end)).norm() < 1e-12, "{trim:?}");
@@ -83,7 +85,7 @@ fn a_circle_cut_by_two_lines_holds_each_end_on_its_own_line() {
         .add_line(Point2::new(0.0, -0.5), Point2::new(3.0, -0.5))
         .unwrap();
     let trim = s
-        .trim_circle(c, &[lower, upper], Point2::new(1.0, 0.0))
+        .trim_closed(c, &[lower, upper], Point2::new(1.0, 0.0))
         .unwrap();
     assert!((trim.start - at_angle(30.0)).norm() < 1e-12);
     assert!((trim.end - at_angle(-30.0)).norm() < 1e-12);
@@ -131,7 +133,7 @@ fn a_circle_cut_by_a_curve_ends_exactly_on_it() {
     let mut s = Sketch::new();
     let c = s.add_circle(Point2::new(0.0, 0.1), 1.0).unwrap();
     let curve = s.add_bezier(hump).unwrap();
-    let trim = s.trim_circle(c, &[curve], Point2::new(0.0, 2.0)).unwrap();
+    let trim = s.trim_closed(c, &[curve], Point2::new(0.0, 2.0)).unwrap();
     for id in trim.added {
         assert!(matches!(
             s.constraint(id).unwrap(),
@@ -194,7 +196,7 @@ fn constraints_on_the_circle_carry_over_to_the_arc() {
         .iter()
         .map(|id| s.constraint(*id).unwrap().clone())
         .collect();
-    s.trim_circle(c, &[line], Point2::new(1.0, 0.0)).unwrap();
+    s.trim_closed(c, &[line], Point2::new(1.0, 0.0)).unwrap();
     for (id, was) in kept.iter().zip(&before) {
         assert_eq!(s.constraint(*id).unwrap(), was);
     }
@@ -240,36 +242,36 @@ fn bad_circle_trims_are_refused_with_the_sketch_unchanged() {
     let file = camber_sketch::file::to_json(&s).unwrap();
     let near = Point2::new(1.0, 0.0);
     assert!(matches!(
-        s.trim_circle(through, &[c], near),
+        s.trim_closed(through, &[c], near),
         Err(Error::WrongEntityKind { entity, .. }) if entity == through
     ));
     assert_eq!(
-        s.trim_circle(c, &[once], near),
+        s.trim_closed(c, &[once], near),
         Err(Error::TooFewCrossings {
             entity: c,
             count: 1
         })
     );
     assert_eq!(
-        s.trim_circle(c, &[away], near),
+        s.trim_closed(c, &[away], near),
         Err(Error::TooFewCrossings {
             entity: c,
             count: 0
         })
     );
     assert_eq!(
-        s.trim_circle(c, &[], near),
+        s.trim_closed(c, &[], near),
         Err(Error::TooFewCrossings {
             entity: c,
             count: 0
         })
     );
     assert_eq!(
-        s.trim_circle(c, &[through, c], near),
+        s.trim_closed(c, &[through, c], near),
         Err(Error::SameEntity { entity: c })
     );
     assert!(matches!(
-        s.trim_circle(c, &[through], Point2::new(f64::NAN, 0.0)),
+        s.trim_closed(c, &[through], Point2::new(f64::NAN, 0.0)),
         Err(Error::NonFinite { .. })
     ));
     // A point held on the circle might fall in the removed piece: refused.
@@ -282,7 +284,7 @@ fn bad_circle_trims_are_refused_with_the_sketch_unchanged() {
         .unwrap();
     let file_with = camber_sketch::file::to_json(&s).unwrap();
     assert_eq!(
-        s.trim_circle(c, &[through], near),
+        s.trim_closed(c, &[through], near),
         Err(Error::EntityConstrained {
             entity: c,
             constraint: on,
@@ -303,12 +305,12 @@ fn an_arc_is_not_trimmed_as_a_circle() {
     let line = s
         .add_line(Point2::new(0.5, -2.0), Point2::new(0.5, 2.0))
         .unwrap();
-    s.trim_circle(c, &[line], Point2::new(1.0, 0.0)).unwrap();
+    s.trim_closed(c, &[line], Point2::new(1.0, 0.0)).unwrap();
     let file = camber_sketch::file::to_json(&s).unwrap();
     assert!(matches!(
-        s.trim_circle(c, &[line], Point2::new(-1.0, 0.0)),
+        s.trim_closed(c, &[line], Point2::new(-1.0, 0.0)),
         Err(Error::WrongEntityKind {
-            expected: "circle",
+            expected: "circle or ellipse",
             ..
         })
     ));
@@ -345,7 +347,7 @@ fn a_parameter_bound_radius_drives_the_arc() {
     let at = file.rfind("\"radius\":1.0}").unwrap();
     let bound = format!("{}\"radius\":\"r0\"}}{}", &file[..at], &file[at + 13..]);
     let mut s = camber_sketch::file::from_json(&bound).unwrap();
-    s.trim_circle(c, &[line], Point2::new(1.0, 0.0)).unwrap();
+    s.trim_closed(c, &[line], Point2::new(1.0, 0.0)).unwrap();
     assert!(camber_sketch::file::to_json(&s)
         .unwrap()
         .contains("\"radius\":\"r0\""));
@@ -356,6 +358,106 @@ fn a_parameter_bound_radius_drives_the_arc() {
     };
     assert!(((a - centre).norm() - 0.8).abs() < 1e-9 && ((b - centre).norm() - 0.8).abs() < 1e-9);
     assert!((a.x - 0.5).abs() < 1e-9 && (b.x - 0.5).abs() < 1e-9);
+}
+
+/// The ellipse x²/4 + y² = 1 cut by x = 1 (2·cos t = 1: parametric angles ±60°, points
+/// (1, ±√3/2)): removing near (2, 0) keeps the elliptic arc from 60° to −60° (a 240° sweep in
+/// the parametric angle), ends on the line; its semi-axis constraint and a coincident at its
+/// vertex carry over and drive it after the trim.
+#[test]
+fn an_ellipse_cut_by_a_line_keeps_the_far_elliptic_arc() {
+    let mut s = Sketch::new();
+    let shape = camber_geom::Ellipse::try_new(Point2::origin(), 2.0, 1.0, 0.0).unwrap();
+    let e = s.add_entity(Entity::ellipse(&shape)).unwrap();
+    let line = s
+        .add_line(Point2::new(1.0, -2.0), Point2::new(1.0, 2.0))
+        .unwrap();
+    let vertex = s.add_point(Point2::new(2.0, 0.0)).unwrap();
+    let semi = s
+        .add_constraint(SemiAxis {
+            ellipse: e,
+            axis: Axis::B,
+            length: 1.0,
+        })
+        .unwrap();
+    let at_vertex = s
+        .add_constraint(Coincident {
+            a: PointRef::Control(e, 1),
+            b: PointRef::Point(vertex),
+        })
+        .unwrap();
+    let h = 0.75_f64.sqrt();
+    let trim = s.trim_closed(e, &[line], Point2::new(2.0, 0.0)).unwrap();
+    assert!(
+        (trim.start - Point2::new(1.0, h)).norm() < 1e-12,
+        "{trim:?}"
+    );
+    assert!((trim.end - Point2::new(1.0, -h)).norm() < 1e-12, "{trim:?}");
+    let arc = s.entity(e).unwrap().as_elliptic_arc().unwrap();
+    assert!(
+        (arc.sweep() - 240.0_f64.to_radians()).abs() < 1e-9,
+        "{}",
+        arc.sweep()
+    );
+    assert!(s.constraint(semi).is_ok() && s.constraint(at_vertex).is_ok());
+    for id in trim.added {
+        assert!(matches!(
+            s.constraint(id).unwrap(),
+            Constraint::PointOnLine(PointOnLine { line: l, .. }) if *l == line
+        ));
+    }
+    // Fix the line and the centre, ask for b = 0.5: the ends slide along x = 1 to
+    // y = ±0.5·√3/2 (the angle stays ±60° since a and the line are unchanged).
+    for end in [
+        PointRef::Start(line),
+        PointRef::End(line),
+        PointRef::Control(e, 0),
+        PointRef::Point(vertex),
+    ] {
+        s.add_constraint(Fixed::point(end)).unwrap();
+    }
+    s.remove_constraint(semi).unwrap();
+    s.add_constraint(SemiAxis {
+        ellipse: e,
+        axis: Axis::B,
+        length: 0.5,
+    })
+    .unwrap();
+    s.solve().unwrap();
+    let start = s.point(PointRef::Start(e)).unwrap();
+    let end = s.point(PointRef::End(e)).unwrap();
+    assert!((start - Point2::new(1.0, 0.5 * h)).norm() < 1e-9, "{start}");
+    assert!((end - Point2::new(1.0, -0.5 * h)).norm() < 1e-9, "{end}");
+}
+
+/// A point held on the ellipse could fall in the removed piece: refused, nothing changed.
+#[test]
+fn a_point_on_the_ellipse_blocks_its_trim() {
+    let mut s = Sketch::new();
+    let shape = camber_geom::Ellipse::try_new(Point2::new(1.0, 1.0), 2.0, 1.0, 0.4).unwrap();
+    let e = s.add_entity(Entity::ellipse(&shape)).unwrap();
+    let line = s
+        .add_line(Point2::new(1.0, -3.0), Point2::new(1.5, 4.0))
+        .unwrap();
+    let q = s.add_point(shape.point_at_angle(2.0)).unwrap();
+    let on = s
+        .add_constraint(PointOnEllipse {
+            point: PointRef::Point(q),
+            ellipse: e,
+        })
+        .unwrap();
+    let file = camber_sketch::file::to_json(&s).unwrap();
+    assert_eq!(
+        s.trim_closed(e, &[line], Point2::new(3.0, 1.0)),
+        Err(Error::EntityConstrained {
+            entity: e,
+            constraint: on,
+            operation: "trim"
+        })
+    );
+    assert_eq!(camber_sketch::file::to_json(&s).unwrap(), file);
+    s.remove_constraint(on).unwrap();
+    assert!(s.trim_closed(e, &[line], Point2::new(3.0, 1.0)).is_ok());
 }
 
 /// The crossings of the circle (c, r) with the segment a + t·(b − a), t ∈ [0, 1], as angles
@@ -388,32 +490,52 @@ fn segment_crossings(c: Point2<f64>, r: f64, a: Point2<f64>, b: Point2<f64>) -> 
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(64))]
 
-    /// Random circles cut by up to three long lines: the kept arc starts and ends on crossings
-    /// found by the quadratic formula, every crossing lies on it, the point's direction does
-    /// not; with fewer than two crossings the trim is refused and the sketch unchanged.
+    /// Random circles and ellipses cut by up to three long lines: the kept arc starts and ends
+    /// on crossings found by the quadratic formula (in the frame where the entity is the unit
+    /// circle, where angles are parametric angles), every crossing lies on it, the point's
+    /// direction does not; with fewer than two crossings the trim is refused and the sketch
+    /// unchanged.
     #[test]
-    fn a_trimmed_circle_keeps_every_crossing_and_drops_the_point(
+    fn a_trimmed_closed_entity_keeps_every_crossing_and_drops_the_point(
         cx in -2.0..2.0f64, cy in -2.0..2.0f64, r in 0.2..3.0f64,
+        ellipse in prop::option::of((0.3..3.0f64, -3.0..3.0f64)),
         lines in prop::collection::vec((-3.0..3.0f64, -3.0..3.0f64, 0.0..PI), 1..4),
         pick in 0.0..(2.0 * PI),
     ) {
         let centre = Point2::new(cx, cy);
+        let (b, rot) = ellipse.map_or((r, 0.0), |(k, rot)| (r * k, rot));
+        let (cos, sin) = (rot.cos(), rot.sin());
+        // The frame where the entity is the unit circle.
+        let to_unit = |p: Point2<f64>| {
+            let d = p - centre;
+            Point2::new((cos * d.x + sin * d.y) / r, (-sin * d.x + cos * d.y) / b)
+        };
+        let from_unit = |t: f64| {
+            let (x, y) = (r * t.cos(), b * t.sin());
+            centre + Vector2::new(cos * x - sin * y, sin * x + cos * y)
+        };
         let mut s = Sketch::new();
-        let c = s.add_circle(centre, r).unwrap();
+        let c = match ellipse {
+            None => s.add_circle(centre, r).unwrap(),
+            Some(_) => {
+                let shape = camber_geom::Ellipse::try_new(centre, r, b, rot).unwrap();
+                s.add_entity(Entity::ellipse(&shape)).unwrap()
+            }
+        };
         let mut at = Vec::new();
         let mut angles = Vec::new();
         for (px, py, th) in lines {
             let dir = Vector2::new(th.cos(), th.sin()) * 10.0;
-            let (a, b) = (Point2::new(px, py) - dir, Point2::new(px, py) + dir);
-            let Some(x) = segment_crossings(centre, r, a, b) else {
+            let (a, e) = (Point2::new(px, py) - dir, Point2::new(px, py) + dir);
+            let Some(x) = segment_crossings(Point2::origin(), 1.0, to_unit(a), to_unit(e)) else {
                 return Ok(());
             };
             angles.extend(x);
-            at.push(s.add_line(a, b).unwrap());
+            at.push(s.add_line(a, e).unwrap());
         }
-        let near = centre + 2.0 * r * Vector2::new(pick.cos(), pick.sin());
+        let near = from_unit(pick) + (from_unit(pick) - centre);
         let file = camber_sketch::file::to_json(&s).unwrap();
-        match s.trim_circle(c, &at, near) {
+        match s.trim_closed(c, &at, near) {
             Err(e) => {
                 prop_assert!(angles.len() < 2, "{e} with {} crossings", angles.len());
                 prop_assert_eq!(e, Error::TooFewCrossings { entity: c, count: angles.len() });
@@ -421,16 +543,19 @@ proptest! {
             }
             Ok(trim) => {
                 prop_assert!(angles.len() >= 2);
-                let Entity::Arc([k, a, b]) = s.entity(c).unwrap().clone() else {
-                    panic!("not an arc")
+                let (k, a, e) = match s.entity(c).unwrap().clone() {
+                    Entity::Arc([k, a, e]) => (k, a, e),
+                    Entity::EllipticArc { points: [k, _, a, e], .. } => (k, a, e),
+                    other => panic!("not an arc: {other:?}"),
                 };
                 prop_assert!((k - centre).norm() < 1e-12);
-                prop_assert!(((a - k).norm() - r).abs() < 1e-9 && ((b - k).norm() - r).abs() < 1e-9);
-                prop_assert_eq!((a, b), (trim.start, trim.end));
-                let start = (a - k).y.atan2((a - k).x);
-                let sweep = ((b - k).y.atan2((b - k).x) - start).rem_euclid(2.0 * PI);
+                let (ua, ue) = (to_unit(a), to_unit(e));
+                prop_assert!((ua.coords.norm() - 1.0).abs() < 1e-9 && (ue.coords.norm() - 1.0).abs() < 1e-9);
+                prop_assert_eq!((a, e), (trim.start, trim.end));
+                let start = ua.y.atan2(ua.x);
+                let sweep = (ue.y.atan2(ue.x) - start).rem_euclid(2.0 * PI);
                 let along = |t: f64| (t - start).rem_euclid(2.0 * PI);
-                let eps = 1e-9;
+                let eps = 1e-8;
                 for t in &angles {
                     let u = along(*t);
                     prop_assert!(u <= sweep + eps || u >= 2.0 * PI - eps, "crossing {t} off the arc");
