@@ -7,7 +7,8 @@ checks that the side panel's residual follows a drag before the mouse is release
 drags a control point with real mouse events, and checks through the editor's HTTP API that
 every constraint still holds (the editor's own residuals, and the G1 joins and fixed points
 recomputed here from the points), after solving the blade with the Solve button (it is not
-solved as shipped). Then it undoes with the Undo button, drags again, saves
+solved as shipped). Then it undoes with the Undo button, redoes with Ctrl+Shift+Z and undoes
+again with Ctrl+Z, drags again, saves
 with Ctrl+S, reloads the page, restarts the editor on the saved file, and checks that a
 request from a foreign Origin is refused and changes nothing. Last, on the parametric
 diffuser, it checks that expression constraints are drawn with their name and residual, and
@@ -469,6 +470,22 @@ def main():
             undone = editor.state()
             check(points(undone) == original, "undo did not restore the original points")
             check(undone["can_undo"], "undo of the drag also undid the solve")
+            check(undone["can_redo"], "after an undo there is nothing to redo")
+
+            # 4b. Redo (Ctrl+Shift+Z) brings the drag back exactly; Ctrl+Z takes it back again.
+            page.keyboard.press("Control+Shift+Z")
+            deadline = time.monotonic() + 10
+            while editor.state()["can_redo"] and time.monotonic() < deadline:
+                page.wait_for_timeout(50)
+            redone = editor.state()
+            check(points(redone) == moved, "redo did not restore the dragged points")
+            check(redone["unsaved"] and not redone["can_redo"], f"after redo: {redone['unsaved']}, {redone['can_redo']}")
+            check(not page.is_disabled("#undo") and page.is_disabled("#redo"), "the buttons do not follow redo")
+            page.keyboard.press("Control+z")
+            deadline = time.monotonic() + 10
+            while not editor.state()["can_redo"] and time.monotonic() < deadline:
+                page.wait_for_timeout(50)
+            check(points(editor.state()) == original, "undo after redo did not restore the original points")
 
             # 5. Drag again and save with Ctrl+S; the file on disk holds the dragged geometry.
             after = drag(page, editor, 2, 3, -50, 40)

@@ -283,6 +283,7 @@ function renderPanel() {
     file.appendChild(mark);
   }
   document.getElementById("undo").disabled = !state.can_undo;
+  document.getElementById("redo").disabled = !state.can_redo;
   const report = document.getElementById("report");
   report.replaceChildren();
   if (state.report) {
@@ -469,6 +470,10 @@ canvas.addEventListener("wheel", (ev) => {
 
 window.addEventListener("keydown", (ev) => {
   if (ev.key === "Escape") finishDrag("cancel");
+  else if ((ev.ctrlKey || ev.metaKey) && (ev.key === "y" || (ev.shiftKey && ev.key.toLowerCase() === "z"))) {
+    ev.preventDefault();
+    action("/api/redo");
+  }
   else if ((ev.ctrlKey || ev.metaKey) && ev.key === "z") { ev.preventDefault(); action("/api/undo"); }
   else if ((ev.ctrlKey || ev.metaKey) && ev.key === "s") { ev.preventDefault(); save(); }
   else if (!ev.ctrlKey && !ev.metaKey && ev.key === "f") fit();
@@ -515,6 +520,7 @@ async function save() {
 
 document.getElementById("solve").addEventListener("click", () => action("/api/solve"));
 document.getElementById("undo").addEventListener("click", () => action("/api/undo"));
+document.getElementById("redo").addEventListener("click", () => action("/api/redo"));
 document.getElementById("save").addEventListener("click", save);
 document.getElementById("fit").addEventListener("click", fit);
 

@@ -177,7 +177,8 @@ pub const MAX_EDITOR_ID: u64 = (1 << 53) - 1;
 /// the drag session refuses farther targets itself (one rule for every surface).
 pub use camber_sketch::drag::MAX_DRAG_REACH;
 
-/// The editor: the sketch, the drag in progress, the undo history and the last report.
+/// The editor: the sketch, the drag in progress, the undo and redo histories and the last
+/// report.
 #[derive(Debug)]
 pub struct EditorState {
     sketch: Sketch,
@@ -188,6 +189,8 @@ pub struct EditorState {
     next_version: u64,
     saved_version: u64,
     undo: Vec<(Sketch, u64)>,
+    /// The states undo left, newest last; a new change clears it.
+    redo: Vec<(Sketch, u64)>,
     drag: Option<Drag>,
     components: Vec<ComponentJson>,
     conflicting: BTreeSet<ConstraintId>,
@@ -233,6 +236,7 @@ impl EditorState {
             next_version: 1,
             saved_version: 0,
             undo: Vec::new(),
+            redo: Vec::new(),
             drag: None,
             components: Vec::new(),
             conflicting: BTreeSet::new(),
@@ -257,7 +261,7 @@ impl EditorState {
     /// | `POST /api/drag/start` [`DragStart`] | [`DraggedJson`] |
     /// | `POST /api/drag/move` [`DragMove`] | [`MoveJson`]; 422 when the solver refuses |
     /// | `POST /api/drag/end`, `/api/drag/cancel` | [`StateJson`] |
-    /// | `POST /api/solve`, `/api/undo` | [`StateJson`] |
+    /// | `POST /api/solve`, `/api/undo`, `/api/redo` | [`StateJson`] |
     /// | `POST /api/save` | [`SavedJson`] |
     ///
     /// Errors answer `{"error": "…"}`: 400 for a malformed body, 404 for an unknown path,
@@ -283,6 +287,7 @@ impl EditorState {
             ("POST", "/api/drag/cancel") => self.drag_cancel(),
             ("POST", "/api/solve") => self.solve(),
             ("POST", "/api/undo") => self.undo(),
+            ("POST", "/api/redo") => self.redo(),
             ("POST", "/api/save") => self.save(),
             (_, p) if ROUTES.contains(&p) => {
                 Err(Failure::new(405, format!("{method} is not allowed on {p}")))
@@ -333,6 +338,7 @@ impl EditorState {
             output: self.output.display().to_string(),
             unsaved: self.version != self.saved_version,
             can_undo: !self.undo.is_empty(),
+            can_redo: !self.redo.is_empty(),
             dragging: self.drag.as_ref().map(|d| DraggedJson {
                 entity: d.entity.0,
                 index: d.index,
@@ -585,14 +591,34 @@ impl EditorState {
 
     fn undo(&mut self) -> Answer {
         self.no_drag("undo")?;
-        let Some((sketch, version)) = self.undo.pop() else {
+        let Some(earlier) = self.undo.pop() else {
             return Err(Failure::new(409, "nothing to undo"));
         };
-        self.sketch = sketch;
-        self.version = version;
+        let now = self.restore(earlier)?;
+        self.redo.push(now);
+        self.state_answer()
+    }
+
+    fn redo(&mut self) -> Answer {
+        self.no_drag("redo")?;
+        let Some(later) = self.redo.pop() else {
+            return Err(Failure::new(409, "nothing to redo"));
+        };
+        let now = self.restore(later)?;
+        self.undo.push(now);
+        self.state_answer()
+    }
+
+    /// Makes `(sketch, version)` the current state (an undo or a redo), returning the state it
+    /// replaces.
+    fn restore(&mut self, (sketch, version): (Sketch, u64)) -> Result<(Sketch, u64)> {
+        let now = (
+            std::mem::replace(&mut self.sketch, sketch),
+            std::mem::replace(&mut self.version, version),
+        );
         self.report = None;
         self.analyse()?;
-        self.state_answer()
+        Ok(now)
     }
 
     fn save(&mut self) -> Answer {
@@ -619,6 +645,7 @@ impl EditorState {
             self.undo.remove(0);
         }
         self.undo.push((before, self.version));
+        self.redo.clear();
         self.version = self.next_version;
         self.next_version += 1;
         self.analyse()
@@ -635,7 +662,7 @@ impl EditorState {
 }
 
 /// Every path the editor answers, for telling 405 from 404.
-const ROUTES: [&str; 12] = [
+const ROUTES: [&str; 13] = [
     "/",
     "/index.html",
     "/editor.js",
@@ -647,6 +674,7 @@ const ROUTES: [&str; 12] = [
     "/api/drag/cancel",
     "/api/solve",
     "/api/undo",
+    "/api/redo",
     "/api/save",
 ];
 
@@ -783,5 +811,46 @@ mod tests {
         assert_eq!(ed.handle("POST", "/api/solve", b"{}").status, 200);
         assert!(unsaved(&ed));
         assert_eq!(ed.version, 2);
+    }
+
+    #[test]
+    fn redo_replays_what_undo_took_back_until_a_new_change() {
+        let text = r#"{"version": 1,
+          "entities": [{"id": 0, "kind": "line", "from": [0, 0], "to": [1, 0.5]}],
+          "constraints": [{"id": 1, "kind": "horizontal", "of": {"line": 0}}]}"#;
+        let sketch = crate::sketch_file::parse(text).unwrap();
+        let mut ed = EditorState::new(sketch, "s.json".into(), None).unwrap();
+        let end_y = |ed: &EditorState| {
+            ed.sketch()
+                .point(camber_sketch::PointRef::End(camber_sketch::EntityId(0)))
+                .unwrap()
+                .y
+        };
+        assert_eq!(ed.handle("POST", "/api/redo", b"{}").status, 409);
+        assert_eq!(ed.handle("POST", "/api/solve", b"{}").status, 200);
+        let solved = end_y(&ed);
+        assert!(
+            (solved - 0.5).abs() > 1e-3,
+            "the solve moved the end: {solved}"
+        );
+        assert_eq!(ed.handle("POST", "/api/undo", b"{}").status, 200);
+        let state = ed.state().unwrap();
+        assert!(state.can_redo && !state.can_undo && !state.unsaved);
+        assert!((end_y(&ed) - 0.5).abs() < 1e-15);
+        assert_eq!(ed.handle("POST", "/api/redo", b"{}").status, 200);
+        let state = ed.state().unwrap();
+        assert!(!state.can_redo && state.can_undo && state.unsaved);
+        assert_eq!(
+            end_y(&ed).to_bits(),
+            solved.to_bits(),
+            "redo restores the solved geometry exactly"
+        );
+        assert_eq!(ed.version, 1, "redo restores the version too");
+        // Undo, then a new change: the undone state cannot be redone any more.
+        assert_eq!(ed.handle("POST", "/api/undo", b"{}").status, 200);
+        assert_eq!(ed.handle("POST", "/api/solve", b"{}").status, 200);
+        assert!(!ed.state().unwrap().can_redo);
+        assert_eq!(ed.handle("POST", "/api/redo", b"{}").status, 409);
+        assert_eq!(ed.handle("GET", "/api/redo", b"").status, 405);
     }
 }

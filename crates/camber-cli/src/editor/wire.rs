@@ -335,6 +335,8 @@ pub struct StateJson {
     pub unsaved: bool,
     /// Whether `POST /api/undo` has something to undo.
     pub can_undo: bool,
+    /// Whether `POST /api/redo` has something to redo (an undo not followed by a change).
+    pub can_redo: bool,
     /// The drag in progress, if any (the scene then shows its current geometry).
     pub dragging: Option<DraggedJson>,
     /// Every entity and glyph.
