@@ -566,3 +566,44 @@ proptest! {
         }
     }
 }
+
+/// Crossings found twice (a cutter listed twice) count once, and many cutters are handled in
+/// one sort: 500 lines through the centre cut the unit circle at 1,000 angles, the removed
+/// piece is the one between the two crossings around the point.
+#[test]
+fn repeated_and_many_crossings_count_once_each() {
+    let mut s = Sketch::new();
+    let c = s.add_circle(Point2::origin(), 1.0).unwrap();
+    let once = s
+        .add_line(Point2::new(0.0, 0.0), Point2::new(3.0, 0.0))
+        .unwrap();
+    assert_eq!(
+        s.trim_closed(c, &[once, once], Point2::new(0.0, 1.0)),
+        Err(Error::TooFewCrossings {
+            entity: c,
+            count: 1
+        })
+    );
+    let n = 500;
+    let lines: Vec<_> = (0..n)
+        .map(|k| {
+            let t = PI * (f64::from(k) + 0.5) / f64::from(n);
+            let d = Vector2::new(t.cos(), t.sin()) * 2.0;
+            s.add_line(Point2::origin() - d, Point2::origin() + d)
+                .unwrap()
+        })
+        .collect();
+    let mut at = lines.clone();
+    at.extend(&lines);
+    let trim = s.trim_closed(c, &at, Point2::new(1.0, 0.0)).unwrap();
+    // The crossings nearest angle 0 lie half a step either side of it.
+    let half = 0.5 * PI / f64::from(n);
+    assert!(
+        (trim.start - at_angle(half.to_degrees())).norm() < 1e-9,
+        "{trim:?}"
+    );
+    assert!(
+        (trim.end - at_angle(-half.to_degrees())).norm() < 1e-9,
+        "{trim:?}"
+    );
+}

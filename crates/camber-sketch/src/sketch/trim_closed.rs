@@ -262,19 +262,29 @@ impl Sketch {
             }
             let so = shape(other, self.entity(other)?)?;
             let hits = intersect_curves(se.curve(), so.curve(), &CurveCurveOptions::default())?;
-            for h in hits {
-                if found.iter().any(|(p, _)| (p - h.point_a).norm() <= merge) {
-                    continue;
-                }
-                found.push((
+            found.extend(hits.into_iter().map(|h| {
+                (
                     h.point_a,
                     Crossing {
                         angle: closed.angle_of(&h.point_a),
                         other,
                         other_parameter: h.parameter_b,
                     },
-                ));
-            }
+                )
+            }));
+        }
+        // Points within `merge` of each other are neighbours in angle: sort by angle and keep
+        // one of each run (O(k log k) in the crossings), then drop a last one that meets the
+        // first across θ = ±π.
+        found.sort_by(|a, b| a.1.angle.total_cmp(&b.1.angle));
+        found.dedup_by(|later, kept| (later.0 - kept.0).norm() <= merge);
+        if found.len() > 1
+            && found
+                .first()
+                .zip(found.last())
+                .is_some_and(|(a, b)| (a.0 - b.0).norm() <= merge)
+        {
+            found.pop();
         }
         Ok(found.into_iter().map(|(_, x)| x).collect())
     }
