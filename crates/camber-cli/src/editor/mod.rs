@@ -30,6 +30,7 @@
 //! # Ok::<(), anyhow::Error>(())
 //! ```
 
+mod authoring;
 pub mod server;
 pub mod wire;
 
@@ -47,8 +48,8 @@ use crate::scene::View;
 use crate::sketch_file::{self, describe_error};
 use wire::{
     AnalysisJson, ComponentJson, ComponentReportJson, ConstraintRef, ConstraintResidualJson,
-    DragMove, DragStart, DraggedJson, ErrorJson, MoveJson, ReportJson, SavedJson, SceneJson,
-    StateJson,
+    DragMove, DragStart, DraggedJson, ErrorJson, MoveJson, ParameterJson, ReportJson, SavedJson,
+    SceneJson, StateJson,
 };
 
 /// The page, its script and its style sheet, built into the binary.
@@ -263,6 +264,11 @@ impl EditorState {
     /// | `POST /api/drag/end`, `/api/drag/cancel` | [`StateJson`] |
     /// | `POST /api/solve`, `/api/undo`, `/api/redo` | [`StateJson`] |
     /// | `POST /api/save` | [`SavedJson`] |
+    /// | `POST /api/save-as` [`wire::SaveAsRequest`] | [`SavedJson`] |
+    /// | `POST /api/create` [`wire::CreateRequest`] | [`StateJson`] |
+    /// | `POST /api/delete` [`wire::DeleteRequest`] | [`StateJson`] |
+    /// | `POST /api/dimension` [`wire::DimensionRequest`] | [`StateJson`]; 422 when the re-solve fails |
+    /// | `POST /api/parameter` [`wire::ParameterRequest`] | [`StateJson`]; 422 when the re-solve fails |
     ///
     /// Errors answer `{"error": "…"}`: 400 for a malformed body, 404 for an unknown path,
     /// entity or point, 405 for a wrong method, 409 for an action that does not fit the state
@@ -289,6 +295,11 @@ impl EditorState {
             ("POST", "/api/undo") => self.undo(),
             ("POST", "/api/redo") => self.redo(),
             ("POST", "/api/save") => self.save(),
+            ("POST", "/api/save-as") => self.save_as(body),
+            ("POST", "/api/create") => self.create(body),
+            ("POST", "/api/delete") => self.delete(body),
+            ("POST", "/api/dimension") => self.dimension(body),
+            ("POST", "/api/parameter") => self.parameter(body),
             (_, p) if ROUTES.contains(&p) => {
                 Err(Failure::new(405, format!("{method} is not allowed on {p}")))
             }
@@ -345,6 +356,29 @@ impl EditorState {
                 linear: d.linear,
             }),
             scene,
+            constraints: self.constraint_list(&components, &residuals),
+            parameters: self
+                .sketch
+                .parameters()
+                .iter()
+                .map(|(name, p)| ParameterJson {
+                    name: name.to_owned(),
+                    value: p.value,
+                    readers: self
+                        .sketch
+                        .parameter_readers(name)
+                        .iter()
+                        .map(|c| c.0)
+                        .collect(),
+                })
+                .collect(),
+            next_id: self
+                .sketch
+                .entities()
+                .map(|(id, _)| id.0)
+                .chain(self.sketch.constraints().map(|(id, _)| id.0))
+                .max()
+                .map_or(0, |m| m + 1),
             components,
             report: self.report.clone(),
         })
@@ -566,21 +600,7 @@ impl EditorState {
             )
         })?;
         self.committed(before)?;
-        let components: Vec<ComponentReportJson> = report
-            .components
-            .iter()
-            .map(|c| {
-                let r = &c.report;
-                ComponentReportJson {
-                    entities: c.component.entities.iter().map(|e| e.0).collect(),
-                    solver: crate::sketch_file::solver_name(r.solver).to_owned(),
-                    reason: r.reason.clone(),
-                    dof: Some(r.dof),
-                    residual: r.residuals.iter().fold(0.0_f64, |m, g| m.max(g.max_abs)),
-                    time_ms: r.elapsed.as_secs_f64() * 1e3,
-                }
-            })
-            .collect();
+        let components = component_reports(&report);
         self.report = Some(ReportJson {
             action: "solve",
             summary: format!("solved {} component(s)", components.len()),
@@ -661,8 +681,27 @@ impl EditorState {
     }
 }
 
+/// One report line per component a solve touched.
+fn component_reports(report: &camber_sketch::SketchReport) -> Vec<ComponentReportJson> {
+    report
+        .components
+        .iter()
+        .map(|c| {
+            let r = &c.report;
+            ComponentReportJson {
+                entities: c.component.entities.iter().map(|e| e.0).collect(),
+                solver: crate::sketch_file::solver_name(r.solver).to_owned(),
+                reason: r.reason.clone(),
+                dof: Some(r.dof),
+                residual: r.residuals.iter().fold(0.0_f64, |m, g| m.max(g.max_abs)),
+                time_ms: r.elapsed.as_secs_f64() * 1e3,
+            }
+        })
+        .collect()
+}
+
 /// Every path the editor answers, for telling 405 from 404.
-const ROUTES: [&str; 13] = [
+const ROUTES: [&str; 18] = [
     "/",
     "/index.html",
     "/editor.js",
@@ -676,6 +715,11 @@ const ROUTES: [&str; 13] = [
     "/api/undo",
     "/api/redo",
     "/api/save",
+    "/api/save-as",
+    "/api/create",
+    "/api/delete",
+    "/api/dimension",
+    "/api/parameter",
 ];
 
 /// Parses a JSON request body; a malformed one is a 400 with serde's reason.
