@@ -421,3 +421,69 @@ fn authoring_routes_want_post_and_no_drag_in_progress() {
     }
     assert_eq!(file(&ed), before);
 }
+
+#[test]
+fn four_fillets_round_a_drawn_rectangle_and_keep_it_whole() {
+    let mut ed = empty();
+    // The rectangle without its fixed corner: a fillet moves the corners.
+    let mut drawn = rectangle();
+    drawn["constraints"]
+        .as_array_mut()
+        .unwrap()
+        .retain(|c| c["kind"] != "fixed");
+    assert_eq!(post(&mut ed, "/api/create", &drawn).0, 200);
+    for (first, second) in [(0, 1), (1, 2), (2, 3), (3, 0)] {
+        let (status, state) = post(
+            &mut ed,
+            "/api/fillet",
+            &json!({"first": first, "second": second, "radius": 0.3}),
+        );
+        assert_eq!(status, 200, "{first}-{second}: {state}");
+    }
+    let state = ed.state().unwrap();
+    let arcs = state
+        .scene
+        .entities
+        .iter()
+        .filter(|e| e.kind == "arc")
+        .count();
+    assert_eq!(arcs, 4);
+    // Every constraint holds; the four radii are dimensions of 0.3.
+    let state = serde_json::to_value(&state).unwrap();
+    let radii: Vec<f64> = state["constraints"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|c| c["kind"] == "radius")
+        .map(|c| c["value"].as_f64().unwrap())
+        .collect();
+    assert_eq!(radii, [0.3; 4]);
+    for c in state["constraints"].as_array().unwrap() {
+        assert!(c["residual"].as_f64().unwrap_or(0.0) < 1e-9, "{c}");
+    }
+    // Placed, and dimensioned side to side: nothing is left free.
+    let n = state["next_id"].as_u64().unwrap();
+    let dims = json!({"constraints": [
+        {"id": n, "kind": "fixed", "target": {"point": {"start": 0}}},
+        {"id": n + 1, "kind": "horizontal_distance", "of": {"a": {"start": 3}, "b": {"start": 1}}, "distance": 4},
+        {"id": n + 2, "kind": "vertical_distance", "of": {"a": {"start": 0}, "b": {"start": 2}}, "distance": 2}
+    ]});
+    let (status, state) = post(&mut ed, "/api/create", &dims);
+    assert_eq!(status, 200, "{state}");
+    let summary = state["report"]["summary"].as_str().unwrap();
+    assert!(summary.ends_with("solved"), "{summary}");
+    assert_eq!(dof(&state), 0, "{}", state["components"]);
+    // The bottom side runs from its fixed start over the width less two radii.
+    let p = ed.sketch().point(PointRef::Start(EntityId(0))).unwrap();
+    let q = ed.sketch().point(PointRef::End(EntityId(0))).unwrap();
+    assert!(((q - p).norm() - 3.4).abs() < 1e-9, "{p} {q}");
+    // Parallel sides have no corner to round: refused, the sketch unchanged.
+    let before = file(&ed);
+    let (status, answer) = post(
+        &mut ed,
+        "/api/fillet",
+        &json!({"first": 0, "second": 2, "radius": 0.3}),
+    );
+    assert_eq!(status, 422, "{answer}");
+    assert_eq!(file(&ed), before);
+}

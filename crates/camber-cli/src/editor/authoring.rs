@@ -13,7 +13,7 @@ use camber_sketch::{ConstraintId, EntityId, Sketch};
 
 use super::wire::{
     ComponentJson, ConstraintJson, CreateRequest, DeleteRequest, DimensionRequest, DimensionValue,
-    ParameterRequest, ReportJson, SaveAsRequest,
+    FilletRequest, ParameterRequest, ReportJson, SaveAsRequest,
 };
 use super::{component_reports, parse, Answer, EditorState, Failure, MAX_EDITOR_ID};
 use crate::sketch_file::describe_error;
@@ -281,6 +281,44 @@ impl EditorState {
             action: "parameter",
             summary: format!("{} = {}; solved", req.name, req.value),
             components: component_reports(&report),
+        });
+        self.state_answer()
+    }
+
+    /// `POST /api/fillet`: rounds a corner with a tangent arc of the given radius, trimming
+    /// the two entities to its ends (the arc, its tangencies and its radius dimension are
+    /// added, the corner's coincidence removed).
+    pub(super) fn fillet(&mut self, body: &[u8]) -> Answer {
+        let req: FilletRequest = parse(body)?;
+        self.no_drag("round a corner")?;
+        for id in [req.first, req.second] {
+            if self.sketch.entity(EntityId(id)).is_err() {
+                return Err(Failure::new(404, format!("entity {id} does not exist")));
+            }
+        }
+        let before = self.sketch.clone();
+        let fillet = self
+            .sketch
+            .fillet(EntityId(req.first), EntityId(req.second), req.radius)
+            .map_err(|e| {
+                Failure::new(
+                    422,
+                    format!(
+                        "cannot round the corner of {} and {}: {}",
+                        req.first,
+                        req.second,
+                        describe_error(&before, &e)
+                    ),
+                )
+            })?;
+        self.committed(before)?;
+        self.report = Some(ReportJson {
+            action: "fillet",
+            summary: format!(
+                "rounded the corner of {} and {} with arc {} (radius {})",
+                req.first, req.second, fillet.arc.0, req.radius
+            ),
+            components: Vec::new(),
         });
         self.state_answer()
     }

@@ -269,6 +269,7 @@ impl EditorState {
     /// | `POST /api/delete` [`wire::DeleteRequest`] | [`StateJson`] |
     /// | `POST /api/dimension` [`wire::DimensionRequest`] | [`StateJson`]; 422 when the re-solve fails |
     /// | `POST /api/parameter` [`wire::ParameterRequest`] | [`StateJson`]; 422 when the re-solve fails |
+    /// | `POST /api/fillet` [`wire::FilletRequest`] | [`StateJson`]; 422 when the corner cannot be rounded |
     ///
     /// Errors answer `{"error": "…"}`: 400 for a malformed body, 404 for an unknown path,
     /// entity or point, 405 for a wrong method, 409 for an action that does not fit the state
@@ -300,6 +301,7 @@ impl EditorState {
             ("POST", "/api/delete") => self.delete(body),
             ("POST", "/api/dimension") => self.dimension(body),
             ("POST", "/api/parameter") => self.parameter(body),
+            ("POST", "/api/fillet") => self.fillet(body),
             (_, p) if ROUTES.contains(&p) => {
                 Err(Failure::new(405, format!("{method} is not allowed on {p}")))
             }
@@ -701,7 +703,7 @@ fn component_reports(report: &camber_sketch::SketchReport) -> Vec<ComponentRepor
 }
 
 /// Every path the editor answers, for telling 405 from 404.
-const ROUTES: [&str; 18] = [
+const ROUTES: [&str; 19] = [
     "/",
     "/index.html",
     "/editor.js",
@@ -720,6 +722,7 @@ const ROUTES: [&str; 18] = [
     "/api/delete",
     "/api/dimension",
     "/api/parameter",
+    "/api/fillet",
 ];
 
 /// Parses a JSON request body; a malformed one is a 400 with serde's reason.

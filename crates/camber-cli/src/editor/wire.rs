@@ -469,6 +469,19 @@ pub struct ParameterRequest {
     pub value: f64,
 }
 
+/// `POST /api/fillet`: rounds the corner between two lines or curves with a tangent arc
+/// ([`camber_sketch::Sketch::fillet`]).
+#[derive(Debug, Clone, Copy, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FilletRequest {
+    /// One line or curve.
+    pub first: u64,
+    /// The other.
+    pub second: u64,
+    /// The arc's radius.
+    pub radius: f64,
+}
+
 /// `POST /api/save-as`: a file name (no folder) in the folder of the current output; it
 /// becomes where "Save" writes.
 #[derive(Debug, Clone, Deserialize)]
