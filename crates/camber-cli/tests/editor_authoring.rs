@@ -487,3 +487,23 @@ fn four_fillets_round_a_drawn_rectangle_and_keep_it_whole() {
     assert_eq!(status, 422, "{answer}");
     assert_eq!(file(&ed), before);
 }
+
+#[test]
+fn exports_are_the_render_and_the_dxf_of_the_sketch() {
+    let mut ed = empty();
+    assert_eq!(post(&mut ed, "/api/create", &rectangle()).0, 200);
+    let svg = ed.handle("GET", "/api/export.svg", b"");
+    assert_eq!((svg.status, svg.content_type), (200, "image/svg+xml"));
+    assert_eq!(
+        svg.body,
+        camber_cli::commands::render::picture(ed.sketch(), false)
+            .unwrap()
+            .into_bytes()
+    );
+    let dxf = ed.handle("GET", "/api/export.dxf", b"");
+    assert_eq!((dxf.status, dxf.content_type), (200, "application/dxf"));
+    let back =
+        camber_interop::dxf::read(&dxf.body, &camber_interop::dxf::ReadOptions::default()).unwrap();
+    assert_eq!(back.sketch.entities().count(), 4);
+    assert_eq!(ed.handle("POST", "/api/export.svg", b"{}").status, 405);
+}

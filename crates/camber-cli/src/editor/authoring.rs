@@ -367,6 +367,32 @@ impl EditorState {
         saved
     }
 
+    /// `GET /api/export.svg` and `GET /api/export.dxf`: the sketch as `camber render` draws
+    /// it, or its geometry as `camber export` writes it (text DXF); during a drag, the sketch
+    /// as committed.
+    pub(super) fn export(&self, format: &str) -> Answer {
+        match format {
+            "svg" => {
+                let svg = crate::commands::render::picture(&self.sketch, false)?;
+                Ok(super::Response {
+                    status: 200,
+                    content_type: "image/svg+xml",
+                    body: svg.into_bytes(),
+                })
+            }
+            _ => {
+                let bytes =
+                    camber_interop::dxf::write(&self.sketch, camber_interop::dxf::Form::Text)
+                        .map_err(|e| Failure::new(422, format!("cannot export as DXF: {e}")))?;
+                Ok(super::Response {
+                    status: 200,
+                    content_type: "application/dxf",
+                    body: bytes,
+                })
+            }
+        }
+    }
+
     /// Solves a sketch just opened when a constraint does not hold, so that the page shows it
     /// solved; undo goes back to the geometry of the file. A sketch that does not solve stays
     /// as it is, and the report says why.

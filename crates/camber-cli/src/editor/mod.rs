@@ -259,6 +259,7 @@ impl EditorState {
     /// | --- | --- |
     /// | `GET /`, `/editor.js`, `/editor.css` | the page |
     /// | `GET /api/state` | [`StateJson`] |
+    /// | `GET /api/export.svg`, `/api/export.dxf` | the sketch as SVG (as `camber render`) or DXF (as `camber export`) |
     /// | `POST /api/drag/start` [`DragStart`] | [`DraggedJson`] |
     /// | `POST /api/drag/move` [`DragMove`] | [`MoveJson`]; 422 when the solver refuses |
     /// | `POST /api/drag/end`, `/api/drag/cancel` | [`StateJson`] |
@@ -288,6 +289,8 @@ impl EditorState {
                 Ok(Response::asset("text/css; charset=utf-8", STYLE))
             }
             ("GET" | "HEAD", "/api/state") => self.state_answer(),
+            ("GET" | "HEAD", "/api/export.svg") => self.export("svg"),
+            ("GET" | "HEAD", "/api/export.dxf") => self.export("dxf"),
             ("POST", "/api/drag/start") => self.drag_start(body),
             ("POST", "/api/drag/move") => self.drag_move(body),
             ("POST", "/api/drag/end") => self.drag_end(),
@@ -703,7 +706,7 @@ fn component_reports(report: &camber_sketch::SketchReport) -> Vec<ComponentRepor
 }
 
 /// Every path the editor answers, for telling 405 from 404.
-const ROUTES: [&str; 19] = [
+const ROUTES: [&str; 21] = [
     "/",
     "/index.html",
     "/editor.js",
@@ -723,6 +726,8 @@ const ROUTES: [&str; 19] = [
     "/api/dimension",
     "/api/parameter",
     "/api/fillet",
+    "/api/export.svg",
+    "/api/export.dxf",
 ];
 
 /// Parses a JSON request body; a malformed one is a 400 with serde's reason.
