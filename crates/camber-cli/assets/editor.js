@@ -207,6 +207,7 @@ function drawGlyphs(constraint, list) {
 function redrawAll() {
   for (const e of entities.values()) drawEntity(e);
   for (const [c, list] of glyphs) drawGlyphs(c, list);
+  if (typeof sketcherRedraw === "function") sketcherRedraw();
 }
 
 /** Puts entities and glyphs from an answer in place; `full` replaces everything. */
@@ -232,6 +233,7 @@ function takeScene(scene, full) {
     drawEntity(e);
   }
   for (const c of touched) drawGlyphs(c, glyphs.get(c));
+  if (typeof sketcherRedraw === "function") sketcherRedraw();
 }
 
 // ---- the side panel ------------------------------------------------------------------------
@@ -347,6 +349,7 @@ function takeState(s, keepView) {
   takeScene(s.scene, true);
   if (!keepView) fit();
   renderPanel();
+  if (typeof sketcherPanel === "function") sketcherPanel();
 }
 
 // ---- dragging ------------------------------------------------------------------------------

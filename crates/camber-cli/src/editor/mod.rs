@@ -55,6 +55,7 @@ use wire::{
 /// The page, its script and its style sheet, built into the binary.
 const PAGE: &str = include_str!("../../assets/editor.html");
 const SCRIPT: &str = include_str!("../../assets/editor.js");
+const SKETCHER: &str = include_str!("../../assets/sketcher.js");
 const STYLE: &str = include_str!("../../assets/editor.css");
 
 /// How many earlier states undo keeps.
@@ -257,7 +258,7 @@ impl EditorState {
     ///
     /// | request | answer |
     /// | --- | --- |
-    /// | `GET /`, `/editor.js`, `/editor.css` | the page |
+    /// | `GET /`, `/editor.js`, `/sketcher.js`, `/editor.css` | the page |
     /// | `GET /api/state` | [`StateJson`] |
     /// | `GET /api/export.svg`, `/api/export.dxf` | the sketch as SVG (as `camber render`) or DXF (as `camber export`) |
     /// | `POST /api/drag/start` [`DragStart`] | [`DraggedJson`] |
@@ -284,6 +285,9 @@ impl EditorState {
             }
             ("GET" | "HEAD", "/editor.js") => {
                 Ok(Response::asset("text/javascript; charset=utf-8", SCRIPT))
+            }
+            ("GET" | "HEAD", "/sketcher.js") => {
+                Ok(Response::asset("text/javascript; charset=utf-8", SKETCHER))
             }
             ("GET" | "HEAD", "/editor.css") => {
                 Ok(Response::asset("text/css; charset=utf-8", STYLE))
@@ -706,10 +710,11 @@ fn component_reports(report: &camber_sketch::SketchReport) -> Vec<ComponentRepor
 }
 
 /// Every path the editor answers, for telling 405 from 404.
-const ROUTES: [&str; 21] = [
+const ROUTES: [&str; 22] = [
     "/",
     "/index.html",
     "/editor.js",
+    "/sketcher.js",
     "/editor.css",
     "/api/state",
     "/api/drag/start",
