@@ -233,7 +233,7 @@ function takeScene(scene, full) {
     drawEntity(e);
   }
   for (const c of touched) drawGlyphs(c, glyphs.get(c));
-  if (typeof sketcherRedraw === "function") sketcherRedraw();
+  if (typeof sketcherRedraw === "function") sketcherRedraw(scene);
 }
 
 // ---- the side panel ------------------------------------------------------------------------

@@ -10,6 +10,8 @@
 
 const overlayLayer = element("g", { id: "layer-overlay" }, canvas);
 const dimensionLayer = element("g", { id: "layer-dimensions" }, canvas);
+const combLayer = element("g", { id: "layer-combs" }, canvas);
+const shapeNote = document.getElementById("shape-warning");
 const hintBox = document.getElementById("hint");
 const dimInput = document.getElementById("dim-input");
 
@@ -44,6 +46,10 @@ let selection = [];
 /** A press in select mode: where, whether Shift was down; a box selection in progress. */
 let press = null;
 let box = null;
+/** Curvature combs: shown or not, the last ones fetched, a fetch on its way or due. */
+const combs = { on: false, list: [], busy: false, again: false };
+/** The cusps and self-crossings of the geometry drawn (the state's, or the last move's). */
+let shapeWarnings = [];
 
 // ---- small helpers ---------------------------------------------------------------------------
 
@@ -681,6 +687,10 @@ function drawOverlay() {
       element("circle", { class: "rubber-point", cx, cy, r: 3.5 }, overlayLayer);
     }
   }
+  for (const w of shapeWarnings) {
+    const [cx, cy] = toScreen(w.at);
+    element("circle", { class: "shape-warning", cx, cy, r: 7 }, overlayLayer);
+  }
   if (box) {
     const [a, b] = [box.from, box.to];
     element("rect", { class: "box", x: Math.min(a[0], b[0]), y: Math.min(a[1], b[1]), width: Math.abs(a[0] - b[0]), height: Math.abs(a[1] - b[1]) }, overlayLayer);
@@ -697,6 +707,50 @@ function inferredHint() {
     lineInferences("#", last, c, drawing.pts.length === 1 ? drawing.pts[0].snap : null).forEach((x) => words.push(x.kind === "arc_tangent_to_line" ? "tangent" : x.kind));
   }
   return words.join(", ");
+}
+
+// ---- curvature combs and shape warnings --------------------------------------------------------
+
+async function fetchCombs() {
+  if (!combs.on) return;
+  if (combs.busy) {
+    combs.again = true;
+    return;
+  }
+  combs.busy = true;
+  const r = await api("GET", "/api/combs");
+  combs.busy = false;
+  if (r.ok) combs.list = r.data.combs;
+  drawCombs();
+  if (combs.again) {
+    combs.again = false;
+    fetchCombs();
+  }
+}
+
+function drawCombs() {
+  combLayer.replaceChildren();
+  if (!combs.on) return;
+  for (const c of combs.list) {
+    const teeth = c.teeth.map(([p, t]) => [toScreen(p), toScreen(t)]);
+    const d = teeth.map(([p, t]) => `M${p[0].toFixed(1)},${p[1].toFixed(1)}L${t[0].toFixed(1)},${t[1].toFixed(1)}`).join("");
+    element("path", { class: "comb", d }, combLayer);
+    element("polyline", { class: "comb envelope", points: teeth.map(([, t]) => `${t[0].toFixed(1)},${t[1].toFixed(1)}`).join(" ") }, combLayer);
+  }
+}
+
+function toggleCombs() {
+  combs.on = !combs.on;
+  document.getElementById("combs").classList.toggle("active", combs.on);
+  if (combs.on) fetchCombs();
+  else drawCombs();
+}
+
+function showShapeWarnings() {
+  shapeNote.hidden = shapeWarnings.length === 0;
+  shapeNote.textContent = shapeWarnings.length
+    ? `⚠ ${shapeWarnings.slice(0, 3).map((w) => w.message).join("; ")}${shapeWarnings.length > 3 ? ` (and ${shapeWarnings.length - 3} more)` : ""}`
+    : "";
 }
 
 // ---- the panel -------------------------------------------------------------------------------
@@ -852,6 +906,7 @@ async function download(format) {
 }
 
 document.getElementById("save-as").addEventListener("click", saveAs);
+document.getElementById("combs").addEventListener("click", toggleCombs);
 document.getElementById("export-svg").addEventListener("click", () => download("svg"));
 document.getElementById("export-dxf").addEventListener("click", () => download("dxf"));
 
@@ -960,6 +1015,11 @@ window.addEventListener("keydown", (ev) => {
     }
     return;
   }
+  if (ev.key === "k") {
+    ev.stopImmediatePropagation();
+    toggleCombs();
+    return;
+  }
   const name = Object.keys(TOOLS).find((t) => TOOLS[t].key === ev.key);
   if (name) {
     ev.stopImmediatePropagation();
@@ -979,16 +1039,29 @@ for (const [name, t] of Object.entries(TOOLS)) {
   document.getElementById("tools").appendChild(b);
 }
 
-/** After every redraw (a zoom, a pan, a drag move, a new state): labels and overlay. */
-function sketcherRedraw() {
+/**
+ * After every redraw (a zoom, a pan, a drag move, a new state): labels, overlay, combs. A drag
+ * move's answer (`scene`, with its `update_us`) carries the shape warnings of what it moved.
+ */
+function sketcherRedraw(scene) {
+  if (scene && scene.update_us !== undefined) {
+    const moved = new Set(scene.entities.map((e) => e.id));
+    shapeWarnings = shapeWarnings.filter((w) => !moved.has(w.entity)).concat(scene.warnings ?? []);
+    showShapeWarnings();
+    fetchCombs();
+  }
   drawDimensions();
   drawOverlay();
+  drawCombs();
 }
 
 /** After every new state: the selection pruned, the panels. */
 function sketcherPanel() {
   if (!state) return;
   pruneSelection();
+  shapeWarnings = state.warnings ?? [];
+  showShapeWarnings();
+  fetchCombs();
   renderSelection();
   renderConstraints();
   renderParameters();

@@ -507,3 +507,46 @@ fn exports_are_the_render_and_the_dxf_of_the_sketch() {
     assert_eq!(back.sketch.entities().count(), 4);
     assert_eq!(ed.handle("POST", "/api/export.svg", b"{}").status, 405);
 }
+
+#[test]
+fn a_looped_curve_is_warned_of_and_a_drag_into_a_cusp_says_so() {
+    let mut ed = empty();
+    let looped = json!({"entities": [
+        {"id": 0, "kind": "bezier", "control_points": [[0, 0], [3, 2], [-1, 2], [2, 0]]},
+        {"id": 1, "kind": "bezier", "control_points": [[5, 0], [7, 2], [6, 2], [7, 0]]}
+    ]});
+    let (status, state) = post(&mut ed, "/api/create", &looped);
+    assert_eq!(status, 200, "{state}");
+    let warnings = state["warnings"].as_array().unwrap();
+    assert_eq!(warnings.len(), 1, "{warnings:?}");
+    assert_eq!(warnings[0]["entity"], 0);
+    assert_eq!(warnings[0]["kind"], "self_crossing");
+    // Curve 1's second control point dragged to where C′(½) vanishes: (0,2) of the cusp cubic
+    // (0,0), (2,2), (0,2), (2,0), moved by 5 along x.
+    assert_eq!(
+        post(
+            &mut ed,
+            "/api/drag/start",
+            &json!({"entity": 1, "index": 2})
+        )
+        .0,
+        200
+    );
+    let (status, moved) = post(&mut ed, "/api/drag/move", &json!({"to": [5, 2]}));
+    assert_eq!(status, 200, "{moved}");
+    let warnings = moved["warnings"].as_array().unwrap();
+    assert_eq!(warnings[0]["entity"], 1);
+    assert_eq!(warnings[0]["kind"], "cusp");
+    assert!((warnings[0]["at"][0].as_f64().unwrap() - 6.0).abs() < 1e-9);
+    // Back to a fair shape: the answer carries no warnings.
+    let (_, moved) = post(&mut ed, "/api/drag/move", &json!({"to": [6, 2]}));
+    assert!(moved.get("warnings").is_none(), "{moved}");
+    assert_eq!(post(&mut ed, "/api/drag/end", &json!({})).0, 200);
+    // Combs: one per curve, 13 teeth per piece.
+    let r = ed.handle("GET", "/api/combs", b"");
+    assert_eq!(r.status, 200);
+    let combs: Value = serde_json::from_slice(&r.body).unwrap();
+    let combs = combs["combs"].as_array().unwrap();
+    assert_eq!(combs.len(), 2);
+    assert_eq!(combs[0]["teeth"].as_array().unwrap().len(), 13);
+}

@@ -393,6 +393,22 @@ impl EditorState {
         }
     }
 
+    /// `GET /api/combs`: the curvature combs of every free-form curve at the geometry drawn
+    /// (during a drag, the drag's).
+    pub(super) fn combs(&self) -> Answer {
+        let no_overrides = BTreeMap::new();
+        let view = crate::scene::View::with_overrides(
+            &self.sketch,
+            self.drag.as_ref().map_or(&no_overrides, |d| &d.current),
+        );
+        let entities: Vec<_> = view.entities().collect();
+        let combs = super::fairness::combs(&entities)?;
+        Ok(super::Response::json(
+            200,
+            &serde_json::json!({ "combs": combs }),
+        ))
+    }
+
     /// Solves a sketch just opened when a constraint does not hold, so that the page shows it
     /// solved; undo goes back to the geometry of the file. A sketch that does not solve stays
     /// as it is, and the report says why.

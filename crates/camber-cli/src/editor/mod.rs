@@ -31,6 +31,7 @@
 //! ```
 
 mod authoring;
+pub mod fairness;
 pub mod server;
 pub mod wire;
 
@@ -260,6 +261,7 @@ impl EditorState {
     /// | --- | --- |
     /// | `GET /`, `/editor.js`, `/sketcher.js`, `/editor.css` | the page |
     /// | `GET /api/state` | [`StateJson`] |
+    /// | `GET /api/combs` | the curvature combs of the curves drawn |
     /// | `GET /api/export.svg`, `/api/export.dxf` | the sketch as SVG (as `camber render`) or DXF (as `camber export`) |
     /// | `POST /api/drag/start` [`DragStart`] | [`DraggedJson`] |
     /// | `POST /api/drag/move` [`DragMove`] | [`MoveJson`]; 422 when the solver refuses |
@@ -293,6 +295,7 @@ impl EditorState {
                 Ok(Response::asset("text/css; charset=utf-8", STYLE))
             }
             ("GET" | "HEAD", "/api/state") => self.state_answer(),
+            ("GET" | "HEAD", "/api/combs") => self.combs(),
             ("GET" | "HEAD", "/api/export.svg") => self.export("svg"),
             ("GET" | "HEAD", "/api/export.dxf") => self.export("dxf"),
             ("POST", "/api/drag/start") => self.drag_start(body),
@@ -339,20 +342,13 @@ impl EditorState {
                 c.worst = worst.map(|(id, _)| ConstraintRef::of(&self.sketch, id));
             }
         }
-        let scene = match &self.drag {
-            Some(d) => SceneJson::of(
-                &View::with_overrides(&self.sketch, &d.current),
-                &self.conflicting,
-                &residuals,
-                |_| true,
-            )?,
-            None => SceneJson::of(
-                &View::new(&self.sketch),
-                &self.conflicting,
-                &residuals,
-                |_| true,
-            )?,
-        };
+        let no_overrides = BTreeMap::new();
+        let view = View::with_overrides(
+            &self.sketch,
+            self.drag.as_ref().map_or(&no_overrides, |d| &d.current),
+        );
+        let scene = SceneJson::of(&view, &self.conflicting, &residuals, |_| true)?;
+        let warnings = fairness::scene_warnings(&view, &scene)?;
         Ok(StateJson {
             file: self.file.display().to_string(),
             output: self.output.display().to_string(),
@@ -365,6 +361,7 @@ impl EditorState {
                 linear: d.linear,
             }),
             scene,
+            warnings,
             constraints: self.constraint_list(&components, &residuals),
             parameters: self
                 .sketch
@@ -526,10 +523,12 @@ impl EditorState {
             |id| changed.contains(&id),
         )?;
         let worst = worst_of(&residuals);
+        let warnings = fairness::scene_warnings(&view, &scene)?;
         Ok(Response::json(
             200,
             &MoveJson {
                 scene,
+                warnings,
                 residual: worst.map_or(0.0, |w| w.1),
                 worst: worst.map(|(id, _)| ConstraintRef::of(&self.sketch, id)),
                 constraint_residuals: residuals
@@ -710,7 +709,7 @@ fn component_reports(report: &camber_sketch::SketchReport) -> Vec<ComponentRepor
 }
 
 /// Every path the editor answers, for telling 405 from 404.
-const ROUTES: [&str; 22] = [
+const ROUTES: [&str; 23] = [
     "/",
     "/index.html",
     "/editor.js",
@@ -733,6 +732,7 @@ const ROUTES: [&str; 22] = [
     "/api/fillet",
     "/api/export.svg",
     "/api/export.dxf",
+    "/api/combs",
 ];
 
 /// Parses a JSON request body; a malformed one is a 400 with serde's reason.

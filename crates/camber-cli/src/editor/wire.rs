@@ -349,6 +349,8 @@ pub struct StateJson {
     pub constraints: Vec<ConstraintJson>,
     /// The sketch's named parameters by name.
     pub parameters: Vec<ParameterJson>,
+    /// Curves with a cusp or crossing themselves, at the geometry drawn.
+    pub warnings: Vec<super::fairness::ShapeWarning>,
     /// An id no entity and no constraint has (one above the largest; entities and
     /// constraints share one space of ids).
     pub next_id: u64,
@@ -369,6 +371,9 @@ pub struct MoveJson {
     pub worst: Option<ConstraintRef>,
     /// Each constraint of the dragged component with its max |g| now, by increasing id.
     pub constraint_residuals: Vec<ConstraintResidualJson>,
+    /// The moved curves that now have a cusp or cross themselves.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub warnings: Vec<super::fairness::ShapeWarning>,
     /// Time of `DragSession::update`, in microseconds.
     pub update_us: f64,
     /// Time in the handler up to this answer: parsing the body, the update, rebuilding and
