@@ -163,7 +163,8 @@ const freedomIndex = { state: undefined, byEntity: new Map() };
  * Screen cells already holding a drawn handle or glyph. A handle whose cell (HANDLE_CELL px)
  * already shows another handle lies under it and is not drawn; a constraint glyph whose cell
  * (GLYPH_CELL px) already shows another constraint's glyph of the same shape is left out until
- * zooming in (conflicting constraints always draw). Nothing is lost for picking: pickHandle works on every
+ * zooming in (conflicting constraints always draw). Small sketches are not thinned (see
+ * THIN_HANDLES_ABOVE, THIN_GLYPHS_ABOVE). Nothing is lost for picking: pickHandle works on every
  * handle, drawn or not. Claims are kept per entity or constraint, so a partial redraw (a drag
  * update) releases and retakes only its own cells.
  */
@@ -198,6 +199,16 @@ class Density {
   }
 }
 const HANDLE_CELL = 3;
+/**
+ * Handles are thinned only in sketches with more than this many: below it every handle is drawn
+ * (coincident ones too, as the joints of a small sketch), which costs nothing.
+ */
+const THIN_HANDLES_ABOVE = 500;
+let thinHandles = false;
+/** Glyphs are thinned only in sketches with more constraints carrying glyphs than this (the
+ * limit `camber render` thins above too). */
+const THIN_GLYPHS_ABOVE = 200;
+let thinGlyphs = false;
 const GLYPH_CELL = 24;
 const handleDensity = new Density(HANDLE_CELL);
 const glyphDensity = new Density(GLYPH_CELL);
@@ -236,7 +247,7 @@ function drawEntity(e) {
   e.points.forEach((p, index) => {
     const [cx, cy] = toScreen(p);
     const active = drag && drag.entity === e.id && drag.index === index;
-    if (!active && !(onCanvas(cx, cy, 8) && handleDensity.take(e.id, index, cx, cy))) return;
+    if (!active && !(onCanvas(cx, cy, 8) && (!thinHandles || handleDensity.take(e.id, index, cx, cy)))) return;
     const fixed = freedom !== null && !freedom.points.has(index);
     const cls = `handle${e.kind === "point" ? " point" : ""}${active ? " active" : ""}${fixed ? " determined" : ""}`;
     const el = element("circle", { class: cls, cx, cy, r: e.kind === "point" ? 5 : 4.5 }, layers.points);
@@ -283,7 +294,7 @@ function drawGlyphs(constraint, list) {
   // out (see Density); conflicting ones always draw.
   const shown = list.filter((glyph) => {
     const [x, y] = toScreen(glyph.at);
-    return onCanvas(x, y, 30) && glyphDensity.take(constraint, constraint, x, y, glyph.conflicting, glyph.shape);
+    return onCanvas(x, y, 30) && (!thinGlyphs || glyphDensity.take(constraint, constraint, x, y, glyph.conflicting, glyph.shape));
   });
   if (shown.length === 0) return;
   const g = element("g", { "data-constraint": constraint }, layers.glyphs);
@@ -332,10 +343,12 @@ function redrawAll() {
   const t0 = performance.now();
   handleDensity.clear();
   glyphDensity.clear();
-  for (const e of entities.values()) drawEntity(e);
-  for (const [c, list] of glyphs) drawGlyphs(c, list);
   let handles = 0;
   for (const e of entities.values()) handles += e.points.length;
+  thinHandles = handles > THIN_HANDLES_ABOVE;
+  thinGlyphs = glyphs.size > THIN_GLYPHS_ABOVE;
+  for (const e of entities.values()) drawEntity(e);
+  for (const [c, list] of glyphs) drawGlyphs(c, list);
   Object.assign(drawStats, {
     ms: performance.now() - t0,
     handles,
