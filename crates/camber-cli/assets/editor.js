@@ -266,15 +266,14 @@ function handleText(id, index) {
   return `entity ${id} (${e.kind}), point ${index}: (${p[0].toPrecision(6)}, ${p[1].toPrecision(6)})`;
 }
 
-// Titles on demand: a handle or a constraint's glyphs get their tooltip when the pointer first
-// comes over them, not one <title> per element at every redraw.
+// Titles on demand: a constraint's glyphs get their tooltip when the pointer first comes over
+// them, not one <title> per group at every redraw. Handles have none: the status line names
+// the handle a press would grab (showPick), which where handles overlap is not always the one
+// drawn on top.
 canvas.addEventListener("pointerover", (ev) => {
-  const el = ev.target.closest?.("[data-entity], g[data-constraint]");
+  const el = ev.target.closest?.("g[data-constraint]");
   if (!el || el.querySelector(":scope > title")) return;
-  const title = element("title", {}, el);
-  title.textContent = el.dataset.entity !== undefined
-    ? handleText(Number(el.dataset.entity), Number(el.dataset.index))
-    : `constraint ${el.dataset.constraint}`;
+  element("title", {}, el).textContent = `constraint ${el.dataset.constraint}`;
 });
 
 /** A constraint's residual as a label shows it: |g| in two digits, "?" when unknown. */
@@ -723,6 +722,9 @@ function showPick() {
   statusLine.className = "";
 }
 
+/** Whether a key goes to a text field (where C is a letter, not the cycle key). */
+const typing = (ev) => ev.target instanceof HTMLInputElement || ev.target instanceof HTMLTextAreaElement || ev.target.isContentEditable;
+
 /** The cycle key: the next of the handles under the pointer becomes the one a press grabs. */
 function cyclePick(step) {
   if (!pointerAt || drag) return;
@@ -815,7 +817,9 @@ window.addEventListener("keydown", (ev) => {
   else if ((ev.ctrlKey || ev.metaKey) && ev.key === "s") { ev.preventDefault(); save(); }
   else if (!ev.ctrlKey && !ev.metaKey && ev.key === "f") fit();
   else if (!ev.ctrlKey && !ev.metaKey && ev.key === "s") action("/api/solve");
-  else if (!ev.ctrlKey && !ev.metaKey && !ev.altKey && (ev.key === "c" || ev.key === "C")) cyclePick(ev.shiftKey ? -1 : 1);
+  else if (!ev.ctrlKey && !ev.metaKey && !ev.altKey && (ev.key === "c" || ev.key === "C") && !typing(ev)) {
+    cyclePick(ev.shiftKey ? -1 : 1);
+  }
 });
 
 window.addEventListener("resize", requestRedraw);
