@@ -31,7 +31,7 @@ const TOOLS = {
   point: { key: "p", label: "Point", help: "point: click" },
   line: { key: "l", label: "Line", help: "line: click the start, click the end" },
   polyline: { key: "y", label: "Polyline", help: "polyline: click each corner; click the first point to close, Enter or double-click to end" },
-  circle: { key: "c", label: "Circle", help: "circle: click the centre, click a point of the rim" },
+  circle: { key: "o", label: "Circle", help: "circle: click the centre, click a point of the rim" },
   arc: { key: "a", label: "Arc", help: "arc: click the centre, the start, the end (counter-clockwise)" },
   ellipse: { key: "e", label: "Ellipse", help: "ellipse: click the centre, the end of one axis, a point giving the other" },
   bezier: { key: "b", label: "Bézier", help: "Bézier: click each control point; Enter or double-click to end" },
@@ -72,17 +72,15 @@ function pointRef(entity, index) {
   return e && e.kind === "point" ? { point: entity } : { control: [entity, index] };
 }
 
-/** The nearest handle to canvas position `xy` within the pick radius, or null. */
-function nearestHandle(xy, skip) {
-  let best = null;
-  for (const e of entities.values()) {
-    e.points.forEach((p, index) => {
-      if (skip && skip(e.id, index)) return;
-      const d = dist(toScreen(p), xy);
-      if (d <= PICK_PX && (!best || d < best.d)) best = { d, entity: e.id, index, at: p };
-    });
-  }
-  return best;
+/**
+ * The handle at canvas position `xy`: the one editor.js's picking would grab (the nearest
+ * within its pick radius, or the one chosen with the cycle key), as {entity, index, at}, or null.
+ */
+function nearestHandle(xy) {
+  const r = canvas.getBoundingClientRect();
+  const h = pickHandle(r.left + xy[0], r.top + xy[1]);
+  const e = h && entities.get(h.entity);
+  return e ? { entity: h.entity, index: h.index, at: e.points[h.index] } : null;
 }
 
 /** Distance in pixels from canvas position `xy` to the segment a–b (screen points). */
