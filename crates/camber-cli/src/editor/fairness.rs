@@ -21,8 +21,9 @@ use crate::draw::{sample_parameters, Comb, SAMPLES_PER_PIECE, TEETH_PER_PIECE};
 pub const CUSP_RATIO: f64 = 1e-3;
 
 /// The longest polyline checked for crossings, in samples (a larger curve is left unchecked:
-/// the test is for the curves a designer drags, and bounded per request).
-pub const MAX_CHECKED_SAMPLES: usize = 1 << 16;
+/// the test is for the curves a designer drags, and bounded per request: segments much longer
+/// than the mean are tested against all others, at most n²/8 tests, 3·10⁷ here).
+pub const MAX_CHECKED_SAMPLES: usize = 1 << 14;
 
 /// One warning about a curve's shape.
 #[derive(Debug, Clone, PartialEq, Serialize)]
