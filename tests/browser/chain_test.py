@@ -150,7 +150,11 @@ def drag_from(page, editor, x, y, dx, dy):
         if s["dragging"] is None and s["report"] and s["report"]["action"] == "drag":
             return s
         page.wait_for_timeout(50)
-    raise Failure("the drag did not end within 30 s")
+    s = editor.state()
+    raise Failure(
+        f"the drag did not end within 30 s: status {status(page)!r}, dragging {s['dragging']}, "
+        f"report {(s['report'] or {}).get('summary')!r}"
+    )
 
 
 def main():

@@ -919,7 +919,8 @@ canvas.addEventListener("pointerdown", (ev) => {
     drawClick(ev);
     return;
   }
-  const label = dimensionAt(xy);
+  // A handle under the pointer is dragged (editor.js), even where a label lies over it.
+  const label = nearestHandle(xy) ? null : dimensionAt(xy);
   if (label !== null) {
     ev.stopImmediatePropagation();
     ev.preventDefault();
