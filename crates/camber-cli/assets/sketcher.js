@@ -205,13 +205,14 @@ function lineInferences(line, a, b, startSnap) {
 
 // ---- drawing tools ---------------------------------------------------------------------------
 
-function setTool(name) {
+/** Chooses a tool; `quiet` leaves the status line alone (at start, editor.js's own line stays). */
+function setTool(name, quiet) {
   tool = name;
   drawing = name === "select" ? null : { pts: [], cursor: null };
   for (const b of document.querySelectorAll("#tools button")) b.classList.toggle("active", b.dataset.tool === name);
   canvas.classList.toggle("drawing", name !== "select");
   hintBox.hidden = true;
-  setStatus(TOOLS[name].help);
+  if (!quiet) setStatus(TOOLS[name].help);
   drawOverlay();
 }
 
@@ -1067,5 +1068,5 @@ function sketcherPanel() {
   sketcherRedraw();
 }
 
-setTool("select");
+setTool("select", true);
 if (state) sketcherPanel();
