@@ -59,9 +59,11 @@ def check(condition, message):
 class Editor:
     """A running `camber edit` process and its URL."""
 
-    def __init__(self, binary, sketch):
+    def __init__(self, binary, sketch, *options, solve=False):
+        # --no-solve unless asked: these steps start from the files' own geometry (the blade's
+        # trailing-edge join is open as shipped, and the first drag must close it).
         self.process = subprocess.Popen(
-            [str(binary), "edit", str(sketch), "--port", "0"],
+            [str(binary), "edit", str(sketch), "--port", "0", *options, *([] if solve else ["--no-solve"])],
             stdout=subprocess.PIPE,
             stderr=subprocess.PIPE,
             text=True,

@@ -54,9 +54,19 @@ async function api(method, path, body) {
 
 // ---- coordinates ---------------------------------------------------------------------------
 
+/**
+ * The canvas size, measured once per task and kept until the next microtask checkpoint: asking
+ * the browser at every point of a redraw forced a layout after each element added (5 s of a
+ * 1,000-segment chain's first draw went there).
+ */
+let sizeNow = null;
 function size() {
-  const r = canvas.getBoundingClientRect();
-  return { w: r.width || 1, h: r.height || 1 };
+  if (!sizeNow) {
+    const r = canvas.getBoundingClientRect();
+    sizeNow = { w: r.width || 1, h: r.height || 1 };
+    queueMicrotask(() => { sizeNow = null; });
+  }
+  return sizeNow;
 }
 
 function toScreen(p) {
@@ -70,7 +80,9 @@ function toModel(clientX, clientY) {
   return [view.x + (clientX - r.left - w / 2) / view.k, view.y - (clientY - r.top - h / 2) / view.k];
 }
 
-function fit() {
+/** Sets the view to show everything (fit() also redraws). */
+function fitView() {
+  pickGrid = null;
   let lo = [Infinity, Infinity];
   let hi = [-Infinity, -Infinity];
   const grow = (p, r = 0) => {
@@ -92,6 +104,10 @@ function fit() {
   view.x = (lo[0] + hi[0]) / 2;
   view.y = (lo[1] + hi[1]) / 2;
   view.k = 0.9 * Math.min(w / Math.max(hi[0] - lo[0], span * 1e-3), h / Math.max(hi[1] - lo[1], span * 1e-3));
+}
+
+function fit() {
+  fitView();
   redrawAll();
 }
 
@@ -104,7 +120,17 @@ function element(tag, attrs, parent) {
   return el;
 }
 
-const pointsAttr = (list) => list.map((p) => toScreen(p).map((v) => v.toFixed(2)).join(",")).join(" ");
+/** A polyline's points attribute in screen pixels (one string built in a loop: this runs for
+ * every sample of every curve at each redraw). */
+function pointsAttr(list) {
+  const { w, h } = size();
+  const [cx, cy, k] = [w / 2 - view.x * view.k, h / 2 + view.y * view.k, view.k];
+  let out = "";
+  for (const p of list) {
+    out += `${out ? " " : ""}${(cx + p[0] * k).toFixed(2)},${(cy - p[1] * k).toFixed(2)}`;
+  }
+  return out;
+}
 
 /** The elements of each entity in each layer, by entity id, so an update replaces only them. */
 const drawn = new Map();
@@ -114,10 +140,82 @@ const drawn = new Map();
  * free points and whether its radius is free; `null` when the component was not analysed.
  */
 function freedomOf(id) {
-  const c = state?.components?.find((comp) => comp.entities.includes(id));
-  if (!c || !c.analysis) return null;
-  const f = c.analysis.free.find((x) => x.entity === id);
+  if (freedomIndex.state !== state) {
+    // Built once per state: looking each entity up in the component lists made a redraw
+    // quadratic in the entities of a component.
+    const byEntity = new Map();
+    for (const comp of state?.components ?? []) {
+      const free = new Map((comp.analysis?.free ?? []).map((f) => [f.entity, f]));
+      for (const e of comp.entities) byEntity.set(e, comp.analysis ? free.get(e) ?? false : null);
+    }
+    freedomIndex.state = state;
+    freedomIndex.byEntity = byEntity;
+  }
+  const f = freedomIndex.byEntity.get(id);
+  if (f === undefined || f === null) return null;
   return { points: new Set(f ? f.points : []), radius: !!(f && f.scalars.length) };
+}
+const freedomIndex = { state: undefined, byEntity: new Map() };
+
+// ---- density: what a redraw leaves out where the drawing is denser than the screen shows ----
+
+/**
+ * Screen cells already holding a drawn handle or glyph. A handle whose cell (HANDLE_CELL px)
+ * already shows another handle lies under it and is not drawn; a constraint glyph whose cell
+ * (GLYPH_CELL px) already shows another constraint's glyph of the same shape is left out until
+ * zooming in (conflicting constraints always draw). Small sketches are not thinned (see
+ * THIN_HANDLES_ABOVE, THIN_GLYPHS_ABOVE). Nothing is lost for picking: pickHandle works on every
+ * handle, drawn or not. Claims are kept per entity or constraint, so a partial redraw (a drag
+ * update) releases and retakes only its own cells.
+ */
+class Density {
+  constructor(cell) {
+    this.cell = cell;
+    this.owner = new Map();
+    this.claims = new Map();
+  }
+  clear() {
+    this.owner.clear();
+    this.claims.clear();
+  }
+  release(group) {
+    for (const k of this.claims.get(group) ?? []) {
+      if (this.owner.get(k)?.group === group) this.owner.delete(k);
+    }
+    this.claims.delete(group);
+  }
+  /**
+   * Claims the cell of (x, y) among things of one `kind` (a glyph shape: a ring and an arrow on
+   * one spot both show) for `token` of `group`; false when another token holds it.
+   */
+  take(group, token, x, y, force, kind = "") {
+    const k = `${kind}${Math.floor(x / this.cell)},${Math.floor(y / this.cell)}`;
+    const o = this.owner.get(k);
+    if (o && !(o.group === group && o.token === token) && !force) return false;
+    this.owner.set(k, { group, token });
+    if (!this.claims.has(group)) this.claims.set(group, []);
+    this.claims.get(group).push(k);
+    return true;
+  }
+}
+const HANDLE_CELL = 3;
+/**
+ * Handles are thinned only in sketches with more than this many: below it every handle is drawn
+ * (coincident ones too, as the joints of a small sketch), which costs nothing.
+ */
+const THIN_HANDLES_ABOVE = 500;
+let thinHandles = false;
+/** Glyphs are thinned only in sketches with more constraints carrying glyphs than this (the
+ * limit `camber render` thins above too). */
+const THIN_GLYPHS_ABOVE = 200;
+let thinGlyphs = false;
+const GLYPH_CELL = 24;
+const handleDensity = new Density(HANDLE_CELL);
+const glyphDensity = new Density(GLYPH_CELL);
+/** Whether (x, y) lies on the canvas or within `margin` px of it. */
+function onCanvas(x, y, margin) {
+  const { w, h } = size();
+  return x >= -margin && y >= -margin && x <= w + margin && y <= h + margin;
 }
 
 function drawEntity(e) {
@@ -142,20 +240,41 @@ function drawEntity(e) {
     const [cx, cy] = toScreen(e.points[0]);
     els.push(element("circle", { class: curveClass, cx, cy, r: e.radius * view.k }, layers.curves));
   }
+  // Handles off the canvas or under another drawn handle are not drawn (see Density); the
+  // one dragged always is. Their titles are made on demand (pointerover).
+  handleDensity.release(e.id);
+  pickGrid = null;
   e.points.forEach((p, index) => {
     const [cx, cy] = toScreen(p);
     const active = drag && drag.entity === e.id && drag.index === index;
+    if (!active && !(onCanvas(cx, cy, 8) && (!thinHandles || handleDensity.take(e.id, index, cx, cy)))) return;
     const fixed = freedom !== null && !freedom.points.has(index);
     const cls = `handle${e.kind === "point" ? " point" : ""}${active ? " active" : ""}${fixed ? " determined" : ""}`;
     const el = element("circle", { class: cls, cx, cy, r: e.kind === "point" ? 5 : 4.5 }, layers.points);
     el.dataset.entity = e.id;
     el.dataset.index = index;
-    const title = element("title", {}, el);
-    title.textContent = `entity ${e.id} (${e.kind}), point ${index}: (${p[0].toPrecision(6)}, ${p[1].toPrecision(6)})`;
     els.push(el);
   });
   drawn.set(e.id, els);
 }
+
+/** The words for point `index` of entity `id`: kind, index, position. */
+function handleText(id, index) {
+  const e = entities.get(id);
+  const p = e?.points[index];
+  if (!p) return `entity ${id} point ${index}`;
+  return `entity ${id} (${e.kind}), point ${index}: (${p[0].toPrecision(6)}, ${p[1].toPrecision(6)})`;
+}
+
+// Titles on demand: a constraint's glyphs get their tooltip when the pointer first comes over
+// them, not one <title> per group at every redraw. Handles have none: the status line names
+// the handle a press would grab (showPick), which where handles overlap is not always the one
+// drawn on top.
+canvas.addEventListener("pointerover", (ev) => {
+  const el = ev.target.closest?.("g[data-constraint]");
+  if (!el || el.querySelector(":scope > title")) return;
+  element("title", {}, el).textContent = `constraint ${el.dataset.constraint}`;
+});
 
 /** A constraint's residual as a label shows it: |g| in two digits, "?" when unknown. */
 function residualText(r) {
@@ -168,8 +287,17 @@ const drawnGlyphs = new Map();
 
 function drawGlyphs(constraint, list) {
   drawnGlyphs.get(constraint)?.remove();
-  const g = element("g", {}, layers.glyphs);
-  for (const glyph of list) {
+  drawnGlyphs.delete(constraint);
+  glyphDensity.release(constraint);
+  // A glyph off the canvas, or in a cell another constraint's glyph already shows, is left
+  // out (see Density); conflicting ones always draw.
+  const shown = list.filter((glyph) => {
+    const [x, y] = toScreen(glyph.at);
+    return onCanvas(x, y, 30) && (!thinGlyphs || glyphDensity.take(constraint, constraint, x, y, glyph.conflicting, glyph.shape));
+  });
+  if (shown.length === 0) return;
+  const g = element("g", { "data-constraint": constraint }, layers.glyphs);
+  for (const glyph of shown) {
     const red = glyph.conflicting ? " conflict" : "";
     const [x, y] = toScreen(glyph.at);
     if (glyph.shape === "arrow") {
@@ -199,18 +327,61 @@ function drawGlyphs(constraint, list) {
       text.textContent = `${glyph.label}: ${residualText(glyph.residual)}`;
     }
   }
-  const title = element("title", {}, g);
-  title.textContent = `constraint ${constraint}`;
   drawnGlyphs.set(constraint, g);
 }
 
+/** What the last redraw drew and how long it took (the chain test reads it). */
+const drawStats = { ms: 0, handles: 0, handlesDrawn: 0, constraints: 0, constraintsDrawn: 0 };
+/** The line saying what a dense drawing leaves out (made here, so the page needs no slot). */
+const densityLine = document.createElement("div");
+densityLine.id = "density";
+densityLine.hidden = true;
+canvas.parentElement.appendChild(densityLine);
+
 function redrawAll() {
+  const t0 = performance.now();
+  handleDensity.clear();
+  glyphDensity.clear();
+  let handles = 0;
+  for (const e of entities.values()) handles += e.points.length;
+  thinHandles = handles > THIN_HANDLES_ABOVE;
+  thinGlyphs = glyphs.size > THIN_GLYPHS_ABOVE;
   for (const e of entities.values()) drawEntity(e);
   for (const [c, list] of glyphs) drawGlyphs(c, list);
+  Object.assign(drawStats, {
+    ms: performance.now() - t0,
+    handles,
+    handlesDrawn: layers.points.childElementCount,
+    constraints: glyphs.size,
+    constraintsDrawn: layers.glyphs.childElementCount,
+  });
+  const thinned = drawStats.handlesDrawn < handles || drawStats.constraintsDrawn < glyphs.size;
+  densityLine.hidden = !thinned;
+  densityLine.textContent = thinned
+    ? `drawn: ${drawStats.handlesDrawn} of ${handles} handles, glyphs of ${drawStats.constraintsDrawn} of ` +
+      `${glyphs.size} constraints (the rest lie off the canvas or under others: zoom in); every handle can be picked`
+    : "";
+  showPick();
+  if (typeof sketcherRedraw === "function") sketcherRedraw();
 }
 
-/** Puts entities and glyphs from an answer in place; `full` replaces everything. */
-function takeScene(scene, full) {
+/** Redraws at the next frame, once however many times it is asked (pan, zoom, resize). */
+let redrawPending = false;
+function requestRedraw() {
+  pickGrid = null;
+  if (redrawPending) return;
+  redrawPending = true;
+  requestAnimationFrame(() => {
+    redrawPending = false;
+    redrawAll();
+  });
+}
+
+/**
+ * Puts entities and glyphs from an answer in place; `full` replaces everything. With `draw`
+ * false (a full scene that a fit redraws next) nothing is drawn yet.
+ */
+function takeScene(scene, full, draw = true) {
   if (full) {
     for (const els of drawn.values()) els.forEach((el) => el.remove());
     for (const g of drawnGlyphs.values()) g.remove();
@@ -229,9 +400,15 @@ function takeScene(scene, full) {
   }
   for (const e of scene.entities) {
     entities.set(e.id, e);
-    drawEntity(e);
+    if (draw && !full) drawEntity(e);
   }
-  for (const c of touched) drawGlyphs(c, glyphs.get(c));
+  pickGrid = null;
+  if (!draw) return;
+  if (full) redrawAll();
+  else {
+    for (const c of touched) drawGlyphs(c, glyphs.get(c));
+    if (typeof sketcherRedraw === "function") sketcherRedraw(scene);
+  }
 }
 
 // ---- the side panel ------------------------------------------------------------------------
@@ -245,13 +422,38 @@ function showMessage(text, kind) {
 function setStatus(text, error) {
   statusLine.textContent = text;
   statusLine.className = error ? "error" : "";
+  // The pointer's handle is named again at its next move, over this line, which comes back
+  // when the pointer leaves the handles.
+  if (hovered) hovered = { status: text, error };
 }
 
 const ids = (list) => (list.length > 6 ? `${list.slice(0, 3).join(", ")}, …, ${list[list.length - 1]}` : list.join(", "));
-const named = (refs) => refs.map((c) => `${c.id} (${c.kind})`).join(", ");
+/**
+ * Runs of consecutive ids that share a text, as "first–last: text" (or "id: text" alone); a
+ * component of 1,000 chain segments lists its free points in three runs instead of 1,000
+ * entries. `items` are [id, text] in id order.
+ */
+function runs(items, format) {
+  const out = [];
+  for (const [id, text] of items) {
+    const last = out[out.length - 1];
+    if (last && last.text === text && id === last.to + 1) last.to = id;
+    else out.push({ from: id, to: id, text });
+  }
+  return out.map((r) => format(r.from === r.to ? `${r.from}` : `${r.from}–${r.to}`, r.text));
+}
+/** At most PANEL_ITEMS entries of a panel line; the whole list goes in its tooltip. */
+const PANEL_ITEMS = 12;
+function capped(parts, sep) {
+  const all = parts.join(sep);
+  if (parts.length <= PANEL_ITEMS) return [all, null];
+  return [`${parts.slice(0, PANEL_ITEMS).join(sep)}${sep}… (${parts.length - PANEL_ITEMS} more: hover for all)`, all];
+}
+const namedParts = (refs) => runs(refs.map((c) => [c.id, c.kind]), (r, kind) => `${r} (${kind})`);
+const named = (refs) => capped(namedParts(refs), ", ")[0];
 const sci = (v) => (v === 0 ? "0" : v.toExponential(2));
 
-/** A block of lines: a bold title, then (label, text, bad) rows. */
+/** A block of lines: a bold title, then (label, text, bad, tooltip) rows. */
 function block(title, rows) {
   const div = document.createElement("div");
   div.className = "block";
@@ -259,7 +461,7 @@ function block(title, rows) {
   h.className = "title";
   h.textContent = title;
   div.appendChild(h);
-  for (const [label, text, bad] of rows) {
+  for (const [label, text, bad, tooltip] of rows) {
     const p = document.createElement("p");
     const l = document.createElement("span");
     l.className = "label";
@@ -267,6 +469,7 @@ function block(title, rows) {
     const t = document.createElement("span");
     t.textContent = text;
     if (bad) t.className = "bad";
+    if (tooltip) t.title = tooltip;
     p.append(l, t);
     div.appendChild(p);
   }
@@ -314,39 +517,50 @@ function renderPanel() {
     const residual = now === null
       ? "updated at the first move"
       : `${sci(now.residual)}${now.worst && unsolved ? ` at ${now.worst.id} (${now.worst.kind})` : ""}${dragged ? " (now)" : ""}`;
-    comps.appendChild(block(`${k + 1}. entities ${ids(c.entities)}${c.nonlinear ? " (nonlinear)" : ""}`, [
+    // Long lists are summarised: runs of ids, at most PANEL_ITEMS of them, the rest in the
+    // line's tooltip (the page stays readable on a 1,000-segment chain).
+    const list = (refs) => capped(namedParts(refs), ", ");
+    const [free, freeAll] = a ? freeText(a.free, a.free_parameters) : ["–", null];
+    const [redundant, redundantAll] = a ? list(a.redundant) : ["–", null];
+    const [partly, partlyAll] = a ? list(a.partly_redundant) : ["", null];
+    const [conflicting, conflictingAll] = a ? list(a.conflicting) : ["–", null];
+    const count = c.entities.length > 6 ? ` (${c.entities.length} entities, ${c.constraints.length} constraints)` : "";
+    comps.appendChild(block(`${k + 1}. entities ${ids(c.entities)}${count}${c.nonlinear ? " (nonlinear)" : ""}`, [
       ["DOF", a ? `${a.dof} (${a.free_unknowns} free unknowns, rank ${a.rank})` : "not analysed"],
-      ["free", a ? freeText(a.free, a.free_parameters) : "–"],
+      ["free", free, false, freeAll],
       ["residual", residual, unsolved],
-      ["redundant", a ? named(a.redundant) || "none" : "–"],
-      ...(a && a.partly_redundant.length ? [["partly redundant", named(a.partly_redundant)]] : []),
-      ["conflicting", a ? named(a.conflicting) || "none" : "–", a && a.conflicting.length > 0],
+      ["redundant", redundant || "none", false, redundantAll],
+      ...(partly ? [["partly redundant", partly, false, partlyAll]] : []),
+      ["conflicting", conflicting || "none", a && a.conflicting.length > 0, conflictingAll],
     ]));
   });
 }
 
-// What can still move: "3: points 1, 2; 5: radius; constraint 8: parameter 0", or "nothing
-// (fully constrained)".
+// What can still move: "3: points 1, 2; 5: radius; constraint 8: parameter 0" (runs of
+// entities that can move the same points as "1–998: points 0, 1, 2, 3"), or "nothing (fully
+// constrained)"; with the whole text when it had to be cut (see capped).
 function freeText(free, parameters) {
   if ((!free || free.length === 0) && (!parameters || parameters.length === 0)) {
-    return "nothing (fully constrained)";
+    return ["nothing (fully constrained)", null];
   }
-  return free
-    .map((f) => {
-      const parts = [];
-      if (f.points.length) parts.push(`point${f.points.length > 1 ? "s" : ""} ${f.points.join(", ")}`);
-      if (f.scalars.length) parts.push("radius");
-      return `${f.entity}: ${parts.join(", ")}`;
-    })
-    .concat((parameters ?? []).map((p) => `constraint ${p.constraint}: parameter ${p.parameter}`))
-    .join("; ");
+  const entityParts = runs(free.map((f) => {
+    const parts = [];
+    if (f.points.length) parts.push(`point${f.points.length > 1 ? "s" : ""} ${f.points.join(", ")}`);
+    if (f.scalars.length) parts.push("radius");
+    return [f.entity, parts.join(", ")];
+  }), (r, text) => `${r}: ${text}`);
+  const parameterParts = (parameters ?? []).map((p) => `constraint ${p.constraint}: parameter ${p.parameter}`);
+  return capped(entityParts.concat(parameterParts), "; ");
 }
 
 function takeState(s, keepView) {
   state = s;
-  takeScene(s.scene, true);
-  if (!keepView) fit();
+  // A new sketch is drawn once: at the fitted view when it is to be fitted.
+  takeScene(s.scene, true, false);
+  if (!keepView) fitView();
+  redrawAll();
   renderPanel();
+  if (typeof sketcherPanel === "function") sketcherPanel();
 }
 
 // ---- dragging ------------------------------------------------------------------------------
@@ -420,14 +634,130 @@ function finishDrag(how) {
   pump();
 }
 
+// ---- picking -------------------------------------------------------------------------------
+
+/** How far from the pointer a handle may lie to be picked, in screen pixels. */
+const PICK_RADIUS = 8;
+/**
+ * Every handle's screen position in buckets of PICK_RADIUS px ("i,j" → [{entity, index, x,
+ * y}]), built on the first pick after a redraw (drawEntity drops it), so a pick looks at 9
+ * buckets instead of every handle.
+ */
+let pickGrid = null;
+/** The handle chosen with the cycle key (C) among several under the pointer, or null. */
+let picked = null;
+/** The last pointer position over the canvas (client coordinates), for the cycle key. */
+let pointerAt = null;
+
+function pickIndex() {
+  if (pickGrid) return pickGrid;
+  pickGrid = new Map();
+  for (const e of entities.values()) {
+    e.points.forEach((p, index) => {
+      const [x, y] = toScreen(p);
+      if (!Number.isFinite(x) || !Number.isFinite(y)) return;
+      const k = `${Math.floor(x / PICK_RADIUS)},${Math.floor(y / PICK_RADIUS)}`;
+      if (!pickGrid.has(k)) pickGrid.set(k, []);
+      pickGrid.get(k).push({ entity: e.id, index, x, y });
+    });
+  }
+  return pickGrid;
+}
+
+/**
+ * The handles within PICK_RADIUS px of the pointer at (clientX, clientY), nearest first (on a
+ * tie, by entity id, then point index): [{entity, index, distance}].
+ */
+function handlesNear(clientX, clientY) {
+  const r = canvas.getBoundingClientRect();
+  const [x, y] = [clientX - r.left, clientY - r.top];
+  const [i, j] = [Math.floor(x / PICK_RADIUS), Math.floor(y / PICK_RADIUS)];
+  const grid = pickIndex();
+  const out = [];
+  for (let di = -1; di <= 1; di++) {
+    for (let dj = -1; dj <= 1; dj++) {
+      for (const h of grid.get(`${i + di},${j + dj}`) ?? []) {
+        const distance = Math.hypot(h.x - x, h.y - y);
+        if (distance <= PICK_RADIUS) out.push({ entity: h.entity, index: h.index, distance });
+      }
+    }
+  }
+  return out.sort((a, b) => a.distance - b.distance || a.entity - b.entity || a.index - b.index);
+}
+
+/**
+ * The handle a press at (clientX, clientY) grabs, {entity, index}, or null: the one chosen
+ * with the cycle key while it is still under the pointer, else the nearest within PICK_RADIUS
+ * px. (The topmost SVG element is not used: where handles overlap it is another one.)
+ */
+function pickHandle(clientX, clientY) {
+  const near = handlesNear(clientX, clientY);
+  const chosen = picked && near.find((h) => h.entity === picked.entity && h.index === picked.index);
+  const h = chosen ?? near[0];
+  return h ? { entity: h.entity, index: h.index } : null;
+}
+
+/** The ring around the handle a press would grab (drawn above the handles). */
+const pickLayer = element("g", { id: "layer-pick" }, canvas);
+const pickMark = element("circle", { class: "pick-mark", r: 7.5 }, pickLayer);
+pickMark.style.display = "none";
+/** The handle the ring marks, and the status line to put back when the pointer leaves it. */
+let hovered = null;
+
+/** Marks the handle a press at the last pointer position would grab, and names it. */
+function showPick() {
+  const near = pointerAt && !drag && !pan ? handlesNear(pointerAt[0], pointerAt[1]) : [];
+  const h = pointerAt && near.length ? pickHandle(pointerAt[0], pointerAt[1]) : null;
+  if (!h) {
+    pickMark.style.display = "none";
+    if (hovered) {
+      setStatus(hovered.status, hovered.error);
+      hovered = null;
+    }
+    return;
+  }
+  const [x, y] = toScreen(entities.get(h.entity).points[h.index]);
+  pickMark.setAttribute("cx", x);
+  pickMark.setAttribute("cy", y);
+  pickMark.style.display = "";
+  if (!hovered) hovered = { status: statusLine.textContent, error: statusLine.classList.contains("error") };
+  const k = near.findIndex((n) => n.entity === h.entity && n.index === h.index);
+  const more = near.length > 1 ? `; C for the next of the ${near.length}` : "";
+  statusLine.textContent = `entity ${h.entity} point ${h.index} (${k + 1} of ${near.length} here): ${handleText(h.entity, h.index)}${more}`;
+  statusLine.className = "";
+}
+
+/** Whether a key goes to a text field (where C is a letter, not the cycle key). */
+const typing = (ev) => ev.target instanceof HTMLInputElement || ev.target instanceof HTMLTextAreaElement || ev.target.isContentEditable;
+
+/** The cycle key: the next of the handles under the pointer becomes the one a press grabs. */
+function cyclePick(step) {
+  if (!pointerAt || drag) return;
+  const near = handlesNear(pointerAt[0], pointerAt[1]);
+  if (near.length === 0) {
+    picked = null;
+    setStatus(`no handle within ${PICK_RADIUS} px of the pointer`);
+    return;
+  }
+  const now = pickHandle(pointerAt[0], pointerAt[1]);
+  const k = near.findIndex((n) => n.entity === now.entity && n.index === now.index);
+  const next = near[(k + step + near.length) % near.length];
+  picked = { entity: next.entity, index: next.index };
+  showPick();
+}
+
 // ---- pointer and keys ----------------------------------------------------------------------
 
 canvas.addEventListener("pointerdown", (ev) => {
   if (ev.button !== 0 || drag) return;
-  const t = ev.target;
-  if (t.dataset && t.dataset.entity !== undefined) {
+  pointerAt = [ev.clientX, ev.clientY];
+  const h = pickHandle(ev.clientX, ev.clientY);
+  if (h) {
     ev.preventDefault();
-    startDrag(Number(t.dataset.entity), Number(t.dataset.index), ev.pointerId, null);
+    picked = null;
+    pickMark.style.display = "none";
+    hovered = null;
+    startDrag(h.entity, h.index, ev.pointerId, null);
   } else {
     pan = { x: ev.clientX, y: ev.clientY, vx: view.x, vy: view.y };
     canvas.setPointerCapture(ev.pointerId);
@@ -438,14 +768,27 @@ canvas.addEventListener("pointerdown", (ev) => {
 canvas.addEventListener("pointermove", (ev) => {
   const m = toModel(ev.clientX, ev.clientY);
   coordsLine.textContent = `x ${m[0].toPrecision(6)}  y ${m[1].toPrecision(6)}`;
+  pointerAt = [ev.clientX, ev.clientY];
   if (drag && ev.pointerId === drag.pointerId && !drag.end) {
     drag.next = m;
     pump();
   } else if (pan) {
     view.x = pan.vx - (ev.clientX - pan.x) / view.k;
     view.y = pan.vy + (ev.clientY - pan.y) / view.k;
-    redrawAll();
+    requestRedraw();
+  } else {
+    // A handle chosen with the cycle key stays chosen while it is under the pointer.
+    if (picked && !handlesNear(ev.clientX, ev.clientY).some((h) => h.entity === picked.entity && h.index === picked.index)) {
+      picked = null;
+    }
+    showPick();
   }
+});
+canvas.addEventListener("pointerleave", () => {
+  if (drag || pan) return;
+  pointerAt = null;
+  picked = null;
+  showPick();
 });
 
 function release(ev) {
@@ -465,7 +808,8 @@ canvas.addEventListener("wheel", (ev) => {
   const after = toModel(ev.clientX, ev.clientY);
   view.x += before[0] - after[0];
   view.y += before[1] - after[1];
-  redrawAll();
+  pointerAt = [ev.clientX, ev.clientY];
+  requestRedraw();
 }, { passive: false });
 
 window.addEventListener("keydown", (ev) => {
@@ -478,9 +822,12 @@ window.addEventListener("keydown", (ev) => {
   else if ((ev.ctrlKey || ev.metaKey) && ev.key === "s") { ev.preventDefault(); save(); }
   else if (!ev.ctrlKey && !ev.metaKey && ev.key === "f") fit();
   else if (!ev.ctrlKey && !ev.metaKey && ev.key === "s") action("/api/solve");
+  else if (!ev.ctrlKey && !ev.metaKey && !ev.altKey && (ev.key === "c" || ev.key === "C") && !typing(ev)) {
+    cyclePick(ev.shiftKey ? -1 : 1);
+  }
 });
 
-window.addEventListener("resize", redrawAll);
+window.addEventListener("resize", requestRedraw);
 window.addEventListener("beforeunload", (ev) => {
   if (state && state.unsaved) {
     ev.preventDefault();
@@ -524,10 +871,23 @@ document.getElementById("redo").addEventListener("click", () => action("/api/red
 document.getElementById("save").addEventListener("click", save);
 document.getElementById("fit").addEventListener("click", fit);
 
+/**
+ * The page's first load, in ms since navigation started (performance.now()): the state
+ * answered and parsed, drawn (script done), and the first frame with the drawing painted.
+ */
+const loadTimes = { state: null, drawn: null, painted: null };
+
 async function reload(keepView) {
   const r = await api("GET", "/api/state");
   if (r.ok) {
+    const first = loadTimes.state === null;
+    if (first) loadTimes.state = performance.now();
     takeState(r.data, keepView);
+    if (first) {
+      loadTimes.drawn = performance.now();
+      // A task queued from the next animation frame runs after that frame is painted.
+      requestAnimationFrame(() => setTimeout(() => { loadTimes.painted = performance.now(); }, 0));
+    }
     if (!keepView) setStatus("ready: drag a point");
   } else {
     setStatus(r.data.error, true);

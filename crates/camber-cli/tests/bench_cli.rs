@@ -264,3 +264,60 @@ fn equal_sizes_have_no_growth_and_say_so() {
     );
     assert!(!text.contains("inf") && !text.contains("NaN"), "{text}");
 }
+
+#[test]
+fn write_sketch_writes_the_w3_chain_the_editor_opens() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("chain.json");
+    camber()
+        .args(["bench", "--only", "W3", "--sizes", "20", "--write-sketch"])
+        .arg(&path)
+        .assert()
+        .success()
+        .stdout(predicate::str::is_empty());
+    let file: Value = serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
+    let kinds = |kind: &str| {
+        file["constraints"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|c| c["kind"] == kind)
+            .count()
+    };
+    assert_eq!(file["entities"].as_array().unwrap().len(), 20);
+    assert_eq!(
+        (kinds("g1_join_free"), kinds("distance"), kinds("fixed")),
+        (19, 20, 2)
+    );
+    // The editor opens it: one component of 20 segments, analysed (8·20 unknowns less the
+    // two fixed points, 19·3 join rows and 20 chords: DOF 160 − 4 − 57 − 20 = 79).
+    let mut ed = camber_cli::editor::EditorState::load(&path, None).unwrap();
+    let state: Value = serde_json::from_slice(&ed.handle("GET", "/api/state", b"").body).unwrap();
+    let comps = state["components"].as_array().unwrap();
+    assert_eq!(comps.len(), 1);
+    assert_eq!(comps[0]["entities"].as_array().unwrap().len(), 20);
+    assert_eq!(comps[0]["analysis"]["dof"], 79, "{}", comps[0]["analysis"]);
+    assert_eq!(state["scene"]["entities"].as_array().unwrap().len(), 20);
+    // W3a the same way; the default size is 1000; anything else is refused.
+    camber()
+        .args(["bench", "--only", "W3a", "--write-sketch"])
+        .arg(dir.path().join("w3a.json"))
+        .assert()
+        .success();
+    let w3a: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.path().join("w3a.json")).unwrap())
+            .unwrap();
+    assert_eq!(w3a["entities"].as_array().unwrap().len(), 1000);
+    camber()
+        .args(["bench", "--only", "W4", "--write-sketch"])
+        .arg(dir.path().join("w4.json"))
+        .assert()
+        .failure()
+        .stderr(predicate::str::contains("--write-sketch writes one chain"));
+    camber()
+        .args(["bench", "--sizes", "10,20", "--write-sketch"])
+        .arg(dir.path().join("two.json"))
+        .assert()
+        .failure()
+        .stderr(predicate::str::contains("one --sizes N"));
+}

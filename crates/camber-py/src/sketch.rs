@@ -584,6 +584,31 @@ impl Sketch {
             .map_err(errors::sketch)
     }
 
+    /// Sets the value of dimension `id` (a distance, a radius, an angle, an arc length, …);
+    /// the next solve re-solves its component. Raises for a kind without a value, a value the
+    /// kind refuses, or a value that follows an expression of the parameters (`unbind_value`
+    /// first).
+    fn set_value(&mut self, id: u64, value: f64) -> PyResult<()> {
+        self.inner
+            .set_value(ConstraintId(id), value)
+            .map_err(errors::sketch)
+    }
+
+    /// Writes the value of dimension `id` (its `distance`, `radius`, `angle`, `length`, …) as
+    /// the expression `text` of the parameters.
+    fn bind_value(&mut self, id: u64, text: &str) -> PyResult<()> {
+        self.inner
+            .bind_value(ConstraintId(id), text)
+            .map_err(errors::sketch)
+    }
+
+    /// Drops the expression dimension `id`'s value follows: it keeps its current number.
+    fn unbind_value(&mut self, id: u64) -> PyResult<()> {
+        self.inner
+            .unbind_value(ConstraintId(id))
+            .map_err(errors::sketch)
+    }
+
     /// Adds a custom constraint whose residual is the Python function `residual(x)`; returns
     /// its id. `args` lists what it reads, in order: an int (a point entity) or a file form
     /// (`{"point": ref}` / `{"control": [curve, i]}` wrapped as `{"point": {...}}`,

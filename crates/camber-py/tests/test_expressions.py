@@ -67,6 +67,26 @@ def test_parameters_drive_dimensions_and_set_parameter_re_solves():
         s.set_parameter("chord", float("nan"))
 
 
+def test_a_dimension_value_binds_to_parameters_and_unbinds():
+    s = camber.Sketch()
+    a = s.add_point([0.0, 0.0])
+    b = s.add_point([1.0, 0.0])
+    s.add_constraint("fixed", target={"point": {"point": a}})
+    d = s.add_constraint("distance", a={"point": a}, b={"point": b}, distance=1.0)
+    s.set_parameter("w", 3.0)
+    s.bind_value(d, "w / 2")
+    s.solve()
+    assert abs(np.hypot(*(np.array(s.point(b)) - np.array(s.point(a)))) - 1.5) < 1e-9
+    with pytest.raises(camber.CamberError):
+        s.set_value(d, 2.0)  # it follows w
+    s.unbind_value(d)
+    s.set_value(d, 2.0)
+    s.solve()
+    assert abs(np.hypot(*(np.array(s.point(b)) - np.array(s.point(a)))) - 2.0) < 1e-9
+    with pytest.raises(camber.CamberError):
+        s.bind_value(a + 100, "w")
+
+
 def test_solve_many_sweeps_a_table_on_every_thread():
     s = camber.Sketch.load(str(BLADE))
     chords = np.linspace(0.8, 1.6, 16)

@@ -32,6 +32,40 @@ pub struct BenchArgs {
     /// valid results.
     #[arg(long, value_name = "FILE", conflicts_with = "json")]
     pub compare: Option<std::path::PathBuf>,
+    /// Write the sketch of one chain workload (`--only W3` or `W3a`, the default W3) at one
+    /// size (`--sizes N`, the default 1000) as a sketch file, unsolved, instead of running
+    /// anything: the input `camber edit`, `camber check` and `camber solve` read.
+    #[arg(long, value_name = "OUT.json", conflicts_with_all = ["json", "compare", "quick"])]
+    pub write_sketch: Option<std::path::PathBuf>,
+}
+
+/// The chain size `--write-sketch` writes when `--sizes` is not given.
+pub const DEFAULT_SKETCH_SIZE: usize = 1000;
+
+/// `--write-sketch`: the W3 or W3a chain of one size, as sketch file text.
+///
+/// # Errors
+/// More than one workload or size, a workload that is not a chain, or a chain the workload
+/// cannot build.
+pub fn chain_sketch(only: &[Workload], sizes: &[usize]) -> Result<String> {
+    let workload = match only {
+        [] => Workload::W3,
+        [w @ (Workload::W3 | Workload::W3a)] => *w,
+        _ => anyhow::bail!(
+            "--write-sketch writes one chain: give --only W3 or --only W3a (or neither, for W3)"
+        ),
+    };
+    let n = match sizes {
+        [] => DEFAULT_SKETCH_SIZE,
+        [n] => *n,
+        _ => anyhow::bail!("--write-sketch writes one chain: give one --sizes N"),
+    };
+    let (sketch, _) = match workload {
+        Workload::W3a => camber_workloads::w3a_chain(n)?,
+        _ => camber_workloads::w3_chain(n)?,
+    };
+    camber_sketch::file::to_json(&sketch)
+        .with_context(|| format!("cannot write the {} chain", workload.name()))
 }
 
 /// The largest size `--sizes` accepts: ten times the standard plan's largest chain, which
@@ -55,6 +89,10 @@ fn chain_size(s: &str) -> std::result::Result<usize, String> {
 pub fn run(args: &BenchArgs) -> Result<()> {
     if let Some(&n) = args.sizes.iter().find(|&&n| n == 0 || n > MAX_CHAIN_SIZE) {
         anyhow::bail!("--sizes: {n} is outside 1..={MAX_CHAIN_SIZE}");
+    }
+    if let Some(path) = &args.write_sketch {
+        let text = chain_sketch(&args.only, &args.sizes)?;
+        return crate::output::write_all(&[], &[(path.clone(), text)]);
     }
     let plan = if args.quick {
         Plan::quick()

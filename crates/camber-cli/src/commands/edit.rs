@@ -33,6 +33,14 @@ pub struct EditArgs {
     /// Also open the editor in the default web browser.
     #[arg(long)]
     pub open: bool,
+    /// Start from an empty sketch that "Save" writes to the input path (which must not exist
+    /// yet).
+    #[arg(long)]
+    pub new: bool,
+    /// Open the sketch as the file has it, without solving a sketch whose constraints do not
+    /// all hold.
+    #[arg(long)]
+    pub no_solve: bool,
 }
 
 /// Loads the sketch, listens, prints the address, and answers requests until interrupted.
@@ -51,7 +59,24 @@ pub fn run(args: &EditArgs) -> Result<()> {
             args.bind
         );
     }
-    let mut state = EditorState::load(&args.input, args.output.clone())?;
+    let mut state = if args.new {
+        if args.input.exists() {
+            anyhow::bail!(
+                "{}: the file exists; open it without --new, or give a new name",
+                args.input.display()
+            );
+        }
+        EditorState::new(
+            camber_sketch::Sketch::new(),
+            args.input.clone(),
+            args.output.clone(),
+        )?
+    } else {
+        EditorState::load(&args.input, args.output.clone())?
+    };
+    if !args.no_solve {
+        state.solve_on_open()?;
+    }
     let server = Server::bind(SocketAddr::new(args.bind, args.port))?;
     let url = server.url();
     crate::print_stdout(&format!(

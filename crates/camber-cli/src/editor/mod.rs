@@ -30,6 +30,8 @@
 //! # Ok::<(), anyhow::Error>(())
 //! ```
 
+mod authoring;
+pub mod fairness;
 pub mod server;
 pub mod wire;
 
@@ -47,13 +49,14 @@ use crate::scene::View;
 use crate::sketch_file::{self, describe_error};
 use wire::{
     AnalysisJson, ComponentJson, ComponentReportJson, ConstraintRef, ConstraintResidualJson,
-    DragMove, DragStart, DraggedJson, ErrorJson, MoveJson, ReportJson, SavedJson, SceneJson,
-    StateJson,
+    DragMove, DragStart, DraggedJson, ErrorJson, MoveJson, ParameterJson, ReportJson, SavedJson,
+    SceneJson, StateJson,
 };
 
 /// The page, its script and its style sheet, built into the binary.
 const PAGE: &str = include_str!("../../assets/editor.html");
 const SCRIPT: &str = include_str!("../../assets/editor.js");
+const SKETCHER: &str = include_str!("../../assets/sketcher.js");
 const STYLE: &str = include_str!("../../assets/editor.css");
 
 /// How many earlier states undo keeps.
@@ -256,13 +259,21 @@ impl EditorState {
     ///
     /// | request | answer |
     /// | --- | --- |
-    /// | `GET /`, `/editor.js`, `/editor.css` | the page |
+    /// | `GET /`, `/editor.js`, `/sketcher.js`, `/editor.css` | the page |
     /// | `GET /api/state` | [`StateJson`] |
+    /// | `GET /api/combs` | the curvature combs of the curves drawn |
+    /// | `GET /api/export.svg`, `/api/export.dxf` | the sketch as SVG (as `camber render`) or DXF (as `camber export`) |
     /// | `POST /api/drag/start` [`DragStart`] | [`DraggedJson`] |
     /// | `POST /api/drag/move` [`DragMove`] | [`MoveJson`]; 422 when the solver refuses |
     /// | `POST /api/drag/end`, `/api/drag/cancel` | [`StateJson`] |
     /// | `POST /api/solve`, `/api/undo`, `/api/redo` | [`StateJson`] |
     /// | `POST /api/save` | [`SavedJson`] |
+    /// | `POST /api/save-as` [`wire::SaveAsRequest`] | [`SavedJson`] |
+    /// | `POST /api/create` [`wire::CreateRequest`] | [`StateJson`] |
+    /// | `POST /api/delete` [`wire::DeleteRequest`] | [`StateJson`] |
+    /// | `POST /api/dimension` [`wire::DimensionRequest`] | [`StateJson`]; 422 when the re-solve fails |
+    /// | `POST /api/parameter` [`wire::ParameterRequest`] | [`StateJson`]; 422 when the re-solve fails |
+    /// | `POST /api/fillet` [`wire::FilletRequest`] | [`StateJson`]; 422 when the corner cannot be rounded |
     ///
     /// Errors answer `{"error": "…"}`: 400 for a malformed body, 404 for an unknown path,
     /// entity or point, 405 for a wrong method, 409 for an action that does not fit the state
@@ -277,10 +288,16 @@ impl EditorState {
             ("GET" | "HEAD", "/editor.js") => {
                 Ok(Response::asset("text/javascript; charset=utf-8", SCRIPT))
             }
+            ("GET" | "HEAD", "/sketcher.js") => {
+                Ok(Response::asset("text/javascript; charset=utf-8", SKETCHER))
+            }
             ("GET" | "HEAD", "/editor.css") => {
                 Ok(Response::asset("text/css; charset=utf-8", STYLE))
             }
             ("GET" | "HEAD", "/api/state") => self.state_answer(),
+            ("GET" | "HEAD", "/api/combs") => self.combs(),
+            ("GET" | "HEAD", "/api/export.svg") => self.export("svg"),
+            ("GET" | "HEAD", "/api/export.dxf") => self.export("dxf"),
             ("POST", "/api/drag/start") => self.drag_start(body),
             ("POST", "/api/drag/move") => self.drag_move(body),
             ("POST", "/api/drag/end") => self.drag_end(),
@@ -289,6 +306,12 @@ impl EditorState {
             ("POST", "/api/undo") => self.undo(),
             ("POST", "/api/redo") => self.redo(),
             ("POST", "/api/save") => self.save(),
+            ("POST", "/api/save-as") => self.save_as(body),
+            ("POST", "/api/create") => self.create(body),
+            ("POST", "/api/delete") => self.delete(body),
+            ("POST", "/api/dimension") => self.dimension(body),
+            ("POST", "/api/parameter") => self.parameter(body),
+            ("POST", "/api/fillet") => self.fillet(body),
             (_, p) if ROUTES.contains(&p) => {
                 Err(Failure::new(405, format!("{method} is not allowed on {p}")))
             }
@@ -319,20 +342,13 @@ impl EditorState {
                 c.worst = worst.map(|(id, _)| ConstraintRef::of(&self.sketch, id));
             }
         }
-        let scene = match &self.drag {
-            Some(d) => SceneJson::of(
-                &View::with_overrides(&self.sketch, &d.current),
-                &self.conflicting,
-                &residuals,
-                |_| true,
-            )?,
-            None => SceneJson::of(
-                &View::new(&self.sketch),
-                &self.conflicting,
-                &residuals,
-                |_| true,
-            )?,
-        };
+        let no_overrides = BTreeMap::new();
+        let view = View::with_overrides(
+            &self.sketch,
+            self.drag.as_ref().map_or(&no_overrides, |d| &d.current),
+        );
+        let scene = SceneJson::of(&view, &self.conflicting, &residuals, |_| true)?;
+        let warnings = fairness::scene_warnings(&view, &scene)?;
         Ok(StateJson {
             file: self.file.display().to_string(),
             output: self.output.display().to_string(),
@@ -345,6 +361,30 @@ impl EditorState {
                 linear: d.linear,
             }),
             scene,
+            warnings,
+            constraints: self.constraint_list(&components, &residuals),
+            parameters: self
+                .sketch
+                .parameters()
+                .iter()
+                .map(|(name, p)| ParameterJson {
+                    name: name.to_owned(),
+                    value: p.value,
+                    readers: self
+                        .sketch
+                        .parameter_readers(name)
+                        .iter()
+                        .map(|c| c.0)
+                        .collect(),
+                })
+                .collect(),
+            next_id: self
+                .sketch
+                .entities()
+                .map(|(id, _)| id.0)
+                .chain(self.sketch.constraints().map(|(id, _)| id.0))
+                .max()
+                .map_or(0, |m| m + 1),
             components,
             report: self.report.clone(),
         })
@@ -483,10 +523,12 @@ impl EditorState {
             |id| changed.contains(&id),
         )?;
         let worst = worst_of(&residuals);
+        let warnings = fairness::scene_warnings(&view, &scene)?;
         Ok(Response::json(
             200,
             &MoveJson {
                 scene,
+                warnings,
                 residual: worst.map_or(0.0, |w| w.1),
                 worst: worst.map(|(id, _)| ConstraintRef::of(&self.sketch, id)),
                 constraint_residuals: residuals
@@ -566,21 +608,7 @@ impl EditorState {
             )
         })?;
         self.committed(before)?;
-        let components: Vec<ComponentReportJson> = report
-            .components
-            .iter()
-            .map(|c| {
-                let r = &c.report;
-                ComponentReportJson {
-                    entities: c.component.entities.iter().map(|e| e.0).collect(),
-                    solver: crate::sketch_file::solver_name(r.solver).to_owned(),
-                    reason: r.reason.clone(),
-                    dof: Some(r.dof),
-                    residual: r.residuals.iter().fold(0.0_f64, |m, g| m.max(g.max_abs)),
-                    time_ms: r.elapsed.as_secs_f64() * 1e3,
-                }
-            })
-            .collect();
+        let components = component_reports(&report);
         self.report = Some(ReportJson {
             action: "solve",
             summary: format!("solved {} component(s)", components.len()),
@@ -661,11 +689,31 @@ impl EditorState {
     }
 }
 
+/// One report line per component a solve touched.
+fn component_reports(report: &camber_sketch::SketchReport) -> Vec<ComponentReportJson> {
+    report
+        .components
+        .iter()
+        .map(|c| {
+            let r = &c.report;
+            ComponentReportJson {
+                entities: c.component.entities.iter().map(|e| e.0).collect(),
+                solver: crate::sketch_file::solver_name(r.solver).to_owned(),
+                reason: r.reason.clone(),
+                dof: Some(r.dof),
+                residual: r.residuals.iter().fold(0.0_f64, |m, g| m.max(g.max_abs)),
+                time_ms: r.elapsed.as_secs_f64() * 1e3,
+            }
+        })
+        .collect()
+}
+
 /// Every path the editor answers, for telling 405 from 404.
-const ROUTES: [&str; 13] = [
+const ROUTES: [&str; 23] = [
     "/",
     "/index.html",
     "/editor.js",
+    "/sketcher.js",
     "/editor.css",
     "/api/state",
     "/api/drag/start",
@@ -676,6 +724,15 @@ const ROUTES: [&str; 13] = [
     "/api/undo",
     "/api/redo",
     "/api/save",
+    "/api/save-as",
+    "/api/create",
+    "/api/delete",
+    "/api/dimension",
+    "/api/parameter",
+    "/api/fillet",
+    "/api/export.svg",
+    "/api/export.dxf",
+    "/api/combs",
 ];
 
 /// Parses a JSON request body; a malformed one is a 400 with serde's reason.

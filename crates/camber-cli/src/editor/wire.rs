@@ -345,6 +345,15 @@ pub struct StateJson {
     pub components: Vec<ComponentJson>,
     /// The last solve or drag, if any since the start.
     pub report: Option<ReportJson>,
+    /// Every constraint by increasing id, with its residual, its status and its value.
+    pub constraints: Vec<ConstraintJson>,
+    /// The sketch's named parameters by name.
+    pub parameters: Vec<ParameterJson>,
+    /// Curves with a cusp or crossing themselves, at the geometry drawn.
+    pub warnings: Vec<super::fairness::ShapeWarning>,
+    /// An id no entity and no constraint has (one above the largest; entities and
+    /// constraints share one space of ids).
+    pub next_id: u64,
 }
 
 /// The answer to a successful `POST /api/drag/move`: the entities that moved and the glyphs
@@ -362,6 +371,9 @@ pub struct MoveJson {
     pub worst: Option<ConstraintRef>,
     /// Each constraint of the dragged component with its max |g| now, by increasing id.
     pub constraint_residuals: Vec<ConstraintResidualJson>,
+    /// The moved curves that now have a cusp or cross themselves.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub warnings: Vec<super::fairness::ShapeWarning>,
     /// Time of `DragSession::update`, in microseconds.
     pub update_us: f64,
     /// Time in the handler up to this answer: parsing the body, the update, rebuilding and
@@ -394,4 +406,130 @@ pub struct SavedJson {
 pub struct ErrorJson {
     /// What went wrong.
     pub error: String,
+}
+
+/// `POST /api/create`: entities and constraints to add, in their file form, each with the id
+/// the page chose for it (from `next_id` of [`StateJson`] up); the
+/// constraints may read the new entities. All or nothing.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CreateRequest {
+    /// Entities (`{"id": 7, "kind": "line", "from": …, "to": …}`).
+    #[serde(default)]
+    pub entities: Vec<serde_json::Value>,
+    /// Constraints (`{"id": 12, "kind": "horizontal", "of": {"line": 7}}`).
+    #[serde(default)]
+    pub constraints: Vec<serde_json::Value>,
+    /// Whether to solve the touched components afterwards (default `true`).
+    #[serde(default = "yes")]
+    pub solve: bool,
+}
+
+fn yes() -> bool {
+    true
+}
+
+/// `POST /api/delete`: entities and constraints to remove. The constraints reading a removed
+/// entity (or the free parameters of a removed constraint) go with it.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DeleteRequest {
+    /// Entity ids.
+    #[serde(default)]
+    pub entities: Vec<u64>,
+    /// Constraint ids.
+    #[serde(default)]
+    pub constraints: Vec<u64>,
+}
+
+/// `POST /api/dimension`: a dimension's new value, a number or an expression of the sketch's
+/// parameters (`"chord / 2"`); the sketch is re-solved.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DimensionRequest {
+    /// The constraint (a distance, a radius, an angle, an arc length, …).
+    pub constraint: u64,
+    /// A number, or the text of an expression (a text that reads as a number is one).
+    pub value: DimensionValue,
+}
+
+/// A dimension's value as typed.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(untagged)]
+pub enum DimensionValue {
+    /// A number.
+    Number(f64),
+    /// An expression of the parameters.
+    Text(String),
+}
+
+/// `POST /api/parameter`: defines or changes a named parameter; the components reading it
+/// are re-solved.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ParameterRequest {
+    /// The name (a letter or `_`, then letters, digits or `_`).
+    pub name: String,
+    /// The value.
+    pub value: f64,
+}
+
+/// `POST /api/fillet`: rounds the corner between two lines or curves with a tangent arc
+/// ([`camber_sketch::Sketch::fillet`]).
+#[derive(Debug, Clone, Copy, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FilletRequest {
+    /// One line or curve.
+    pub first: u64,
+    /// The other.
+    pub second: u64,
+    /// The arc's radius.
+    pub radius: f64,
+}
+
+/// `POST /api/save-as`: a file name (no folder) in the folder of the current output; it
+/// becomes where "Save" writes.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SaveAsRequest {
+    /// The file name, ending in `.json`.
+    pub file: String,
+    /// Whether an existing file may be replaced (default `false`: 409).
+    #[serde(default)]
+    pub overwrite: bool,
+}
+
+/// One constraint as the page lists it.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ConstraintJson {
+    /// The id.
+    pub id: u64,
+    /// The kind as the file names it (`distance`, `g1`, …).
+    pub kind: &'static str,
+    /// The kind in words.
+    pub name: &'static str,
+    /// The entities it reads.
+    pub entities: Vec<u64>,
+    /// max |g| over its rows at the geometry drawn; `null` for a constraint without rows.
+    pub residual: Option<f64>,
+    /// `ok`, `redundant`, `partly_redundant` or `conflicting` (from its component's DOF
+    /// analysis; `unanalysed` when the component was too large to analyse).
+    pub status: &'static str,
+    /// A dimension's value.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub value: Option<f64>,
+    /// The expression of the parameters the value follows, if any.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub expression: Option<String>,
+}
+
+/// One named parameter.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ParameterJson {
+    /// The name.
+    pub name: String,
+    /// The value.
+    pub value: f64,
+    /// The constraints reading it.
+    pub readers: Vec<u64>,
 }

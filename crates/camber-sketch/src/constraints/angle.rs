@@ -53,6 +53,10 @@ impl ConstraintKind for Angle {
         Some(self.angle)
     }
 
+    fn value_field(&self) -> Option<&'static str> {
+        Some("angle")
+    }
+
     fn set_value(&mut self, value: f64) -> bool {
         self.angle = value;
         true

@@ -92,6 +92,10 @@ impl ConstraintKind for ArcAngle {
         Some(self.angle)
     }
 
+    fn value_field(&self) -> Option<&'static str> {
+        Some("angle")
+    }
+
     fn set_value(&mut self, value: f64) -> bool {
         self.angle = value;
         true

@@ -72,6 +72,10 @@ impl ConstraintKind for CurvatureAt {
         Some(self.curvature)
     }
 
+    fn value_field(&self) -> Option<&'static str> {
+        Some("curvature")
+    }
+
     fn set_value(&mut self, value: f64) -> bool {
         self.curvature = value;
         true

@@ -32,6 +32,10 @@ impl ConstraintKind for HorizontalDistance {
         Some(self.distance)
     }
 
+    fn value_field(&self) -> Option<&'static str> {
+        Some("distance")
+    }
+
     fn set_value(&mut self, value: f64) -> bool {
         self.distance = value;
         true

@@ -98,6 +98,12 @@ pub trait ConstraintKind:
         let _ = value;
         false
     }
+
+    /// The field of its file form that holds its value (see [`ConstraintKind::value`]):
+    /// `"distance"`, `"radius"`, … `None` for a kind without one.
+    fn value_field(&self) -> Option<&'static str> {
+        None
+    }
 }
 
 /// The entities a constraint reads, each once.
@@ -248,6 +254,15 @@ macro_rules! kinds {
             pub fn value(&self) -> Option<f64> {
                 match self {
                     $(Constraint::$variant(c) => c.value(),)*
+                }
+            }
+
+            /// The field of its file form holding its value (`"distance"`, `"radius"`, …),
+            /// the path [`crate::Sketch::bind_dimension`] takes for it; `None` for a kind
+            /// without a value.
+            pub fn value_field(&self) -> Option<&'static str> {
+                match self {
+                    $(Constraint::$variant(c) => c.value_field(),)*
                 }
             }
 

@@ -36,6 +36,10 @@ impl ConstraintKind for PointLineDistance {
         Some(self.distance)
     }
 
+    fn value_field(&self) -> Option<&'static str> {
+        Some("distance")
+    }
+
     fn set_value(&mut self, value: f64) -> bool {
         self.distance = value;
         true

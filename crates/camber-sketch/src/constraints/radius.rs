@@ -61,6 +61,10 @@ impl ConstraintKind for Radius {
         Some(self.radius)
     }
 
+    fn value_field(&self) -> Option<&'static str> {
+        Some("radius")
+    }
+
     fn set_value(&mut self, value: f64) -> bool {
         self.radius = value;
         true

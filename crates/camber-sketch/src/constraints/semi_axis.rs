@@ -75,6 +75,10 @@ impl ConstraintKind for SemiAxis {
         Some(self.length)
     }
 
+    fn value_field(&self) -> Option<&'static str> {
+        Some("length")
+    }
+
     fn set_value(&mut self, value: f64) -> bool {
         self.length = value;
         true

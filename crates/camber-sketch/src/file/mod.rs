@@ -294,8 +294,22 @@ pub fn from_json_with(
         message: words::plain_words(&e.inner().to_string()),
     })?;
     let mut sketch = Sketch::new();
-    let entities = raw
-        .entities
+    add_entities(&mut sketch, raw.entities)?;
+    for (name, value) in &raw.parameters {
+        sketch
+            .define_parameter(name, *value)
+            .map_err(|source| FileError::Parameter {
+                name: name.clone(),
+                source,
+            })?;
+    }
+    add_constraints(&mut sketch, raw.constraints, registry)?;
+    Ok(sketch)
+}
+
+/// Adds entities in their file form (each with its `id`, `kind`, optional `tag`), in order.
+fn add_entities(sketch: &mut Sketch, entities: Vec<Value>) -> std::result::Result<(), FileError> {
+    let entities = entities
         .into_iter()
         .enumerate()
         .map(|(i, v)| load_entity(i, v))
@@ -316,15 +330,17 @@ pub fn from_json_with(
                 source,
             })?;
     }
-    for (name, value) in &raw.parameters {
-        sketch
-            .define_parameter(name, *value)
-            .map_err(|source| FileError::Parameter {
-                name: name.clone(),
-                source,
-            })?;
-    }
-    for (i, mut value) in raw.constraints.into_iter().enumerate() {
+    Ok(())
+}
+
+/// Adds constraints in their file form (each with its `id`, `kind`, optional `priority`, its
+/// numbers possibly expressions of the sketch's parameters), in order.
+fn add_constraints(
+    sketch: &mut Sketch,
+    constraints: Vec<Value>,
+    registry: &CustomRegistry,
+) -> std::result::Result<(), FileError> {
+    for (i, mut value) in constraints.into_iter().enumerate() {
         let priority = load_priority(i, &mut value)?;
         let (id, constraint, bindings) = load_constraint(i, value, registry, sketch.parameters())?;
         let kind = constraint.tag().to_owned();
@@ -342,7 +358,67 @@ pub fn from_json_with(
                 .map_err(|source| FileError::Constraint { id, kind, source })?;
         }
     }
-    Ok(sketch)
+    Ok(())
+}
+
+/// Adds entities, then constraints, in their file form — the objects of a file's
+/// `"entities"` and `"constraints"` arrays, each with its own `id` — to a sketch, as a
+/// sketcher adds what a user drew with the constraints inferred from it. Constraints may read
+/// the new entities and the sketch's own. All or nothing: when one is refused, the ones
+/// already added are removed again and the sketch is as it was. Error paths count from the
+/// start of each list (`entities[1].to`). Custom kinds are refused (they need a
+/// [`CustomRegistry`]).
+///
+/// ```
+/// use camber_sketch::{file::add_from_values, EntityId, Sketch};
+/// use serde_json::json;
+/// let mut s = Sketch::new();
+/// add_from_values(&mut s,
+///     vec![json!({"id": 4, "kind": "line", "from": [0, 0], "to": [2, 0.1]})],
+///     vec![json!({"id": 9, "kind": "horizontal", "of": {"line": 4}})])?;
+/// assert_eq!(s.constraints().count(), 1);
+/// // A constraint on an entity that does not exist: nothing of the call stays.
+/// let refused = add_from_values(&mut s,
+///     vec![json!({"id": 5, "kind": "point", "at": [1, 1]})],
+///     vec![json!({"id": 10, "kind": "vertical", "of": {"line": 77}})]);
+/// assert!(refused.unwrap_err().to_string().starts_with("constraint 10 (vertical)"));
+/// assert!(s.entity(EntityId(5)).is_err());
+/// # Ok::<(), camber_sketch::file::FileError>(())
+/// ```
+///
+/// # Errors
+/// As [`from_json_with`] for the entities and constraints of a file.
+pub fn add_from_values(
+    sketch: &mut Sketch,
+    entities: Vec<Value>,
+    constraints: Vec<Value>,
+) -> std::result::Result<(), FileError> {
+    let entities_before: std::collections::BTreeSet<EntityId> =
+        sketch.entities().map(|(id, _)| id).collect();
+    let constraints_before: std::collections::BTreeSet<ConstraintId> =
+        sketch.constraints().map(|(id, _)| id).collect();
+    let added = add_entities(sketch, entities)
+        .and_then(|()| add_constraints(sketch, constraints, &CustomRegistry::new()));
+    if added.is_err() {
+        let new_constraints: Vec<ConstraintId> = sketch
+            .constraints()
+            .map(|(id, _)| id)
+            .filter(|id| !constraints_before.contains(id))
+            .collect();
+        // Newest first: a constraint may read the free parameters of one added before it.
+        for id in new_constraints.into_iter().rev() {
+            let _ = sketch.remove_constraint(id);
+        }
+        let new_entities: Vec<EntityId> = sketch
+            .entities()
+            .map(|(id, _)| id)
+            .filter(|id| !entities_before.contains(id))
+            .collect();
+        for id in new_entities {
+            let _ = sketch.remove_entity(id);
+        }
+    }
+    added
 }
 
 /// Reads one constraint from its file form without an id (`{"kind": "distance", …}`), as

@@ -233,6 +233,59 @@ impl Sketch {
         Ok(())
     }
 
+    /// Writes a dimension's value (the field [`Constraint::value_field`] names: the
+    /// `distance` of a distance, the `radius` of a radius, …) as the expression `text` of the
+    /// parameters, as [`Sketch::bind_dimension`] does at that path.
+    ///
+    /// ```
+    /// use camber_sketch::constraints::Radius;
+    /// use camber_sketch::Sketch;
+    /// let mut s = Sketch::new();
+    /// let c = s.add_circle(nalgebra::Point2::new(0.0, 0.0), 1.0)?;
+    /// let r = s.add_constraint(Radius { circle: c, radius: 1.0 })?;
+    /// s.define_parameter("chord", 3.0)?;
+    /// s.bind_value(r, "chord / 4")?;
+    /// assert_eq!(s.constraint(r)?.value(), Some(0.75));
+    /// s.unbind_value(r)?;
+    /// s.set_value(r, 2.0)?; // no longer follows `chord`
+    /// # Ok::<(), camber_sketch::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`Error::UnknownConstraint`]; [`Error::NoValue`] for a kind without a value; as
+    /// [`Sketch::bind_dimension`]. Nothing changes then.
+    pub fn bind_value(&mut self, id: ConstraintId, text: &str) -> Result<()> {
+        let field = self.value_field_of(id)?;
+        self.bind_dimension(id, field, text)
+    }
+
+    /// Drops the expression a dimension's value follows, if any: the value keeps its current
+    /// number and no longer changes with the parameters ([`Sketch::set_value`] may set it).
+    ///
+    /// # Errors
+    /// [`Error::UnknownConstraint`]; [`Error::NoValue`] for a kind without a value.
+    pub fn unbind_value(&mut self, id: ConstraintId) -> Result<()> {
+        let field = self.value_field_of(id)?;
+        let kept: Vec<Binding> = self
+            .parameters
+            .bindings(id)
+            .iter()
+            .filter(|b| b.path != field)
+            .cloned()
+            .collect();
+        self.set_bindings(id, kept);
+        Ok(())
+    }
+
+    /// The field holding a constraint's value, or [`Error::NoValue`].
+    fn value_field_of(&self, id: ConstraintId) -> Result<&'static str> {
+        let c = self.constraint(id)?;
+        c.value_field().ok_or(Error::NoValue {
+            constraint: id,
+            kind: c.kind_name(),
+        })
+    }
+
     /// Stores the bindings read from a file for a constraint just added.
     pub(crate) fn set_bindings(&mut self, id: ConstraintId, bindings: Vec<Binding>) {
         if bindings.is_empty() {
