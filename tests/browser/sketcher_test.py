@@ -138,7 +138,7 @@ def main():
             page = browser.new_page(viewport={"width": 1300, "height": 850})
             if os.environ.get("CAMBER_ASSETS_FROM_SOURCE") == "1":
                 assets = ROOT / "crates" / "camber-cli" / "assets"
-                for name in ("editor.js", "sketcher.js", "editor.css"):
+                for name in ("editor.js", "sketcher.js", "sketcher-tools.js", "sketcher-view.js", "editor.css"):
                     page.route(f"**/{name}", from_source(assets / name))
             page.on("pageerror", lambda e: errors.append(f"page error: {e}"))
             page.on("console", lambda m: errors.append(f"console {m.type}: {m.text}") if m.type == "error" else None)

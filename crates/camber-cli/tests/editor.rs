@@ -607,6 +607,9 @@ fn the_page_and_its_assets_are_served() {
         ("/index.html", "text/html", "<svg id=\"canvas\""),
         ("/editor.js?v=1", "text/javascript", "/api/drag/move"),
         ("/editor.css", "text/css", ".glyph.conflict"),
+        ("/sketcher.js", "text/javascript", "/api/create"),
+        ("/sketcher-tools.js?v=2", "text/javascript", "/api/fillet"),
+        ("/sketcher-view.js", "text/javascript", "/api/dimension"),
     ] {
         let r = ed.handle("GET", path, b"");
         assert_eq!(r.status, 200, "{path}");
@@ -617,6 +620,8 @@ fn the_page_and_its_assets_are_served() {
         );
         assert!(r.text().contains(needle), "{path}");
     }
+    assert_eq!(ed.handle("POST", "/sketcher-view.js", b"{}").status, 405);
+    assert_eq!(ed.handle("HEAD", "/sketcher-tools.js", b"").status, 200);
     // The two-curve sketch: lines, circles, and a glyph for every contact.
     let s = state(&mut ed);
     let glyph_owners: std::collections::BTreeSet<u64> = s["scene"]["glyphs"]
