@@ -1,4 +1,5 @@
-// camber edit: the sketcher's model, the first of its three scripts (sketcher.js, then
+// camber edit: the sketcher's model, the first of its three scripts (the server joins them, in
+// this order, as /sketcher.js: this file, then
 // sketcher-tools.js: drawing, constraints from a selection, pointer and keys; then
 // sketcher-view.js: labels, overlay, combs, panels, and the hooks editor.js calls). Here: its
 // state, picking (points, curves, glyphs), snapping and inferred constraints, the selection,
