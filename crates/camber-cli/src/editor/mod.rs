@@ -531,7 +531,12 @@ impl EditorState {
             |id| changed.contains(&id),
         )?;
         let worst = worst_of(&residuals);
-        let warnings = fairness::scene_warnings(&view, &scene)?;
+        let moved_samples: usize = scene.entities.iter().map(|e| e.samples.len()).sum();
+        let warnings = if moved_samples <= fairness::MAX_MOVE_SAMPLES {
+            fairness::scene_warnings(&view, &scene)?
+        } else {
+            Vec::new()
+        };
         Ok(Response::json(
             200,
             &MoveJson {
