@@ -138,8 +138,10 @@ def main():
             page = browser.new_page(viewport={"width": 1300, "height": 850})
             if os.environ.get("CAMBER_ASSETS_FROM_SOURCE") == "1":
                 assets = ROOT / "crates" / "camber-cli" / "assets"
-                for name in ("editor.js", "sketcher.js", "editor.css"):
+                for name in ("editor.js", "editor.css"):
                     page.route(f"**/{name}", from_source(assets / name))
+                joined = "\n".join((assets / n).read_text() for n in ("sketcher.js", "sketcher-tools.js", "sketcher-view.js"))
+                page.route("**/sketcher.js", lambda route, *_: route.fulfill(body=joined, content_type="text/javascript"))
             page.on("pageerror", lambda e: errors.append(f"page error: {e}"))
             page.on("console", lambda m: errors.append(f"console {m.type}: {m.text}") if m.type == "error" else None)
             page.goto(editor.url)

@@ -607,6 +607,10 @@ fn the_page_and_its_assets_are_served() {
         ("/index.html", "text/html", "<svg id=\"canvas\""),
         ("/editor.js?v=1", "text/javascript", "/api/drag/move"),
         ("/editor.css", "text/css", ".glyph.conflict"),
+        // The sketcher's three scripts, joined: the model, the tools, the view.
+        ("/sketcher.js", "text/javascript", "/api/create"),
+        ("/sketcher.js?v=2", "text/javascript", "/api/fillet"),
+        ("/sketcher.js", "text/javascript", "/api/dimension"),
     ] {
         let r = ed.handle("GET", path, b"");
         assert_eq!(r.status, 200, "{path}");
@@ -617,6 +621,8 @@ fn the_page_and_its_assets_are_served() {
         );
         assert!(r.text().contains(needle), "{path}");
     }
+    assert_eq!(ed.handle("POST", "/sketcher.js", b"{}").status, 405);
+    assert_eq!(ed.handle("GET", "/sketcher-tools.js", b"").status, 404);
     // The two-curve sketch: lines, circles, and a glyph for every contact.
     let s = state(&mut ed);
     let glyph_owners: std::collections::BTreeSet<u64> = s["scene"]["glyphs"]

@@ -25,6 +25,10 @@ pub const CUSP_RATIO: f64 = 1e-3;
 /// than the mean are tested against all others, at most n²/8 tests, 3·10⁷ here).
 pub const MAX_CHECKED_SAMPLES: usize = 1 << 14;
 
+/// The most samples a drag move checks (over the curves it moved): a larger move (a long
+/// chain dragged whole) is checked when the drag ends, so that the move answers stay fast.
+pub const MAX_MOVE_SAMPLES: usize = 4096;
+
 /// One warning about a curve's shape.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ShapeWarning {

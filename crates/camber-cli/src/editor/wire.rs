@@ -371,7 +371,9 @@ pub struct MoveJson {
     pub worst: Option<ConstraintRef>,
     /// Each constraint of the dragged component with its max |g| now, by increasing id.
     pub constraint_residuals: Vec<ConstraintResidualJson>,
-    /// The moved curves that now have a cusp or cross themselves.
+    /// The moved curves that now have a cusp or cross themselves (not checked when they hold
+    /// more than [`super::fairness::MAX_MOVE_SAMPLES`] samples together: the state at the
+    /// drag's end has them).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub warnings: Vec<super::fairness::ShapeWarning>,
     /// Time of `DragSession::update`, in microseconds.
